@@ -1,0 +1,37 @@
+// PlaneShape: POV-Ray's unbounded `plane { normal, distance }` in object space.
+#pragma once
+
+#include <optional>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+
+namespace wardray::geometry {
+
+/// The half-space dot(n̂, p) <= d, whose surface is the plane dot(n̂, p) = d.
+class PlaneShape {
+public:
+    /// Returns nothing for a zero or non-finite normal or a non-finite distance.
+    static std::optional<PlaneShape> create(const parser::Plane& plane);
+
+    /// The single crossing with t in (t_min, t_max), if the ray is not parallel to the plane.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// Planes are unbounded: always nothing.
+    std::optional<Bounds> bounds() const { return std::nullopt; }
+    /// True for points strictly below the plane (on the side opposite to the normal).
+    bool inside(const Vec3& p) const { return dot(m_normal, p) < m_distance; }
+    /// Signed distance to the plane (negative inside).
+    double implicit(const Vec3& p) const { return dot(m_normal, p) - m_distance; }
+
+    /// The unit normal and the distance along it in object space.
+    const Vec3& normal() const { return m_normal; }
+    double distance() const { return m_distance; }
+
+private:
+    PlaneShape(const Vec3& unit_normal, double distance) : m_normal(unit_normal), m_distance(distance) {}
+
+    Vec3 m_normal;
+    double m_distance;
+};
+
+}  // namespace wardray::geometry

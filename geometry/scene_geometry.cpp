@@ -1,0 +1,353 @@
+// SceneGeometry: the Embree device and scene (the only file that includes embree3/rtcore.h), with analytic
+// shapes as user geometry computed in double precision and unbounded shapes intersected outside the BVH.
+#include "geometry/scene_geometry.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+
+#include "geometry/instance.h"
+
+namespace wardray::geometry {
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// Nearest float not above x (Embree's ray and bounds are float; rounding must stay conservative).
+float float_down(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+
+// Nearest float not below x.
+float float_up(double x) {
+    float f = static_cast<float>(x);
+    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+
+// Entry and exit parameters of the line o + t d through a box, or entry > exit when it misses.
+void slab_range(const Bounds& b, const Vec3& o, const Vec3& d, double& t_enter, double& t_exit) {
+    t_enter = -inf;
+    t_exit = inf;
+    for (int k = 0; k < 3; ++k) {
+        if (d[k] == 0.0) {
+            if (o[k] < b.lower[k] || o[k] > b.upper[k]) {
+                t_enter = inf;
+                t_exit = -inf;
+                return;
+            }
+            continue;
+        }
+        double t0 = (b.lower[k] - o[k]) / d[k];
+        double t1 = (b.upper[k] - o[k]) / d[k];
+        if (t0 > t1) std::swap(t0, t1);
+        t_enter = std::fmax(t_enter, t0);
+        t_exit = std::fmin(t_exit, t1);
+    }
+}
+
+/// Per-query state handed to the callbacks through Embree's context (Embree's documented extension idiom:
+/// the RTCIntersectContext comes first). It lives on the querying thread's stack, so callbacks may write it.
+struct QueryContext {
+    RTCIntersectContext base;
+    Vec3 origin;          ///< the original double-precision world ray
+    Vec3 direction;
+    double t_min = 0.0;
+    double t_best = inf;  ///< nearest accepted hit so far (double)
+    double t_shift = 0.0; ///< Embree's ray starts at origin + t_shift * direction
+    RayKind kind = RayKind::Camera;
+    bool has_hit = false;
+    Hit hit;
+};
+static_assert(std::is_standard_layout_v<QueryContext>);
+
+// Everything the Embree callbacks read; SceneGeometry::Impl is this type (callbacks cannot name a private type).
+struct GeometryData {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    std::vector<ShapeInstance> bounded;    ///< Embree primID -> instance
+    std::vector<Bounds> padded_bounds;     ///< per bounded instance, grown for the float ray's rounding
+    std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
+    std::vector<std::uint32_t> skipped;
+    std::optional<Bounds> bounds;
+    std::optional<Bounds> padded_scene_bounds;
+    double magnitude = 0.0;                ///< largest coordinate scale of the scene, for offsets
+    std::atomic<bool> building{true};
+    std::string error;
+
+    ~GeometryData() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+
+    // Throws the first Embree error recorded by the error callback while building.
+    void check(const char* step) {
+        if (device && rtcGetDeviceError(device) != RTC_ERROR_NONE && error.empty()) error = "unknown error";
+        if (!error.empty()) throw std::runtime_error(std::string("Embree error during ") + step + ": " + error);
+    }
+
+    // Runs the Embree traversal over the bounded instances, continuing from the state in q.
+    void trace(QueryContext& q, bool shadow) const;
+    // Brute-force fallback when the ray cannot be expressed in float (huge coordinates).
+    void brute_force(QueryContext& q, bool shadow) const;
+};
+
+}  // namespace
+
+struct SceneGeometry::Impl : GeometryData {};
+
+namespace {
+
+void on_embree_error(void* user, RTCError code, const char* message) {
+    auto* impl = static_cast<GeometryData*>(user);
+    // Only record while building (single-threaded); queries never write shared state.
+    if (!impl->building.load(std::memory_order_relaxed) || !impl->error.empty()) return;
+    impl->error = message ? message : ("code " + std::to_string(static_cast<int>(code)));
+}
+
+void bounds_callback(const RTCBoundsFunctionArguments* args) {
+    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
+    const Bounds& b = impl->padded_bounds[args->primID];
+    RTCBounds* out = args->bounds_o;
+    out->lower_x = float_down(b.lower.x);
+    out->lower_y = float_down(b.lower.y);
+    out->lower_z = float_down(b.lower.z);
+    out->upper_x = float_up(b.upper.x);
+    out->upper_y = float_up(b.upper.y);
+    out->upper_z = float_up(b.upper.z);
+}
+
+void intersect_callback(const RTCIntersectFunctionNArguments* args) {
+    // rtcIntersect1 always calls with one ray.
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* q = reinterpret_cast<QueryContext*>(args->context);
+    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
+    const ShapeInstance& inst = impl->bounded[args->primID];
+    if (!inst.visible_to(q->kind)) return;
+    // Double precision on the original ray, limited by the best double hit so far (not Embree's float tfar).
+    const auto hit = inst.nearest(q->origin, q->direction, q->t_min, q->t_best);
+    if (!hit) return;
+    q->t_best = hit->t;
+    q->hit = *hit;
+    q->has_hit = true;
+    auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
+    rh->ray.tfar = float_up(hit->t - q->t_shift);
+    rh->hit.Ng_x = static_cast<float>(hit->normal.x);
+    rh->hit.Ng_y = static_cast<float>(hit->normal.y);
+    rh->hit.Ng_z = static_cast<float>(hit->normal.z);
+    rh->hit.u = 0.0f;
+    rh->hit.v = 0.0f;
+    rh->hit.primID = args->primID;
+    rh->hit.geomID = args->geomID;
+    rh->hit.instID[0] = args->context->instID[0];
+}
+
+void occluded_callback(const RTCOccludedFunctionNArguments* args) {
+    if (args->N != 1 || !args->valid[0]) return;
+    auto* q = reinterpret_cast<QueryContext*>(args->context);
+    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
+    const ShapeInstance& inst = impl->bounded[args->primID];
+    if (!inst.visible_to(RayKind::Shadow)) return;
+    if (inst.intersect_all(q->origin, q->direction, q->t_min, q->t_best).empty()) return;
+    q->has_hit = true;
+    reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace
+
+void GeometryData::brute_force(QueryContext& q, bool shadow) const {
+    for (const ShapeInstance& inst : bounded) {
+        if (!inst.visible_to(shadow ? RayKind::Shadow : q.kind)) continue;
+        if (const auto hit = inst.nearest(q.origin, q.direction, q.t_min, q.t_best)) {
+            q.t_best = hit->t;
+            q.hit = *hit;
+            q.has_hit = true;
+            if (shadow) return;
+        }
+    }
+}
+
+void GeometryData::trace(QueryContext& q, bool shadow) const {
+    if (bounded.empty()) return;
+    // Start Embree's float ray where the double ray enters the scene's box: the float origin then carries
+    // rounding of the scene's size, not of a far camera's, and the padding of the bounds covers it.
+    double t_enter = 0.0;
+    double t_exit = 0.0;
+    slab_range(*padded_scene_bounds, q.origin, q.direction, t_enter, t_exit);
+    const double t_start = std::fmax(q.t_min, t_enter);
+    if (!(t_start <= std::fmin(t_exit, q.t_best))) return;
+    q.t_shift = t_start;
+    const Vec3 o = q.origin + t_start * q.direction;
+    const float tfar = float_up(q.t_best - t_start);
+    const float org[3] = {static_cast<float>(o.x), static_cast<float>(o.y), static_cast<float>(o.z)};
+    const float dir[3] = {static_cast<float>(q.direction.x), static_cast<float>(q.direction.y),
+                          static_cast<float>(q.direction.z)};
+    for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(org[k]) || !std::isfinite(dir[k])) {
+            brute_force(q, shadow);
+            return;
+        }
+    }
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) {
+        brute_force(q, shadow);
+        return;
+    }
+    alignas(16) RTCRayHit rh{};
+    RTCRay& ray = rh.ray;
+    ray.org_x = org[0];
+    ray.org_y = org[1];
+    ray.org_z = org[2];
+    ray.dir_x = dir[0];
+    ray.dir_y = dir[1];
+    ray.dir_z = dir[2];
+    ray.tnear = 0.0f;
+    ray.tfar = tfar;
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    if (shadow) {
+        rtcOccluded1(scene, &q.base, &ray);
+    } else {
+        rtcIntersect1(scene, &q.base, &rh);
+    }
+}
+
+SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_unique<Impl>()) {
+    Impl& impl = *m_impl;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        auto inst = ShapeInstance::create(scene.objects[i], i);
+        if (!inst) {
+            impl.skipped.push_back(i);
+            continue;
+        }
+        if (const auto& b = inst->world_bounds()) {
+            impl.bounds = impl.bounds ? impl.bounds->merged(*b) : *b;
+            impl.bounded.push_back(*inst);
+        } else {
+            impl.unbounded.push_back(*inst);
+        }
+    }
+    // Scene magnitude: bounded surfaces, plus where each plane passes nearest the world origin.
+    if (impl.bounds) impl.magnitude = impl.bounds->magnitude();
+    for (const ShapeInstance& inst : impl.unbounded) {
+        // Lines through the origin along x, y and z: the nearest crossing is within sqrt(3) of the plane's distance.
+        double nearest = inf;
+        for (int k = 0; k < 3; ++k) {
+            Vec3 axis;
+            axis[k] = 1.0;
+            for (const SurfaceHit& h : inst.intersect_all(Vec3{}, axis, -inf, inf))
+                nearest = std::fmin(nearest, std::fabs(h.t));
+        }
+        if (std::isfinite(nearest)) impl.magnitude = std::fmax(impl.magnitude, nearest);
+    }
+    if (!std::isfinite(impl.magnitude)) impl.magnitude = 0.0;
+
+    if (impl.bounded.empty()) {
+        impl.building = false;
+        return;
+    }
+    // Pad every box by more than the float ray's rounding (relative ~1e-7 of the scene's coordinates).
+    const double scene_pad = 1e-6 * impl.bounds->magnitude();
+    for (const ShapeInstance& inst : impl.bounded) {
+        const Bounds& b = *inst.world_bounds();
+        const double pad = scene_pad + 1e-6 * max_abs_component(b.upper - b.lower);
+        const Vec3 v{pad, pad, pad};
+        impl.padded_bounds.push_back({b.lower - v, b.upper + v});
+    }
+    const Vec3 v{2 * scene_pad, 2 * scene_pad, 2 * scene_pad};
+    impl.padded_scene_bounds = Bounds{impl.bounds->lower - v, impl.bounds->upper + v};
+
+    impl.device = rtcNewDevice(nullptr);
+    if (!impl.device) throw std::runtime_error("Embree error: cannot create device");
+    rtcSetDeviceErrorFunction(impl.device, on_embree_error, &impl);
+    impl.scene = rtcNewScene(impl.device);
+    impl.check("scene creation");
+    rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
+
+    RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
+    impl.check("geometry creation");
+    rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(impl.bounded.size()));
+    rtcSetGeometryUserData(geom, &impl);
+    rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
+    rtcSetGeometryIntersectFunction(geom, intersect_callback);
+    rtcSetGeometryOccludedFunction(geom, occluded_callback);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(impl.scene, geom);
+    rtcReleaseGeometry(geom);
+    impl.check("geometry setup");
+    rtcCommitScene(impl.scene);
+    impl.check("BVH build");
+    impl.building = false;
+}
+
+SceneGeometry::~SceneGeometry() = default;
+
+std::optional<Hit> SceneGeometry::intersect(const Ray& ray) const {
+    if (!is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
+        std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max))
+        return std::nullopt;
+    QueryContext q;
+    rtcInitIntersectContext(&q.base);
+    q.origin = ray.origin;
+    q.direction = ray.direction;
+    q.t_min = ray.t_min;
+    q.t_best = ray.t_max;
+    q.kind = ray.kind;
+    // Unbounded shapes first: their nearest hit shortens the BVH traversal.
+    for (const ShapeInstance& inst : m_impl->unbounded) {
+        if (!inst.visible_to(ray.kind)) continue;
+        if (const auto hit = inst.nearest(q.origin, q.direction, q.t_min, q.t_best)) {
+            q.t_best = hit->t;
+            q.hit = *hit;
+            q.has_hit = true;
+        }
+    }
+    m_impl->trace(q, false);
+    if (!q.has_hit) return std::nullopt;
+    return q.hit;
+}
+
+bool SceneGeometry::occluded(const Ray& ray) const {
+    if (!is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
+        std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max))
+        return false;
+    for (const ShapeInstance& inst : m_impl->unbounded)
+        if (inst.visible_to(RayKind::Shadow) &&
+            !inst.intersect_all(ray.origin, ray.direction, ray.t_min, ray.t_max).empty())
+            return true;
+    QueryContext q;
+    rtcInitIntersectContext(&q.base);
+    q.origin = ray.origin;
+    q.direction = ray.direction;
+    q.t_min = ray.t_min;
+    q.t_best = ray.t_max;
+    q.kind = RayKind::Shadow;
+    m_impl->trace(q, true);
+    return q.has_hit;
+}
+
+std::optional<Bounds> SceneGeometry::bounds() const { return m_impl->bounds; }
+
+const std::vector<std::uint32_t>& SceneGeometry::skipped_objects() const { return m_impl->skipped; }
+
+double SceneGeometry::self_intersection_offset(const Vec3& p) const {
+    return 1e-9 * std::fmax(max_abs_component(p), 1e-6 * m_impl->magnitude);
+}
+
+double self_intersection_offset(const Vec3& p) {
+    // The floor only keeps the result positive at the origin; SceneGeometry's version knows the scene's size.
+    return 1e-9 * std::fmax(max_abs_component(p), std::numeric_limits<double>::min());
+}
+
+}  // namespace wardray::geometry

@@ -1,0 +1,69 @@
+// SceneGeometry: the scene's shapes as one Embree scene, answering "what does this ray hit" and "is it blocked".
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+#include "parser/vec3.h"
+
+namespace wardray::geometry {
+
+/// What a ray is for, which decides the objects it sees (`no_image`, `no_reflection`, `no_shadow`).
+enum class RayKind : std::uint8_t { Camera, Reflection, Shadow, Gather };
+
+/// A ray in world space; `direction` need not be unit length, t is measured in units of it.
+struct Ray {
+    Vec3 origin;
+    Vec3 direction;
+    double t_min = 0.0;
+    double t_max = 1e30;
+    RayKind kind = RayKind::Camera;
+};
+
+/// The nearest intersection along a ray, computed in double precision.
+struct Hit {
+    double t = 0.0;
+    Vec3 position;        ///< world space
+    Vec3 normal;          ///< unit geometric normal in world space, pointing out of the shape (inverse flips it)
+    std::uint32_t object = 0;  ///< index into parser::Scene::objects
+};
+
+/// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.
+class SceneGeometry {
+public:
+    /// Builds the acceleration structure for every object of `scene` (the scene must outlive this object).
+    explicit SceneGeometry(const parser::Scene& scene);
+    ~SceneGeometry();
+    SceneGeometry(const SceneGeometry&) = delete;
+    SceneGeometry& operator=(const SceneGeometry&) = delete;
+
+    /// The nearest hit with t in (t_min, t_max) among the objects this kind of ray sees, or nothing.
+    std::optional<Hit> intersect(const Ray& ray) const;
+    /// True when some object that casts shadows (not `no_shadow`) blocks the ray in (t_min, t_max).
+    bool occluded(const Ray& ray) const;
+
+    /// World bounds of all bounded surfaces (planes excluded), or nothing when there are none.
+    std::optional<Bounds> bounds() const;
+    /// Indices of the objects left out because they cannot be intersected without NaN (singular transform,
+    /// zero radius, zero plane normal, non-finite numbers); the parser reports them.
+    const std::vector<std::uint32_t>& skipped_objects() const;
+    /// Like the free self_intersection_offset(), with a floor of 1e-6 of the scene's magnitude so that points
+    /// at or near the origin still get an offset that matches the size of the objects around them.
+    double self_intersection_offset(const Vec3& p) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+/// The distance to move a ray's origin off a surface at `p` so that it does not hit that surface again;
+/// it scales with the magnitude of the coordinates, never one fixed epsilon: 1e-9 * max_abs_component(p)
+/// (about 4.5e6 double ulps of the coordinates, room for the rounding of transforms and root refinement).
+/// Offset along the normal, or use it as t_min for a unit direction.
+double self_intersection_offset(const Vec3& p);
+
+}  // namespace wardray::geometry

@@ -1,0 +1,353 @@
+// Tests of SceneGeometry: Embree's nearest hit against a brute-force double loop, ray kinds, shadows, scale invariance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <thread>
+#include <vector>
+
+#include "geometry/instance.h"
+#include "geometry/scene_geometry.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::make_object;
+using test::Random;
+
+// A random scene of spheres and boxes (and optionally planes) with random transforms and flags.
+parser::Scene random_scene(Random& rng, int count, bool planes, bool flags) {
+    parser::Scene scene;
+    for (int i = 0; i < count; ++i) {
+        parser::Object o = make_object(test::random_shape(rng, false), rng.transform(20.0));
+        if (flags) {
+            o.inverse = rng.chance(0.1);
+            o.no_image = rng.chance(0.15);
+            o.no_reflection = rng.chance(0.15);
+            o.no_shadow = rng.chance(0.15);
+            o.no_radiosity = rng.chance(0.15);
+        }
+        scene.objects.push_back(o);
+    }
+    if (planes) {
+        for (int i = 0; i < 3; ++i) {
+            parser::Object o = make_object(parser::Plane{rng.direction(), rng.uniform(25.0, 40.0)}, rng.transform(3.0));
+            o.inverse = flags && rng.chance(0.3);
+            o.no_shadow = flags && rng.chance(0.3);
+            o.no_image = flags && rng.chance(0.3);
+            scene.objects.push_back(o);
+        }
+    }
+    return scene;
+}
+
+// The nearest hit over all objects by a plain loop over their double-precision intersections.
+std::optional<Hit> brute_force(const parser::Scene& scene, const Ray& ray) {
+    std::optional<Hit> best;
+    for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
+        const auto inst = ShapeInstance::create(scene.objects[i], i);
+        if (!inst || !inst->visible_to(ray.kind)) continue;
+        const auto hit = inst->nearest(ray.origin, ray.direction, ray.t_min, best ? best->t : ray.t_max);
+        if (hit) best = hit;
+    }
+    return best;
+}
+
+Ray random_ray(Random& rng, double range = 30.0) {
+    Ray ray;
+    ray.origin = rng.vec(-range, range);
+    // Half the rays aim at the middle of the scene, the rest go anywhere.
+    ray.direction = rng.chance(0.5) ? normalize(rng.vec(-10, 10) - ray.origin) : rng.direction();
+    ray.direction *= rng.uniform(0.2, 5.0);
+    ray.kind = static_cast<RayKind>(rng.integer(0, 3));
+    if (rng.chance(0.3)) ray.t_max = rng.uniform(1.0, 40.0);
+    return ray;
+}
+
+void expect_same_hit(const std::optional<Hit>& got, const std::optional<Hit>& want, const char* what) {
+    ASSERT_EQ(got.has_value(), want.has_value()) << what;
+    if (!got) return;
+    EXPECT_EQ(got->object, want->object) << what << " t " << got->t << " vs " << want->t;
+    EXPECT_NEAR(got->t, want->t, 1e-12 * std::fabs(want->t)) << what;
+    EXPECT_NEAR(length(got->normal), 1.0, 1e-12);
+    EXPECT_TRUE(is_finite(got->position));
+}
+
+TEST(SceneGeometry, NearestHitMatchesBruteForce) {
+    Random rng(42);
+    const parser::Scene scene = random_scene(rng, 300, true, true);
+    const SceneGeometry geometry(scene);
+    EXPECT_TRUE(geometry.skipped_objects().empty());
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const Ray ray = random_ray(rng);
+        const auto got = geometry.intersect(ray);
+        expect_same_hit(got, brute_force(scene, ray), "random ray");
+        hits += got.has_value();
+        if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(hits, 10000);
+}
+
+// A camera far away compared with the objects: Embree's float ray must not lose silhouette hits.
+TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
+    Random rng(17);
+    parser::Scene scene;
+    for (int i = 0; i < 50; ++i) {
+        // Half are axis-aligned boxes, whose faces coincide with their bounds: the worst case for a float ray.
+        if (i % 2 == 0) {
+            const Vec3 lo = rng.vec(-3.0, 3.0);
+            scene.objects.push_back(make_object(parser::Box{lo, lo + rng.vec(0.1, 2.0)}));
+        } else {
+            scene.objects.push_back(make_object(test::random_shape(rng, false), rng.transform(3.0)));
+        }
+    }
+    const SceneGeometry g(scene);
+    int hits = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Ray ray;
+        ray.origin = rng.direction() * std::pow(10.0, rng.uniform(3.0, 7.0));
+        // Aim at points of object surfaces so that many rays graze silhouettes.
+        const auto& obj = scene.objects[rng.integer(0, 49)];
+        Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
+        if (const auto* box = std::get_if<parser::Box>(&obj.shape)) {
+            // A point on an edge of the box, nudged by up to 1e-6 either way.
+            for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
+            const int along = rng.integer(0, 2);
+            toward[along] = rng.uniform(box->corner1[along], box->corner2[along]);
+            toward += rng.vec(-1e-6, 1e-6);
+        }
+        ray.direction = normalize(toward - ray.origin);
+        const auto got = g.intersect(ray);
+        expect_same_hit(got, brute_force(scene, ray), "distant ray");
+        hits += got.has_value();
+        if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(hits, 5000);
+}
+
+TEST(SceneGeometry, OnlyBoundedObjectsAndOnlyPlanes) {
+    Random rng(8);
+    const parser::Scene bounded = random_scene(rng, 50, false, false);
+    parser::Scene planes;
+    planes.objects.push_back(make_object(parser::Plane{{0, 1, 0}, -1.0}));
+    planes.objects.push_back(make_object(parser::Plane{{0, 0, -1}, -20.0}));
+    const SceneGeometry g_bounded(bounded);
+    const SceneGeometry g_planes(planes);
+    EXPECT_TRUE(g_bounded.bounds().has_value());
+    EXPECT_FALSE(g_planes.bounds().has_value());
+    for (int i = 0; i < 2000; ++i) {
+        const Ray ray = random_ray(rng);
+        expect_same_hit(g_bounded.intersect(ray), brute_force(bounded, ray), "bounded");
+        expect_same_hit(g_planes.intersect(ray), brute_force(planes, ray), "planes");
+    }
+    const SceneGeometry empty(parser::Scene{});
+    EXPECT_FALSE(empty.intersect(Ray{{0, 0, 0}, {0, 0, 1}}));
+    EXPECT_FALSE(empty.occluded(Ray{{0, 0, 0}, {0, 0, 1}}));
+}
+
+TEST(SceneGeometry, OccludedAgreesWithIntersect) {
+    Random rng(43);
+    const parser::Scene scene = random_scene(rng, 200, true, true);
+    const SceneGeometry geometry(scene);
+    int blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Ray ray = random_ray(rng);
+        ray.kind = RayKind::Shadow;
+        const bool occ = geometry.occluded(ray);
+        ASSERT_EQ(occ, geometry.intersect(ray).has_value()) << "ray " << i;
+        ASSERT_EQ(occ, brute_force(scene, ray).has_value()) << "ray " << i;
+        blocked += occ;
+    }
+    EXPECT_GT(blocked, 2000);
+    EXPECT_LT(blocked, 19000);
+}
+
+TEST(SceneGeometry, RayKindsSkipFlaggedObjects) {
+    parser::Scene scene;
+    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}));
+    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 10}, 1.0}));
+    scene.objects.push_back(make_object(parser::Plane{{0, 0, -1}, -20.0}));
+    scene.objects[0].no_image = true;
+    scene.objects[1].no_reflection = true;
+    scene.objects[1].no_shadow = true;
+    scene.objects[2].no_radiosity = true;
+    const SceneGeometry g(scene);
+    const auto hit_of = [&](RayKind kind) {
+        const auto h = g.intersect(Ray{{0, 0, 0}, {0, 0, 1}, 0.0, 1e30, kind});
+        return h ? static_cast<int>(h->object) : -1;
+    };
+    EXPECT_EQ(hit_of(RayKind::Camera), 1);       // no_image sphere skipped
+    EXPECT_EQ(hit_of(RayKind::Reflection), 0);
+    EXPECT_EQ(hit_of(RayKind::Shadow), 0);
+    EXPECT_EQ(hit_of(RayKind::Gather), 0);
+    // Shadow rays: the no_image sphere still casts a shadow, the no_shadow one does not.
+    EXPECT_TRUE(g.occluded(Ray{{0, 0, 0}, {0, 0, 1}, 0.0, 7.0, RayKind::Shadow}));
+    EXPECT_FALSE(g.occluded(Ray{{0, 0, 7}, {0, 0, 1}, 0.0, 12.0, RayKind::Shadow}));
+    EXPECT_TRUE(g.occluded(Ray{{0, 0, 7}, {0, 0, 1}, 0.0, 14.0, RayKind::Shadow}));  // the plane at z = 20
+    // Gather rays skip the no_radiosity plane.
+    EXPECT_FALSE(g.intersect(Ray{{0, 0, 12}, {0, 0, 1}, 0.0, 1e30, RayKind::Gather}));
+    EXPECT_TRUE(g.intersect(Ray{{0, 0, 12}, {0, 0, 1}, 0.0, 1e30, RayKind::Camera}));
+}
+
+TEST(SceneGeometry, TRangeIsOpen) {
+    parser::Scene scene;
+    scene.objects.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
+    const SceneGeometry g(scene);
+    // Hits at exactly t_min (the entry at t = 2) or t_max (the exit at t = 4) are excluded.
+    const auto h = g.intersect(Ray{{0, 0, -3}, {0, 0, 1}, 2.0, 5.0});
+    ASSERT_TRUE(h);
+    EXPECT_DOUBLE_EQ(h->t, 4.0);
+    EXPECT_FALSE(g.intersect(Ray{{0, 0, -3}, {0, 0, 1}, 0.0, 2.0}));
+    EXPECT_FALSE(g.occluded(Ray{{0, 0, -3}, {0, 0, 1}, 0.0, 2.0}));
+    EXPECT_FALSE(g.intersect(Ray{{0, 0, -3}, {0, 0, 1}, 2.0, 4.0}));
+    // A negative t_min reaches behind the origin.
+    const auto behind = g.intersect(Ray{{0, 0, 3}, {0, 0, 1}, -10.0, 0.0});
+    ASSERT_TRUE(behind);
+    EXPECT_DOUBLE_EQ(behind->t, -4.0);
+}
+
+// The same scene and rays scaled by s give the same t (rays keep their direction vectors scaled by s too).
+TEST(SceneGeometry, ScaleInvariance) {
+    Random rng(11);
+    const parser::Scene base = random_scene(rng, 100, true, false);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 3000; ++i) rays.push_back(random_ray(rng));
+    const SceneGeometry g1(base);
+    for (double s : {1e-6, 1e6}) {
+        parser::Scene scaled = base;
+        for (auto& o : scaled.objects) o.transform = o.transform.then(Transform::scaling({s, s, s}));
+        const SceneGeometry gs(scaled);
+        int compared = 0;
+        for (const Ray& r : rays) {
+            Ray rs = r;
+            rs.origin = r.origin * s;
+            rs.direction = r.direction * s;
+            const auto a = g1.intersect(r);
+            const auto b = gs.intersect(rs);
+            ASSERT_EQ(a.has_value(), b.has_value()) << "scale " << s;
+            if (!a) continue;
+            ++compared;
+            EXPECT_EQ(a->object, b->object);
+            EXPECT_NEAR(a->t, b->t, 1e-9 * std::fabs(a->t)) << "scale " << s;
+            EXPECT_NEAR(dot(a->normal, b->normal), 1.0, 1e-9);
+            EXPECT_NEAR(length(b->position - a->position * s), 0.0, 1e-9 * s * (1.0 + max_abs_component(a->position)));
+            EXPECT_NEAR(gs.self_intersection_offset(b->position), s * g1.self_intersection_offset(a->position),
+                        1e-6 * s * g1.self_intersection_offset(a->position));
+            EXPECT_EQ(gs.occluded(rs), g1.occluded(r));
+        }
+        EXPECT_GT(compared, 1000);
+    }
+}
+
+// A ray leaving a surface from its hit point, offset by self_intersection_offset, never hits that surface at once.
+TEST(SceneGeometry, OffsetAvoidsSelfIntersection) {
+    for (double s : {1e-6, 1.0, 1e6}) {
+        Random rng(21);
+        parser::Scene scene = random_scene(rng, 60, true, false);
+        for (auto& o : scene.objects) o.transform = o.transform.then(Transform::scaling({s, s, s}));
+        const SceneGeometry g(scene);
+        int tested = 0;
+        for (int i = 0; i < 5000; ++i) {
+            Ray ray = random_ray(rng);
+            ray.origin *= s;
+            ray.direction *= s;
+            const auto hit = g.intersect(ray);
+            if (!hit) continue;
+            const Vec3 d = normalize(ray.direction);
+            // Reflected and transmitted continuations, each offset to the side it travels into.
+            const Vec3 n_facing = dot(d, hit->normal) < 0.0 ? hit->normal : -hit->normal;
+            const double off = g.self_intersection_offset(hit->position);
+            const Vec3 reflected = d - 2.0 * dot(d, n_facing) * n_facing;
+            const auto r = g.intersect(Ray{hit->position + off * n_facing, reflected, 0.0, 1e30, ray.kind});
+            if (r && r->object == hit->object) {
+                EXPECT_GT(r->t, 1e-4 * s) << "scale " << s;
+            }
+            const auto tr = g.intersect(Ray{hit->position - off * n_facing, d, 0.0, 1e30, ray.kind});
+            if (tr && tr->object == hit->object) {
+                EXPECT_GT(tr->t, 1e-4 * s) << "scale " << s;
+            }
+            ++tested;
+        }
+        EXPECT_GT(tested, 1000);
+    }
+    EXPECT_GT(self_intersection_offset({0, 0, 0}), 0.0);
+    EXPECT_DOUBLE_EQ(self_intersection_offset({1e6, -2e6, 0}), 2e-3);
+}
+
+TEST(SceneGeometry, DegenerateObjectsSkipped) {
+    parser::Scene scene;
+    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}, Transform::scaling({0, 1, 1})));
+    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 10}, 1.0}));
+    scene.objects.push_back(make_object(parser::Plane{{0, 0, 0}, 1.0}));
+    const SceneGeometry g(scene);
+    ASSERT_EQ(g.skipped_objects().size(), 2u);
+    EXPECT_EQ(g.skipped_objects()[0], 0u);
+    EXPECT_EQ(g.skipped_objects()[1], 2u);
+    const auto h = g.intersect(Ray{{0, 0, 0}, {0, 0, 1}});
+    ASSERT_TRUE(h);
+    EXPECT_EQ(h->object, 1u);
+    EXPECT_DOUBLE_EQ(h->t, 9.0);
+}
+
+TEST(SceneGeometry, BadRaysGiveNothing) {
+    parser::Scene scene;
+    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}));
+    const SceneGeometry g(scene);
+    EXPECT_FALSE(g.intersect(Ray{{0, 0, 0}, {0, 0, 0}}));
+    EXPECT_FALSE(g.intersect(Ray{{NAN, 0, 0}, {0, 0, 1}}));
+    EXPECT_FALSE(g.occluded(Ray{{0, 0, 0}, {0, INFINITY, 1}}));
+    // Coordinates beyond float range still work (brute-force fallback).
+    const auto far = g.intersect(Ray{{0, 0, -1e300}, {0, 0, 1e-300}});
+    EXPECT_TRUE(!far || std::isfinite(far->t));
+}
+
+TEST(SceneGeometry, GrazingRaysGiveNoNaN) {
+    Random rng(31);
+    parser::Scene scene;
+    for (int i = 0; i < 20; ++i) scene.objects.push_back(make_object(parser::Sphere{rng.vec(-10, 10), 1.0}));
+    const SceneGeometry g(scene);
+    for (int i = 0; i < 5000; ++i) {
+        const auto& s = std::get<parser::Sphere>(scene.objects[rng.integer(0, 19)].shape);
+        const Vec3 n = rng.direction();
+        const Vec3 t = normalize(cross(n, rng.direction()));
+        const Vec3 p = s.center + n * (1.0 + rng.uniform(-1e-13, 1e-13));
+        const auto hit = g.intersect(Ray{p - 30.0 * t, t});
+        if (hit) {
+            EXPECT_TRUE(std::isfinite(hit->t));
+            EXPECT_TRUE(is_finite(hit->normal));
+            EXPECT_NEAR(length(hit->normal), 1.0, 1e-12);
+        }
+    }
+}
+
+TEST(SceneGeometry, ConcurrentQueriesMatchSerial) {
+    Random rng(55);
+    const parser::Scene scene = random_scene(rng, 200, true, true);
+    const SceneGeometry g(scene);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 8000; ++i) rays.push_back(random_ray(rng));
+    std::vector<std::optional<Hit>> serial;
+    std::vector<char> serial_occ;
+    for (const Ray& r : rays) {
+        serial.push_back(g.intersect(r));
+        serial_occ.push_back(g.occluded(r));
+    }
+    std::vector<int> mismatches(4, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t) {
+        threads.emplace_back([&, t] {
+            for (std::size_t i = t; i < rays.size(); i += 4) {
+                const auto h = g.intersect(rays[i]);
+                if (h.has_value() != serial[i].has_value() || (h && (h->t != serial[i]->t)) ||
+                    g.occluded(rays[i]) != static_cast<bool>(serial_occ[i]))
+                    ++mismatches[t];
+            }
+        });
+    }
+    for (auto& th : threads) th.join();
+    for (int m : mismatches) EXPECT_EQ(m, 0);
+}
+
+}  // namespace
+}  // namespace wardray::geometry

@@ -1,0 +1,229 @@
+// Tests of the primitive shapes through ShapeInstance: hits on the surface, outward unit normals, POV-Ray semantics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/instance.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::make_object;
+using test::Random;
+
+// Size of an object for relative tolerances: its bounds' magnitude, or 10 for planes.
+double object_scale(const ShapeInstance& inst) {
+    if (const auto& b = inst.world_bounds()) return std::fmax(b->magnitude(), max_abs_component(b->upper - b->lower));
+    return 10.0;
+}
+
+// Checks every crossing of random rays against one random object: on the surface, unit outward normal,
+// entering flags that match the normal and the inside test.
+void check_random_hits(bool inverse, int shape_kind_seed) {
+    Random rng(1234 + shape_kind_seed + (inverse ? 1000 : 0));
+    int checked = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        parser::Object obj = make_object(test::random_shape(rng, true), rng.transform());
+        obj.inverse = inverse;
+        const auto inst = ShapeInstance::create(obj, 7);
+        ASSERT_TRUE(inst.has_value());
+        const double scale = object_scale(*inst);
+        // Aim at a point near the object's centre from a random place around it.
+        const Vec3 target = obj.transform.point(rng.vec(-1.0, 1.0));
+        const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
+        const Vec3 dir = (target - origin) * rng.uniform(0.1, 10.0);
+        const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            const SurfaceHit& h = hits[i];
+            const Vec3 p = origin + h.t * dir;
+            ASSERT_TRUE(std::isfinite(h.t));
+            ASSERT_NEAR(length(h.normal), 1.0, 1e-12);
+            // On the surface: the object-space implicit function vanishes relative to the object's scale.
+            EXPECT_NEAR(inst->object_implicit(p), 0.0, 1e-10 * scale);
+            // Outward (after inverse): a small step along the normal is outside, against it inside.
+            const double eps = 1e-6 * scale;
+            EXPECT_FALSE(inst->inside(p + eps * h.normal)) << "trial " << trial;
+            EXPECT_TRUE(inst->inside(p - eps * h.normal)) << "trial " << trial;
+            EXPECT_EQ(h.entering, dot(h.normal, dir) < 0.0);
+            if (i > 0) {
+                EXPECT_GE(h.t, hits[i - 1].t);
+            }
+            ++checked;
+        }
+        // The nearest hit agrees with the first crossing.
+        const auto nearest = inst->nearest(origin, dir, 0.0, 1e30);
+        ASSERT_EQ(nearest.has_value(), !hits.empty());
+        if (nearest) {
+            EXPECT_EQ(nearest->t, hits[0].t);
+            EXPECT_EQ(nearest->object, 7u);
+        }
+    }
+    EXPECT_GT(checked, 150);
+}
+
+TEST(Shapes, RandomRaysHitSurfaceWithOutwardUnitNormals) {
+    for (int seed = 0; seed < 3; ++seed) check_random_hits(false, seed);
+}
+
+TEST(Shapes, InverseFlipsNormalsAndInside) {
+    for (int seed = 0; seed < 3; ++seed) check_random_hits(true, seed);
+}
+
+TEST(Shapes, InverseSphereNormalPointsTowardCentre) {
+    parser::Object obj = make_object(parser::Sphere{{0, 0, 0}, 2.0});
+    obj.inverse = true;
+    const auto inst = ShapeInstance::create(obj, 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({0, 0, -10}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_DOUBLE_EQ(hit->t, 8.0);
+    EXPECT_DOUBLE_EQ(hit->normal.z, 1.0);
+    EXPECT_FALSE(inst->inside({0, 0, 0}));
+    EXPECT_TRUE(inst->inside({0, 0, 5}));
+}
+
+TEST(Shapes, PlaneDistanceIsAlongUnitNormal) {
+    // POV-Ray compat (checked with povray 3.7): plane { <0,2,0>, 1 } is the plane y = 1, inside below.
+    const auto inst = ShapeInstance::create(make_object(parser::Plane{{0, 2, 0}, 1.0}), 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({3, 5, -2}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_DOUBLE_EQ(hit->position.y, 1.0);
+    EXPECT_DOUBLE_EQ(hit->normal.y, 1.0);
+    EXPECT_TRUE(inst->inside({0, 0.9, 0}));
+    EXPECT_FALSE(inst->inside({0, 1.1, 0}));
+    // A ray from below crosses going out, a ray in the plane's direction never hits.
+    const auto hits = inst->intersect_all({0, 0, 0}, {0, 1, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_FALSE(hits[0].entering);
+    EXPECT_TRUE(inst->intersect_all({0, 1, 0}, {1, 0, 0}, -1e30, 1e30).empty());
+}
+
+TEST(Shapes, TiltedPlaneSurface) {
+    const auto inst = ShapeInstance::create(make_object(parser::Plane{{1, 1, 0}, 2.0}), 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({0, 0, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->position.x, 2.0 * std::sqrt(2.0), 1e-14);
+    EXPECT_NEAR(hit->normal.x, std::sqrt(0.5), 1e-15);
+}
+
+TEST(Shapes, BoxCornersInAnyOrder) {
+    // POV-Ray compat (checked with povray 3.7): box { <1,-1,1>, <-1,1,-1> } renders as the box from -1 to 1.
+    const auto a = ShapeInstance::create(make_object(parser::Box{{1, -1, 1}, {-1, 1, -1}}), 0);
+    const auto b = ShapeInstance::create(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}), 0);
+    ASSERT_TRUE(a && b);
+    Random rng(5);
+    for (int i = 0; i < 100; ++i) {
+        const Vec3 o = rng.vec(-4, 4);
+        const Vec3 d = rng.direction();
+        const auto ha = a->nearest(o, d, 0.0, 1e30);
+        const auto hb = b->nearest(o, d, 0.0, 1e30);
+        ASSERT_EQ(ha.has_value(), hb.has_value());
+        if (ha) {
+            EXPECT_EQ(ha->t, hb->t);
+            EXPECT_EQ(ha->normal, hb->normal);
+        }
+    }
+}
+
+TEST(Shapes, NegativeRadiusActsLikeItsAbsoluteValue) {
+    // POV-Ray compat (checked with povray 3.7): sphere { 0, -1 } renders like sphere { 0, 1 }.
+    const auto inst = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, -1.0}), 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({0, 0, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_DOUBLE_EQ(hit->t, 4.0);
+    EXPECT_DOUBLE_EQ(hit->normal.z, -1.0);
+}
+
+TEST(Shapes, DegenerateObjectsAreRejected) {
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 1.0}, Transform::scaling({1, 0, 1})), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 0.0}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Plane{{0, 0, 0}, 1.0}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Box{{0, 0, 0}, {1, NAN, 1}}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, INFINITY}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Plane{{0, 1, 0}, 0.0}, Transform::scaling({0, 0, 0})), 0));
+}
+
+TEST(Shapes, SphereStableForDistantOrigins) {
+    // The naive discriminant b^2 - a c loses every digit here; the stable form keeps the hit on the surface.
+    Random rng(77);
+    int hits = 0;
+    for (int i = 0; i < 500; ++i) {
+        const double r = rng.uniform(0.5, 2.0);
+        const auto inst = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, r}), 0);
+        const double dist = std::pow(10.0, rng.uniform(4.0, 9.0));
+        const Vec3 origin = rng.direction() * dist;
+        const Vec3 target = rng.vec(-r, r);
+        const Vec3 dir = normalize(target - origin);
+        const auto hit = inst->nearest(origin, dir, 0.0, 1e30);
+        if (!hit) continue;
+        ++hits;
+        // Rounding of o + t d is about eps * dist; the surface error must not be larger than a few of those.
+        EXPECT_NEAR(length(hit->position) - r, 0.0, 1e-14 * dist + 1e-13) << "dist " << dist;
+        EXPECT_NEAR(dot(hit->normal, normalize(hit->position)), 1.0, 1e-9);
+    }
+    EXPECT_GT(hits, 300);
+}
+
+TEST(Shapes, GrazingRaysNeverGiveNaN) {
+    Random rng(99);
+    const auto sphere = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 1.0}, rng.transform()), 0);
+    const auto box = ShapeInstance::create(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}), 1);
+    const auto flat = ShapeInstance::create(make_object(parser::Box{{-1, 0, -1}, {1, 0, 1}}), 2);
+    ASSERT_TRUE(sphere && box && flat);
+    const auto check = [](const SurfaceHits& hits) {
+        for (const SurfaceHit& h : hits) {
+            EXPECT_TRUE(std::isfinite(h.t));
+            EXPECT_TRUE(is_finite(h.normal));
+        }
+    };
+    for (int i = 0; i < 2000; ++i) {
+        // Tangent to the unit sphere (in object space) up to a relative 1e-12 either way.
+        const Vec3 n = rng.direction();
+        Vec3 tangent = normalize(cross(n, rng.direction()));
+        const Vec3 p_obj = n * (1.0 + rng.uniform(-1e-12, 1e-12));
+        const Vec3 o_obj = p_obj - 3.0 * tangent;
+        check(sphere->intersect_all(sphere->transform().point(o_obj), sphere->transform().vector(tangent), 0.0, 1e30));
+        // Along box faces and edges: origins exactly on a face plane, direction parallel to it.
+        Vec3 o = rng.vec(-2, 2);
+        Vec3 d = rng.direction();
+        const int axis = rng.integer(0, 2);
+        o[axis] = rng.chance(0.5) ? 1.0 : -1.0;
+        d[axis] = 0.0;
+        if (rng.chance(0.3)) {
+            const int other = (axis + 1) % 3;
+            o[other] = 1.0;
+            d[other] = 0.0;
+        }
+        check(box->intersect_all(o, d, -1e30, 1e30));
+        check(flat->intersect_all(o, d, -1e30, 1e30));
+    }
+}
+
+TEST(Shapes, TransformedSphereBoundsAreTight) {
+    Random rng(3);
+    const parser::Object obj = make_object(parser::Sphere{{0.5, 0, 0}, 1.0}, rng.transform());
+    const auto inst = ShapeInstance::create(obj, 0);
+    ASSERT_TRUE(inst && inst->world_bounds());
+    // Every surface point lies in the bounds, and the bounds are touched along each axis.
+    const Bounds& b = *inst->world_bounds();
+    Vec3 lo{1e30, 1e30, 1e30};
+    Vec3 hi{-1e30, -1e30, -1e30};
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3 p = obj.transform.point(Vec3{0.5, 0, 0} + rng.direction());
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_LE(b.lower[k], lo[k]);
+        EXPECT_GE(b.upper[k], hi[k]);
+        EXPECT_NEAR(b.lower[k], lo[k], 0.05);
+        EXPECT_NEAR(b.upper[k], hi[k], 0.05);
+    }
+}
+
+}  // namespace
+}  // namespace wardray::geometry
