@@ -1,0 +1,148 @@
+// Direct lighting against analytic answers: the cosine law, fading, spotlight profile, shadows, ambient rules.
+#include "lighting/direct_lighting.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "geometry/scene_geometry.h"
+
+namespace wardray::lighting {
+namespace {
+
+// A white Lambertian floor (diffuse 1, no ambient) at y = 0.
+parser::Scene floor_scene() {
+    parser::Scene scene;
+    parser::Object floor;
+    floor.shape = parser::Plane{{0, 1, 0}, 0.0};
+    floor.texture.pigment.color = {1, 1, 1};
+    floor.texture.finish.ambient = {0, 0, 0};
+    floor.texture.finish.diffuse = 1.0;
+    scene.objects.push_back(floor);
+    return scene;
+}
+
+parser::Light point_light(const Vec3& p, double intensity = 1.0) {
+    parser::Light l;
+    l.position = p;
+    l.color = {intensity, intensity, intensity};
+    return l;
+}
+
+// Radiance seen looking straight down at floor point (x, 0, z) from height 1.
+double radiance_at(const parser::Scene& scene, double x, double z, GiMode gi = GiMode::Off) {
+    const geometry::SceneGeometry geometry(scene);
+    const Integrator integrator(scene, geometry, {gi});
+    RayCounters counters;
+    geometry::Ray ray{{x, 1.0, z}, {0, -1, 0}};
+    return integrator.trace_camera_ray(ray, counters).y;
+}
+
+TEST(DirectLighting, PointLightFollowsTheCosineLawWithoutInverseSquare) {
+    parser::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({0, 2, 0}));
+    for (double x : {0.0, 0.5, 1.0, 2.0, 5.0}) {
+        const double cos_theta = 2.0 / std::sqrt(4.0 + x * x);
+        EXPECT_NEAR(radiance_at(scene, x, 0.0), cos_theta, 1e-9) << x;
+    }
+}
+
+TEST(DirectLighting, BrillianceRaisesTheCosine) {
+    parser::Scene scene = floor_scene();
+    scene.objects[0].texture.finish.brilliance = 3.0;
+    scene.lights.push_back(point_light({0, 2, 0}));
+    const double cos_theta = 2.0 / std::sqrt(4.0 + 1.0);
+    EXPECT_NEAR(radiance_at(scene, 1.0, 0.0), std::pow(cos_theta, 3.0), 1e-9);
+}
+
+TEST(DirectLighting, FadeIsTwoOverOnePlusDistanceRatioToThePower) {
+    parser::Scene scene = floor_scene();
+    parser::Light l = point_light({0, 3, 0});
+    l.fade_distance = 1.5;
+    l.fade_power = 2.0;
+    scene.lights.push_back(l);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 2.0 / (1.0 + 4.0), 1e-9);
+}
+
+TEST(DirectLighting, SpotlightIsFullInsideRadiusDarkOutsideFalloffSmoothBetween) {
+    parser::Scene scene = floor_scene();
+    parser::Light l = point_light({0, 1, 0});
+    l.type = parser::Light::Type::Spot;
+    l.point_at = {0, 0, 0};
+    l.radius = 20;
+    l.falloff = 40;
+    scene.lights.push_back(l);
+    auto angle_x = [](double deg) { return std::tan(deg * std::numbers::pi / 180.0); };
+    const double cos10 = std::cos(10 * std::numbers::pi / 180);
+    EXPECT_NEAR(radiance_at(scene, angle_x(10), 0.0), cos10, 1e-9);
+    EXPECT_EQ(radiance_at(scene, angle_x(45), 0.0), 0.0);
+    const double cos30 = std::cos(30 * std::numbers::pi / 180);
+    const double lo = std::cos(40 * std::numbers::pi / 180), hi = std::cos(20 * std::numbers::pi / 180);
+    const double t = (cos30 - lo) / (hi - lo);
+    EXPECT_NEAR(radiance_at(scene, angle_x(30), 0.0), cos30 * t * t * (3 - 2 * t), 1e-9);
+}
+
+TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
+    parser::Scene scene = floor_scene();
+    parser::Light l = point_light({0, 10, -10});
+    l.type = parser::Light::Type::Parallel;
+    l.point_at = {0, 0, 0};
+    scene.lights.push_back(l);
+    const double expected = std::cos(std::numbers::pi / 4);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), expected, 1e-9);
+    EXPECT_NEAR(radiance_at(scene, 7.0, 3.0), expected, 1e-9);
+}
+
+TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
+    parser::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({0, 4, 0}));
+    parser::Object blocker;
+    blocker.shape = parser::Sphere{{0, 2, 0}, 0.5};
+    scene.objects.push_back(blocker);
+    EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
+    EXPECT_NEAR(radiance_at(scene, 3.0, 0.0), 4.0 / 5.0, 1e-9);  // outside the shadow
+    scene.objects[1].no_shadow = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+    scene.objects[1].no_shadow = false;
+    scene.lights[0].shadowless = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+}
+
+TEST(DirectLighting, LightBelowTheFloorContributesNothing) {
+    parser::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({0, -2, 0}));
+    EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
+}
+
+TEST(DirectLighting, AmbientIsLightUnlessRadiosityInA37Scene) {
+    parser::Scene scene = floor_scene();
+    scene.objects[0].texture.finish.ambient = {0.2, 0.2, 0.2};
+    scene.global.ambient_light = {0.5, 0.5, 0.5};
+    EXPECT_NEAR(radiance_at(scene, 0, 0), 0.1, 1e-12);
+    scene.global.radiosity = parser::RadiositySettings{};
+    EXPECT_EQ(radiance_at(scene, 0, 0, GiMode::Off), 0.0);  // POV-Ray 3.7: ambient is not light under radiosity
+    scene.version = 3.6;
+    EXPECT_NEAR(radiance_at(scene, 0, 0, GiMode::Off), 0.1, 1e-12);
+}
+
+TEST(DirectLighting, EmissionAddsPigmentTimesEmission) {
+    parser::Scene scene = floor_scene();
+    scene.objects[0].texture.pigment.color = {0.5, 0.5, 0.5};
+    scene.objects[0].texture.finish.emission = {0.4, 0.4, 0.4};
+    EXPECT_NEAR(radiance_at(scene, 0, 0), 0.2, 1e-12);
+}
+
+TEST(DirectLighting, MissIsBackground) {
+    parser::Scene scene;
+    scene.background = {0.1, 0.2, 0.3};
+    const geometry::SceneGeometry geometry(scene);
+    const Integrator integrator(scene, geometry, {});
+    RayCounters counters;
+    const Vec3 c = integrator.trace_camera_ray({{0, 0, 0}, {0, 0, 1}}, counters);
+    EXPECT_EQ(c, (Vec3{0.1, 0.2, 0.3}));
+    EXPECT_EQ(counters.camera, 1u);
+}
+
+}  // namespace
+}  // namespace wardray::lighting
