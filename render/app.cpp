@@ -1,0 +1,284 @@
+// The wardray command: parse, build, render, write, with POV-Ray's exit conventions and a progress line.
+#include "render/app.h"
+
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "geometry/scene_geometry.h"
+#include "lighting/direct_lighting.h"
+#include "parser/parse.h"
+#include "render/options.h"
+#include "render/renderer.h"
+
+#ifndef WARDRAY_SOURCE_DIR
+#define WARDRAY_SOURCE_DIR ""
+#endif
+
+namespace wardray::render {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kPovrayIncludeDir = "/usr/share/povray-3.7/include";
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The bundled default scene: beside the executable's build folder, else in the source tree it was built from.
+std::optional<fs::path> find_default_scene(const std::string& argv0) {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) exe = fs::absolute(argv0, ec);
+    const std::vector<fs::path> candidates = {exe.parent_path() / "scenes" / "default.pov",
+                                              exe.parent_path().parent_path() / "scenes" / "default.pov",
+                                              fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "default.pov"};
+    for (const fs::path& p : candidates)
+        if (fs::is_regular_file(p, ec)) return p;
+    return std::nullopt;
+}
+
+const char* gi_name(lighting::GiMode mode) {
+    switch (mode) {
+        case lighting::GiMode::Off: return "off";
+        case lighting::GiMode::Cache: return "cache";
+        case lighting::GiMode::Reference: return "reference";
+    }
+    return "off";
+}
+
+const char* shape_name(const parser::Shape& shape) {
+    static constexpr const char* names[] = {"sphere", "box", "plane"};
+    static_assert(std::variant_size_v<parser::Shape> == std::size(names));
+    return names[shape.index()];
+}
+
+const char* light_name(parser::Light::Type type) {
+    switch (type) {
+        case parser::Light::Type::Point: return "point";
+        case parser::Light::Type::Spot: return "spotlight";
+        case parser::Light::Type::Parallel: return "parallel";
+        case parser::Light::Type::Cylinder: return "cylinder";
+    }
+    return "point";
+}
+
+std::string vec_text(const Vec3& v) {
+    std::ostringstream s;
+    s << '<' << v.x << ", " << v.y << ", " << v.z << '>';
+    return s.str();
+}
+
+// --check: what the scene holds, in a form a person can read.
+void describe_scene(const parser::Scene& scene, std::ostream& out) {
+    out << "scene: " << scene.path << "\n";
+    out << "version: " << scene.version << "\n";
+    out << "camera: "
+        << (scene.camera.type == parser::Camera::Type::Orthographic ? "orthographic" : "perspective")
+        << " at " << vec_text(scene.camera.location) << " looking along " << vec_text(scene.camera.direction)
+        << "\n";
+    std::map<std::string, int> objects;
+    for (const parser::Object& o : scene.objects) ++objects[shape_name(o.shape)];
+    out << "objects: " << scene.objects.size();
+    for (const auto& [name, n] : objects) out << (name == objects.begin()->first ? " (" : ", ") << name << ' ' << n;
+    out << (objects.empty() ? "" : ")") << "\n";
+    std::map<std::string, int> lights;
+    for (const parser::Light& l : scene.lights) ++lights[light_name(l.type)];
+    out << "lights: " << scene.lights.size();
+    for (const auto& [name, n] : lights) out << (name == lights.begin()->first ? " (" : ", ") << name << ' ' << n;
+    out << (lights.empty() ? "" : ")") << "\n";
+    out << "radiosity: " << (scene.global.radiosity ? "on" : "off") << "\n";
+    out << "warnings: " << scene.warnings.size() << "\n";
+    for (const parser::Diagnostic& w : scene.warnings) out << "  " << w.loc.path << ':' << w.loc.line << ':'
+                                                            << w.loc.column << ": " << w.message << "\n";
+}
+
+// A one-line progress display on a terminal: phase, percent, elapsed, remaining.
+class ProgressLine {
+public:
+    explicit ProgressLine(bool enabled) : m_enabled(enabled) {}
+    void update(const char* phase, double fraction) {
+        if (!m_enabled) return;
+        const auto now = Clock::now();
+        if (fraction < 1.0 && now - m_last < std::chrono::milliseconds(100)) return;
+        m_last = now;
+        const double elapsed = seconds_since(m_start);
+        const double remaining = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+        std::fprintf(stderr, "\r%-8s %5.1f%%  elapsed %6.1fs  remaining %6.1fs", phase, 100.0 * fraction, elapsed,
+                     remaining);
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (m_enabled) std::fprintf(stderr, "\n");
+    }
+
+private:
+    bool m_enabled;
+    Clock::time_point m_start = Clock::now();
+    Clock::time_point m_last{};
+};
+
+}  // namespace
+
+int run(const std::vector<std::string>& args, const std::string& argv0) {
+    const auto start = Clock::now();
+    auto parsed = parse_command_line(args);
+    if (auto* error = std::get_if<UsageError>(&parsed)) {
+        std::cerr << "wardray: " << error->message << "\n" << usage_text();
+        return kExitUsage;
+    }
+    Options options = std::get<Options>(parsed);
+    if (options.show_help) {
+        std::cout << usage_text();
+        return kExitOk;
+    }
+    if (options.show_version) {
+        std::cout << "wardray " << WARDRAY_VERSION << "\n";
+        return kExitOk;
+    }
+
+    if (options.scene.empty()) {
+        const auto scene = find_default_scene(argv0);
+        if (!scene) {
+            std::cerr << "wardray: error: the bundled default scene (scenes/default.pov) was not found\n";
+            return kExitScene;
+        }
+        options.scene = *scene;
+    }
+
+    // The output file: POV-Ray's default is the scene's name with the format's extension, in the current folder.
+    ImageFormat format = options.format.value_or(
+        options.output ? format_from_extension(*options.output).value_or(ImageFormat::Png) : ImageFormat::Png);
+    fs::path output = options.output.value_or(options.scene.stem().string() + extension_of(format));
+    if (output.extension().empty()) output += extension_of(format);
+    std::error_code ec;
+    if (options.write_output && !options.check_only && fs::exists(output, ec) &&
+        fs::equivalent(output, options.scene, ec)) {
+        std::cerr << "wardray: the output '" << output.string() << "' is the scene file itself; choose another\n";
+        return kExitUsage;
+    }
+
+    std::unique_ptr<tbb::global_control> thread_limit;
+    if (options.threads > 0)
+        thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                             static_cast<std::size_t>(options.threads));
+
+    remove_partial_output_on_signal();
+
+    // Parse.
+    parser::ParseOptions parse_options;
+    parse_options.library_paths.push_back(kPovrayIncludeDir);
+    for (const fs::path& p : options.library_paths) parse_options.library_paths.push_back(p);
+    parse_options.declares = options.declares;
+    parse_options.image_width = options.width;
+    parse_options.image_height = options.height;
+    auto phase_start = Clock::now();
+    parser::ParseResult parse = parser::parse_file(options.scene, parse_options);
+    const double parse_seconds = seconds_since(phase_start);
+    for (const parser::Diagnostic& d : parse.diagnostics) std::cerr << parser::format_diagnostic(d);
+    if (!parse.ok()) return kExitScene;
+    const parser::Scene& scene = *parse.scene;
+
+    if (options.check_only) {
+        describe_scene(scene, std::cout);
+        return kExitOk;
+    }
+
+    // Build.
+    phase_start = Clock::now();
+    std::unique_ptr<geometry::SceneGeometry> geometry;
+    try {
+        geometry = std::make_unique<geometry::SceneGeometry>(scene);
+    } catch (const std::exception& e) {
+        std::cerr << "wardray: error: cannot build the scene's geometry: " << e.what() << "\n";
+        return kExitScene;
+    }
+    const double build_seconds = seconds_since(phase_start);
+    for (const std::uint32_t index : geometry->skipped_objects()) {
+        parser::Diagnostic d;
+        d.severity = parser::Severity::Warning;
+        d.loc = scene.objects[index].loc;
+        d.message = std::string(shape_name(scene.objects[index].shape)) +
+                    " is degenerate (zero size, singular transform or non-finite numbers) and is not rendered";
+        std::cerr << parser::format_diagnostic(d);
+    }
+
+    lighting::IntegratorOptions integrator_options;
+    integrator_options.gi =
+        options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
+    const lighting::Integrator integrator(scene, *geometry, integrator_options);
+    for (const std::string& limitation : integrator.limitations())
+        std::cerr << options.scene.string() << ": warning: " << limitation << "\n";
+
+    // Render.
+    ProgressLine progress(isatty(STDERR_FILENO) != 0);
+    phase_start = Clock::now();
+    RenderSettings settings;
+    settings.width = options.width;
+    settings.height = options.height;
+    const RenderResult result =
+        render_image(scene, integrator, settings, [&](double f) { progress.update("render", f); });
+    progress.finish();
+    const double render_seconds = seconds_since(phase_start);
+
+    // Write.
+    phase_start = Clock::now();
+    if (options.write_output) {
+        if (auto error = write_image(result.film, output, format)) {
+            std::cerr << "wardray: error: " << *error << "\n";
+            return kExitScene;
+        }
+    }
+    const double write_seconds = seconds_since(phase_start);
+
+    if (options.stats) {
+        nlohmann::json stats;
+        stats["scene"] = options.scene.string();
+        stats["output"] = options.write_output ? output.string() : "";
+        stats["width"] = options.width;
+        stats["height"] = options.height;
+        stats["threads"] = options.threads > 0 ? options.threads
+                                               : static_cast<int>(std::thread::hardware_concurrency());
+        stats["gi"] = gi_name(integrator_options.gi);
+        stats["radiosity_block"] = scene.global.radiosity.has_value();
+        stats["phases"] = {{"parse", parse_seconds}, {"build", build_seconds}, {"pretrace", 0.0},
+                           {"render", render_seconds}, {"write", write_seconds}};
+        stats["total_seconds"] = seconds_since(start);
+        stats["rays"] = {{"camera", result.rays.camera}, {"shadow", result.rays.shadow}};
+        stats["non_finite_pixels"] = result.non_finite_pixels;
+        stats["cache"] = nullptr;  // the irradiance cache reports here once it exists
+        const fs::path tmp = options.stats->string() + ".part";
+        {
+            std::ofstream f(tmp);
+            f << stats.dump(2) << "\n";
+            if (!f) {
+                std::cerr << "wardray: error: cannot write statistics to '" << options.stats->string() << "'\n";
+                fs::remove(tmp, ec);
+                return kExitScene;
+            }
+        }
+        fs::rename(tmp, *options.stats, ec);
+        if (ec) {
+            std::cerr << "wardray: error: cannot write statistics to '" << options.stats->string()
+                      << "': " << ec.message() << "\n";
+            return kExitScene;
+        }
+    }
+    if (options.verbose)
+        std::cerr << "wardray: wrote " << output.string() << " (" << options.width << "x" << options.height
+                  << ") in " << seconds_since(start) << " s\n";
+    return kExitOk;
+}
+
+}  // namespace wardray::render

@@ -1,0 +1,60 @@
+// Film: the linear RGB image a render produces, and its reading and writing through OpenImageIO.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "parser/vec3.h"
+
+namespace wardray::render {
+
+/// Output file formats, as POV-Ray's +F switch names them.
+enum class ImageFormat {
+    Png,  ///< +FN: 8-bit, sRGB-encoded as POV-Ray 3.7 writes it
+    Exr,  ///< +FE: OpenEXR, linear half float
+    Hdr,  ///< +FH: Radiance RGBE, linear
+};
+
+/// The format an extension names (.png .exr .hdr, case-insensitive), or nothing.
+std::optional<ImageFormat> format_from_extension(const std::filesystem::path& path);
+/// The usual extension of a format, with its dot.
+const char* extension_of(ImageFormat format);
+
+/// A linear RGB image, rows from the top.
+class Film {
+public:
+    Film() = default;
+    Film(int width, int height);
+
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    Vec3 pixel(int x, int y) const;
+    void set_pixel(int x, int y, const Vec3& rgb);
+    /// The samples as float RGB triples, row-major from the top-left pixel.
+    const std::vector<float>& data() const { return m_rgb; }
+
+private:
+    int m_width = 0;
+    int m_height = 0;
+    std::vector<float> m_rgb;
+};
+
+/// Writes `film` to `path` in `format`: first under a temporary name in the same folder, renamed over `path`
+/// only when complete, so a failed write never leaves a partial image. Returns an error message or nothing.
+std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format);
+
+/// Installs SIGINT/SIGTERM/SIGHUP handlers that delete an image file still being written, then exit with
+/// 128 + the signal number, so an interrupted run never leaves a partial file behind.
+void remove_partial_output_on_signal();
+
+/// Reads any image OpenImageIO reads as linear RGB (8-bit sRGB files are decoded to linear).
+/// On failure returns nothing and sets `error`.
+std::optional<Film> read_image(const std::filesystem::path& path, std::string& error);
+
+/// sRGB transfer function, linear to encoded, for one channel in [0, 1].
+double srgb_encode(double linear);
+double srgb_decode(double encoded);
+
+}  // namespace wardray::render

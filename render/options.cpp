@@ -1,0 +1,203 @@
+// Options: POV-Ray's `+X`/`-X` switches, `Key=Value` pairs and wardray's `--long` options.
+#include "render/options.h"
+
+#include <cctype>
+#include <charconv>
+#include <cstdlib>
+
+namespace wardray::render {
+
+namespace {
+
+bool parse_int(const std::string& text, int& out) {
+    if (text.empty()) return false;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end;
+}
+
+bool parse_double(const std::string& text, double& out) {
+    if (text.empty()) return false;
+    char* end = nullptr;
+    out = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size() && std::isfinite(out);
+}
+
+bool starts_with_ci(const std::string& s, const std::string& prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (std::size_t i = 0; i < prefix.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(s[i])) != std::toupper(static_cast<unsigned char>(prefix[i])))
+            return false;
+    return true;
+}
+
+// Image sizes beyond this are refused before any memory is asked for (64k x 64k is 48 GiB of film).
+constexpr int kMaxImageSide = 65536;
+
+// Parses one POV-Ray switch body (after the + or -), e.g. "W320", "WT2", "A0.3", "FN", "Iscene.pov".
+std::optional<UsageError> apply_pov_switch(bool plus, const std::string& body, Options& o) {
+    auto bad = [&](const std::string& why) {
+        return UsageError{"invalid switch '" + std::string(plus ? "+" : "-") + body + "': " + why};
+    };
+    if (body.empty()) return bad("empty switch");
+    if (starts_with_ci(body, "WT")) {
+        int n = 0;
+        if (!parse_int(body.substr(2), n) || n < 1 || n > 1024) return bad("expected a thread count 1..1024");
+        o.threads = n;
+        return std::nullopt;
+    }
+    const char key = static_cast<char>(std::toupper(static_cast<unsigned char>(body[0])));
+    const std::string value = body.substr(1);
+    switch (key) {
+        case 'W':
+        case 'H': {
+            int n = 0;
+            if (!parse_int(value, n) || n < 1 || n > kMaxImageSide)
+                return bad("expected a size in pixels, 1.." + std::to_string(kMaxImageSide));
+            (key == 'W' ? o.width : o.height) = n;
+            return std::nullopt;
+        }
+        case 'I':
+            if (value.empty()) return bad("expected a scene file name");
+            o.scene = value;
+            return std::nullopt;
+        case 'O':
+            if (value.empty()) return bad("expected an output file name");
+            o.output = value;
+            return std::nullopt;
+        case 'L':
+            if (value.empty()) return bad("expected a library folder");
+            o.library_paths.emplace_back(value);
+            return std::nullopt;
+        case 'F':
+            if (!plus && value.empty()) {
+                o.write_output = false;
+                return std::nullopt;
+            }
+            o.write_output = true;
+            if (value.empty()) return std::nullopt;
+            switch (std::toupper(static_cast<unsigned char>(value[0]))) {
+                case 'N': o.format = ImageFormat::Png; break;
+                case 'E': o.format = ImageFormat::Exr; break;
+                case 'H': o.format = ImageFormat::Hdr; break;
+                default: return bad("supported formats are +FN (PNG), +FE (OpenEXR) and +FH (Radiance HDR)");
+            }
+            return std::nullopt;
+        case 'A':
+            o.antialias = plus;
+            if (!value.empty()) {
+                double t = 0.0;
+                if (!parse_double(value, t) || t < 0.0) return bad("expected a non-negative threshold");
+                o.antialias_threshold = t;
+                o.antialias = true;
+            }
+            return std::nullopt;
+        case 'D':  // display: there is no preview window, so both are accepted and ignored
+            if (!value.empty()) return bad("unknown display option");
+            return std::nullopt;
+        case 'V':
+            if (!value.empty()) return bad("unknown verbosity option");
+            o.verbose = plus;
+            return std::nullopt;
+        default:
+            return bad("unknown switch (see --help)");
+    }
+}
+
+// Applies a long option; `next` yields the following argument for options that take one.
+template <typename Next>
+std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, Next&& next) {
+    std::string name = arg;
+    std::optional<std::string> inline_value;
+    if (const auto eq = arg.find('='); eq != std::string::npos) {
+        name = arg.substr(0, eq);
+        inline_value = arg.substr(eq + 1);
+    }
+    auto value = [&]() -> std::optional<std::string> { return inline_value ? inline_value : next(); };
+    if (name == "--help" || name == "-h") {
+        o.show_help = true;
+    } else if (name == "--version") {
+        o.show_version = true;
+    } else if (name == "--check") {
+        o.check_only = true;
+    } else if (name == "--output" || name == "-o") {
+        const auto v = value();
+        if (!v || v->empty()) return UsageError{name + " needs a file name"};
+        o.output = *v;
+    } else if (name == "--threads") {
+        const auto v = value();
+        int n = 0;
+        if (!v || !parse_int(*v, n) || n < 1 || n > 1024) return UsageError{"--threads needs a count 1..1024"};
+        o.threads = n;
+    } else if (name == "--gi") {
+        const auto v = value();
+        if (v == "cache") o.gi = lighting::GiMode::Cache;
+        else if (v == "reference") o.gi = lighting::GiMode::Reference;
+        else if (v == "off") o.gi = lighting::GiMode::Off;
+        else return UsageError{"--gi must be cache, reference or off"};
+    } else if (name == "--stats") {
+        const auto v = value();
+        if (!v || v->empty()) return UsageError{"--stats needs a file name"};
+        o.stats = *v;
+    } else {
+        return UsageError{"unknown option '" + name + "' (see --help)"};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args) {
+    Options o;
+    bool have_scene = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        auto next = [&]() -> std::optional<std::string> {
+            if (i + 1 < args.size()) return args[++i];
+            return std::nullopt;
+        };
+        std::optional<UsageError> error;
+        if (arg.rfind("--", 0) == 0 || arg == "-o" || arg == "-h") {
+            error = apply_long_option(arg, o, next);
+        } else if (starts_with_ci(arg, "Declare=")) {
+            // POV-Ray's Declare=NAME=VALUE defines a float before the scene is read.
+            const std::string rest = arg.substr(8);
+            const auto eq = rest.find('=');
+            double v = 0.0;
+            if (eq == std::string::npos || eq == 0 || !parse_double(rest.substr(eq + 1), v))
+                error = UsageError{"invalid '" + arg + "': expected Declare=NAME=NUMBER"};
+            else
+                o.declares.emplace_back(rest.substr(0, eq), v);
+        } else if (arg.size() >= 2 && (arg[0] == '+' || arg[0] == '-')) {
+            error = apply_pov_switch(arg[0] == '+', arg.substr(1), o);
+            if (!error && (arg[1] == 'I' || arg[1] == 'i')) have_scene = true;
+        } else if (!arg.empty()) {
+            if (have_scene) return UsageError{"more than one scene given ('" + arg + "')"};
+            o.scene = arg;
+            have_scene = true;
+        } else {
+            error = UsageError{"empty argument"};
+        }
+        if (error) return *error;
+    }
+    return o;
+}
+
+std::string usage_text() {
+    return "usage: wardray [scene.pov | +Iscene.pov] [options]\n"
+           "  +Ofile, -o file   output image (default: the scene's name, .png)\n"
+           "  +FN +FE +FH       PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file\n"
+           "  +Wn +Hn           image size (default 320x240)\n"
+           "  +WTn, --threads n worker threads (default: all cores)\n"
+           "  +A[t] -A          antialiasing on with threshold t, or off\n"
+           "  +Lpath            add an #include search folder\n"
+           "  Declare=N=V       define the float N before parsing\n"
+           "  +D -D +V -V       accepted as in POV-Ray\n"
+           "  --check           parse and describe the scene, render nothing\n"
+           "  --gi=cache|reference|off  how indirect light is computed\n"
+           "  --stats file.json write timings and ray counts\n"
+           "  --help, --version\n"
+           "With no scene, renders the bundled default scene.\n";
+}
+
+}  // namespace wardray::render

@@ -1,0 +1,48 @@
+// Options: the command line, in POV-Ray's switch syntax plus wardray's long options.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "lighting/direct_lighting.h"
+#include "render/film.h"
+
+namespace wardray::render {
+
+/// Everything the command line can set. Defaults are POV-Ray's.
+struct Options {
+    std::filesystem::path scene;                    ///< empty: the bundled default scene
+    std::optional<std::filesystem::path> output;    ///< empty: the scene's name with the format's extension
+    std::optional<ImageFormat> format;              ///< from +F; otherwise from the output's extension
+    bool write_output = true;                       ///< -F turns file output off, as in POV-Ray
+    int width = 320;
+    int height = 240;
+    int threads = 0;                                ///< 0: all cores
+    bool antialias = false;
+    double antialias_threshold = 0.3;
+    std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
+    std::vector<std::pair<std::string, double>> declares;
+    std::vector<std::filesystem::path> library_paths;
+    std::optional<std::filesystem::path> stats;
+    bool check_only = false;
+    bool verbose = false;
+    bool show_help = false;
+    bool show_version = false;
+};
+
+/// What went wrong with the command line: a message for stderr; the caller exits with status 2.
+struct UsageError {
+    std::string message;
+};
+
+/// Parses argv[1..]; the result is either options or a usage error.
+std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args);
+
+/// The short usage text printed with a usage error and by --help.
+std::string usage_text();
+
+}  // namespace wardray::render

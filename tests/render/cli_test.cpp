@@ -1,0 +1,166 @@
+// Tests of the wardray command as a user runs it: switches, exit statuses, output files, --check, --stats.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "process.h"
+
+namespace wardray::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh, empty folder for one test.
+fs::path work_dir(const std::string& name) {
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "cli" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+ProcessResult wardray(const std::string& args, const fs::path& dir) {
+    return run_command(shell_quote(WARDRAY_BINARY) + " " + args, dir.string());
+}
+
+void write_file(const fs::path& p, const std::string& text) {
+    std::ofstream(p) << text;
+}
+
+std::string read_file(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+std::size_t file_count(const fs::path& dir) {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
+    return n;
+}
+
+const char* kSmallScene = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 1, -4> look_at <0, 0.5, 0> }
+light_source { <3, 5, -4> color rgb 1 }
+plane { y, 0 pigment { rgb 0.8 } }
+sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.3, 0.2> } finish { phong 0.5 } }
+#if (Extra)
+  box { <1, 0, -0.5>, <2, 1, 0.5> pigment { rgb <0.2, 0.5, 1> } }
+#end
+)";
+
+TEST(Cli, HelpAndVersionExitZero) {
+    const fs::path dir = work_dir("help");
+    const auto help = wardray("--help", dir);
+    EXPECT_EQ(help.exit_status, 0);
+    EXPECT_NE(help.output.find("usage: wardray"), std::string::npos);
+    const auto version = wardray("--version", dir);
+    EXPECT_EQ(version.exit_status, 0);
+    EXPECT_NE(version.output.find("wardray "), std::string::npos);
+}
+
+TEST(Cli, BadSwitchesExitTwoWithUsage) {
+    const fs::path dir = work_dir("bad_switch");
+    for (const char* args : {"+Q9", "--frobnicate", "+W0", "--gi=fast", "+FT", "--threads"}) {
+        const auto r = wardray(args, dir);
+        EXPECT_EQ(r.exit_status, 2) << args << "\n" << r.output;
+        EXPECT_NE(r.output.find("usage: wardray"), std::string::npos) << args;
+    }
+    EXPECT_EQ(file_count(dir), 0u);
+}
+
+TEST(Cli, MissingSceneExitsOneWithAClearMessageAndWritesNothing) {
+    const fs::path dir = work_dir("missing");
+    const auto r = wardray("nosuch.pov", dir);
+    EXPECT_EQ(r.exit_status, 1) << r.output;
+    EXPECT_NE(r.output.find("nosuch.pov"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+    EXPECT_EQ(file_count(dir), 0u);
+}
+
+TEST(Cli, SceneErrorReportsLocationAndKeepsTheOldImage) {
+    const fs::path dir = work_dir("scene_error");
+    write_file(dir / "broken.pov", "camera { location <0,0,-3> }\nsphere { <0,0,0>, 1 pigment { color Gren } }\n");
+    write_file(dir / "broken.png", "previous image");
+    const auto r = wardray("broken.pov", dir);
+    EXPECT_EQ(r.exit_status, 1) << r.output;
+    EXPECT_NE(r.output.find("broken.pov:2:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
+    EXPECT_EQ(read_file(dir / "broken.png"), "previous image");
+    EXPECT_EQ(file_count(dir), 2u);
+}
+
+TEST(Cli, NoSceneRendersTheBundledDefault) {
+    const fs::path dir = work_dir("default");
+    const auto r = wardray("+W64 +H48", dir);
+    EXPECT_EQ(r.exit_status, 0) << r.output;
+    EXPECT_TRUE(fs::is_regular_file(dir / "default.png")) << r.output;
+}
+
+TEST(Cli, OutputNameFollowsPovRay) {
+    const fs::path dir = work_dir("names");
+    write_file(dir / "small.pov", kSmallScene);
+    EXPECT_EQ(wardray("small.pov +W32 +H24 Declare=Extra=0", dir).exit_status, 0);
+    EXPECT_TRUE(fs::is_regular_file(dir / "small.png"));
+    EXPECT_EQ(wardray("+Ismall.pov +W32 +H24 +FH Declare=Extra=0", dir).exit_status, 0);
+    EXPECT_TRUE(fs::is_regular_file(dir / "small.hdr"));
+    EXPECT_EQ(wardray("small.pov +W32 +H24 +FE +Ofinal Declare=Extra=0", dir).exit_status, 0);
+    EXPECT_TRUE(fs::is_regular_file(dir / "final.exr"));
+    EXPECT_EQ(wardray("small.pov +W32 +H24 -o other.hdr Declare=Extra=0", dir).exit_status, 0);
+    EXPECT_TRUE(fs::is_regular_file(dir / "other.hdr"));
+    EXPECT_EQ(wardray("small.pov +W32 +H24 -F Declare=Extra=0", dir).exit_status, 0);
+    EXPECT_EQ(file_count(dir), 5u);  // the scene and four images, no temporaries
+}
+
+TEST(Cli, NeverOverwritesTheScene) {
+    const fs::path dir = work_dir("overwrite");
+    write_file(dir / "s.pov", kSmallScene);
+    const auto r = wardray("s.pov +Os.pov Declare=Extra=0", dir);
+    EXPECT_EQ(r.exit_status, 2) << r.output;
+    EXPECT_EQ(read_file(dir / "s.pov"), kSmallScene);
+}
+
+TEST(Cli, CheckDescribesTheSceneAndDeclareReachesIt) {
+    const fs::path dir = work_dir("check");
+    write_file(dir / "small.pov", kSmallScene);
+    const auto without = wardray("small.pov --check Declare=Extra=0", dir);
+    ASSERT_EQ(without.exit_status, 0) << without.output;
+    EXPECT_NE(without.output.find("objects: 2 (plane 1, sphere 1)"), std::string::npos) << without.output;
+    EXPECT_NE(without.output.find("lights: 1 (point 1)"), std::string::npos) << without.output;
+    EXPECT_NE(without.output.find("radiosity: off"), std::string::npos) << without.output;
+    const auto with = wardray("small.pov --check Declare=Extra=1", dir);
+    ASSERT_EQ(with.exit_status, 0) << with.output;
+    EXPECT_NE(with.output.find("objects: 3 (box 1, plane 1, sphere 1)"), std::string::npos) << with.output;
+    EXPECT_EQ(file_count(dir), 1u);  // --check renders nothing
+}
+
+TEST(Cli, StatsReportPhasesAndRays) {
+    const fs::path dir = work_dir("stats");
+    write_file(dir / "small.pov", kSmallScene);
+    const auto r = wardray("small.pov +W40 +H30 --stats s.json Declare=Extra=1", dir);
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    const auto stats = nlohmann::json::parse(read_file(dir / "s.json"));
+    for (const char* phase : {"parse", "build", "pretrace", "render", "write"})
+        EXPECT_GE(stats["phases"][phase].get<double>(), 0.0) << phase;
+    EXPECT_EQ(stats["rays"]["camera"].get<std::uint64_t>(), 40u * 30u);
+    EXPECT_GT(stats["rays"]["shadow"].get<std::uint64_t>(), 0u);
+    EXPECT_EQ(stats["gi"], "off");
+    EXPECT_EQ(stats["non_finite_pixels"].get<std::uint64_t>(), 0u);
+}
+
+TEST(Cli, SameImageForAnyThreadCount) {
+    const fs::path dir = work_dir("threads");
+    write_file(dir / "small.pov", kSmallScene);
+    ASSERT_EQ(wardray("small.pov +W96 +H72 +FH +WT1 -o one.hdr Declare=Extra=1", dir).exit_status, 0);
+    ASSERT_EQ(wardray("small.pov +W96 +H72 +FH +WT2 -o two.hdr Declare=Extra=1", dir).exit_status, 0);
+    ASSERT_EQ(wardray("small.pov +W96 +H72 +FH +WT2 -o again.hdr Declare=Extra=1", dir).exit_status, 0);
+    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
+    EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
+}
+
+}  // namespace
+}  // namespace wardray::test

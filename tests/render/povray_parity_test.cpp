@@ -1,0 +1,92 @@
+// Parity with POV-Ray: the same .pov file rendered by both, compared as linear HDR (../shared/docs/METRICS.md).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+#include "process.h"
+#include "render/film.h"
+#include "render/image_metrics.h"
+
+namespace wardray::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Direct light only, no antialiasing: the two renderers should agree almost exactly.
+constexpr double kMaxRrmse = 0.01;
+constexpr double kMaxBadPixels = 0.005;
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+
+struct ParityCase {
+    std::string name;
+    fs::path scene;
+};
+
+// Names the case in test output instead of dumping its bytes.
+void PrintTo(const ParityCase& c, std::ostream* os) { *os << c.scene.string(); }
+
+std::vector<ParityCase> parity_scenes() {
+    const fs::path root(WARDRAY_SOURCE_DIR);
+    std::vector<ParityCase> cases{{"default", root / "scenes" / "default.pov"}};
+    std::vector<fs::path> parity;
+    for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
+        if (e.path().extension() == ".pov") parity.push_back(e.path());
+    std::sort(parity.begin(), parity.end());
+    for (const fs::path& p : parity) cases.push_back({p.stem().string(), p});
+    return cases;
+}
+
+class PovrayParity : public ::testing::TestWithParam<ParityCase> {};
+
+TEST_P(PovrayParity, DirectLightMatchesPovRay) {
+    const ParityCase& c = GetParam();
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "parity" / c.name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    // POV-Ray's I/O restrictions allow writing only below the current folder: run both renderers there.
+    fs::copy_file(c.scene, dir / c.scene.filename());
+    const std::string size = " +W" + std::to_string(kWidth) + " +H" + std::to_string(kHeight);
+    const std::string scene = shell_quote(c.scene.filename().string());
+
+    const auto pov = run_command("povray +I" + scene + " +Opovray.hdr +FH -A -D -V +WT2" + size, dir.string());
+    ASSERT_EQ(pov.exit_status, 0) << "POV-Ray failed:\n" << pov.output;
+    const auto ours = run_command(shell_quote(WARDRAY_BINARY) + " +I" + scene + " +Owardray.hdr +FH -A -D +WT2" + size,
+                                  dir.string());
+    ASSERT_EQ(ours.exit_status, 0) << "wardray failed:\n" << ours.output;
+
+    std::string error;
+    const auto reference = render::read_image(dir / "povray.hdr", error);
+    ASSERT_TRUE(reference) << error;
+    const auto image = render::read_image(dir / "wardray.hdr", error);
+    ASSERT_TRUE(image) << error;
+    const auto cmp = render::compare_images(*image, *reference);
+    ASSERT_TRUE(cmp) << "image sizes differ";
+
+    std::ostringstream figures;
+    figures << std::fixed << std::setprecision(4) << c.name << ": rRMSE " << 100 * cmp->rrmse << " %, bad pixels "
+            << 100 * cmp->bad_pixel_fraction << " %, non-finite " << cmp->non_finite;
+    RecordProperty("rrmse", std::to_string(cmp->rrmse));
+    RecordProperty("bad_pixel_fraction", std::to_string(cmp->bad_pixel_fraction));
+    std::cout << "[ parity   ] " << figures.str() << "\n";
+
+    const bool pass = cmp->rrmse <= kMaxRrmse && cmp->bad_pixel_fraction <= kMaxBadPixels && cmp->non_finite == 0;
+    if (!pass) {
+        // Leave the image, the reference and a difference image beside each other for a person to look at.
+        render::write_image(render::difference_image(*image, *reference), dir / "difference.png",
+                            render::ImageFormat::Png);
+        render::write_image(*image, dir / "wardray.png", render::ImageFormat::Png);
+        render::write_image(*reference, dir / "povray.png", render::ImageFormat::Png);
+    }
+    EXPECT_LE(cmp->rrmse, kMaxRrmse) << figures.str() << "; images in " << dir;
+    EXPECT_LE(cmp->bad_pixel_fraction, kMaxBadPixels) << figures.str() << "; images in " << dir;
+    EXPECT_EQ(cmp->non_finite, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, PovrayParity, ::testing::ValuesIn(parity_scenes()),
+                         [](const ::testing::TestParamInfo<ParityCase>& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace wardray::test
