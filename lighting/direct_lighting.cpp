@@ -112,6 +112,8 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& view_dir, RayCounte
             const double shape = finish.brilliance == 1.0 ? cos_i : std::pow(cos_i, finish.brilliance);
             colour += pigment * arriving * (finish.diffuse * shape);
         }
+        // POV-Ray compat: shadowless (fill) lights cause no highlights.
+        if (light.shadowless) continue;
         // Phong highlight: phong * cos(reflected, light)^phong_size.
         if (finish.phong > 0.0) {
             const double c = dot(reflected, to_light);

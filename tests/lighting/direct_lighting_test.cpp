@@ -109,6 +109,17 @@ TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
     EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
 }
 
+TEST(DirectLighting, ShadowlessLightsCauseNoHighlights) {
+    parser::Scene scene = floor_scene();
+    scene.objects[0].texture.finish.diffuse = 0.0;
+    scene.objects[0].texture.finish.phong = 1.0;
+    scene.objects[0].texture.finish.specular = 1.0;
+    scene.lights.push_back(point_light({0, 2, 0}));  // straight above: both highlights at full strength
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 2.0, 1e-9);
+    scene.lights[0].shadowless = true;
+    EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
+}
+
 TEST(DirectLighting, LightBelowTheFloorContributesNothing) {
     parser::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, -2, 0}));
