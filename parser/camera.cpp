@@ -1,0 +1,74 @@
+// Camera resolution: from the camera block as written to POV-Ray 3.7's final location, direction, right and up.
+#include <cmath>
+#include <numbers>
+
+#include "parser/value.h"
+
+namespace wardray::parser {
+
+Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning) {
+    Camera cam;
+    cam.type = spec.type;
+    cam.loc = spec.loc;
+    cam.location = spec.location;
+    cam.direction = spec.direction;
+    cam.right = spec.right;
+    cam.up = spec.up;
+
+    // POV-Ray compat: the 3.5+ camera applies its items in a fixed order whatever order they were written in:
+    // angle, then look_at, then the orthographic sizing, then the transformations.
+    if (spec.angle) {
+        const double angle = *spec.angle;
+        if (spec.type == Camera::Type::Perspective && !spec.other_projection && (angle >= 180.0 || angle <= 0.0)) {
+            error = "camera angle must be greater than 0 and smaller than 180 degrees";
+        } else if (angle > 0.0 && angle < 180.0) {
+            // direction_length = 0.5 * right_length / tan(angle / 2)
+            const double half = angle * std::numbers::pi / 360.0;
+            cam.direction = normalize(cam.direction) * (0.5 * length(cam.right) / std::tan(half));
+        }
+    }
+
+    const Vec3 look_at = spec.look_at.value_or(spec.location + Vec3{0.0, 0.0, 1.0});
+    if (spec.look_at) {
+        const double direction_length = length(cam.direction);
+        const double up_length = length(cam.up);
+        const double right_length = length(cam.right);
+        // The sign of (up x direction) . right tells the handedness the user chose with `right`.
+        const double handedness = dot(cross(cam.up, cam.direction), cam.right);
+        const Vec3 d = *spec.look_at - cam.location;
+        if (length(d) == 0.0) {
+            error = "camera look_at must differ from its location";
+        } else {
+            const Vec3 dir = normalize(d);
+            Vec3 right = cross(spec.sky, dir);
+            if (length(right) < 1e-10 * length(spec.sky)) {
+                warning = "camera looks along its sky vector; keeping the given right vector";
+                right = cam.right;
+            }
+            right = normalize(right);
+            const Vec3 up = cross(dir, right);
+            cam.direction = dir * direction_length;
+            cam.right = right * (handedness > 0.0 ? right_length : -right_length);
+            cam.up = up * up_length;
+        }
+    }
+
+    if (spec.type == Camera::Type::Orthographic && (spec.angle || !(spec.had_up || spec.had_right))) {
+        // POV-Ray compat: without up/right (or with angle) the orthographic view covers the same area at the
+        // look_at distance as the perspective camera would.
+        const double dir_length = length(cam.direction);
+        if (dir_length > 0.0) {
+            const double k = length(look_at - spec.location) / dir_length;
+            cam.right = cam.right * k;
+            cam.up = cam.up * k;
+        }
+    }
+
+    cam.location = spec.transform.point(cam.location);
+    cam.direction = spec.transform.vector(cam.direction);
+    cam.right = spec.transform.vector(cam.right);
+    cam.up = spec.transform.vector(cam.up);
+    return cam;
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,437 @@
+// The directive layer: #declare/#local, #if/#while/#for/#switch, #include, #macro, #version, #default.
+#include <cmath>
+
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+constexpr std::size_t k_max_include_depth = 64;
+
+bool is_opening_directive(const std::string& name) {
+    return name == "if" || name == "ifdef" || name == "ifndef" || name == "while" || name == "for" ||
+           name == "switch" || name == "macro";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------------
+// Directives
+
+Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener) {
+    while (true) {
+        const Token& t = raw();
+        if (t.kind == TokenKind::EndOfFile) {
+            report(make_diagnostic(Severity::Error, opener, "'#" + opener.text + "' has no matching #end"));
+            return t;
+        }
+        ++m_pos;
+        if (t.kind != TokenKind::Directive) continue;
+        if (is_opening_directive(t.text)) {
+            ++depth;
+            continue;
+        }
+        if (depth > 0) {
+            if (t.text == "end") --depth;
+            continue;
+        }
+        for (const char* s : stops)
+            if (t.text == s) return t;
+    }
+}
+
+void Parser::process_directive() {
+    const Token tok = raw();
+    ++m_pos;
+    const std::string& name = tok.text;
+    if (name == "declare" || name == "local") {
+        directive_declare(tok, name == "local");
+    } else if (name == "undef") {
+        const Token id = expect_identifier();
+        bool erased = false;
+        for (auto it = m_scopes.rbegin(); it != m_scopes.rend() && !erased; ++it) erased = it->erase(id.text) > 0;
+        if (!erased) m_macros.erase(id.text);
+    } else if (name == "if" || name == "ifdef" || name == "ifndef") {
+        directive_if(tok);
+    } else if (name == "elseif" || name == "else") {
+        directive_else(tok, name == "elseif");
+    } else if (name == "end") {
+        directive_end(tok);
+    } else if (name == "while") {
+        directive_while(tok);
+    } else if (name == "for") {
+        directive_for(tok);
+    } else if (name == "switch") {
+        directive_switch(tok);
+    } else if (name == "case" || name == "range") {
+        // Reached while running a case: POV-Ray compat, a case without #break falls through.
+        if (m_conds.empty() || m_conds.back().kind != Cond::Kind::Switch) fail(tok, "'#" + name + "' outside #switch");
+        expect("(");
+        parse_float();
+        if (name == "range") {
+            expect(",");
+            parse_float();
+        }
+        expect(")");
+    } else if (name == "break") {
+        directive_break(tok);
+    } else if (name == "include") {
+        directive_include(tok);
+    } else if (name == "macro") {
+        directive_macro(tok);
+    } else if (name == "version") {
+        m_version = parse_float();
+        if (is_punct(peek_expr(), ";")) next();
+    } else if (name == "debug" || name == "render" || name == "statistics") {
+        parse_string();
+    } else if (name == "warning") {
+        const std::string message = parse_string();
+        warn(tok, message);
+    } else if (name == "error") {
+        const std::string message = parse_string();
+        report(make_diagnostic(Severity::Error, tok, message));
+        throw FatalError{};
+    } else if (name == "default") {
+        directive_default(tok);
+    } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
+        fail(tok, "'#" + name + "' is not supported yet");
+    } else {
+        fail(tok, "unknown directive '#" + name + "'");
+    }
+}
+
+void Parser::directive_declare(const Token& tok, bool local) {
+    if (is_word(peek(), "deprecated")) {
+        // `#declare deprecated [once] "message" Name = ...`: the message is for users of Name; not shown here.
+        next();
+        accept_keyword("once");
+        parse_string();
+    }
+    const Token id = expect_identifier();
+    if (is_keyword(id.text)) fail(id, "'" + id.text + "' is a reserved word and cannot be declared");
+    if (is_punct(peek_expr(), "[")) {
+        // Assignment to an element of an existing array.
+        Value* target = lookup_mutable(id.text);
+        auto* array = target ? std::get_if<std::shared_ptr<ArrayValue>>(target) : nullptr;
+        if (target == nullptr) fail_undeclared(id);
+        if (array == nullptr) fail(id, "'" + id.text + "' is not an array");
+        const std::shared_ptr<ArrayValue> keep = *array;
+        const std::size_t index = parse_array_index(*keep, id);
+        expect("=");
+        Value v = parse_rvalue();
+        const bool numeric = std::holds_alternative<Numeric>(v);
+        keep->elements[index] = std::move(v);
+        if (numeric) accept_semicolon_after_declare(Numeric{}, id);
+        else if (is_punct(peek_expr(), ";")) next();
+        return;
+    }
+    expect("=");
+    m_declaring.emplace_back();
+    Value v;
+    try {
+        v = parse_rvalue();
+    } catch (...) {
+        m_declaring.pop_back();
+        throw;
+    }
+    std::vector<Diagnostic> deferred = std::move(m_declaring.back());
+    m_declaring.pop_back();
+    if (deferred.empty())
+        m_deferred_warnings.erase(id.text);
+    else
+        m_deferred_warnings[id.text] = std::move(deferred);
+    if (auto* array = std::get_if<std::shared_ptr<ArrayValue>>(&v)) {
+        // POV-Ray compat: declaring from another array copies it.
+        *array = std::make_shared<ArrayValue>(**array);
+    }
+    const bool numeric = std::holds_alternative<Numeric>(v);
+    if (!local && !m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
+        const Frame& frame = m_frames.back();
+        if (const auto ref = frame.references.find(id.text); ref != frame.references.end()) {
+            // A by-reference parameter: update the caller's identifier and the parameter itself.
+            const auto& [scope, name] = ref->second;
+            if (scope < m_scopes.size()) m_scopes[scope][name] = v;
+            m_scopes[frame.scope_index][id.text] = std::move(v);
+            if (numeric) accept_semicolon_after_declare(Numeric{}, id);
+            else if (is_punct(peek_expr(), ";")) next();
+            return;
+        }
+    }
+    declare(id.text, std::move(v), local);
+    if (numeric) {
+        accept_semicolon_after_declare(Numeric{}, id);
+    } else if (is_punct(peek_expr(), ";")) {
+        next();
+    }
+}
+
+void Parser::directive_if(const Token& tok) {
+    bool cond = false;
+    if (tok.text == "if") {
+        cond = parse_float() != 0.0;
+    } else {
+        expect("(");
+        const Token id = expect_identifier();
+        const Value* v = lookup(id.text);
+        cond = v != nullptr || m_macros.count(id.text) > 0;
+        if (const auto* array = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr) {
+            if (is_punct(peek_expr(), "[")) cond = (*array)->elements[parse_array_index(**array, id)].has_value();
+        }
+        expect(")");
+        if (tok.text == "ifndef") cond = !cond;
+    }
+    while (true) {
+        if (cond) {
+            Cond c;
+            c.kind = Cond::Kind::If;
+            c.where = tok;
+            m_conds.push_back(std::move(c));
+            return;
+        }
+        const Token stop = skip_until(0, {"else", "elseif", "end"}, tok);
+        if (stop.kind == TokenKind::EndOfFile || stop.text == "end") return;
+        cond = stop.text == "else" ? true : parse_float() != 0.0;
+    }
+}
+
+void Parser::directive_else(const Token& tok, bool elseif) {
+    const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
+    if (m_conds.size() > floor && m_conds.back().kind == Cond::Kind::Switch && !elseif) return;  // falls through
+    if (m_conds.size() <= floor || m_conds.back().kind != Cond::Kind::If)
+        fail(tok, "'#" + tok.text + "' without matching #if");
+    // The taken branch ended: skip the remaining branches.
+    const Token opener = m_conds.back().where;
+    m_conds.pop_back();
+    skip_until(0, {"end"}, opener);
+}
+
+void Parser::directive_end(const Token& tok) {
+    const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
+    if (m_conds.size() <= floor) {
+        if (!m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
+            return_from_macro();
+            return;
+        }
+        fail(tok, "#end without matching #if, #while, #for, #switch or #macro");
+    }
+    Cond& c = m_conds.back();
+    switch (c.kind) {
+        case Cond::Kind::If:
+        case Cond::Kind::Switch:
+            m_conds.pop_back();
+            return;
+        case Cond::Kind::While: {
+            // Re-read the #while directive, which evaluates its condition again.
+            const std::size_t restart = c.restart_pos;
+            m_conds.pop_back();
+            m_pos = restart;
+            return;
+        }
+        case Cond::Kind::For: {
+            const Value* counter = lookup(c.ident);
+            const Numeric* n = counter ? std::get_if<Numeric>(counter) : nullptr;
+            if (n == nullptr || n->n != 1) {
+                const Token where = c.where;
+                m_conds.pop_back();
+                fail(where, "#for counter '" + where.text + "' must stay a float");
+            }
+            const double value = n->v[0] + c.step;
+            declare(c.ident, Numeric::scalar(value), true);
+            if (c.step > 0 ? value <= c.end : value >= c.end) {
+                count_loop_iteration(c.where);
+                m_pos = c.restart_pos;
+            } else {
+                m_conds.pop_back();
+            }
+            return;
+        }
+    }
+}
+
+void Parser::directive_while(const Token& tok) {
+    const std::size_t directive_pos = m_pos - 1;
+    const double cond = parse_float();
+    if (cond == 0.0) {
+        skip_until(0, {"end"}, tok);
+        return;
+    }
+    count_loop_iteration(tok);
+    Cond c;
+    c.kind = Cond::Kind::While;
+    c.where = tok;
+    c.restart_pos = directive_pos;
+    m_conds.push_back(std::move(c));
+}
+
+void Parser::directive_for(const Token& tok) {
+    expect("(");
+    const Token id = expect_identifier();
+    expect(",");
+    const double start = parse_float();
+    expect(",");
+    const double end = parse_float();
+    double step = 1.0;
+    if (accept(",")) step = parse_float();
+    expect(")");
+    if (step == 0.0) fail(tok, "#for step must not be zero");
+    declare(id.text, Numeric::scalar(start), true);
+    if (!(step > 0 ? start <= end : start >= end)) {
+        skip_until(0, {"end"}, tok);
+        return;
+    }
+    Cond c;
+    c.kind = Cond::Kind::For;
+    c.where = tok;
+    c.ident = id.text;
+    c.end = end;
+    c.step = step;
+    c.restart_pos = m_pos;
+    m_conds.push_back(std::move(c));
+}
+
+void Parser::directive_switch(const Token& tok) {
+    const double value = parse_float();
+    Cond c;
+    c.kind = Cond::Kind::Switch;
+    c.where = tok;
+    c.switch_value = value;
+    m_conds.push_back(std::move(c));
+    // Find the first clause that matches; the body then runs until #break or the switch's #end.
+    while (true) {
+        const Token stop = skip_until(0, {"case", "range", "else", "end"}, tok);
+        if (stop.kind == TokenKind::EndOfFile || stop.text == "end") {
+            m_conds.pop_back();
+            return;
+        }
+        if (stop.text == "else") return;
+        expect("(");
+        const double a = parse_float();
+        bool match = false;
+        if (stop.text == "case") {
+            // POV-Ray compat: #case compares with the same tolerance as '='.
+            match = std::fabs(a - value) < 1e-10;
+        } else {
+            expect(",");
+            const double b = parse_float();
+            match = a <= value && value <= b;
+        }
+        expect(")");
+        if (match) return;
+    }
+}
+
+void Parser::directive_break(const Token& tok) {
+    const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
+    std::size_t target = m_conds.size();
+    for (std::size_t i = m_conds.size(); i > floor; --i) {
+        if (m_conds[i - 1].kind != Cond::Kind::If) {
+            target = i - 1;
+            break;
+        }
+    }
+    if (target == m_conds.size()) fail(tok, "#break outside #switch, #while or #for");
+    const int open_ifs = static_cast<int>(m_conds.size() - target - 1);
+    const Token opener = m_conds[target].where;
+    m_conds.resize(target);
+    skip_until(open_ifs, {"end"}, opener);
+}
+
+void Parser::directive_include(const Token& tok) {
+    const Token name_tok = peek();
+    const std::string name = parse_string();
+    std::size_t include_depth = 0;
+    for (const Frame& f : m_frames) include_depth += f.kind == Frame::Kind::Include ? 1 : 0;
+    if (include_depth >= k_max_include_depth) {
+        report(make_diagnostic(Severity::Error, tok,
+                               "#include nesting exceeds the limit of " + std::to_string(k_max_include_depth) +
+                                   " (recursive #include?)"));
+        throw FatalError{};
+    }
+    // Search order: the including file's folder, then the library paths in order.
+    std::vector<std::filesystem::path> candidates;
+    const std::filesystem::path requested(name);
+    if (requested.is_absolute()) {
+        candidates.push_back(requested);
+    } else {
+        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
+        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
+    }
+    if (!requested.has_extension()) {
+        // POV-Ray compat: a name without extension is also tried with ".inc".
+        const std::size_t n = candidates.size();
+        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + ".inc");
+    }
+    std::optional<std::uint32_t> index;
+    std::string error = "No such file or directory";
+    for (const auto& c : candidates) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(c, ec)) continue;
+        index = load_file(c, error);
+        if (index) break;
+    }
+    if (!index) fail(name_tok, "cannot open include file '" + name + "': " + error);
+    Frame frame;
+    frame.kind = Frame::Kind::Include;
+    frame.name = name;
+    frame.return_file = m_file;
+    frame.return_pos = m_pos;
+    frame.call_site = tok;
+    frame.cond_depth = m_conds.size();
+    m_frames.push_back(std::move(frame));
+    m_scopes.emplace_back();
+    m_file = *index;
+    m_pos = 0;
+}
+
+void Parser::directive_macro(const Token& tok) {
+    const Token id = expect_identifier();
+    Macro macro;
+    macro.where = id;
+    expect("(");
+    if (!accept(")")) {
+        while (true) {
+            bool optional = false;
+            if (is_word(peek(), "optional")) {
+                next();
+                optional = true;
+            }
+            macro.params.push_back(expect_identifier().text);
+            macro.optional.push_back(optional);
+            if (accept(",")) continue;
+            expect(")");
+            break;
+        }
+    }
+    macro.file = m_file;
+    macro.body = m_pos;
+    const Token stop = skip_until(0, {"end"}, tok);
+    if (stop.kind == TokenKind::EndOfFile) return;
+    macro.end = m_pos - 1;
+    m_macros[id.text] = std::move(macro);
+}
+
+void Parser::directive_default(const Token& tok) {
+    expect("{");
+    while (true) {
+        const Token t = next();
+        if (is_punct(t, "}")) return;
+        if (is_word(t, "texture")) {
+            const Texture tx = parse_texture_body(t);
+            m_default_pigment = tx.pigment;
+            m_default_finish = tx.finish;
+        } else if (is_word(t, "pigment")) {
+            m_default_pigment = parse_pigment_body(t);
+        } else if (is_word(t, "finish")) {
+            m_default_finish = parse_finish_body(t);
+        } else if (t.kind == TokenKind::Identifier && is_unsupported_block(t.text)) {
+            warn_unsupported(t, t.text);
+            skip_block(t);
+        } else {
+            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
+        }
+    }
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,389 @@
+// Expressions: floats, vectors and colours with POV-Ray's precedence, constants and array elements.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+// POV-Ray compat: '=' and '!=' compare with this tolerance.
+constexpr double k_epsilon = 1e-10;
+
+Numeric combine(const Numeric& a, const Numeric& b, double (*op)(double, double)) {
+    const int n = std::max(a.n, b.n);
+    const Numeric pa = a.promoted(n);
+    const Numeric pb = b.promoted(n);
+    Numeric r;
+    r.n = n;
+    for (int i = 0; i < n; ++i) r.v[i] = op(pa.v[i], pb.v[i]);
+    return r;
+}
+
+}  // namespace
+
+std::string describe_token(const Token& t) {
+    switch (t.kind) {
+        case TokenKind::EndOfFile: return "end of file";
+        case TokenKind::String: return "string \"" + t.text + "\"";
+        case TokenKind::Directive: return "'#" + t.text + "'";
+        default: return "'" + t.text + "'";
+    }
+}
+
+const char* value_kind_name(const Value& v) {
+    switch (v.index()) {
+        case 0: return "a number";
+        case 1: return "a string";
+        case 2: return "a pigment";
+        case 3: return "a finish";
+        case 4: return "a texture";
+        case 5: return "an object";
+        case 6: return "a transform";
+        case 7: return "a camera";
+        case 9: return "an array";
+        default: return "an unsupported item";
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Entry points
+
+bool Parser::starts_string(const Token& t) {
+    if (t.kind == TokenKind::String) return true;
+    if (t.kind != TokenKind::Identifier) return false;
+    static const char* const string_functions[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr"};
+    for (const char* f : string_functions)
+        if (t.text == f) return true;
+    const Value* v = lookup(t.text);
+    return v != nullptr && std::holds_alternative<std::string>(*v);
+}
+
+Value Parser::parse_rvalue() {
+    const Token t = peek();
+    const NestingGuard guard(*this, t);
+    if (starts_string(t)) return parse_string();
+    if (t.kind == TokenKind::Identifier) {
+        const std::string& w = t.text;
+        if (const auto m = m_macros.find(w); m != m_macros.end()) {
+            next();
+            invoke_macro(t, m->second);
+            return parse_rvalue();
+        }
+        if (w == "pigment") return parse_pigment_body(next());
+        if (w == "finish") return parse_finish_body(next());
+        if (w == "texture") {
+            const Texture tx = parse_texture_body(next());
+            while (is_word(peek_expr(), "texture")) {
+                const Token layer = next();
+                warn_unsupported(layer, "layered texture");
+                parse_texture_body(layer);
+            }
+            return tx;
+        }
+        if (w == "transform") return parse_transform_body(next());
+        if (w == "camera") return parse_camera_body(next());
+        if (w == "light_source") {
+            const Token kw = next();
+            ObjectValue ov;
+            ov.lights.push_back(parse_light_body(kw));
+            return ov;
+        }
+        if (is_object_keyword(t)) return parse_object(next());
+        if (w == "array") return parse_array_declaration(next());
+        if (is_array_element_next()) {
+            Value element = *take_array_element();
+            if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
+            return element;
+        }
+        if (is_unsupported_block(w)) {
+            const Token kw = next();
+            warn_unsupported(kw, w);
+            if (w == "function" && accept("(")) {
+                while (!accept(")")) {
+                    if (next().kind == TokenKind::EndOfFile) fail(kw, "function parameters have no closing ')'");
+                }
+            }
+            skip_block(kw);
+            return Unsupported{w};
+        }
+        if (const Value* v = lookup(w); v != nullptr && !std::holds_alternative<Numeric>(*v)) {
+            next();
+            return *v;
+        }
+    }
+    return parse_numeric();
+}
+
+// POV-Ray compat: outside parentheses '<' never compares, so `box { <0,0,0> <1,1,1> }` reads as two vectors
+// (POV-Ray's documentation asks for parentheses around every relational, logical and conditional expression).
+Numeric Parser::parse_numeric() { return parse_conditional(false); }
+
+double Parser::parse_float() {
+    const Token at = peek();
+    const Numeric n = parse_numeric();
+    if (n.n != 1) fail(at, "expected a float but found a vector");
+    return n.v[0];
+}
+
+Vec3 Parser::parse_vector() {
+    const Token at = peek();
+    const Numeric n = parse_numeric();
+    if (n.n > 3 && n.n != 5) fail(at, "expected a 3-component vector but found " + std::to_string(n.n) + " components");
+    return n.vec3();
+}
+
+bool Parser::parse_bool_optional() {
+    const Token& t = peek_expr();
+    bool starts_value = t.kind == TokenKind::Number || is_punct(t, "(") || is_punct(t, "!");
+    if (t.kind == TokenKind::Identifier) {
+        static const char* const words[] = {"true", "false", "on", "off", "yes", "no"};
+        for (const char* w : words) starts_value = starts_value || t.text == w;
+        const Value* v = lookup(t.text);
+        starts_value = starts_value || (v != nullptr && std::holds_alternative<Numeric>(*v));
+    }
+    if (!starts_value) return true;
+    return parse_float() != 0.0;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Precedence levels, lowest first: ?: , & | , relations , + - , * / , unary , postfix .x
+
+Numeric Parser::parse_conditional(bool allow_less) {
+    const Token at = peek();
+    Numeric c = parse_logical(allow_less);
+    if (!is_punct(peek_expr(), "?")) return c;
+    next();
+    if (c.n != 1) fail(at, "the condition of '?:' must be a float");
+    Numeric a = parse_conditional(allow_less);
+    expect(":");
+    Numeric b = parse_conditional(allow_less);
+    return c.v[0] != 0.0 ? a : b;
+}
+
+Numeric Parser::parse_logical(bool allow_less) {
+    Numeric a = parse_relational(allow_less);
+    while (true) {
+        const Token& op = peek_expr();
+        if (!is_punct(op, "&") && !is_punct(op, "|")) return a;
+        const Token o = next();
+        const Numeric b = parse_relational(allow_less);
+        if (a.n != 1 || b.n != 1) fail(o, "'" + o.text + "' needs float operands");
+        const bool x = a.v[0] != 0.0;
+        const bool y = b.v[0] != 0.0;
+        a = Numeric::scalar((o.text == "&" ? (x && y) : (x || y)) ? 1.0 : 0.0);
+    }
+}
+
+Numeric Parser::parse_relational(bool allow_less) {
+    if (starts_string(peek())) {
+        // Strings compare with the same operators, lexicographically.
+        const std::string x = parse_string();
+        const Token o = next();
+        const std::string& s = o.text;
+        if (o.kind != TokenKind::Punct || (s != "<" && s != "<=" && s != "=" && s != "!=" && s != ">=" && s != ">"))
+            fail(o, "expected a comparison after a string but found " + describe_token(o));
+        const int c = x.compare(parse_string());
+        const bool r = s == "<" ? c < 0 : s == "<=" ? c <= 0 : s == "=" ? c == 0 : s == "!=" ? c != 0
+                                                                                       : s == ">=" ? c >= 0 : c > 0;
+        return Numeric::scalar(r ? 1.0 : 0.0);
+    }
+    Numeric a = parse_additive();
+    while (true) {
+        const Token& op = peek_expr();
+        if (op.kind != TokenKind::Punct) return a;
+        const std::string& s = op.text;
+        if (s != "<" && s != "<=" && s != "=" && s != "!=" && s != ">=" && s != ">") return a;
+        if (s == "<" && !allow_less) return a;
+        const Token o = next();
+        const Numeric b = parse_additive();
+        if (a.n != 1 || b.n != 1) fail(o, "'" + o.text + "' needs float operands");
+        const double x = a.v[0];
+        const double y = b.v[0];
+        bool r = false;
+        if (s == "<") r = x < y;
+        else if (s == "<=") r = x <= y;
+        else if (s == "=") r = std::fabs(x - y) < k_epsilon;
+        else if (s == "!=") r = std::fabs(x - y) >= k_epsilon;
+        else if (s == ">=") r = x >= y;
+        else r = x > y;
+        a = Numeric::scalar(r ? 1.0 : 0.0);
+    }
+}
+
+Numeric Parser::parse_additive(std::optional<Numeric> first) {
+    Numeric a = parse_multiplicative(std::move(first));
+    while (true) {
+        const Token& op = peek_expr();
+        if (!is_punct(op, "+") && !is_punct(op, "-")) return a;
+        const bool plus = op.text == "+";
+        next();
+        const Numeric b = parse_multiplicative();
+        a = combine(a, b, plus ? +[](double x, double y) { return x + y; } : +[](double x, double y) { return x - y; });
+    }
+}
+
+Numeric Parser::parse_multiplicative(std::optional<Numeric> first) {
+    Numeric a = parse_unary(std::move(first));
+    while (true) {
+        const Token& op = peek_expr();
+        if (!is_punct(op, "*") && !is_punct(op, "/")) return a;
+        const Token o = next();
+        const Numeric b = parse_unary();
+        if (o.text == "*") {
+            a = combine(a, b, +[](double x, double y) { return x * y; });
+        } else {
+            const Numeric pb = b.promoted(std::max(a.n, b.n));
+            for (int i = 0; i < pb.n; ++i)
+                if (pb.v[i] == 0.0) fail(o, "division by zero");
+            a = combine(a, b, +[](double x, double y) { return x / y; });
+        }
+    }
+}
+
+Numeric Parser::parse_unary(std::optional<Numeric> first) {
+    if (first) return parse_postfix(std::move(first));
+    const Token& t = peek();
+    const NestingGuard guard(*this, t);
+    if (is_punct(t, "-")) {
+        next();
+        Numeric a = parse_unary();
+        for (int i = 0; i < a.n; ++i) a.v[i] = -a.v[i];
+        return a;
+    }
+    if (is_punct(t, "+")) {
+        next();
+        return parse_unary();
+    }
+    if (is_punct(t, "!")) {
+        const Token o = next();
+        const Numeric a = parse_unary();
+        if (a.n != 1) fail(o, "'!' needs a float operand");
+        return Numeric::scalar(a.v[0] == 0.0 ? 1.0 : 0.0);
+    }
+    return parse_postfix();
+}
+
+Numeric Parser::parse_postfix(std::optional<Numeric> first) {
+    Numeric a = first ? *first : parse_primary();
+    while (is_punct(peek_expr(), ".")) {
+        next();
+        const Token item = expect_identifier();
+        int index = -1;
+        const std::string& w = item.text;
+        if (w == "x" || w == "u" || w == "red") index = 0;
+        else if (w == "y" || w == "v" || w == "green") index = 1;
+        else if (w == "z" || w == "blue") index = 2;
+        else if (w == "t" || w == "filter") index = 3;
+        else if (w == "transmit") index = 4;
+        else if (w == "gray" || w == "grey") {
+            const Numeric p = a.promoted(3);
+            a = Numeric::scalar(0.297 * p.v[0] + 0.589 * p.v[1] + 0.114 * p.v[2]);
+            continue;
+        } else {
+            fail(item, "unknown dot item '." + w + "'");
+        }
+        if (a.n != 1 && index >= a.n) fail(item, "'." + w + "' needs a vector with " + std::to_string(index + 1) +
+                                                      " components but this one has " + std::to_string(a.n));
+        a = Numeric::scalar(a.promoted(5).v[index]);
+    }
+    return a;
+}
+
+std::optional<Numeric> Parser::builtin_constant(const Token& t) {
+    const std::string& w = t.text;
+    if (w == "pi") return Numeric::scalar(std::numbers::pi);
+    if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1.0);
+    if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0.0);
+    if (w == "x") return Numeric::vector3({1, 0, 0});
+    if (w == "y") return Numeric::vector3({0, 1, 0});
+    if (w == "z") return Numeric::vector3({0, 0, 1});
+    if (w == "t") {
+        Numeric r;
+        r.n = 4;
+        r.v = {0, 0, 0, 1, 0};
+        return r;
+    }
+    if (w == "u" || w == "v") {
+        Numeric r;
+        r.n = 2;
+        r.v = {w == "u" ? 1.0 : 0.0, w == "v" ? 1.0 : 0.0, 0, 0, 0};
+        return r;
+    }
+    if (w == "clock") return Numeric::scalar(m_options.clock);
+    if (w == "clock_delta") return Numeric::scalar(1.0);
+    if (w == "clock_on" || w == "frame_number" || w == "initial_frame" || w == "final_frame")
+        return Numeric::scalar(0.0);
+    if (w == "initial_clock" || w == "final_clock") return Numeric::scalar(m_options.clock);
+    if (w == "image_width") return Numeric::scalar(m_options.image_width);
+    if (w == "image_height") return Numeric::scalar(m_options.image_height);
+    if (w == "version") return Numeric::scalar(m_version);
+    return std::nullopt;
+}
+
+Numeric Parser::parse_primary() {
+    const Token t = peek();
+    if (t.kind == TokenKind::Number) {
+        next();
+        return Numeric::scalar(t.number);
+    }
+    if (is_punct(t, "(")) {
+        next();
+        Numeric a = parse_conditional(true);
+        expect(")");
+        return a;
+    }
+    if (is_punct(t, "<")) {
+        next();
+        Numeric r;
+        r.n = 0;
+        while (true) {
+            const Token at = peek();
+            const Numeric c = parse_additive();
+            if (c.n != 1) fail(at, "a vector component must be a float");
+            if (r.n == 5) fail(at, "a vector has at most 5 components");
+            r.v[r.n++] = c.v[0];
+            // POV-Ray compat: the commas between components are optional.
+            accept(",");
+            if (accept(">")) break;
+            if (peek().kind == TokenKind::EndOfFile) expect(">");
+        }
+        if (r.n < 2) fail(t, "a vector needs at least 2 components");
+        return r;
+    }
+    if (t.kind != TokenKind::Identifier) fail(t, "expected a float or vector expression but found " + describe_token(t));
+
+    if (is_color_keyword(t)) return Numeric::color(parse_color());
+    if (auto c = builtin_constant(t)) {
+        next();
+        return *c;
+    }
+    if (const auto m = m_macros.find(t.text); m != m_macros.end()) {
+        next();
+        invoke_macro(t, m->second);
+        return parse_unary();
+    }
+    if (auto element = take_array_element()) {
+        if (const auto* n = std::get_if<Numeric>(&*element)) return *n;
+        fail(t, "expected a float or vector but this element of '" + t.text + "' is " + value_kind_name(*element));
+    }
+    if (const Value* v = lookup(t.text)) {
+        next();
+        if (const auto* n = std::get_if<Numeric>(v)) return *n;
+        if (const auto* u = std::get_if<Unsupported>(v))
+            fail(t, "'" + t.text + "' is a " + u->what + ", which is not supported yet");
+        fail(t, "expected a float or vector but '" + t.text + "' is " + value_kind_name(*v));
+    }
+    if (is_keyword(t.text)) {
+        next();
+        return parse_function(t);
+    }
+    fail_undeclared(t);
+}
+
+}  // namespace wardray::parser

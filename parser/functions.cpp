@@ -1,0 +1,305 @@
+// Built-in functions: the float, vector and string functions of the scene language.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+// Rotation of v about a unit axis by `degrees`, with the same handedness as POV-Ray's rotate.
+Vec3 axis_rotate(const Vec3& v, const Vec3& axis, double degrees) {
+    const Vec3 k = normalize(axis);
+    const double a = degrees * std::numbers::pi / 180.0;
+    const double c = std::cos(a);
+    const double s = std::sin(a);
+    return v * c + cross(k, v) * s + k * (dot(k, v) * (1.0 - c));
+}
+
+// POV-Ray's str(A, L, P): minimum length |L| padded with blanks (L > 0) or zeros (L < 0); P digits after the
+// point, or the default precision when P is negative.
+std::string format_str(double value, int min_length, int precision) {
+    const int width = std::clamp(std::abs(min_length), 0, 64);
+    const int digits = precision < 0 ? 6 : std::clamp(precision, 0, 32);
+    char buf[160];
+    if (min_length < 0)
+        std::snprintf(buf, sizeof buf, "%0*.*f", width, digits, value);
+    else
+        std::snprintf(buf, sizeof buf, "%*.*f", width, digits, value);
+    return buf;
+}
+
+}  // namespace
+
+std::string Parser::parse_string() {
+    const NestingGuard guard(*this, peek());
+    const Token t = next();
+    if (t.kind == TokenKind::String) return t.text;
+    if (t.kind != TokenKind::Identifier) fail(t, "expected a string but found " + describe_token(t));
+    const std::string& w = t.text;
+    if (w == "concat") {
+        expect("(");
+        std::string s = parse_string();
+        while (accept(",")) s += parse_string();
+        expect(")");
+        return s;
+    }
+    if (w == "str") {
+        expect("(");
+        const double value = parse_float();
+        expect(",");
+        const int width = static_cast<int>(parse_float());
+        expect(",");
+        const int precision = static_cast<int>(parse_float());
+        expect(")");
+        return format_str(value, width, precision);
+    }
+    if (w == "vstr") {
+        // vstr(N, V, separator, width, precision): N components of V, each as str() would write it.
+        expect("(");
+        const int n = static_cast<int>(parse_float());
+        expect(",");
+        const Numeric v = parse_numeric().promoted(5);
+        expect(",");
+        const std::string sep = parse_string();
+        expect(",");
+        const int width = static_cast<int>(parse_float());
+        expect(",");
+        const int precision = static_cast<int>(parse_float());
+        expect(")");
+        std::string s;
+        for (int i = 0; i < std::clamp(n, 0, 5); ++i) s += (i > 0 ? sep : std::string()) + format_str(v.v[i], width, precision);
+        return s;
+    }
+    if (w == "chr") {
+        expect("(");
+        const double c = parse_float();
+        expect(")");
+        return std::string(1, static_cast<char>(static_cast<int>(c)));
+    }
+    if (w == "substr") {
+        expect("(");
+        const std::string s = parse_string();
+        expect(",");
+        const double start = parse_float();
+        expect(",");
+        const double len = parse_float();
+        expect(")");
+        if (start < 1 || len < 0 || start - 1 + len > static_cast<double>(s.size()))
+            fail(t, "substr range is outside the string");
+        return s.substr(static_cast<std::size_t>(start - 1), static_cast<std::size_t>(len));
+    }
+    if (w == "strupr" || w == "strlwr") {
+        expect("(");
+        std::string s = parse_string();
+        expect(")");
+        for (char& c : s) c = static_cast<char>(w == "strupr" ? std::toupper(static_cast<unsigned char>(c))
+                                                               : std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    }
+    if (const auto m = m_macros.find(w); m != m_macros.end()) {
+        invoke_macro(t, m->second);
+        return parse_string();
+    }
+    if (is_punct(peek_expr(), "[") && t.file == m_file && m_pos > 0 &&
+        m_files[m_file]->tokens[m_pos - 1].column == t.column && m_files[m_file]->tokens[m_pos - 1].line == t.line) {
+        --m_pos;  // the identifier was just read from this file: read it again as an array element
+        const auto element = take_array_element();
+        if (!element) fail(t, "'" + w + "' is not an array");
+        if (const auto* s = std::get_if<std::string>(&*element)) return *s;
+        fail(t, "expected a string but this element of '" + w + "' is " + value_kind_name(*element));
+    }
+    const Value* v = lookup(w);
+    if (v == nullptr) fail_undeclared(t);
+    if (const auto* s = std::get_if<std::string>(v)) return *s;
+    fail(t, "expected a string but '" + w + "' is " + value_kind_name(*v));
+}
+
+Numeric Parser::parse_function(const Token& name) {
+    const std::string& f = name.text;
+    auto arg_list = [&](std::size_t min_args, std::size_t max_args) {
+        expect("(");
+        std::vector<Numeric> args;
+        if (!is_punct(peek(), ")")) {
+            do {
+                args.push_back(parse_conditional(true));
+            } while (accept(","));
+        }
+        expect(")");
+        if (args.size() < min_args || args.size() > max_args) {
+            fail(name, "'" + f + "' takes " +
+                           (min_args == max_args ? std::to_string(min_args)
+                                                 : std::to_string(min_args) + " or more") +
+                           " argument(s) but " + std::to_string(args.size()) + " were given");
+        }
+        return args;
+    };
+    auto scalar_arg = [&](const Numeric& a) {
+        if (a.n != 1) fail(name, "'" + f + "' needs float arguments");
+        return a.v[0];
+    };
+    auto vector_arg = [&](const Numeric& a) { return a.vec3(); };
+
+    // String-taking functions first.
+    if (f == "strlen" || f == "val" || f == "file_exists") {
+        expect("(");
+        const std::string s = parse_string();
+        expect(")");
+        if (f == "strlen") return Numeric::scalar(static_cast<double>(s.size()));
+        if (f == "val") return Numeric::scalar(std::atof(s.c_str()));
+        std::error_code ec;
+        bool found = std::filesystem::exists(std::filesystem::path(m_files[m_file]->path).parent_path() / s, ec);
+        for (const auto& dir : m_options.library_paths) found = found || std::filesystem::exists(dir / s, ec);
+        return Numeric::scalar(found ? 1.0 : 0.0);
+    }
+    if (f == "strcmp") {
+        expect("(");
+        const std::string a = parse_string();
+        expect(",");
+        const std::string b = parse_string();
+        expect(")");
+        const int c = a.compare(b);
+        return Numeric::scalar(c < 0 ? -1.0 : (c > 0 ? 1.0 : 0.0));
+    }
+    if (f == "defined") {
+        expect("(");
+        const Token id = expect_identifier();
+        const Value* v = lookup(id.text);
+        bool found = v != nullptr || m_macros.count(id.text) > 0;
+        if (const auto* array = v ? std::get_if<std::shared_ptr<ArrayValue>>(v) : nullptr) {
+            if (is_punct(peek_expr(), "[")) found = (*array)->elements[parse_array_index(**array, id)].has_value();
+        }
+        expect(")");
+        return Numeric::scalar(found ? 1.0 : 0.0);
+    }
+    if (f == "dimensions" || f == "dimension_size") {
+        expect("(");
+        const Token id = expect_identifier();
+        const Value* v = lookup(id.text);
+        if (v == nullptr) fail_undeclared(id);
+        const auto* array = std::get_if<std::shared_ptr<ArrayValue>>(v);
+        if (array == nullptr) fail(id, "'" + id.text + "' is not an array");
+        const std::vector<std::size_t> dims = (*array)->dims;
+        if (f == "dimensions") {
+            expect(")");
+            return Numeric::scalar(static_cast<double>(dims.size()));
+        }
+        expect(",");
+        const Token at = peek();
+        const double d = parse_float();
+        expect(")");
+        if (d < 1 || d > static_cast<double>(dims.size())) fail(at, "dimension_size: no such dimension");
+        return Numeric::scalar(static_cast<double>(dims[static_cast<std::size_t>(d) - 1]));
+    }
+
+    using Fn = double (*)(double);
+    static const std::pair<const char*, Fn> unary[] = {
+        {"abs", [](double a) { return std::fabs(a); }},
+        {"ceil", [](double a) { return std::ceil(a); }},
+        {"floor", [](double a) { return std::floor(a); }},
+        {"int", [](double a) { return std::trunc(a); }},
+        {"sqrt", [](double a) { return std::sqrt(a); }},
+        {"sin", [](double a) { return std::sin(a); }},
+        {"cos", [](double a) { return std::cos(a); }},
+        {"tan", [](double a) { return std::tan(a); }},
+        {"asin", [](double a) { return std::asin(a); }},
+        {"acos", [](double a) { return std::acos(a); }},
+        {"sinh", [](double a) { return std::sinh(a); }},
+        {"cosh", [](double a) { return std::cosh(a); }},
+        {"tanh", [](double a) { return std::tanh(a); }},
+        {"asinh", [](double a) { return std::asinh(a); }},
+        {"acosh", [](double a) { return std::acosh(a); }},
+        {"atanh", [](double a) { return std::atanh(a); }},
+        {"exp", [](double a) { return std::exp(a); }},
+        {"ln", [](double a) { return std::log(a); }},
+        {"log", [](double a) { return std::log10(a); }},
+        {"radians", [](double a) { return a * std::numbers::pi / 180.0; }},
+        {"degrees", [](double a) { return a * 180.0 / std::numbers::pi; }},
+    };
+    for (const auto& [fname, fn] : unary) {
+        if (f != fname) continue;
+        const auto args = arg_list(1, 1);
+        const double a = scalar_arg(args[0]);
+        if ((f == "sqrt" && a < 0) || ((f == "ln" || f == "log") && a <= 0) ||
+            ((f == "asin" || f == "acos") && std::fabs(a) > 1))
+            fail(name, "'" + f + "' argument out of range");
+        return Numeric::scalar(fn(a));
+    }
+    if (f == "atan") {
+        // atan(a) or atan(a, b) (the latter is atan2 in POV-Ray 3.7).
+        const auto args = arg_list(1, 2);
+        if (args.size() == 2) return Numeric::scalar(std::atan2(scalar_arg(args[0]), scalar_arg(args[1])));
+        return Numeric::scalar(std::atan(scalar_arg(args[0])));
+    }
+    if (f == "atan2" || f == "pow" || f == "mod" || f == "div") {
+        const auto args = arg_list(2, 2);
+        const double a = scalar_arg(args[0]);
+        const double b = scalar_arg(args[1]);
+        if (f == "atan2") return Numeric::scalar(std::atan2(a, b));
+        if (f == "pow") return Numeric::scalar(std::pow(a, b));
+        if (b == 0.0) fail(name, "'" + f + "' by zero");
+        if (f == "mod") return Numeric::scalar(std::fmod(a, b));
+        return Numeric::scalar(std::trunc(a / b));
+    }
+    if (f == "min" || f == "max") {
+        const auto args = arg_list(1, 64);
+        double r = scalar_arg(args[0]);
+        for (const auto& a : args) r = f == "min" ? std::min(r, scalar_arg(a)) : std::max(r, scalar_arg(a));
+        return Numeric::scalar(r);
+    }
+    if (f == "select") {
+        const auto args = arg_list(3, 4);
+        const double s = scalar_arg(args[0]);
+        if (args.size() == 3) return s < 0 ? args[1] : args[2];
+        return s < 0 ? args[1] : (s == 0 ? args[2] : args[3]);
+    }
+    if (f == "vlength") return Numeric::scalar(length(vector_arg(arg_list(1, 1)[0])));
+    if (f == "vnormalize") {
+        const Vec3 v = vector_arg(arg_list(1, 1)[0]);
+        if (length(v) == 0.0) fail(name, "cannot normalize a zero-length vector");
+        return Numeric::vector3(normalize(v));
+    }
+    if (f == "vdot") {
+        const auto args = arg_list(2, 2);
+        return Numeric::scalar(dot(vector_arg(args[0]), vector_arg(args[1])));
+    }
+    if (f == "vcross") {
+        const auto args = arg_list(2, 2);
+        return Numeric::vector3(cross(vector_arg(args[0]), vector_arg(args[1])));
+    }
+    if (f == "vrotate") {
+        const auto args = arg_list(2, 2);
+        return Numeric::vector3(Transform::rotation(vector_arg(args[1])).vector(vector_arg(args[0])));
+    }
+    if (f == "vaxis_rotate") {
+        const auto args = arg_list(3, 3);
+        return Numeric::vector3(axis_rotate(vector_arg(args[0]), vector_arg(args[1]), scalar_arg(args[2])));
+    }
+    if (f == "seed") {
+        const auto args = arg_list(1, 1);
+        m_rand_streams.push_back(static_cast<std::uint32_t>(static_cast<std::int64_t>(scalar_arg(args[0]))));
+        return Numeric::scalar(static_cast<double>(m_rand_streams.size() - 1));
+    }
+    if (f == "rand") {
+        const auto args = arg_list(1, 1);
+        const double stream = scalar_arg(args[0]);
+        if (stream < 0 || stream >= static_cast<double>(m_rand_streams.size()))
+            fail(name, "rand needs a stream made by seed()");
+        // POV-Ray compat: a linear congruential generator returning 15 bits per call.
+        std::uint32_t& state = m_rand_streams[static_cast<std::size_t>(stream)];
+        state = state * 1812433253u + 12345u;
+        return Numeric::scalar(static_cast<double>((state >> 16) & 0x7FFFu) / 32767.0);
+    }
+    static const char* const unsupported[] = {"trace", "vturbulence", "max_extent", "min_extent", "inside",
+                                              "eval_pigment", "bitwise_and",
+                                              "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now"};
+    for (const char* u : unsupported)
+        if (f == u) fail(name, "'" + f + "' is not supported yet");
+    fail(name, "expected a float or vector expression but found keyword '" + f + "'");
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,115 @@
+// Keyword tables and the edit distance used for "did you mean" notes.
+#include "parser/keywords.h"
+
+#include <algorithm>
+#include <unordered_set>
+
+namespace wardray::parser {
+
+namespace {
+
+const std::vector<std::string_view> k_unsupported_objects = {
+    "cylinder", "cone", "torus", "disc", "mesh", "mesh2", "blob", "lathe", "sor", "prism", "text",
+    "height_field", "isosurface", "parametric", "julia_fractal", "superellipsoid", "sphere_sweep",
+    "bicubic_patch", "polygon", "triangle", "smooth_triangle", "quadric", "cubic", "quartic", "poly",
+    "polynomial", "ovus", "lemon", "intersection", "difference", "merge"};
+
+const std::vector<std::string_view> k_unsupported_blocks = {
+    "fog", "sky_sphere", "rainbow", "media", "light_group", "normal", "interior", "material",
+    "interior_texture", "photons", "color_map", "colour_map", "pigment_map", "normal_map", "texture_map",
+    "slope_map", "density", "density_map", "function", "spline", "looks_like", "projected_through",
+    "clipped_by", "bounded_by", "irid", "subsurface", "warp", "image_map", "bump_map", "material_map"};
+
+const std::vector<std::string_view> k_patterns = {
+    "agate", "aoi", "average", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cylindrical",
+    "density_file", "dents", "facets", "gradient", "granite", "hexagon", "image_pattern", "leopard", "mandel",
+    "julia", "magnet", "marble", "onion", "pavement", "pigment_pattern", "planar", "quilted", "radial",
+    "ripples", "spherical", "spiral1", "spiral2", "spotted", "square", "tiling", "triangular", "waves",
+    "wood", "wrinkles", "object", "slope", "turbulence", "octaves", "omega", "lambda", "frequency", "phase",
+    "color_map", "colour_map", "pigment_map", "image_map", "tiles", "texture_map", "material_map", "warp",
+    "uv_mapping", "function"};
+
+const std::vector<std::string_view> k_handled = {
+    "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",
+    "angle", "aperture", "area_illumination", "area_light", "asin", "asinh", "assumed_gamma", "atan", "atan2",
+    "atanh", "background", "blue", "blur_samples", "box", "brightness", "brilliance", "camera", "charset",
+    "chr", "circular", "clock", "clock_delta", "clock_on", "color", "colour", "concat", "confidence",
+    "conserve_energy", "cos", "cosh", "count", "crand", "declare", "defined", "degrees", "diffuse",
+    "direction", "div", "double_illuminate", "emission", "error_bound", "exp", "exponent", "fade_distance",
+    "fade_power", "falloff", "false", "file_exists", "filter", "final_clock", "final_frame", "finish",
+    "fisheye", "floor", "focal_point", "frame_number", "fresnel", "global_settings", "gray_threshold", "green",
+    "hf_gray_16", "hollow", "image_height", "image_width", "importance", "initial_clock", "initial_frame",
+    "int", "inverse", "irid_wavelength", "jitter", "light_source", "ln", "load_file", "location", "log",
+    "look_at", "low_error_factor", "matrix", "max", "max_intersections", "max_sample", "max_trace_level",
+    "maximum_reuse", "media_attenuation", "media_interaction", "metallic", "min", "minimum_reuse",
+    "mm_per_unit", "mod", "nearest_count", "no", "no_image", "no_radiosity", "no_reflection", "no_shadow",
+    "noise_generator", "number_of_waves", "off", "omnimax", "on", "orient", "orthographic", "panoramic",
+    "parallel", "perspective", "phong", "phong_size", "pi", "pigment", "plane", "point_at", "pow",
+    "pretrace_end", "pretrace_start", "quick_color", "quick_colour", "radians", "radiosity", "radius",
+    "recursion_limit", "red", "reflection", "reflection_exponent", "rgb", "rgbf", "rgbft", "rgbt", "right",
+    "rotate", "roughness", "save_file", "scale", "select", "shadowless", "sin", "sinh", "sky", "specular",
+    "sphere", "spherical", "split_union", "spotlight", "sqrt", "srgb", "srgbf", "srgbft", "srgbt", "str",
+    "strcmp", "strlen", "strlwr", "strupr", "sturm", "substr", "tan", "tanh", "texture", "tightness",
+    "transform", "translate", "transmit", "true", "ultra_wide_angle", "union", "up", "val", "variance",
+    "vaxis_rotate", "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "x", "y", "yes", "z",
+    "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr", "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions", "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default", "mesh_camera"};
+
+std::unordered_set<std::string_view> make_set(std::initializer_list<const std::vector<std::string_view>*> lists) {
+    std::unordered_set<std::string_view> s;
+    for (const auto* l : lists) s.insert(l->begin(), l->end());
+    return s;
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& all_keywords() {
+    static const std::vector<std::string_view> all = [] {
+        auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled});
+        std::vector<std::string_view> v(s.begin(), s.end());
+        std::sort(v.begin(), v.end());
+        return v;
+    }();
+    return all;
+}
+
+bool is_keyword(std::string_view word) {
+    static const auto set = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled});
+    return set.count(word) > 0;
+}
+
+bool is_unsupported_object(std::string_view word) {
+    static const auto set = make_set({&k_unsupported_objects});
+    return set.count(word) > 0;
+}
+
+bool is_unsupported_block(std::string_view word) {
+    static const auto set = make_set({&k_unsupported_blocks});
+    return set.count(word) > 0;
+}
+
+bool is_pattern_keyword(std::string_view word) {
+    static const auto set = make_set({&k_patterns});
+    return set.count(word) > 0;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b, std::size_t limit) {
+    const std::size_t diff = a.size() > b.size() ? a.size() - b.size() : b.size() - a.size();
+    if (diff > limit) return limit + 1;
+    std::vector<std::size_t> prev(b.size() + 1);
+    std::vector<std::size_t> cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        std::size_t row_min = cur[0];
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+            row_min = std::min(row_min, cur[j]);
+        }
+        if (row_min > limit) return limit + 1;
+        std::swap(prev, cur);
+    }
+    return std::min(prev[b.size()], limit + 1);
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,227 @@
+// Lexer: Spirit X3 token rules over a hand-written loop that skips whitespace and (nested) comments.
+#include "parser/lexer.h"
+
+#include <cctype>
+
+#include <boost/spirit/home/x3.hpp>
+
+namespace wardray::parser {
+
+namespace x3 = boost::spirit::x3;
+
+namespace {
+
+// Unsigned reals as POV-Ray writes them ("1", "1.5", ".5", "2.", "1e-3"), never "nan" or "inf".
+struct PovRealPolicies : x3::ureal_policies<double> {
+    template <typename It, typename Attr>
+    static bool parse_nan(It&, It const&, Attr&) { return false; }
+    template <typename It, typename Attr>
+    static bool parse_inf(It&, It const&, Attr&) { return false; }
+};
+
+const x3::real_parser<double, PovRealPolicies> pov_real{};
+const auto identifier_rule = x3::raw[(x3::alpha | x3::char_('_')) >> *(x3::alnum | x3::char_('_'))];
+const auto two_char_punct = x3::string("<=") | x3::string(">=") | x3::string("!=");
+// Single-character punctuation; '-' comes last so the character set does not read it as a range.
+const auto one_char_punct = x3::char_("{}()[]<>,;+*/=!&|?:.%^@$'`~\\-");
+
+// Tracks line and column while the scanner moves forward byte by byte.
+class Cursor {
+public:
+    explicit Cursor(std::string_view text) : m_text(text) {}
+    bool done() const { return m_pos >= m_text.size(); }
+    char peek(std::size_t ahead = 0) const {
+        return m_pos + ahead < m_text.size() ? m_text[m_pos + ahead] : '\0';
+    }
+    void advance(std::size_t n = 1) {
+        for (std::size_t i = 0; i < n && m_pos < m_text.size(); ++i, ++m_pos) {
+            if (m_text[m_pos] == '\n') {
+                ++m_line;
+                m_column = 1;
+            } else {
+                ++m_column;
+            }
+        }
+    }
+    std::size_t pos() const { return m_pos; }
+    std::uint32_t line() const { return m_line; }
+    std::uint32_t column() const { return m_column; }
+
+private:
+    std::string_view m_text;
+    std::size_t m_pos = 0;
+    std::uint32_t m_line = 1;
+    std::uint32_t m_column = 1;
+};
+
+char decode_escape(char c) {
+    switch (c) {
+        case 'n': return '\n';
+        case 't': return '\t';
+        case 'r': return '\r';
+        case 'a': return '\a';
+        case 'b': return '\b';
+        case 'f': return '\f';
+        case 'v': return '\v';
+        default: return c;  // \\ \" \' and anything else stand for themselves
+    }
+}
+
+}  // namespace
+
+std::string source_line(std::string_view text, std::uint32_t line) {
+    if (line == 0) return {};
+    std::size_t start = 0;
+    for (std::uint32_t l = 1; l < line; ++l) {
+        const std::size_t nl = text.find('\n', start);
+        if (nl == std::string_view::npos) return {};
+        start = nl + 1;
+    }
+    std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) end = text.size();
+    if (end > start && text[end - 1] == '\r') --end;
+    return std::string(text.substr(start, end - start));
+}
+
+std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::string& path,
+                       std::vector<Diagnostic>& errors) {
+    std::vector<Token> tokens;
+    Cursor cur(text);
+    auto error_at = [&](std::uint32_t line, std::uint32_t column, std::uint32_t span, std::string message) {
+        Diagnostic d;
+        d.severity = Severity::Error;
+        d.loc = SourceLoc{path, line, column};
+        d.message = std::move(message);
+        d.source_line = source_line(text, line);
+        d.span = span;
+        errors.push_back(std::move(d));
+    };
+
+    while (true) {
+        // Whitespace and comments between tokens.
+        const char c = cur.peek();
+        if (cur.done()) break;
+        if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v') {
+            cur.advance();
+            continue;
+        }
+        if (c == '/' && cur.peek(1) == '/') {
+            while (!cur.done() && cur.peek() != '\n') cur.advance();
+            continue;
+        }
+        if (c == '/' && cur.peek(1) == '*') {
+            // POV-Ray compat: block comments nest.
+            const std::uint32_t line = cur.line();
+            const std::uint32_t column = cur.column();
+            int depth = 0;
+            while (!cur.done()) {
+                if (cur.peek() == '/' && cur.peek(1) == '*') {
+                    ++depth;
+                    cur.advance(2);
+                } else if (cur.peek() == '*' && cur.peek(1) == '/') {
+                    --depth;
+                    cur.advance(2);
+                    if (depth == 0) break;
+                } else {
+                    cur.advance();
+                }
+            }
+            if (depth != 0) error_at(line, column, 2, "unterminated comment");
+            continue;
+        }
+
+        Token tok;
+        tok.file = file;
+        tok.line = cur.line();
+        tok.column = cur.column();
+        const char* const begin = text.data() + cur.pos();
+        const char* const end = text.data() + text.size();
+        const char* it = begin;
+
+        if (c == '"') {
+            // String literal with backslash escapes; it may not run past the end of the file.
+            ++it;
+            std::string value;
+            bool closed = false;
+            while (it != end) {
+                if (*it == '"') {
+                    closed = true;
+                    ++it;
+                    break;
+                }
+                if (*it == '\\' && it + 1 != end) {
+                    value += decode_escape(it[1]);
+                    it += 2;
+                    continue;
+                }
+                value += *it++;
+            }
+            if (!closed) {
+                error_at(tok.line, tok.column, 1, "unterminated string");
+                cur.advance(static_cast<std::size_t>(it - begin));
+                break;
+            }
+            tok.kind = TokenKind::String;
+            tok.text = std::move(value);
+        } else if (c == '#') {
+            // A directive: '#' then optional blanks then its name.
+            ++it;
+            while (it != end && (*it == ' ' || *it == '\t')) ++it;
+            std::string name;
+            if (x3::parse(it, end, identifier_rule, name)) {
+                tok.kind = TokenKind::Directive;
+                tok.text = std::move(name);
+            } else {
+                error_at(tok.line, tok.column, 1, "'#' must be followed by a directive name");
+                cur.advance(1);
+                continue;
+            }
+        } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+            std::string name;
+            x3::parse(it, end, identifier_rule, name);
+            tok.kind = TokenKind::Identifier;
+            tok.text = std::move(name);
+        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                   (c == '.' && std::isdigit(static_cast<unsigned char>(cur.peek(1))))) {
+            double value = 0.0;
+            x3::parse(it, end, pov_real, value);
+            tok.kind = TokenKind::Number;
+            tok.number = value;
+            tok.text.assign(begin, it);
+        } else {
+            std::string punct;
+            if (!x3::parse(it, end, two_char_punct, punct)) {
+                char one = 0;
+                if (!x3::parse(it, end, one_char_punct, one)) {
+                    error_at(tok.line, tok.column, 1, std::string("unexpected character '") + c + "'");
+                    cur.advance(1);
+                    continue;
+                }
+                punct = std::string(1, one);
+            }
+            tok.kind = TokenKind::Punct;
+            tok.text = std::move(punct);
+        }
+        const auto consumed = static_cast<std::size_t>(it - begin);
+        tok.length = static_cast<std::uint32_t>(consumed > 0 ? consumed : 1);
+        // A token that spans lines (a string) is underlined only to the end of its first line.
+        for (std::size_t i = 0; i < consumed; ++i) {
+            if (begin[i] == '\n') {
+                tok.length = static_cast<std::uint32_t>(i > 0 ? i : 1);
+                break;
+            }
+        }
+        cur.advance(consumed);
+        tokens.push_back(std::move(tok));
+    }
+
+    Token eof;
+    eof.kind = TokenKind::EndOfFile;
+    eof.file = file;
+    eof.line = cur.line();
+    eof.column = cur.column();
+    tokens.push_back(std::move(eof));
+    return tokens;
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,204 @@
+// Parse entry points, the statement loop with error recovery, and diagnostics with include/macro notes.
+#include "parser/parse.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+Parser::Parser(const ParseOptions& options) : m_options(options) {}
+
+Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at) : m_parser(parser) {
+    constexpr std::size_t k_max_nesting = 400;
+    if (++m_parser.m_nesting <= k_max_nesting) return;
+    --m_parser.m_nesting;
+    m_parser.report(m_parser.make_diagnostic(
+        Severity::Error, at, "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
+    throw FatalError{};
+}
+
+Diagnostic Parser::make_diagnostic(Severity s, const Token& at, std::string message) const {
+    Diagnostic d;
+    d.severity = s;
+    d.message = std::move(message);
+    if (at.file < m_files.size()) {
+        const SourceFile& f = *m_files[at.file];
+        d.loc = SourceLoc{f.path, at.line, at.column};
+        d.source_line = source_line(f.text, at.line);
+    }
+    d.span = at.kind == TokenKind::EndOfFile ? 1 : at.length;
+    // Notes, innermost first: the macro being expanded and the include chain.
+    for (auto it = m_frames.rbegin(); it != m_frames.rend(); ++it) {
+        const Token& site = it->call_site;
+        const std::string where =
+            (site.file < m_files.size() ? m_files[site.file]->path : std::string("?")) + ":" + std::to_string(site.line);
+        if (it->kind == Frame::Kind::Include)
+            d.notes.push_back("included from " + where);
+        else
+            d.notes.push_back("in macro '" + it->name + "' invoked from " + where);
+    }
+    return d;
+}
+
+void Parser::report(Diagnostic d) {
+    const bool error = d.severity == Severity::Error;
+    if (d.severity == Severity::Warning) m_scene.warnings.push_back(d);
+    m_diagnostics.push_back(std::move(d));
+    if (error && ++m_errors >= m_options.max_errors) throw FatalError{};
+}
+
+void Parser::fail(const Token& at, std::string message) {
+    report(make_diagnostic(Severity::Error, at, std::move(message)));
+    throw StatementError{};
+}
+
+void Parser::warn(const Token& at, std::string message) {
+    report(make_diagnostic(Severity::Warning, at, std::move(message)));
+}
+
+void Parser::warn_unsupported(const Token& at, const std::string& feature) {
+    Diagnostic d = make_diagnostic(Severity::Warning, at, feature + " is not rendered yet");
+    if (m_declaring.empty()) {
+        emit_feature_warning(std::move(d));
+        return;
+    }
+    for (const Diagnostic& pending : m_declaring.back())
+        if (pending.message == d.message) return;
+    m_declaring.back().push_back(std::move(d));
+}
+
+void Parser::emit_feature_warning(Diagnostic d) {
+    if (!m_warned_features.insert(d.message).second) return;
+    report(std::move(d));
+}
+
+void Parser::fail_undeclared(const Token& at) {
+    Diagnostic d = make_diagnostic(Severity::Error, at, "undeclared identifier '" + at.text + "'");
+    // Suggest the closest declared name (preferred) or keyword within edit distance 2.
+    std::string best;
+    std::size_t best_distance = 3;
+    auto consider = [&](std::string_view name) {
+        if (name == at.text) return;
+        const std::size_t dist = edit_distance(at.text, name, 2);
+        if (dist < best_distance || (dist == best_distance && !best.empty() && name < best)) {
+            best_distance = dist;
+            best = std::string(name);
+        }
+    };
+    for (const std::string& name : known_names()) consider(name);
+    const std::string declared_best = best;
+    const std::size_t declared_distance = best_distance;
+    for (std::string_view kw : all_keywords()) consider(kw);
+    if (!declared_best.empty() && declared_distance <= best_distance) best = declared_best;
+    if (!best.empty() && at.text.size() > 2) d.notes.insert(d.notes.begin(), "did you mean '" + best + "'?");
+    report(std::move(d));
+    throw StatementError{};
+}
+
+void Parser::recover_after_error(std::size_t depth) {
+    // Skip the rest of the statement that failed: everything up to its closing brace.
+    for (int guard = 0; m_brace_depth > depth && guard < 10'000'000; ++guard) {
+        try {
+            if (next().kind == TokenKind::EndOfFile) break;
+        } catch (const StatementError&) {
+        }
+    }
+    m_brace_depth = depth;
+    if (raw().kind == TokenKind::Punct && raw().text == ";") ++m_pos;
+}
+
+ParseResult Parser::run(std::string text, const std::string& path) {
+    ParseResult result;
+    try {
+        m_scene.path = path;
+        m_scopes.emplace_back();
+        for (const auto& [name, value] : m_options.declares) m_scopes.front()[name] = Numeric::scalar(value);
+        auto file = std::make_unique<SourceFile>();
+        file->path = path;
+        file->text = std::move(text);
+        std::vector<Diagnostic> lex_errors;
+        file->tokens = lex(file->text, 0, path, lex_errors);
+        m_files.push_back(std::move(file));
+        for (auto& d : lex_errors) report(std::move(d));
+        try {
+            while (true) {
+                try {
+                    if (peek().kind == TokenKind::EndOfFile) break;
+                    parse_statement();
+                } catch (const StatementError&) {
+                    recover_after_error(0);
+                }
+            }
+            for (const Cond& c : m_conds)
+                report(make_diagnostic(Severity::Error, c.where, "'#" + c.where.text + "' has no matching #end"));
+            if (!m_scene.global.assumed_gamma_given && m_version >= 3.7) {
+                Diagnostic d;
+                d.severity = Severity::Warning;
+                d.loc.path = path;
+                d.message = "assumed_gamma not given in global_settings; using 1.0";
+                report(std::move(d));
+            }
+        } catch (const FatalError&) {
+        }
+    } catch (const std::exception& e) {
+        Diagnostic d;
+        d.loc.path = path;
+        d.message = std::string("internal parser error: ") + e.what();
+        m_diagnostics.push_back(std::move(d));
+        ++m_errors;
+    } catch (...) {
+        Diagnostic d;
+        d.loc.path = path;
+        d.message = "internal parser error";
+        m_diagnostics.push_back(std::move(d));
+        ++m_errors;
+    }
+    m_scene.version = m_version;
+    result.diagnostics = std::move(m_diagnostics);
+    if (m_errors == 0) result.scene = std::move(m_scene);
+    return result;
+}
+
+ParseResult parse_string(std::string_view text, const std::string& path, const ParseOptions& options) {
+    try {
+        Parser parser(options);
+        return parser.run(std::string(text), path);
+    } catch (...) {
+        ParseResult r;
+        Diagnostic d;
+        d.loc.path = path;
+        d.message = "internal parser error";
+        r.diagnostics.push_back(std::move(d));
+        return r;
+    }
+}
+
+ParseResult parse_file(const std::filesystem::path& path, const ParseOptions& options) {
+    const std::string name = path.string();
+    std::string reason;
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        reason = std::strerror(EISDIR);
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (in) {
+            std::ostringstream ss;
+            ss << in.rdbuf();
+            if (!in.bad()) return parse_string(ss.str(), name, options);
+        }
+        reason = std::strerror(errno != 0 ? errno : ENOENT);
+    }
+    ParseResult r;
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.message = "cannot open scene file '" + name + "': " + reason;
+    r.diagnostics.push_back(std::move(d));
+    return r;
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,227 @@
+// Parser: the recursive-descent reader of POV-Ray SDL over a re-readable token stream with a directive layer.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/lexer.h"
+#include "parser/parse.h"
+#include "parser/value.h"
+
+namespace wardray::parser {
+
+/// One source file read by the parse, with its tokens (kept alive so macros and loops can re-read them).
+struct SourceFile {
+    std::string path;  ///< as shown in diagnostics
+    std::string text;
+    std::vector<Token> tokens;
+};
+
+/// Thrown inside the parser to abandon the current statement after an error was reported.
+struct StatementError {};
+/// Thrown inside the parser to end the whole parse (error limit, #error, runaway recursion).
+struct FatalError {};
+
+/// How a token reads in a message: 'word', string "text", '#directive' or end of file.
+std::string describe_token(const Token& t);
+/// "a pigment", "an object", ... for messages about identifiers of the wrong kind.
+const char* value_kind_name(const Value& v);
+
+/// Parses one scene; use once. Internal to parser/: other layers call parse_file / parse_string.
+class Parser {
+public:
+    /// A parser reading with `options` (library paths, declares, image size, error limit).
+    explicit Parser(const ParseOptions& options);
+
+    /// Parses `text` as the main scene file named `path`; never throws.
+    ParseResult run(std::string text, const std::string& path);
+
+private:
+    // --- token stream and directive layer (directives.cpp) ---
+    /// A file or macro being read, with where to return when it ends.
+    struct Frame {
+        enum class Kind { Include, Macro };
+        Kind kind = Kind::Include;
+        std::string name;
+        std::uint32_t return_file = 0;
+        std::size_t return_pos = 0;
+        Token call_site;
+        std::size_t cond_depth = 0;
+        std::size_t scope_index = 0;  ///< the macro's own symbol table
+        /// Macro parameters given a bare identifier: #declare on them writes that identifier (by reference).
+        std::unordered_map<std::string, std::pair<std::size_t, std::string>> references;
+    };
+    /// An open #if / #while / #for / #switch.
+    struct Cond {
+        enum class Kind { If, While, For, Switch };
+        Kind kind = Kind::If;
+        Token where;
+        std::size_t restart_pos = 0;  ///< #while: the directive token; #for: the first body token
+        std::string ident;            ///< #for counter
+        double end = 0.0;
+        double step = 1.0;
+        double switch_value = 0.0;
+    };
+    /// A #macro definition: its parameters and where its body lies.
+    struct Macro {
+        std::vector<std::string> params;
+        std::vector<bool> optional;
+        std::uint32_t file = 0;
+        std::size_t body = 0;
+        std::size_t end = 0;
+        Token where;
+    };
+
+    const Token& raw() const { return m_files[m_file]->tokens[m_pos]; }
+    const Token& peek();
+    const Token& peek_expr();
+    Token next();
+    bool accept(const char* punct);
+    bool accept_keyword(const char* word);
+    Token expect(const char* punct);
+    Token expect_identifier();
+    bool is_punct(const Token& t, const char* p) const;
+    bool is_word(const Token& t, const char* w) const;
+    void accept_semicolon_after_declare(const Value& v, const Token& where);
+
+    void process_directive();
+    void directive_declare(const Token& tok, bool local);
+    void directive_if(const Token& tok);
+    void directive_while(const Token& tok);
+    void directive_for(const Token& tok);
+    void directive_end(const Token& tok);
+    void directive_else(const Token& tok, bool elseif);
+    void directive_switch(const Token& tok);
+    void directive_break(const Token& tok);
+    void directive_include(const Token& tok);
+    void directive_macro(const Token& tok);
+    void directive_default(const Token& tok);
+    /// Skips raw tokens of the current file until a directive in `stops` at nesting `depth` 0; returns it
+    /// (consumed) or an EndOfFile token when the file ended first.
+    Token skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener);
+    void handle_end_of_file();
+    std::optional<std::uint32_t> load_file(const std::filesystem::path& path, std::string& error);
+    void invoke_macro(const Token& name_tok, const Macro& macro);
+    void return_from_macro();
+    /// Invokes macros standing where an item is expected, so their bodies are read in place.
+    void expand_macros();
+    void recover_after_error(std::size_t depth);
+    bool count_loop_iteration(const Token& where);
+
+    // --- symbols ---
+    /// Finds an identifier, innermost scope first; using it releases the warnings deferred at its declaration.
+    const Value* lookup(const std::string& name);
+    Value* lookup_mutable(const std::string& name);
+    // --- arrays (arrays.cpp) ---
+    Value parse_array_declaration(const Token& kw);
+    void parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t offset, const Token& kw);
+    /// Reads `[i][j]...` after an array identifier and returns the flat element index.
+    std::size_t parse_array_index(const ArrayValue& array, const Token& id);
+    /// When an array element `A[i]...` comes next, consumes it and returns a copy of its value.
+    std::optional<Value> take_array_element();
+    bool is_array_element_next();
+    void declare(const std::string& name, Value v, bool local);
+    std::vector<std::string> known_names() const;
+
+    // --- diagnostics (parse.cpp) ---
+    Diagnostic make_diagnostic(Severity s, const Token& at, std::string message) const;
+    void report(Diagnostic d);
+    [[noreturn]] void fail(const Token& at, std::string message);
+    void warn(const Token& at, std::string message);
+    void warn_unsupported(const Token& at, const std::string& feature);
+    [[noreturn]] void fail_undeclared(const Token& at);
+
+    // --- expressions (expression.cpp) ---
+    Value parse_rvalue();
+    Numeric parse_numeric();
+    double parse_float();
+    Vec3 parse_vector();
+    std::string parse_string();
+    bool parse_bool_optional();
+    /// `?:` and below; `allow_less` is false outside parentheses, where '<' starts the next vector.
+    Numeric parse_conditional(bool allow_less = true);
+    Numeric parse_logical(bool allow_less);
+    Numeric parse_relational(bool allow_less);
+    /// The additive level; `first`, when given, is an operand already read (an array element).
+    Numeric parse_additive(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_multiplicative(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_unary(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_postfix(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_primary();
+    Numeric parse_function(const Token& name);
+    std::optional<Numeric> builtin_constant(const Token& t);
+    bool starts_string(const Token& t);
+
+    // --- appearance (appearance.cpp) ---
+    Color parse_color();
+    bool is_color_keyword(const Token& t) const;
+    Pigment parse_pigment_body(const Token& kw);
+    Finish parse_finish_body(const Token& kw);
+    Texture parse_texture_body(const Token& kw);
+    void parse_finish_item(Finish& f, const Token& item);
+    void skip_block(const Token& kw);
+    void skip_optional_block(const Token& kw);
+
+    // --- statements (statements.cpp) ---
+    void parse_statement();
+    bool is_object_keyword(const Token& t) const;
+    ObjectValue parse_object(const Token& kw);
+    void parse_object_modifiers(ObjectValue& ov, bool compound);
+    bool parse_transform_item(const Token& t, Transform& out);
+    Transform parse_transform_body(const Token& kw);
+    void apply_transform(ObjectValue& ov, const Transform& tr);
+    Light parse_light_body(const Token& kw);
+    CameraSpec parse_camera_body(const Token& kw);
+    void parse_global_settings(const Token& kw);
+    void parse_radiosity(const Token& kw, RadiositySettings& rad);
+    void place_object(ObjectValue ov);
+    Texture& texture_to_modify(ObjectValue& ov);
+
+    /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
+    class NestingGuard {
+    public:
+        NestingGuard(Parser& parser, const Token& at);
+        ~NestingGuard() { --m_parser.m_nesting; }
+        NestingGuard(const NestingGuard&) = delete;
+        NestingGuard& operator=(const NestingGuard&) = delete;
+
+    private:
+        Parser& m_parser;
+    };
+    friend class NestingGuard;
+    std::size_t m_nesting = 0;
+
+    const ParseOptions& m_options;
+    std::vector<std::unique_ptr<SourceFile>> m_files;
+    std::map<std::string, std::uint32_t> m_file_index;  ///< resolved path -> index, so re-includes do not re-lex
+    std::uint32_t m_file = 0;
+    std::size_t m_pos = 0;
+    std::size_t m_brace_depth = 0;  ///< '{' minus '}' consumed so far, for error recovery
+    std::vector<Frame> m_frames;
+    std::vector<Cond> m_conds;
+    std::vector<std::unordered_map<std::string, Value>> m_scopes;
+    std::unordered_map<std::string, Macro> m_macros;
+    std::vector<Diagnostic> m_diagnostics;
+    std::size_t m_errors = 0;
+    std::set<std::string> m_warned_features;
+    /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
+    /// so unused declarations of include files cost nothing.
+    std::unordered_map<std::string, std::vector<Diagnostic>> m_deferred_warnings;
+    std::vector<std::vector<Diagnostic>> m_declaring;  ///< warnings collected by the declarations being parsed
+    void emit_feature_warning(Diagnostic d);
+    std::uint64_t m_loop_iterations = 0;
+    std::vector<std::uint32_t> m_rand_streams;  ///< states of the streams seed() created
+    double m_version = 3.7;
+    Pigment m_default_pigment;
+    Finish m_default_finish;
+    Scene m_scene;
+};
+
+}  // namespace wardray::parser

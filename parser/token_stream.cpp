@@ -1,0 +1,278 @@
+// Token stream: reading tokens through the directive layer, symbol scopes, and include/macro frames.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+constexpr std::size_t k_max_frame_depth = 256;
+constexpr std::uint64_t k_max_loop_iterations = 10'000'000;
+
+}  // namespace
+// ---------------------------------------------------------------------------------------------------------------
+// Token access
+
+const Token& Parser::peek() {
+    while (true) {
+        const Token& t = raw();
+        if (t.kind == TokenKind::Directive) {
+            process_directive();
+            continue;
+        }
+        if (t.kind == TokenKind::EndOfFile && !m_frames.empty()) {
+            handle_end_of_file();
+            continue;
+        }
+        return t;
+    }
+}
+
+const Token& Parser::peek_expr() {
+    // Inside an expression only a macro's closing #end is read through (so `M(1) * 2` works); any other
+    // directive ends the expression first, so `#declare A = 1 #if (A)` sees A declared.
+    while (true) {
+        const Token& t = raw();
+        if (t.kind == TokenKind::Directive && t.text == "end" && !m_frames.empty() &&
+            m_frames.back().kind == Frame::Kind::Macro && m_conds.size() == m_frames.back().cond_depth) {
+            ++m_pos;
+            return_from_macro();
+            continue;
+        }
+        return t;
+    }
+}
+
+Token Parser::next() {
+    Token t = peek();
+    if (t.kind != TokenKind::EndOfFile) ++m_pos;
+    if (t.kind == TokenKind::Punct) {
+        if (t.text == "{") ++m_brace_depth;
+        if (t.text == "}" && m_brace_depth > 0) --m_brace_depth;
+    }
+    return t;
+}
+
+bool Parser::is_punct(const Token& t, const char* p) const {
+    return t.kind == TokenKind::Punct && t.text == p;
+}
+
+bool Parser::is_word(const Token& t, const char* w) const {
+    return t.kind == TokenKind::Identifier && t.text == w;
+}
+
+bool Parser::accept(const char* punct) {
+    if (!is_punct(peek(), punct)) return false;
+    next();
+    return true;
+}
+
+bool Parser::accept_keyword(const char* word) {
+    if (!is_word(peek(), word)) return false;
+    next();
+    return true;
+}
+
+Token Parser::expect(const char* punct) {
+    const Token& t = peek();
+    if (!is_punct(t, punct)) {
+        const std::string found = t.kind == TokenKind::EndOfFile ? "end of file" : "'" + t.text + "'";
+        fail(t, std::string("expected '") + punct + "' but found " + found);
+    }
+    return next();
+}
+
+Token Parser::expect_identifier() {
+    const Token& t = peek();
+    if (t.kind != TokenKind::Identifier) {
+        const std::string found = t.kind == TokenKind::EndOfFile ? "end of file" : "'" + t.text + "'";
+        fail(t, "expected an identifier but found " + found);
+    }
+    return next();
+}
+
+void Parser::accept_semicolon_after_declare(const Value& v, const Token& where) {
+    if (is_punct(peek_expr(), ";")) {
+        next();
+        return;
+    }
+    // POV-Ray compat: 3.5+ wants ';' after float, vector and colour declarations.
+    if (std::holds_alternative<Numeric>(v) && m_version >= 3.5)
+        warn(where, "missing ';' after the declaration of '" + where.text + "'");
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Symbols
+
+const Value* Parser::lookup(const std::string& name) {
+    if (const auto deferred = m_deferred_warnings.find(name); deferred != m_deferred_warnings.end()) {
+        const std::vector<Diagnostic> warnings = deferred->second;
+        for (const Diagnostic& d : warnings) {
+            if (!m_declaring.empty())
+                m_declaring.back().push_back(d);
+            else
+                emit_feature_warning(d);
+        }
+    }
+    for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
+        const auto found = it->find(name);
+        if (found != it->end()) return &found->second;
+    }
+    return nullptr;
+}
+
+Value* Parser::lookup_mutable(const std::string& name) {
+    for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
+        const auto found = it->find(name);
+        if (found != it->end()) return &found->second;
+    }
+    return nullptr;
+}
+
+void Parser::declare(const std::string& name, Value v, bool local) {
+    // POV-Ray compat: #declare always writes the global table, #local the innermost (include file or macro).
+    auto& scope = local ? m_scopes.back() : m_scopes.front();
+    scope[name] = std::move(v);
+}
+
+std::vector<std::string> Parser::known_names() const {
+    std::vector<std::string> names;
+    for (const auto& scope : m_scopes)
+        for (const auto& [name, value] : scope) names.push_back(name);
+    for (const auto& [name, macro] : m_macros) names.push_back(name);
+    return names;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Frames
+
+void Parser::handle_end_of_file() {
+    const Frame frame = m_frames.back();
+    const Token& eof = raw();
+    while (m_conds.size() > frame.cond_depth) {
+        report(make_diagnostic(Severity::Error, m_conds.back().where,
+                               "'#" + m_conds.back().where.text + "' has no matching #end in this file"));
+        m_conds.pop_back();
+    }
+    if (frame.kind == Frame::Kind::Macro) {
+        report(make_diagnostic(Severity::Error, eof, "end of file inside macro '" + frame.name + "'"));
+    }
+    m_scopes.pop_back();
+    m_frames.pop_back();
+    m_file = frame.return_file;
+    m_pos = frame.return_pos;
+}
+
+void Parser::return_from_macro() {
+    const Frame frame = m_frames.back();
+    m_frames.pop_back();
+    m_scopes.pop_back();
+    m_file = frame.return_file;
+    m_pos = frame.return_pos;
+}
+
+void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
+    expect("(");
+    std::vector<std::optional<Value>> args;
+    std::unordered_map<std::string, std::pair<std::size_t, std::string>> references;
+    if (!accept(")")) {
+        while (true) {
+            const Token& t = peek();
+            // POV-Ray compat: a parameter given a bare declared identifier is passed by reference.
+            const auto& tokens = m_files[m_file]->tokens;
+            if (t.kind == TokenKind::Identifier && args.size() < macro.params.size() && m_pos + 1 < tokens.size() &&
+                (is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
+                for (std::size_t s = m_scopes.size(); s > 0; --s) {
+                    if (m_scopes[s - 1].count(t.text)) {
+                        references[macro.params[args.size()]] = {s - 1, t.text};
+                        break;
+                    }
+                }
+            }
+            if (is_punct(t, ",") || is_punct(t, ")"))
+                args.emplace_back();
+            else
+                args.emplace_back(parse_rvalue());
+            if (accept(",")) continue;
+            expect(")");
+            break;
+        }
+    }
+    if (args.size() > macro.params.size())
+        fail(name_tok, "macro '" + name_tok.text + "' takes " + std::to_string(macro.params.size()) +
+                           " parameter(s) but " + std::to_string(args.size()) + " were given");
+    std::unordered_map<std::string, Value> scope;
+    for (std::size_t i = 0; i < macro.params.size(); ++i) {
+        if (i < args.size() && args[i]) {
+            scope[macro.params[i]] = std::move(*args[i]);
+        } else if (!macro.optional[i]) {
+            fail(name_tok, "macro '" + name_tok.text + "' is missing parameter '" + macro.params[i] + "'");
+        }
+    }
+    if (m_frames.size() >= k_max_frame_depth) {
+        report(make_diagnostic(Severity::Error, name_tok,
+                               "macro and include nesting exceeds the limit of " +
+                                   std::to_string(k_max_frame_depth) + " (runaway recursion?)"));
+        throw FatalError{};
+    }
+    Frame frame;
+    frame.kind = Frame::Kind::Macro;
+    frame.name = name_tok.text;
+    frame.return_file = m_file;
+    frame.return_pos = m_pos;
+    frame.call_site = name_tok;
+    frame.cond_depth = m_conds.size();
+    frame.scope_index = m_scopes.size();
+    frame.references = std::move(references);
+    m_frames.push_back(std::move(frame));
+    m_scopes.push_back(std::move(scope));
+    m_file = macro.file;
+    m_pos = macro.body;
+}
+
+void Parser::expand_macros() {
+    while (true) {
+        const Token& t = peek();
+        if (t.kind != TokenKind::Identifier) return;
+        const auto m = m_macros.find(t.text);
+        if (m == m_macros.end()) return;
+        const Token name = next();
+        invoke_macro(name, m->second);
+    }
+}
+
+bool Parser::count_loop_iteration(const Token& where) {
+    if (++m_loop_iterations <= k_max_loop_iterations) return true;
+    report(make_diagnostic(Severity::Error, where,
+                           "loops ran more than " + std::to_string(k_max_loop_iterations) +
+                               " iterations in total; stopping (endless #while?)"));
+    throw FatalError{};
+}
+
+std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path, std::string& error) {
+    const std::string key = path.lexically_normal().string();
+    if (const auto it = m_file_index.find(key); it != m_file_index.end()) return it->second;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = std::strerror(errno);
+        return std::nullopt;
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    auto file = std::make_unique<SourceFile>();
+    file->path = key;
+    file->text = ss.str();
+    const auto index = static_cast<std::uint32_t>(m_files.size());
+    std::vector<Diagnostic> lex_errors;
+    file->tokens = lex(file->text, index, file->path, lex_errors);
+    m_files.push_back(std::move(file));
+    m_file_index[key] = index;
+    for (auto& d : lex_errors) report(std::move(d));
+    return index;
+}
+
+}  // namespace wardray::parser

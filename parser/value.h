@@ -1,0 +1,112 @@
+// Values the scene language computes and stores in identifiers: numbers, strings and scene items.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "parser/scene.h"
+
+namespace wardray::parser {
+
+/// A float (n == 1), a vector of 2..5 components, or a colour (five components: r g b filter transmit).
+struct Numeric {
+    int n = 1;
+    std::array<double, 5> v{};
+
+    /// A float.
+    static Numeric scalar(double f) {
+        Numeric r;
+        r.v[0] = f;
+        return r;
+    }
+    /// A 3-vector.
+    static Numeric vector3(const Vec3& a) {
+        Numeric r;
+        r.n = 3;
+        r.v = {a.x, a.y, a.z, 0.0, 0.0};
+        return r;
+    }
+    /// A colour with its five components.
+    static Numeric color(const Color& c) {
+        Numeric r;
+        r.n = 5;
+        r.v = {c.r, c.g, c.b, c.filter, c.transmit};
+        return r;
+    }
+    /// POV-Ray compat: a float promotes to every component, a shorter vector is padded with zeros.
+    Numeric promoted(int terms) const {
+        Numeric r = *this;
+        if (n >= terms) return r;
+        for (int i = n; i < terms; ++i) r.v[i] = (n == 1) ? v[0] : 0.0;
+        r.n = terms;
+        return r;
+    }
+    /// The first three components (a float fills all three).
+    Vec3 vec3() const {
+        const Numeric p = promoted(3);
+        return {p.v[0], p.v[1], p.v[2]};
+    }
+    /// As a colour, with POV-Ray's promotion to five components.
+    Color to_color() const {
+        const Numeric p = promoted(5);
+        return {p.v[0], p.v[1], p.v[2], p.v[3], p.v[4]};
+    }
+};
+
+/// One shape of a (flattened) object with whether it carries its own texture.
+struct ObjectPart {
+    Object object;
+    bool has_texture = false;
+};
+
+/// An object statement after flattening unions: its shapes and the lights it holds.
+struct ObjectValue {
+    std::vector<ObjectPart> parts;
+    std::vector<Light> lights;
+    bool compound = false;            ///< a union: its texture goes to the parts without one
+    std::optional<Texture> texture;   ///< the union's own texture
+};
+
+/// The camera as written, before resolution to the final vectors.
+struct CameraSpec {
+    Camera::Type type = Camera::Type::Perspective;
+    Vec3 location{0.0, 0.0, 0.0};
+    Vec3 direction{0.0, 0.0, 1.0};
+    Vec3 right{1.33, 0.0, 0.0};
+    Vec3 up{0.0, 1.0, 0.0};
+    Vec3 sky{0.0, 1.0, 0.0};
+    std::optional<Vec3> look_at;
+    std::optional<double> angle;
+    bool had_up = false;
+    bool had_right = false;
+    bool other_projection = false;  ///< a projection not rendered yet (its angle is not checked)
+    Transform transform;
+    SourceLoc loc;
+};
+
+/// Resolves a camera as POV-Ray 3.7 does: angle, then look_at (with sky), then orthographic sizing, then transforms.
+/// Returns an error message in `error` when the camera is degenerate (and leaves the vectors usable).
+Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning);
+
+/// A declared item of a kind not supported yet (normal, interior, material, function, ...), kept by name only.
+struct Unsupported {
+    std::string what;
+};
+
+struct ArrayValue;
+
+/// Anything an identifier can hold.
+using Value = std::variant<Numeric, std::string, Pigment, Finish, Texture, ObjectValue, Transform, CameraSpec,
+                           Unsupported, std::shared_ptr<ArrayValue>>;
+
+/// An `array[N][M]...`: elements in row-major order, each empty until assigned.
+struct ArrayValue {
+    std::vector<std::size_t> dims;
+    std::vector<std::optional<Value>> elements;
+};
+
+}  // namespace wardray::parser

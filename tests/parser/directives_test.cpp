@@ -1,0 +1,347 @@
+// Tests of the directive layer: #declare/#local scopes, #if, loops, #switch, #macro, #include, #version.
+#include <filesystem>
+#include <fstream>
+
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+using test::parse_ok;
+
+double radius(const Scene& s, std::size_t i) { return std::get<Sphere>(s.objects.at(i).shape).radius; }
+
+// A fresh folder for include files, removed at the end of the test.
+class TempDir {
+public:
+    TempDir() {
+        m_path = std::filesystem::temp_directory_path() /
+                 ("wardray_parser_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(m_path);
+        std::filesystem::create_directories(m_path);
+    }
+    ~TempDir() { std::filesystem::remove_all(m_path); }
+    std::filesystem::path write(const std::string& name, const std::string& text) const {
+        const auto p = m_path / name;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream(p) << text;
+        return p;
+    }
+    const std::filesystem::path& path() const { return m_path; }
+
+private:
+    std::filesystem::path m_path;
+};
+
+TEST(Directives, DeclareAndIf) {
+    const Scene s = parse_ok(R"(
+        #declare A = 2;
+        #if (A > 1) sphere { 0, 1 } #else sphere { 0, 2 } #end
+        #if (A < 1) sphere { 0, 3 } #elseif (A = 2) sphere { 0, 4 } #elseif (1) sphere { 0, 5 } #else sphere { 0, 6 } #end
+        #ifdef (A) sphere { 0, 7 } #end
+        #ifndef (B) sphere { 0, 8 } #end
+        #undef A
+        #ifdef (A) sphere { 0, 9 } #end
+        #if (0) #if (1) sphere { 0, 10 } #end #else sphere { 0, 11 } #end
+    )");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(radius(s, 0), 1);
+    EXPECT_EQ(radius(s, 1), 4);
+    EXPECT_EQ(radius(s, 2), 7);
+    EXPECT_EQ(radius(s, 3), 8);
+    EXPECT_EQ(radius(s, 4), 11);
+}
+
+TEST(Directives, WhileAndFor) {
+    const Scene s = parse_ok(R"(
+        #declare I = 0;
+        #while (I < 3) sphere { 0, I + 1 } #declare I = I + 1; #end
+        #for (J, 10, 4, -3) sphere { 0, J } #end
+        #for (K, 1, 0) sphere { 0, 99 } #end
+    )");
+    ASSERT_EQ(s.objects.size(), 6u);
+    EXPECT_EQ(radius(s, 0), 1);
+    EXPECT_EQ(radius(s, 2), 3);
+    EXPECT_EQ(radius(s, 3), 10);
+    EXPECT_EQ(radius(s, 4), 7);
+    EXPECT_EQ(radius(s, 5), 4);
+}
+
+TEST(Directives, BreakLeavesLoop) {
+    const Scene s = parse_ok(R"(
+        #declare I = 0;
+        #while (1)
+          #declare I = I + 1;
+          #if (I = 3) #break #end
+          sphere { 0, I }
+        #end
+        sphere { 0, 100 }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(radius(s, 2), 100);
+}
+
+TEST(Directives, Switch) {
+    const Scene s = parse_ok(R"(
+        #declare V = 2;
+        #switch (V)
+          #case (1) sphere { 0, 1 } #break
+          #range (2, 3) sphere { 0, 2 }
+          #case (4) sphere { 0, 4 } #break
+          #else sphere { 0, 5 }
+        #end
+        #switch (7) #case (1) sphere { 0, 6 } #break #else sphere { 0, 7 } #end
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(radius(s, 0), 2);
+    EXPECT_EQ(radius(s, 1), 4);  // no #break: falls through
+    EXPECT_EQ(radius(s, 2), 7);
+}
+
+TEST(Directives, MacrosReturnValuesAndObjects) {
+    const Scene s = parse_ok(R"(
+        #macro Twice(A) (2 * A) #end
+        #macro Ball(R, optional C) sphere { 0, R } #end
+        #macro Fact(N) #if (N <= 1) 1 #else N * Fact(N - 1) #end #end
+        sphere { 0, Twice(3) + 1 }
+        Ball(5)
+        sphere { 0, Fact(4) }
+        #macro Sum3(A, B, C) #local T = A + B; T + C #end
+        sphere { 0, Sum3(1, 2, 3) }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(radius(s, 0), 7);
+    EXPECT_EQ(radius(s, 1), 5);
+    EXPECT_EQ(radius(s, 2), 24);
+    EXPECT_EQ(radius(s, 3), 6);
+}
+
+TEST(Directives, MacroParametersByReference) {
+    const Scene s = parse_ok(R"(
+        #macro Inc(V) #declare V = V + 1; #end
+        #macro Turn(Stuff, Degrees) #declare Stuff = object { Stuff rotate y * Degrees } #end
+        #declare Value = 5;
+        Inc(Value)
+        Inc(Value + 0)
+        #declare Thing = sphere { <0, 0, 1>, Value }
+        Turn(Thing, 90)
+        object { Thing }
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(radius(s, 0), 6);  // an expression argument is passed by value
+    const Vec3 c = s.objects[0].transform.point(std::get<Sphere>(s.objects[0].shape).center);
+    EXPECT_NEAR(c.x, 1.0, 1e-12);
+}
+
+TEST(Directives, LocalIsScopedToIncludeFile) {
+    TempDir dir;
+    dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");
+    const auto main = dir.write("scene.pov",
+                                "global_settings { assumed_gamma 1 }\n#declare A = 1; #local L = 2;\n"
+                                "#include \"inc.inc\"\nsphere { 0, G } sphere { 0, L } sphere { 0, A }\n");
+    const ParseResult r = parse_file(main, test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(radius(*r.scene, 0), 6);
+    EXPECT_EQ(radius(*r.scene, 1), 2);  // the include's #local L did not leak
+    EXPECT_EQ(radius(*r.scene, 2), 10);  // #declare in the include wrote the global
+}
+
+TEST(Directives, DeclareInsideMacroWritesGlobal) {
+    const Scene s = parse_ok(R"(
+        #declare C = 1;
+        #macro Bump() #declare C = C + 1; #local C = 100; #end
+        Bump()
+        sphere { 0, C }
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(radius(s, 0), 2);
+}
+
+TEST(Directives, IncludeSearchOrder) {
+    TempDir dir;
+    dir.write("lib1/a.inc", "#declare Which = 1;");
+    dir.write("lib2/a.inc", "#declare Which = 2;");
+    dir.write("lib2/b.inc", "#declare Other = 3;");
+    dir.write("scenes/a.inc", "#declare Which = 0;");
+    dir.write("scenes/sub/nested.inc", "#include \"sibling.inc\"");
+    dir.write("scenes/sub/sibling.inc", "#declare Sib = 4;");
+    const auto main = dir.write("scenes/s.pov",
+                                "global_settings { assumed_gamma 1 }\n#include \"a.inc\"\n#include \"b\"\n"
+                                "#include \"sub/nested.inc\"\nsphere { <Which, Other, Sib>, 1 }\n");
+    ParseOptions o;
+    o.library_paths = {dir.path() / "lib1", dir.path() / "lib2"};
+    ParseResult r = parse_file(main, o);
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).center, (Vec3{0, 3, 4}));
+    // Without the scene's own copy the library paths are searched in order.
+    std::filesystem::remove(dir.path() / "scenes/a.inc");
+    r = parse_file(main, o);
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).center.x, 1);
+}
+
+TEST(Directives, IncludeChainNotes) {
+    TempDir dir;
+    dir.write("outer.inc", "// outer\n#include \"inner.inc\"\n");
+    dir.write("inner.inc", "#declare X = 1;\n#declare Y = Gren;\n");
+    const auto main = dir.write("s.pov", "#declare Green = 1;\n\n#include \"outer.inc\"\n");
+    const ParseResult r = parse_file(main, test::default_options());
+    ASSERT_FALSE(r.ok());
+    ASSERT_GE(r.diagnostics.size(), 1u);
+    const Diagnostic& d = r.diagnostics[0];
+    EXPECT_EQ(d.loc.path, (dir.path() / "inner.inc").string());
+    EXPECT_EQ(d.loc.line, 2u);
+    ASSERT_EQ(d.notes.size(), 3u);
+    EXPECT_EQ(d.notes[0], "did you mean 'Green'?");
+    EXPECT_EQ(d.notes[1], "included from " + (dir.path() / "outer.inc").string() + ":2");
+    EXPECT_EQ(d.notes[2], "included from " + main.string() + ":3");
+}
+
+TEST(Directives, MissingIncludeIsAnError) {
+    const ParseResult r = test::parse_fail("#include \"no_such_file.inc\"\n");
+    ASSERT_EQ(test::count_errors(r), 1u);
+    EXPECT_EQ(r.diagnostics[0].message, "cannot open include file 'no_such_file.inc': No such file or directory");
+}
+
+TEST(Directives, RecursiveIncludeStopsAtDepthLimit) {
+    TempDir dir;
+    const auto main = dir.write("loop.pov", "#include \"loop.pov\"\n");
+    const ParseResult r = parse_file(main, test::default_options());
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(test::all_diagnostics(r).find("limit of 64"), std::string::npos) << test::all_diagnostics(r);
+}
+
+TEST(Directives, EndlessLoopAndRecursionAreBounded) {
+    ParseResult r = test::parse_fail("#while (1) #end\n");
+    EXPECT_NE(test::all_diagnostics(r).find("10000000"), std::string::npos);
+    r = test::parse_fail("#macro M() M() #end\nsphere { 0, M() }\n");
+    EXPECT_NE(test::all_diagnostics(r).find("limit"), std::string::npos);
+}
+
+TEST(Directives, VersionSaveRestoreAndDefault) {
+    Scene s = parse_ok("sphere { 0, version }");
+    EXPECT_DOUBLE_EQ(s.version, 3.7);
+    s = parse_ok("#version 3.6;\n#local Ver = version;\n#version 3.5;\nsphere { 0, version }\n#version Ver;\n");
+    EXPECT_DOUBLE_EQ(radius(s, 0), 3.5);
+    EXPECT_DOUBLE_EQ(s.version, 3.6);
+}
+
+TEST(Directives, CommandLineDeclares) {
+    ParseOptions o = test::default_options();
+    o.declares = {{"Size", 2.5}};
+    const Scene s = parse_ok("sphere { 0, Size }", o);
+    EXPECT_DOUBLE_EQ(radius(s, 0), 2.5);
+}
+
+TEST(Directives, WarningDebugAndError) {
+    Scene s = parse_ok("#debug \"hello\\n\"\n#warning concat(\"careful \", \"now\")\n");
+    ASSERT_FALSE(s.warnings.empty());
+    EXPECT_EQ(s.warnings[0].message, "careful now");
+    EXPECT_EQ(s.warnings[0].loc.line, 3u);
+    const ParseResult r = test::parse_fail("#error \"stop here\"\nsphere { 0, Undeclared }\n");
+    ASSERT_EQ(test::count_errors(r), 1u);  // #error ends the parse
+    EXPECT_EQ(r.diagnostics[0].message, "stop here");
+}
+
+TEST(Directives, DefaultTexture) {
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 }
+        #default { finish { ambient 0 diffuse 0.9 } pigment { rgb <1, 0, 0> } }
+        sphere { 0, 2 }
+        sphere { 0, 3 finish { phong 1 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.diffuse, 0.9);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.color.r, 1.0);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.diffuse, 0.9);  // a finish block starts from the default
+    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.ambient.r, 0.0);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.phong, 1.0);
+}
+
+TEST(Directives, Arrays) {
+    const Scene s = parse_ok(R"(
+        #declare A = array[3] { 1, 2, 3 };
+        #declare M = array[2][2] { { 1, 2 } { 3, 4 } };
+        #declare P = array[2];
+        #declare P[1] = pigment { rgb <0, 0, 1> };
+        #declare S = array[2] { "ab" "cde" };
+        #declare B = A;
+        #declare B[0] = 100;
+        sphere { 0, A[0] + A[2] * 10 }
+        sphere { 0, M[1][0] + dimensions(M) * 10 + dimension_size(A, 1) * 100 }
+        sphere { 0, 1 pigment { P[1] } }
+        sphere { 0, strlen(S[1]) + defined(P[0]) + 10 * defined(P[1]) }
+        sphere { 0, A[0] }
+    )");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(radius(s, 0), 31);
+    EXPECT_EQ(radius(s, 1), 323);
+    EXPECT_EQ(s.objects[2].texture.pigment.color.b, 1);
+    EXPECT_EQ(radius(s, 3), 13);
+    EXPECT_EQ(radius(s, 4), 1);  // B is a copy
+    ParseResult r = test::parse_fail("#declare A = array[2];\nsphere { 0, A[2] }\n");
+    EXPECT_NE(r.diagnostics[0].message.find("out of range"), std::string::npos);
+    r = test::parse_fail("#declare A = array[2];\nsphere { 0, A[1] }\n");
+    EXPECT_NE(r.diagnostics[0].message.find("before it was assigned"), std::string::npos);
+}
+
+TEST(Directives, StringComparisonAndRand) {
+    const Scene s = parse_ok(R"(
+        #declare F = "";
+        #if (F != "") sphere { 0, 1 } #else sphere { 0, 2 } #end
+        #declare R1 = seed(42);
+        #declare R2 = seed(42);
+        #declare V1 = rand(R1);
+        #declare V2 = rand(R2);
+        #declare V3 = rand(R1);
+        sphere { <V1, V2, V3>, 1 }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 2);
+    const Vec3 v = std::get<Sphere>(s.objects[1].shape).center;
+    EXPECT_EQ(v.x, v.y);  // same seed, same sequence
+    EXPECT_NE(v.x, v.z);
+    EXPECT_GE(v.x, 0.0);
+    EXPECT_LE(v.x, 1.0);
+}
+
+TEST(Directives, UnusedDeclarationsDoNotWarn) {
+    Scene s = parse_ok("#declare C = cylinder { 0, y, 1 }\n#declare P = pigment { checker }\nsphere { 0, 1 }\n");
+    EXPECT_TRUE(s.warnings.empty());
+    s = parse_ok("#declare P = pigment { checker }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'checker' is not rendered yet");
+    EXPECT_EQ(s.warnings[0].loc.line, 2u);  // where the feature is written
+}
+
+TEST(Directives, StandardIncludesParse) {
+    for (const char* inc : {"colors.inc", "textures.inc", "metals.inc", "golds.inc", "finish.inc", "stones.inc",
+                            "woods.inc", "glass.inc", "shapes.inc", "math.inc", "transforms.inc", "skies.inc"}) {
+        const ParseResult r = parse_string(std::string("#include \"") + inc + "\"\n", "inc.pov",
+                                           test::default_options());
+        if (std::string(inc) == "colors.inc") {
+            EXPECT_TRUE(r.ok()) << inc << "\n" << test::all_diagnostics(r);
+            for (const auto& d : r.diagnostics) EXPECT_NE(d.severity, Severity::Error) << format_diagnostic(d);
+        }
+        // Whatever is unsupported must come with a location, never a crash.
+        for (const auto& d : r.diagnostics) {
+            if (d.message.rfind("assumed_gamma", 0) == 0) continue;
+            EXPECT_GT(d.loc.line, 0u) << inc << ": " << format_diagnostic(d);
+        }
+    }
+}
+
+TEST(Directives, ColorsIncColours) {
+    const Scene s = parse_ok("#include \"colors.inc\"\nbackground { color Gold }\n"
+                             "sphere { 0, 1 pigment { Red } } sphere { 0, 1 pigment { color MediumForestGreen } }");
+    EXPECT_NEAR(s.background.r, 0.8, 1e-12);
+    EXPECT_NEAR(s.background.g, 0.498039, 1e-12);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color.r, 1.0);
+    EXPECT_NEAR(s.objects[1].texture.pigment.color.g, 0.556863, 1e-12);
+}
+
+}  // namespace
+}  // namespace wardray::parser

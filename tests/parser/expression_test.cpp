@@ -1,0 +1,172 @@
+// Tests of expressions: precedence, vectors, functions, constants, dot items and colour promotion.
+#include <cmath>
+#include <numbers>
+
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+using test::parse_ok;
+
+// Evaluates a float expression through a sphere's radius.
+double eval_float(const std::string& expr, const std::string& prelude = "") {
+    const Scene s = parse_ok(prelude + "\nsphere { 0, " + expr + " }");
+    if (s.objects.size() != 1) return std::nan("");
+    return std::get<Sphere>(s.objects[0].shape).radius;
+}
+
+// Evaluates a vector expression through a sphere's centre.
+Vec3 eval_vector(const std::string& expr, const std::string& prelude = "") {
+    const Scene s = parse_ok(prelude + "\n#declare V__ = " + expr + ";\nsphere { V__, 1 }");
+    if (s.objects.size() != 1) return {};
+    return std::get<Sphere>(s.objects[0].shape).center;
+}
+
+// Evaluates a colour through the background statement.
+Color eval_background(const std::string& color_text, const std::string& prelude = "") {
+    return parse_ok(prelude + "\nbackground { " + color_text + " }").background;
+}
+
+void expect_color(const Color& c, double r, double g, double b, double f, double t) {
+    EXPECT_NEAR(c.r, r, 1e-12);
+    EXPECT_NEAR(c.g, g, 1e-12);
+    EXPECT_NEAR(c.b, b, 1e-12);
+    EXPECT_NEAR(c.filter, f, 1e-12);
+    EXPECT_NEAR(c.transmit, t, 1e-12);
+}
+
+TEST(Expression, ArithmeticPrecedence) {
+    EXPECT_DOUBLE_EQ(eval_float("1 + 2 * 3"), 7.0);
+    EXPECT_DOUBLE_EQ(eval_float("(1 + 2) * 3"), 9.0);
+    EXPECT_DOUBLE_EQ(eval_float("10 - 4 - 3"), 3.0);
+    EXPECT_DOUBLE_EQ(eval_float("12 / 2 / 3"), 2.0);
+    EXPECT_DOUBLE_EQ(eval_float("-2 * -3"), 6.0);
+    EXPECT_DOUBLE_EQ(eval_float("+4 - -1"), 5.0);
+}
+
+TEST(Expression, RelationalLogicalConditional) {
+    EXPECT_DOUBLE_EQ(eval_float("(1 < 2) + 1"), 2.0);
+    EXPECT_DOUBLE_EQ(eval_float("(2 <= 2) + (3 >= 4) + (1 = 1) + (1 != 1) + (5 > 4)"), 3.0);
+    // Relations bind tighter than & and |, which share one level; ?: is lowest.
+    EXPECT_DOUBLE_EQ(eval_float("(1 < 2 & 3 < 4) + 1"), 2.0);
+    EXPECT_DOUBLE_EQ(eval_float("(0 | 0 & 1) + 1"), 1.0);
+    EXPECT_DOUBLE_EQ(eval_float("(1 + 1 = 2 ? 5 : 6)"), 5.0);
+    EXPECT_DOUBLE_EQ(eval_float("(0 ? 1 : 0 ? 2 : 3)"), 3.0);
+    EXPECT_DOUBLE_EQ(eval_float("(!0) + (!3) + 1"), 2.0);
+    EXPECT_DOUBLE_EQ(eval_float("(1 + 2 * 3 > 6)"), 1.0);
+}
+
+TEST(Expression, EqualityUsesPovRayEpsilon) {
+    EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 = 0.3) + 1"), 2.0);
+}
+
+TEST(Expression, VectorsAndPromotion) {
+    const Vec3 v = eval_vector("<1, 2, 3> * 2 + 1");
+    EXPECT_EQ(v, (Vec3{3, 5, 7}));
+    EXPECT_EQ(eval_vector("2 * x + y * 3 - z"), (Vec3{2, 3, -1}));
+    EXPECT_EQ(eval_vector("<1, 2, 3> * <2, 3, 4>"), (Vec3{2, 6, 12}));
+    EXPECT_EQ(eval_vector("<1, 2, 3> / 2"), (Vec3{0.5, 1, 1.5}));
+    EXPECT_EQ(eval_vector("-<1, 2, 3>"), (Vec3{-1, -2, -3}));
+    EXPECT_EQ(eval_vector("5"), (Vec3{5, 5, 5}));
+    // A vector component may hold any additive expression.
+    EXPECT_EQ(eval_vector("<1 + 1, 2 * 3, (4 > 3)>"), (Vec3{2, 6, 1}));
+}
+
+TEST(Expression, DotItems) {
+    EXPECT_DOUBLE_EQ(eval_float("<1, 2, 3>.y"), 2.0);
+    EXPECT_DOUBLE_EQ(eval_float("V.z + V.x", "#declare V = <1, 2, 3>;"), 4.0);
+    EXPECT_DOUBLE_EQ(eval_float("C.red + C.green * 10 + C.transmit * 100 + C.filter * 1000",
+                                "#declare C = rgbft <0.5, 0.25, 0, 0.125, 0.0625>;"),
+                     0.5 + 2.5 + 6.25 + 125);
+    EXPECT_DOUBLE_EQ(eval_float("<1, 2, 3, 4>.t"), 4.0);
+}
+
+TEST(Expression, Functions) {
+    EXPECT_DOUBLE_EQ(eval_float("abs(-2) + ceil(1.2) + floor(1.8) + int(-1.7)"), 2 + 2 + 1 - 1);
+    EXPECT_DOUBLE_EQ(eval_float("mod(7, 3) + pow(2, 3) + sqrt(16)"), 1 + 8 + 4);
+    EXPECT_DOUBLE_EQ(eval_float("mod(-7, 3)"), -1.0);
+    EXPECT_DOUBLE_EQ(eval_float("div(7, 2) + div(-7, 2)"), 3 - 3);
+    EXPECT_NEAR(eval_float("sin(pi / 2) + cos(0) + tan(0)"), 2.0, 1e-12);
+    EXPECT_NEAR(eval_float("asin(1) + acos(1) + atan(1) + atan2(1, 1)"), std::numbers::pi, 1e-12);
+    EXPECT_NEAR(eval_float("exp(1)"), std::exp(1.0), 1e-12);
+    EXPECT_NEAR(eval_float("ln(exp(2)) + log(1000)"), 5.0, 1e-12);
+    EXPECT_DOUBLE_EQ(eval_float("min(3, 1, 2) + max(3, 7)"), 8.0);
+    EXPECT_NEAR(eval_float("degrees(radians(30))"), 30.0, 1e-12);
+    EXPECT_DOUBLE_EQ(eval_float("vlength(<3, 4, 0>)"), 5.0);
+    EXPECT_DOUBLE_EQ(eval_float("vdot(<1, 2, 3>, <4, 5, 6>)"), 32.0);
+    EXPECT_EQ(eval_vector("vcross(x, y)"), (Vec3{0, 0, 1}));
+    EXPECT_EQ(eval_vector("vnormalize(<0, 0, 5>)"), (Vec3{0, 0, 1}));
+    EXPECT_DOUBLE_EQ(eval_float("select(-1, 2, 3) + select(1, 20, 30) + select(0, 1, 100, 1000)"), 2 + 30 + 100);
+}
+
+TEST(Expression, VectorRotationMatchesRotate) {
+    const Vec3 a = eval_vector("vrotate(<0, 0, 1>, <0, 90, 0>)");
+    const Vec3 b = eval_vector("vaxis_rotate(<0, 0, 1>, y, 90)");
+    EXPECT_NEAR(a.x, 1.0, 1e-12);  // POV-Ray: rotate y*90 turns +z into +x
+    EXPECT_NEAR(a.z, 0.0, 1e-12);
+    EXPECT_NEAR(b.x, a.x, 1e-12);
+    EXPECT_NEAR(b.z, a.z, 1e-12);
+}
+
+TEST(Expression, Constants) {
+    EXPECT_NEAR(eval_float("pi"), std::numbers::pi, 1e-15);
+    EXPECT_DOUBLE_EQ(eval_float("true + yes + on + false + no + off"), 3.0);
+    ParseOptions o = test::default_options();
+    o.image_width = 640;
+    o.image_height = 480;
+    o.clock = 0.25;
+    const Scene s = parse_ok("sphere { <image_width, image_height, clock>, version }", o);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center, (Vec3{640, 480, 0.25}));
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 3.7);
+}
+
+TEST(Expression, Strings) {
+    EXPECT_DOUBLE_EQ(eval_float("strlen(concat(\"ab\", S, str(1.5, 0, 1)))", "#declare S = \"cd\";"), 7.0);
+    EXPECT_DOUBLE_EQ(eval_float("val(\"2.5\") + strcmp(\"a\", \"b\")"), 1.5);
+    EXPECT_DOUBLE_EQ(eval_float("strlen(substr(\"hello\", 2, 3)) + strlen(chr(65))"), 4.0);
+}
+
+TEST(Color, FloatAfterColorSetsAllFiveComponents) {
+    // POV-Ray compat: `color 0.5` promotes to filter and transmit too; `rgb 0.5` only to r, g, b.
+    expect_color(eval_background("color 0.5"), 0.5, 0.5, 0.5, 0.5, 0.5);
+    expect_color(eval_background("color rgb 0.5"), 0.5, 0.5, 0.5, 0, 0);
+    expect_color(eval_background("rgb 0.5"), 0.5, 0.5, 0.5, 0, 0);
+}
+
+TEST(Color, ColorForms) {
+    expect_color(eval_background("color rgb <1, 0.5, 0.25>"), 1, 0.5, 0.25, 0, 0);
+    expect_color(eval_background("rgbf <1, 0.5, 0.25, 0.1>"), 1, 0.5, 0.25, 0.1, 0);
+    expect_color(eval_background("rgbt <1, 0.5, 0.25, 0.2>"), 1, 0.5, 0.25, 0, 0.2);
+    expect_color(eval_background("rgbft <1, 0.5, 0.25, 0.1, 0.2>"), 1, 0.5, 0.25, 0.1, 0.2);
+    expect_color(eval_background("rgbf 0.3"), 0.3, 0.3, 0.3, 0.3, 0);
+    expect_color(eval_background("color red 0.2 green 0.4 blue 0.6 filter 0.1 transmit 0.3"), 0.2, 0.4, 0.6, 0.1, 0.3);
+    expect_color(eval_background("color <0.1, 0.2, 0.3>"), 0.1, 0.2, 0.3, 0, 0);
+    expect_color(eval_background("color rgb 1 transmit 0.5"), 1, 1, 1, 0, 0.5);
+    const double half = std::pow((0.5 + 0.055) / 1.055, 2.4);
+    expect_color(eval_background("srgb <0.5, 0, 1>"), half, 0, 1, 0, 0);
+}
+
+TEST(Color, IdentifiersCarryFiveComponents) {
+    const std::string prelude = "#declare C = color rgbt <1, 0, 0, 0.5>;\n#declare D = C * 0.5;\n";
+    expect_color(eval_background("color C", prelude), 1, 0, 0, 0, 0.5);
+    expect_color(eval_background("D", prelude), 0.5, 0, 0, 0, 0.25);
+    expect_color(eval_background("C filter 0.25", prelude), 1, 0, 0, 0.25, 0.5);
+    // A colour plus a 3-vector: the vector is padded with zeros, not promoted.
+    expect_color(eval_background("C + <0, 1, 0>", prelude), 1, 1, 0, 0, 0.5);
+    // A float declared as a colour keeps all five components.
+    expect_color(eval_background("G", "#declare G = color 0.25;"), 0.25, 0.25, 0.25, 0.25, 0.25);
+}
+
+TEST(Expression, ErrorsAreReportedNotThrown) {
+    test::parse_fail("sphere { 0, 1 / 0 }");
+    test::parse_fail("sphere { 0, sqrt(-1) }");
+    test::parse_fail("sphere { <1, 2, 3> < 2, 1 }");
+    test::parse_fail("sphere { 0, <1, 2>.z }");
+    test::parse_fail("sphere { 0, min() }");
+    test::parse_fail("sphere { 0, (((1 }");
+}
+
+}  // namespace
+}  // namespace wardray::parser
