@@ -227,6 +227,8 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     RenderSettings settings;
     settings.width = options.width;
     settings.height = options.height;
+    settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
+                          options.antialias_gamma};
     const RenderResult result =
         render_image(scene, integrator, settings, [&](double f) { progress.update("render", f); });
     progress.finish();
@@ -257,6 +259,7 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
         stats["total_seconds"] = seconds_since(start);
         stats["rays"] = {{"camera", result.rays.camera}, {"shadow", result.rays.shadow}};
         stats["non_finite_pixels"] = result.non_finite_pixels;
+        stats["supersampled_pixels"] = result.supersampled_pixels;
         stats["cache"] = nullptr;  // the irradiance cache reports here once it exists
         const fs::path tmp = options.stats->string() + ".part";
         {

@@ -40,6 +40,17 @@ std::optional<UsageError> apply_pov_switch(bool plus, const std::string& body, O
         return UsageError{"invalid switch '" + std::string(plus ? "+" : "-") + body + "': " + why};
     };
     if (body.empty()) return bad("empty switch");
+    if (starts_with_ci(body, "AG")) {
+        double g = 0.0;
+        if (!parse_double(body.substr(2), g) || g <= 0.0) return bad("expected a positive antialiasing gamma");
+        o.antialias_gamma = g;
+        return std::nullopt;
+    }
+    if (starts_with_ci(body, "AM")) {
+        // Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
+        if (body.substr(2) != "1") return bad("only sampling method 1 (+AM1) is supported so far");
+        return std::nullopt;
+    }
     if (starts_with_ci(body, "WT")) {
         int n = 0;
         if (!parse_int(body.substr(2), n) || n < 1 || n > 1024) return bad("expected a thread count 1..1024");
@@ -92,6 +103,19 @@ std::optional<UsageError> apply_pov_switch(bool plus, const std::string& body, O
                 o.antialias = true;
             }
             return std::nullopt;
+        case 'R': {
+            int n = 0;
+            if (!parse_int(value, n) || n < 1 || n > 9) return bad("expected an antialiasing depth 1..9");
+            o.antialias_depth = n;
+            return std::nullopt;
+        }
+        case 'J': {
+            double j = 1.0;
+            if (!plus) j = 0.0;
+            else if (!value.empty() && (!parse_double(value, j) || j < 0.0)) return bad("expected a jitter amount >= 0");
+            o.jitter = j;
+            return std::nullopt;
+        }
         case 'D':  // display: there is no preview window, so both are accepted and ignored
             if (!value.empty()) return bad("unknown display option");
             return std::nullopt;
@@ -189,7 +213,8 @@ std::string usage_text() {
            "  +FN +FE +FH       PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file\n"
            "  +Wn +Hn           image size (default 320x240)\n"
            "  +WTn, --threads n worker threads (default: all cores)\n"
-           "  +A[t] -A          antialiasing on with threshold t, or off\n"
+           "  +A[t] -A          antialiasing on with threshold t (0.3), or off; +Rn depth, +J[n] -J jitter,\n"
+           "                    +AGn comparison gamma (2.5), +AM1 sampling method\n"
            "  +Lpath            add an #include search folder\n"
            "  Declare=N=V       define the float N before parsing\n"
            "  +D -D +V -V       accepted as in POV-Ray\n"

@@ -23,7 +23,10 @@ struct Options {
     int height = 240;
     int threads = 0;                                ///< 0: all cores
     bool antialias = false;
-    double antialias_threshold = 0.3;
+    double antialias_threshold = 0.3;  ///< +A0.3
+    int antialias_depth = 3;           ///< +R3
+    double jitter = 1.0;               ///< +J1.0, -J: 0
+    double antialias_gamma = 2.5;      ///< +AG2.5
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
     std::vector<std::pair<std::string, double>> declares;
     std::vector<std::filesystem::path> library_paths;

@@ -45,6 +45,20 @@ TEST(Options, PovRaySwitches) {
     EXPECT_EQ(o.library_paths[0], "/tmp/inc");
 }
 
+TEST(Options, AntialiasingSwitches) {
+    const Options o = parse_ok({"+A0.2", "+R4", "+J0.5", "+AG2.2", "+AM1"});
+    EXPECT_TRUE(o.antialias);
+    EXPECT_DOUBLE_EQ(o.antialias_threshold, 0.2);
+    EXPECT_EQ(o.antialias_depth, 4);
+    EXPECT_DOUBLE_EQ(o.jitter, 0.5);
+    EXPECT_DOUBLE_EQ(o.antialias_gamma, 2.2);
+    EXPECT_DOUBLE_EQ(parse_ok({"-J"}).jitter, 0.0);
+    EXPECT_DOUBLE_EQ(parse_ok({"+J"}).jitter, 1.0);
+    EXPECT_NE(parse_error({"+R0"}).find("1..9"), std::string::npos);
+    EXPECT_NE(parse_error({"+AM2"}).find("+AM1"), std::string::npos);
+    EXPECT_NE(parse_error({"+AG0"}).find("gamma"), std::string::npos);
+}
+
 TEST(Options, LowercaseSwitchesAndMinusForms) {
     const Options o = parse_ok({"scene.pov", "+w100", "+h50", "-A", "-F", "-V"});
     EXPECT_EQ(o.width, 100);
