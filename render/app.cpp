@@ -16,6 +16,7 @@
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
 #include "parser/parse.h"
+#include "render/diff_command.h"
 #include "render/options.h"
 #include "render/renderer.h"
 
@@ -133,6 +134,8 @@ private:
 
 int run(const std::vector<std::string>& args, const std::string& argv0) {
     const auto start = Clock::now();
+    if (!args.empty() && args[0] == "diff")
+        return run_diff_command(std::vector<std::string>(args.begin() + 1, args.end()));
     auto parsed = parse_command_line(args);
     if (auto* error = std::get_if<UsageError>(&parsed)) {
         std::cerr << "wardray: " << error->message << "\n" << usage_text();

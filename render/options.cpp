@@ -209,6 +209,7 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
 
 std::string usage_text() {
     return "usage: wardray [scene.pov | +Iscene.pov] [options]\n"
+           "       wardray diff IMAGE REFERENCE [--json] [-o DIFFERENCE.png]\n"
            "  +Ofile, -o file   output image (default: the scene's name, .png)\n"
            "  +FN +FE +FH       PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file\n"
            "  +Wn +Hn           image size (default 320x240)\n"

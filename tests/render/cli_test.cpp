@@ -162,5 +162,35 @@ TEST(Cli, SameImageForAnyThreadCount) {
     EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
 }
 
+TEST(Cli, DiffReportsMetricsAndWritesADifferenceImage) {
+    const fs::path dir = work_dir("diff");
+    write_file(dir / "small.pov", kSmallScene);
+    ASSERT_EQ(wardray("small.pov +W48 +H36 +FH -o a.hdr Declare=Extra=0", dir).exit_status, 0);
+    ASSERT_EQ(wardray("small.pov +W48 +H36 +FH -o b.hdr Declare=Extra=1", dir).exit_status, 0);
+    ASSERT_EQ(wardray("small.pov +W24 +H18 +FH -o small.hdr Declare=Extra=1", dir).exit_status, 0);
+
+    const auto same = wardray("diff a.hdr a.hdr --json", dir);
+    ASSERT_EQ(same.exit_status, 0) << same.output;
+    const auto j = nlohmann::json::parse(same.output);
+    EXPECT_EQ(j["rrmse"].get<double>(), 0.0);
+    EXPECT_EQ(j["bad_pixel_fraction"].get<double>(), 0.0);
+    EXPECT_EQ(j["non_finite_pixels"].get<std::uint64_t>(), 0u);
+    EXPECT_EQ(j["pixels"].get<std::uint64_t>(), 48u * 36u);
+
+    // The box drawn only in b.hdr is a local difference: some rRMSE and some bad pixels.
+    const auto differ = wardray("diff a.hdr b.hdr --json -o d.png", dir);
+    ASSERT_EQ(differ.exit_status, 0) << differ.output;
+    const auto k = nlohmann::json::parse(differ.output);
+    EXPECT_GT(k["rrmse"].get<double>(), 0.01);
+    EXPECT_GT(k["bad_pixel_fraction"].get<double>(), 0.01);
+    EXPECT_TRUE(fs::is_regular_file(dir / "d.png"));
+    EXPECT_NE(wardray("diff a.hdr b.hdr", dir).output.find("rRMSE"), std::string::npos);
+
+    EXPECT_EQ(wardray("diff a.hdr small.hdr", dir).exit_status, 1);  // sizes differ
+    EXPECT_EQ(wardray("diff a.hdr nosuch.hdr", dir).exit_status, 1);
+    EXPECT_EQ(wardray("diff a.hdr", dir).exit_status, 2);
+    EXPECT_EQ(wardray("diff --bogus a.hdr b.hdr", dir).exit_status, 2);
+}
+
 }  // namespace
 }  // namespace wardray::test
