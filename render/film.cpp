@@ -1,7 +1,9 @@
-// Film: pixel storage and image files (the only file that includes OpenImageIO).
+// Film: pixel storage, and image files written by format and read through the OpenImageIO module.
 #include "render/film.h"
 
-#include <OpenImageIO/imageio.h>
+#include "render/image_writers.h"
+
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <atomic>
@@ -9,21 +11,13 @@
 #include <cmath>
 #include <csignal>
 #include <cstring>
+#include <mutex>
 #include <system_error>
 #include <unistd.h>
 
 namespace wardray::render {
 
 namespace {
-
-const char* oiio_format_name(ImageFormat format) {
-    switch (format) {
-        case ImageFormat::Png: return "png";
-        case ImageFormat::Exr: return "openexr";
-        case ImageFormat::Hdr: return "hdr";
-    }
-    return "png";
-}
 
 // The temporary file being written, for the signal handler; empty when none. A fixed buffer, because a
 // signal handler may only touch async-signal-safe state.
@@ -49,6 +43,42 @@ public:
     PartialFileGuard(const PartialFileGuard&) = delete;
     PartialFileGuard& operator=(const PartialFileGuard&) = delete;
 };
+
+// The OpenImageIO reader module's entry points (render/oiio_reader_module.cpp).
+struct OiioReader {
+    int (*read)(const char*, int*, int*, int*, float**, char*, std::size_t) = nullptr;
+    void (*release)(float*) = nullptr;
+};
+
+// Loads the reader module once: beside the executable, else in the build folder this was built in.
+const OiioReader* oiio_reader(std::string& error) {
+    static OiioReader reader;
+    static std::string load_error;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        std::error_code ec;
+        const std::filesystem::path exe_dir = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path();
+        std::string tried;
+        for (const std::filesystem::path& dir : {exe_dir, std::filesystem::path(WARDRAY_MODULE_DIR)}) {
+            const std::filesystem::path module = dir / "libwardray_oiio.so";
+            void* handle = ::dlopen(module.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (!handle) {
+                tried += std::string(tried.empty() ? "" : "; ") + ::dlerror();
+                continue;
+            }
+            reader.read = reinterpret_cast<decltype(reader.read)>(::dlsym(handle, "wardray_oiio_read"));
+            reader.release = reinterpret_cast<decltype(reader.release)>(::dlsym(handle, "wardray_oiio_free"));
+            if (reader.read && reader.release) return;
+            tried += "; " + module.string() + " lacks the reader entry points";
+        }
+        load_error = "the image reader module libwardray_oiio.so could not be loaded (" + tried + ")";
+    });
+    if (!reader.read) {
+        error = load_error;
+        return nullptr;
+    }
+    return &reader;
+}
 
 // A temporary name beside the target, keeping the folder so the final rename is atomic.
 std::filesystem::path temporary_name(const std::filesystem::path& path) {
@@ -107,33 +137,17 @@ void remove_partial_output_on_signal() {
 std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format) {
     const std::filesystem::path tmp = temporary_name(path);
     const PartialFileGuard guard(tmp);
-    auto out = OIIO::ImageOutput::create(oiio_format_name(format));
-    if (!out) return "cannot create an image writer: " + OIIO::geterror();
-
-    bool ok = false;
-    if (format == ImageFormat::Png) {
-        // POV-Ray compat: 8-bit output is sRGB-encoded and quantised as floor(clip(x) * 255 + 0.5).
-        OIIO::ImageSpec spec(film.width(), film.height(), 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        std::vector<unsigned char> bytes(film.data().size());
-        std::transform(film.data().begin(), film.data().end(), bytes.begin(), [](float v) {
-            const double clipped = std::isfinite(v) ? std::clamp(static_cast<double>(v), 0.0, 1.0) : 0.0;
-            return static_cast<unsigned char>(std::floor(srgb_encode(clipped) * 255.0 + 0.5));
-        });
-        ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-    } else {
-        OIIO::ImageSpec spec(film.width(), film.height(), 3,
-                             format == ImageFormat::Exr ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-        spec.attribute("oiio:ColorSpace", "Linear");
-        ok = out->open(tmp.string(), spec) && out->write_image(OIIO::TypeDesc::FLOAT, film.data().data());
+    std::optional<std::string> write_error;
+    switch (format) {
+        case ImageFormat::Png: write_error = write_png(film, tmp); break;
+        case ImageFormat::Exr: write_error = write_exr(film, tmp); break;
+        case ImageFormat::Hdr: write_error = write_hdr(film, tmp); break;
     }
-    const std::string write_error = ok ? std::string() : out->geterror();
-    ok = out->close() && ok;
-    out.reset();
+    const bool ok = !write_error.has_value();
     std::error_code ec;
     if (!ok) {
         std::filesystem::remove(tmp, ec);
-        return "cannot write '" + path.string() + "': " + (write_error.empty() ? "write failed" : write_error);
+        return "cannot write '" + path.string() + "': " + *write_error;
     }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
@@ -144,29 +158,25 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
 }
 
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error) {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) {
-        error = "cannot read '" + path.string() + "': " + OIIO::geterror();
+    const OiioReader* reader = oiio_reader(error);
+    if (!reader) return std::nullopt;
+    int width = 0, height = 0, encoded = 0;
+    float* pixels = nullptr;
+    char message[512] = {0};
+    if (!reader->read(path.c_str(), &width, &height, &encoded, &pixels, message, sizeof(message))) {
+        error = "cannot read '" + path.string() + "': " + message;
         return std::nullopt;
     }
-    const OIIO::ImageSpec& spec = in->spec();
-    const int channels = spec.nchannels;
-    std::vector<float> pixels(static_cast<std::size_t>(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data())) {
-        error = "cannot read '" + path.string() + "': " + in->geterror();
-        return std::nullopt;
-    }
-    const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                         spec.format.basetype == OIIO::TypeDesc::UINT16;
-    Film film(spec.width, spec.height);
-    for (int y = 0; y < spec.height; ++y) {
-        for (int x = 0; x < spec.width; ++x) {
-            const float* p = &pixels[(static_cast<std::size_t>(y) * spec.width + x) * channels];
-            Vec3 rgb{p[0], channels > 1 ? p[1] : p[0], channels > 2 ? p[2] : p[0]};
+    Film film(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const float* p = &pixels[(static_cast<std::size_t>(y) * width + x) * 3];
+            Vec3 rgb{p[0], p[1], p[2]};
             if (encoded) rgb = {srgb_decode(rgb.x), srgb_decode(rgb.y), srgb_decode(rgb.z)};
             film.set_pixel(x, y, rgb);
         }
     }
+    reader->release(pixels);
     return film;
 }
 

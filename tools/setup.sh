@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(
   g++ make cmake pkg-config                # toolchain
   libembree-dev libtbb-dev                 # ray tracing and threads
-  libopenimageio-dev openimageio-tools     # image reading and writing
+  libopenimageio-dev openimageio-tools     # image reading (any format)
+  libpng-dev libopenexr-dev                # image writing (PNG, OpenEXR)
   libcgal-dev libboost-dev                 # mesh geometry, the Spirit X3 parser
   libgtest-dev nlohmann-json3-dev          # tests, --stats JSON
   povray povray-includes povray-examples fonts-povray  # the reference renderer, its includes and scenes

@@ -32,18 +32,28 @@ TEST(Film, FormatFromExtension) {
     EXPECT_FALSE(format_from_extension("a.tga").has_value());
 }
 
+// A film with long runs of equal pixels (run-length encoded in .hdr) beside a gradient.
+Film runs_and_gradient(int w, int h) {
+    Film f = gradient(w, h);
+    for (int y = 0; y < h; y += 2)
+        for (int x = 0; x < w; ++x) f.set_pixel(x, y, {0.25, 0.5, 4.0});
+    return f;
+}
+
 TEST(Film, LinearFormatsRoundTrip) {
-    const Film f = gradient(17, 9);
+    // 17 wide: run-length scanlines; 5 wide: flat scanlines (RLE needs 8 or more); 300 wide: runs over 127.
+    for (const auto& [w, h] : {std::pair{17, 9}, std::pair{5, 3}, std::pair{300, 4}})
     for (ImageFormat format : {ImageFormat::Exr, ImageFormat::Hdr}) {
-        const fs::path p = scratch(std::string("round") + extension_of(format));
+        const Film f = runs_and_gradient(w, h);
+        const fs::path p = scratch("round" + std::to_string(w) + extension_of(format));
         ASSERT_FALSE(write_image(f, p, format).has_value());
         std::string error;
         const auto back = read_image(p, error);
         ASSERT_TRUE(back) << error;
-        ASSERT_EQ(back->width(), 17);
-        ASSERT_EQ(back->height(), 9);
-        for (int y = 0; y < 9; ++y) {
-            for (int x = 0; x < 17; ++x) {
+        ASSERT_EQ(back->width(), w);
+        ASSERT_EQ(back->height(), h);
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
                 const Vec3 v = f.pixel(x, y);
                 // RGBE shares one exponent per pixel: a channel is exact to 1/128 of the pixel's largest channel.
                 // Half floats keep 11 significant bits per channel.

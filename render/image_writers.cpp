@@ -1,0 +1,153 @@
+// Image file writers. OpenImageIO is not used here on purpose: loading it costs about 0.7 s per process
+// (its dependency chain: OpenCV, ffmpeg, OpenVDB, ...), against about 10 ms for libpng and OpenEXR, and
+// every render writes an image. OpenImageIO remains the reader (image_reader.cpp).
+#include "render/image_writers.h"
+
+#include <ImfRgbaFile.h>
+#include <png.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+namespace wardray::render {
+
+namespace {
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+// Radiance's shared-exponent encoding of one RGB triple (Ward, "Real Pixels", Graphics Gems II).
+void to_rgbe(float r, float g, float b, unsigned char out[4]) {
+    auto clean = [](float v) { return std::isfinite(v) && v > 0.0f ? v : 0.0f; };
+    r = clean(r);
+    g = clean(g);
+    b = clean(b);
+    const float v = std::max({r, g, b});
+    if (v < 1e-32f) {
+        out[0] = out[1] = out[2] = out[3] = 0;
+        return;
+    }
+    int e = 0;
+    const float scale = std::frexp(v, &e) * 256.0f / v;
+    out[0] = static_cast<unsigned char>(r * scale);
+    out[1] = static_cast<unsigned char>(g * scale);
+    out[2] = static_cast<unsigned char>(b * scale);
+    out[3] = static_cast<unsigned char>(e + 128);
+}
+
+// Appends one component of a scanline in Radiance's run-length form: runs of 4 or more equal bytes as
+// (128 + n, byte), everything else as literal chunks (n, bytes...), n ≤ 127 / 128.
+void append_rle_component(const std::vector<unsigned char>& data, std::vector<unsigned char>& out) {
+    std::size_t i = 0;
+    while (i < data.size()) {
+        std::size_t run = 1;
+        while (i + run < data.size() && run < 127 && data[i + run] == data[i]) ++run;
+        if (run >= 4) {
+            out.push_back(static_cast<unsigned char>(128 + run));
+            out.push_back(data[i]);
+            i += run;
+            continue;
+        }
+        // A literal chunk up to the next run of 4 or the chunk limit.
+        std::size_t end = i;
+        while (end < data.size() && end - i < 128) {
+            std::size_t r = 1;
+            while (end + r < data.size() && r < 4 && data[end + r] == data[end]) ++r;
+            if (r >= 4) break;
+            ++end;
+        }
+        out.push_back(static_cast<unsigned char>(end - i));
+        out.insert(out.end(), data.begin() + i, data.begin() + end);
+        i = end;
+    }
+}
+
+}  // namespace
+
+unsigned char encode_srgb8(float v) {
+    const double clipped = std::isfinite(v) ? std::clamp(static_cast<double>(v), 0.0, 1.0) : 0.0;
+    return static_cast<unsigned char>(std::floor(srgb_encode(clipped) * 255.0 + 0.5));
+}
+
+std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path) {
+    File file(std::fopen(path.c_str(), "wb"));
+    if (!file) return std::string("cannot open for writing");
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+        png_destroy_write_struct(&png, nullptr);
+        return std::string("libpng could not start");
+    }
+    std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * 3);
+    // libpng reports errors by longjmp; nothing with a destructor is created between here and the end.
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return std::string("libpng failed while writing");
+    }
+    png_init_io(png, file.get());
+    png_set_IHDR(png, info, film.width(), film.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    const std::vector<float>& data = film.data();
+    for (int y = 0; y < film.height(); ++y) {
+        const float* src = &data[static_cast<std::size_t>(y) * film.width() * 3];
+        for (std::size_t i = 0; i < row.size(); ++i) row[i] = encode_srgb8(src[i]);
+        png_write_row(png, row.data());
+    }
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return std::string("write failed");
+    return std::nullopt;
+}
+
+std::optional<std::string> write_exr(const Film& film, const std::filesystem::path& path) {
+    try {
+        std::vector<Imf::Rgba> pixels(static_cast<std::size_t>(film.width()) * film.height());
+        const std::vector<float>& data = film.data();
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            pixels[i] = Imf::Rgba(data[3 * i], data[3 * i + 1], data[3 * i + 2], 1.0f);
+        Imf::RgbaOutputFile out(path.c_str(), film.width(), film.height(), Imf::WRITE_RGB);
+        out.setFrameBuffer(pixels.data(), 1, film.width());
+        out.writePixels(film.height());
+    } catch (const std::exception& e) {
+        return std::string(e.what());
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> write_hdr(const Film& film, const std::filesystem::path& path) {
+    File file(std::fopen(path.c_str(), "wb"));
+    if (!file) return std::string("cannot open for writing");
+    std::fprintf(file.get(), "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %d +X %d\n", film.height(), film.width());
+    const int w = film.width();
+    // Run-length scanlines need 8 <= width < 32768; other widths are written flat.
+    const bool rle = w >= 8 && w < 32768;
+    std::vector<unsigned char> rgbe(static_cast<std::size_t>(w) * 4);
+    std::vector<unsigned char> component(w);
+    std::vector<unsigned char> line;
+    const std::vector<float>& data = film.data();
+    for (int y = 0; y < film.height(); ++y) {
+        const float* src = &data[static_cast<std::size_t>(y) * w * 3];
+        for (int x = 0; x < w; ++x) to_rgbe(src[3 * x], src[3 * x + 1], src[3 * x + 2], &rgbe[4 * x]);
+        if (!rle) {
+            std::fwrite(rgbe.data(), 1, rgbe.size(), file.get());
+            continue;
+        }
+        line = {2, 2, static_cast<unsigned char>(w >> 8), static_cast<unsigned char>(w & 0xFF)};
+        for (int c = 0; c < 4; ++c) {
+            for (int x = 0; x < w; ++x) component[x] = rgbe[4 * x + c];
+            append_rle_component(component, line);
+        }
+        std::fwrite(line.data(), 1, line.size(), file.get());
+    }
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return std::string("write failed");
+    return std::nullopt;
+}
+
+}  // namespace wardray::render

@@ -1,0 +1,56 @@
+// The OpenImageIO reader as a loadable module: loading OpenImageIO costs about 0.7 s, so only runs that
+// read an image (wardray diff, image maps, tests) pay for it. C entry points keep the boundary ABI-stable.
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+
+void set_error(char* error, std::size_t size, const std::string& message) {
+    if (size == 0) return;
+    std::strncpy(error, message.c_str(), size - 1);
+    error[size - 1] = '\0';
+}
+
+}  // namespace
+
+/// Reads `path` as float RGB rows from the top; `*pixels` is malloc'd (free with wardray_oiio_free).
+/// `*encoded` is set when the file stores 8- or 16-bit values (to be decoded from sRGB). Returns 1 on success.
+extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int* encoded, float** pixels,
+                                 char* error, std::size_t error_size) {
+    try {
+        auto in = OIIO::ImageInput::open(path);
+        if (!in) {
+            set_error(error, error_size, OIIO::geterror());
+            return 0;
+        }
+        const OIIO::ImageSpec& spec = in->spec();
+        const int channels = spec.nchannels;
+        std::vector<float> all(static_cast<std::size_t>(spec.width) * spec.height * channels);
+        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data())) {
+            set_error(error, error_size, in->geterror());
+            return 0;
+        }
+        const std::size_t n = static_cast<std::size_t>(spec.width) * spec.height;
+        float* rgb = static_cast<float*>(std::malloc(n * 3 * sizeof(float)));
+        if (!rgb) {
+            set_error(error, error_size, "out of memory");
+            return 0;
+        }
+        for (std::size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) rgb[3 * i + c] = all[i * channels + (c < channels ? c : 0)];
+        *width = spec.width;
+        *height = spec.height;
+        *encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+        *pixels = rgb;
+        return 1;
+    } catch (const std::exception& e) {
+        set_error(error, error_size, e.what());
+        return 0;
+    }
+}
+
+extern "C" void wardray_oiio_free(float* pixels) { std::free(pixels); }
