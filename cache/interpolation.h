@@ -1,0 +1,77 @@
+// Interpolation: which cached records are valid at a point, how they are weighted, and their gradient extrapolation.
+#pragma once
+
+#include "cache/irradiance_record.h"
+#include "parser/scene.h"
+#include "parser/vec3.h"
+
+namespace wardray::cache {
+
+/// The parameters of one lookup, derived from the scene's radiosity block by lookup_params().
+///
+/// error_bound mapping (POV-Ray 3.7, radiosity.cpp AverageNearBlock): a record is valid when
+///   ε = |p − p_i| / R_i + 2 √(1 − n·n_i) < error_bound_eff,
+/// with R_i the clamped harmonic mean distance, and
+///   error_bound_eff = error_bound × (low_error_factor in pretrace passes) [+ (0.25 − w) when the ray weight w is
+///   below 0.25] × 2^depth.
+/// wardray keeps that test unchanged, so error_bound (default 1.8) covers the same area per record as in POV-Ray
+/// and trades error for time on the same scale; the gradients then lower the error at the same record count.
+struct LookupParams {
+    double error_bound = 1.8;  ///< error_bound_eff
+    double reuse_count = 5.0;  ///< POV-Ray's nearest_count at this depth: 4·Σ coverage must reach it
+    bool accept_any = true;    ///< POV-Ray's final pass: one valid record suffices unless always_sample
+    bool smooth_coverage = true;  ///< POV-Ray smooths coverage weights in the final pass at depth 0 only
+    bool gradients = true;        ///< add the gradient terms (off: POV-Ray 3.7's plain weighted average)
+};
+
+/// The lookup parameters POV-Ray 3.7 uses at `depth` in a final (`final_pass`) or pretrace pass, for a ray of
+/// importance `ray_weight` (POV-Ray's weight of the ray that asks; 1 for camera rays).
+LookupParams lookup_params(const parser::RadiositySettings& settings, int depth, bool final_pass,
+                           double ray_weight = 1.0);
+
+/// Ward, Rubinstein & Clear 1988's error term with POV-Ray's doubled rotational part (see LookupParams):
+/// ε = |p − p_i| / R_i + 2 √(1 − n·n_i).
+double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n);
+
+/// The behind test's measure (Ward, Rubinstein & Clear 1988, "in front" test), scale-free:
+/// (p − p_i)·(n + n_i)/|n + n_i| / R_i; clearly negative means the record lies in front of p.
+double front_distance(const IrradianceRecord& record, const Vec3& p, const Vec3& n);
+
+/// True when `record` may be reused at (p, n): ε below the bound, normals within 90°, and not in front of p.
+bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, double error_bound);
+
+/// The record's value moved to (p, n) with its gradients (Ward & Heckbert 1992):
+/// E_i + (n_i × n)·∇r E_i + (p − p_i)·∇t E_i per channel, never crossing zero.
+Vec3 extrapolate(const IrradianceRecord& record, const Vec3& p, const Vec3& n, bool gradients = true);
+
+/// The outcome of a lookup.
+struct Interpolation {
+    Vec3 irradiance;          ///< weighted average of the valid records (zero when none)
+    double weight_sum = 0.0;  ///< Σ w_i
+    double coverage = 0.0;    ///< POV-Ray's reuse: Σ of the coverage weights, each in (0, 1]
+    int records = 0;          ///< how many records were valid
+    bool sufficient = false;  ///< enough records to skip a new gather (LookupParams::reuse_count, accept_any)
+};
+
+/// Sums valid records into the interpolation at one point, in the order they are offered (which makes the result
+/// deterministic for a deterministic order).
+class InterpolationAccumulator {
+public:
+    /// `n` is normalised here.
+    InterpolationAccumulator(const Vec3& p, const Vec3& n, const LookupParams& params);
+    /// Tests `record` and adds it when valid; returns whether it was valid.
+    bool add(const IrradianceRecord& record);
+    /// The weighted average so far.
+    Interpolation result() const;
+
+private:
+    Vec3 m_p;
+    Vec3 m_n;
+    LookupParams m_params;
+    Vec3 m_sum;
+    double m_weight_sum = 0.0;
+    double m_coverage = 0.0;
+    int m_records = 0;
+};
+
+}  // namespace wardray::cache

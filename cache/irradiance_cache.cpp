@@ -1,0 +1,158 @@
+// IrradianceCache: passes, tile views, the merge in tile order, neighbour clamping and statistics.
+#include "cache/irradiance_cache.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wardray::cache {
+namespace {
+
+/// The largest error bound lookup_params() gives at depth 0: the final pass's or the pretrace's, plus POV-Ray's
+/// widening for low-weight rays (at most 0.25).
+double largest_error_bound(const parser::RadiositySettings& settings) {
+    return settings.error_bound * std::max(1.0, settings.low_error_factor) + 0.25;
+}
+
+}  // namespace
+
+Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) {
+    const LookupParams clamped = m_cache->clamp_params(depth, params);
+    InterpolationAccumulator acc(p, n, clamped);
+    m_cache->accumulate(acc, p, depth);
+    // This tile's own records of the same depth, in the order they were made.
+    for (const IrradianceRecord& r : m_records) {
+        if (r.depth == depth) acc.add(r);
+    }
+    const Interpolation out = acc.result();
+    ++m_lookups;
+    if (out.sufficient) ++m_hits;
+    return out;
+}
+
+void TileCache::add(IrradianceRecord record) {
+    if (record.depth < 0 || record.depth >= m_cache->depth_count()) return;
+    record.pass = m_pass;
+    m_cache->clamp_new_record(record);
+    for (IrradianceRecord& own : m_records) {
+        if (own.depth == record.depth) neighbour_clamp(own, record);
+    }
+    m_records.push_back(record);
+}
+
+IrradianceCache::IrradianceCache(const parser::RadiositySettings& settings)
+    : IrradianceCache(std::max(settings.recursion_limit, 1), largest_error_bound(settings)) {}
+
+IrradianceCache::IrradianceCache(int depths, double reach) {
+    const int n = std::max(depths, 1);
+    for (int d = 0; d < n; ++d) m_octrees.emplace_back(std::ldexp(reach, d));
+}
+
+double IrradianceCache::reach(int depth) const {
+    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))].reach();
+}
+
+int IrradianceCache::begin_pass(int tile_count) {
+    if (m_in_pass) end_pass();
+    m_tiles.clear();
+    for (int i = 0; i < std::max(tile_count, 0); ++i) m_tiles.emplace_back(new TileCache(*this, m_pass));
+    m_in_pass = true;
+    return m_pass;
+}
+
+TileCache& IrradianceCache::tile(int index) { return *m_tiles.at(static_cast<std::size_t>(index)); }
+
+void IrradianceCache::end_pass() {
+    if (!m_in_pass) return;
+    // Every pass gets its row of statistics, even one that made no records.
+    const auto rows = static_cast<std::size_t>(m_pass) + 1;
+    if (m_records_per_pass.size() < rows) m_records_per_pass.resize(rows, std::vector<std::uint64_t>(m_octrees.size()));
+    // Tile order, never thread-completion order: the merged cache is the same for any thread count.
+    for (const std::unique_ptr<TileCache>& t : m_tiles) {
+        for (IrradianceRecord record : t->m_records) {
+            clamp_mutual(record);
+            m_octrees[static_cast<std::size_t>(record.depth)].insert(record);
+            count_record(record);
+        }
+        m_lookups += t->m_lookups;
+        m_hits += t->m_hits;
+    }
+    m_tiles.clear();
+    m_in_pass = false;
+    ++m_pass;
+}
+
+LookupParams IrradianceCache::clamp_params(int depth, const LookupParams& params) const {
+    LookupParams out = params;
+    out.error_bound = std::min(params.error_bound, reach(depth));
+    return out;
+}
+
+void IrradianceCache::accumulate(InterpolationAccumulator& acc, const Vec3& p, int depth) const {
+    if (depth < 0 || depth >= depth_count()) return;
+    const RecordOctree& tree = m_octrees[static_cast<std::size_t>(depth)];
+    tree.visit(p, [&](std::uint32_t i) { acc.add(tree.records()[i]); });
+}
+
+Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const {
+    InterpolationAccumulator acc(p, n, clamp_params(depth, params));
+    accumulate(acc, p, depth);
+    return acc.result();
+}
+
+void IrradianceCache::clamp_new_record(IrradianceRecord& record) const {
+    // Křivánek et al. 2006, neighbour clamping R_new ≤ R_i + |p_new − p_i|: only records closer than R_new can bind.
+    const RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
+    tree.for_each_within(record.position, record.radius, [&](std::uint32_t i) {
+        const IrradianceRecord& other = tree.records()[i];
+        record.radius = std::min(record.radius, other.radius + length(other.position - record.position));
+    });
+}
+
+void IrradianceCache::clamp_mutual(IrradianceRecord& record) {
+    clamp_new_record(record);
+    // And R_i ≤ R_new + |p_i − p_new| for the records whose sphere R_i holds the new point (reach ≥ 1 files them).
+    RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
+    std::vector<std::uint32_t> candidates;
+    tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
+    for (const std::uint32_t i : candidates) {
+        IrradianceRecord& other = tree.record(i);
+        other.radius = std::min(other.radius, record.radius + length(other.position - record.position));
+    }
+}
+
+void IrradianceCache::add(const IrradianceRecord& record) {
+    if (m_in_pass) throw std::logic_error("IrradianceCache::add during a pass: add through the tile's TileCache");
+    if (record.depth < 0 || record.depth >= depth_count()) return;
+    IrradianceRecord r = record;
+    clamp_mutual(r);
+    m_octrees[static_cast<std::size_t>(r.depth)].insert(r);
+    count_record(r);
+}
+
+void IrradianceCache::count_record(const IrradianceRecord& record) {
+    const auto pass = static_cast<std::size_t>(std::max(record.pass, 0));
+    if (m_records_per_pass.size() <= pass) m_records_per_pass.resize(pass + 1);
+    std::vector<std::uint64_t>& per_depth = m_records_per_pass[pass];
+    if (per_depth.size() < m_octrees.size()) per_depth.resize(m_octrees.size());
+    ++per_depth[static_cast<std::size_t>(record.depth)];
+}
+
+const std::vector<IrradianceRecord>& IrradianceCache::records(int depth) const {
+    return m_octrees.at(static_cast<std::size_t>(depth)).records();
+}
+
+CacheStatistics IrradianceCache::statistics() const {
+    CacheStatistics s;
+    s.records = m_records_per_pass;
+    s.lookups = m_lookups;
+    s.hits = m_hits;
+    double radius_sum = 0.0;
+    for (const RecordOctree& tree : m_octrees) {
+        for (const IrradianceRecord& r : tree.records()) radius_sum += r.radius;
+        s.total_records += tree.size();
+    }
+    if (s.total_records > 0) s.mean_radius = radius_sum / static_cast<double>(s.total_records);
+    return s;
+}
+
+}  // namespace wardray::cache

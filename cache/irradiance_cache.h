@@ -1,0 +1,122 @@
+// IrradianceCache: one record octree per bounce depth, filled in passes by tiles and merged in tile order.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cache/interpolation.h"
+#include "cache/irradiance_record.h"
+#include "cache/octree.h"
+#include "parser/scene.h"
+
+namespace wardray::cache {
+
+/// Counts for --stats; identical for any thread count because tiles count and are summed in tile order.
+struct CacheStatistics {
+    /// records[pass][depth]: records made in each pass, by bounce depth (loaded records count in pass 0).
+    std::vector<std::vector<std::uint64_t>> records;
+    std::uint64_t lookups = 0;  ///< lookups made through tiles
+    std::uint64_t hits = 0;     ///< of those, lookups that found enough records (Interpolation::sufficient)
+    std::uint64_t total_records = 0;
+    double mean_radius = 0.0;  ///< over all records, world units
+
+    double hit_rate() const { return lookups > 0 ? static_cast<double>(hits) / static_cast<double>(lookups) : 0.0; }
+};
+
+/// A malformed, truncated or incompatible cache file.
+class CacheFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class IrradianceCache;
+
+/// One tile's view of the cache during a pass: lookups see the frozen cache plus this tile's own new records;
+/// new records stay here until IrradianceCache::end_pass(). Used by one thread at a time.
+class TileCache {
+public:
+    /// Interpolates at (p, n) for bounce `depth` from the frozen records and this tile's own, in that order.
+    Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params);
+    /// Adds a new record (its depth selects the octree, its pass is set here; a depth outside [0, depth_count())
+    /// is dropped), clamping its radius against its neighbours (Křivánek et al. 2006): against the frozen cache
+    /// only the new record shrinks, against this tile's own records both may.
+    void add(IrradianceRecord record);
+    /// This tile's records in the order they were added.
+    const std::vector<IrradianceRecord>& records() const { return m_records; }
+
+private:
+    friend class IrradianceCache;
+    TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {}
+
+    const IrradianceCache* m_cache;
+    int m_pass;
+    std::vector<IrradianceRecord> m_records;
+    std::uint64_t m_lookups = 0;
+    std::uint64_t m_hits = 0;
+};
+
+/// The irradiance cache (Ward, Rubinstein & Clear 1988) with a deterministic fill: the cache is frozen during a
+/// pass, each tile collects its new records in its TileCache, and end_pass() merges them in tile order.
+///
+/// Use: begin_pass(tiles); every tile t (any thread, any order) calls tile(t).lookup / tile(t).add;
+/// end_pass(). Outside a pass, lookup() reads the cache from any number of threads.
+class IrradianceCache {
+public:
+    /// One depth per `recursion_limit` bounce; octrees filed for the largest error bound lookup_params() can give.
+    explicit IrradianceCache(const parser::RadiositySettings& settings);
+    /// `depths` octrees whose filing reach at depth d is reach × 2^d.
+    IrradianceCache(int depths, double reach);
+
+    int depth_count() const { return static_cast<int>(m_octrees.size()); }
+    /// The filing reach at `depth`: lookups with a larger error bound are clamped to it.
+    double reach(int depth) const;
+
+    /// Freezes the cache and opens `tile_count` tile views; returns the pass number (0, 1, ...).
+    int begin_pass(int tile_count);
+    /// The view of tile `index` in the open pass (thread-safe: each tile has its own).
+    TileCache& tile(int index);
+    /// Merges the tiles' records in tile order (neighbour clamping against all earlier records) and closes the pass.
+    void end_pass();
+    bool in_pass() const { return m_in_pass; }
+
+    /// Interpolates from the frozen cache (no statistics; thread-safe while no pass is merging).
+    Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const;
+    /// Inserts one record outside a pass, with neighbour clamping (std::logic_error inside a pass).
+    void add(const IrradianceRecord& record);
+    /// The records of `depth` in insertion order.
+    const std::vector<IrradianceRecord>& records(int depth) const;
+    /// Totals so far (lookups of the open pass are counted when it ends).
+    CacheStatistics statistics() const;
+
+    /// Writes every record, bit-exact, with a versioned header (POV-Ray's +RFO).
+    void save(std::ostream& out) const;
+    /// Replaces the contents with the records of a file written by save() (POV-Ray's +RFI); throws CacheFileError
+    /// on a truncated, corrupt or incompatible file and then leaves the cache as it was. Records deeper than this
+    /// cache's depth_count() are skipped.
+    void load(std::istream& in);
+
+private:
+    friend class TileCache;
+    /// Adds the frozen records valid at (p, n) to `acc`.
+    void accumulate(InterpolationAccumulator& acc, const Vec3& p, int depth) const;
+    /// Shrinks `record`'s radius against the frozen records of its depth (Křivánek et al. 2006).
+    void clamp_new_record(IrradianceRecord& record) const;
+    /// As clamp_new_record(), then shrinks the frozen records' radii against `record` too.
+    void clamp_mutual(IrradianceRecord& record);
+    void count_record(const IrradianceRecord& record);
+    LookupParams clamp_params(int depth, const LookupParams& params) const;
+
+    std::vector<RecordOctree> m_octrees;
+    std::vector<std::unique_ptr<TileCache>> m_tiles;
+    bool m_in_pass = false;
+    int m_pass = 0;
+    std::vector<std::vector<std::uint64_t>> m_records_per_pass;
+    std::uint64_t m_lookups = 0;
+    std::uint64_t m_hits = 0;
+};
+
+}  // namespace wardray::cache

@@ -1,0 +1,90 @@
+// IrradianceRecord: the reuse radius with its clamps and the gradient limits applied when a record is made.
+#include "cache/irradiance_record.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wardray::cache {
+namespace {
+
+/// Replaces a non-finite or non-positive value by `fallback`.
+double finite_positive_or(double v, double fallback) { return std::isfinite(v) && v > 0.0 ? v : fallback; }
+
+}  // namespace
+
+RadiusLimits radius_limits(const parser::RadiositySettings& settings, int depth, double distance_to_camera,
+                           double footprint_min, double footprint_max) {
+    // POV-Ray compat: minimum_reuse and maximum_reuse are fractions of the distance to the camera, doubled per
+    // bounce (radiosity.cpp, GetRecursionSettings and GatherLight).
+    const double scale = std::ldexp(std::isfinite(distance_to_camera) ? std::max(distance_to_camera, 0.0) : 0.0,
+                                    std::max(depth, 0));
+    const double lo = std::max(settings.minimum_reuse * scale, std::isfinite(footprint_min) ? footprint_min : 0.0);
+    const double hi = std::min(settings.maximum_reuse * scale, footprint_max);
+    return {std::max(lo, 0.0), std::max(lo, hi)};
+}
+
+IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const GatherResult& gathered, int depth,
+                             const RadiusLimits& limits, const RecordOptions& options) {
+    IrradianceRecord rec;
+    rec.position = position;
+    rec.normal = normalize(normal);
+    rec.irradiance = is_finite(gathered.irradiance) ? gathered.irradiance : Vec3{};
+    rec.depth = depth;
+    if (options.gradients) {
+        for (int c = 0; c < 3; ++c) {
+            rec.rotational[c] = is_finite(gathered.rotational[c]) ? gathered.rotational[c] : Vec3{};
+            rec.translational[c] = is_finite(gathered.translational[c]) ? gathered.translational[c] : Vec3{};
+        }
+    }
+
+    // The limits themselves must be usable: a positive finite range, else a unit radius.
+    const double hi_raw = finite_positive_or(limits.max, finite_positive_or(limits.min, 1.0));
+    const double lo = std::min(std::isfinite(limits.min) ? std::max(limits.min, 0.0) : 0.0, hi_raw);
+    const double hi = std::max(hi_raw, lo);
+
+    // Ward, Rubinstein & Clear 1988: R = harmonic mean distance to the surfaces seen.
+    double r = gathered.harmonic_mean_distance;
+    if (std::isnan(r)) r = hi;
+
+    // Křivánek et al. 2006 (gradient-based radius limit): R ≤ E/|∇t E|, taking the channel with the largest
+    // relative gradient so that no channel extrapolates by more than its own value over R.
+    if (options.gradients && options.gradient_radius_cap) {
+        double relative = 0.0;
+        for (int c = 0; c < 3; ++c) {
+            const double e = std::fabs(rec.irradiance[c]);
+            const double g = length(rec.translational[c]);
+            if (g > 0.0) relative = std::max(relative, e > 0.0 ? g / e : HUGE_VAL);
+        }
+        if (relative > 0.0) r = std::min(r, 1.0 / relative);
+    }
+
+    // Clamp into the footprint / reuse range; a radius enlarged by the clamp scales the translational gradient by
+    // R/R_min (Křivánek et al. 2006), since the gradient was estimated over the smaller neighbourhood.
+    if (r < lo) {
+        const double shrink = lo > 0.0 ? std::max(r, 0.0) / lo : 1.0;
+        for (Vec3& g : rec.translational) g *= shrink;
+        r = lo;
+    }
+    r = std::min(r, hi);
+    // A zero radius (a ray hit at distance 0 and no lower limit) becomes the smallest radius the coordinates resolve.
+    rec.radius = r > 0.0 ? r : 1e-9 * std::max(1.0, max_abs_component(position));
+    return rec;
+}
+
+bool neighbour_clamp(IrradianceRecord& a, IrradianceRecord& b) {
+    // Křivánek et al. 2006, neighbour clamping: the reuse radius is 1-Lipschitz in position, like the distance to
+    // the nearest geometry it estimates.
+    const double d = length(a.position - b.position);
+    bool changed = false;
+    if (a.radius > b.radius + d) {
+        a.radius = b.radius + d;
+        changed = true;
+    }
+    if (b.radius > a.radius + d) {
+        b.radius = a.radius + d;
+        changed = true;
+    }
+    return changed;
+}
+
+}  // namespace wardray::cache

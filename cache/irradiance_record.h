@@ -1,0 +1,52 @@
+// IrradianceRecord: one cached irradiance value with its reuse radius and gradients, and how a gather becomes one.
+#pragma once
+
+#include <cstdint>
+
+#include "cache/gather.h"
+#include "parser/scene.h"
+#include "parser/vec3.h"
+
+namespace wardray::cache {
+
+/// One entry of the irradiance cache (Ward, Rubinstein & Clear 1988), in POV-Ray's normalisation (no π).
+struct IrradianceRecord {
+    Vec3 position;     ///< world space
+    Vec3 normal;       ///< unit, world space
+    Vec3 irradiance;   ///< RGB, cosine-weighted mean radiance
+    double radius = 0.0;  ///< R_i: reuse radius in world units (> 0, finite)
+    ChannelGradients rotational{};     ///< ∇r E per channel (see GatherResult)
+    ChannelGradients translational{};  ///< ∇t E per channel, after the limits of make_record()
+    std::int32_t depth = 0;  ///< bounce depth: 0 for records seen from camera-ray hits
+    std::int32_t pass = 0;   ///< the pass that made it (statistics only)
+};
+
+/// The range a record's radius is clamped into, in world units.
+struct RadiusLimits {
+    double min = 0.0;
+    double max = 0.0;
+};
+
+/// The radius range at `depth` for a point `distance_to_camera` from the camera: POV-Ray's
+/// [minimum_reuse, maximum_reuse] × distance × 2^depth, intersected with the caller's pixel-footprint range
+/// [footprint_min, footprint_max] (pass 0 and +infinity to leave that out). When the two ranges do not overlap the
+/// lower bound wins, so records never get denser than the footprint allows.
+RadiusLimits radius_limits(const parser::RadiositySettings& settings, int depth, double distance_to_camera,
+                           double footprint_min = 0.0, double footprint_max = 1e300);
+
+/// Switches for the improvements over POV-Ray, so that each can be measured on and off.
+struct RecordOptions {
+    bool gradients = true;            ///< keep the gradients (off: stored as zero, as POV-Ray 3.7)
+    bool gradient_radius_cap = true;  ///< R ≤ E/|∇t E| (Křivánek et al. 2006)
+};
+
+/// Makes a record from a gather: radius from the harmonic mean distance, capped by E/|∇t E| and clamped to `limits`;
+/// the translational gradient scaled down when the radius was clamped up; always finite.
+IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const GatherResult& gathered, int depth,
+                             const RadiusLimits& limits, const RecordOptions& options = {});
+
+/// Neighbour clamping (Křivánek et al. 2006): R_a ≤ R_b + |p_a − p_b| and R_b ≤ R_a + |p_a − p_b|.
+/// Returns true when either radius changed.
+bool neighbour_clamp(IrradianceRecord& a, IrradianceRecord& b);
+
+}  // namespace wardray::cache

@@ -1,0 +1,109 @@
+// Tests of the record octree: lookups and range queries agree exactly with brute-force scans.
+#include "cache/octree.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "cache/hemisphere_sampler.h"
+#include "cache/interpolation.h"
+
+namespace wardray::cache {
+namespace {
+
+/// Uniform in [lo, hi).
+double uniform(SplitMix64& rng, double lo, double hi) { return lo + (hi - lo) * rng.uniform(); }
+
+Vec3 random_direction(SplitMix64& rng) {
+    for (;;) {
+        const Vec3 v{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+        if (dot(v, v) > 1e-4 && dot(v, v) <= 1.0) return normalize(v);
+    }
+}
+
+IrradianceRecord random_record(SplitMix64& rng, const Vec3& offset, double scale) {
+    IrradianceRecord r;
+    r.position = offset + Vec3{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)} * scale;
+    r.normal = rng.uniform() < 0.5 ? Vec3{0, 1, 0} : random_direction(rng);
+    r.irradiance = {1, 1, 1};
+    r.radius = scale * std::exp(uniform(rng, std::log(1e-3), std::log(0.5)));
+    return r;
+}
+
+TEST(RecordOctree, LookupFindsExactlyTheValidRecords) {
+    // Several scales and offsets (including far from the origin), so the root grows in every direction.
+    for (const auto& [offset, scale] : {std::pair{Vec3{0, 0, 0}, 1.0}, std::pair{Vec3{1e4, -3e3, 7}, 50.0},
+                                        std::pair{Vec3{-0.3, 0.2, 0.1}, 1e-3}}) {
+        SplitMix64 rng(1234);
+        const double error_bound = 1.8;
+        RecordOctree tree(error_bound);
+        std::vector<IrradianceRecord> all;
+        for (int i = 0; i < 3000; ++i) {
+            all.push_back(random_record(rng, offset, scale));
+            tree.insert(all.back());
+        }
+        int hits = 0;
+        for (int qi = 0; qi < 3000; ++qi) {
+            // Queries near records (where validity is likely) and anywhere in the volume.
+            const Vec3 q = qi % 2 == 0
+                               ? all[qi % all.size()].position + random_direction(rng) * (uniform(rng, 0, 2) *
+                                                                                          all[qi % all.size()].radius)
+                               : offset + Vec3{uniform(rng, -1.2, 1.2), uniform(rng, -1.2, 1.2),
+                                               uniform(rng, -1.2, 1.2)} * scale;
+            const Vec3 n = rng.uniform() < 0.5 ? Vec3{0, 1, 0} : random_direction(rng);
+            std::vector<std::uint32_t> brute, found;
+            for (std::uint32_t i = 0; i < all.size(); ++i) {
+                if (is_valid(all[i], q, n, error_bound)) brute.push_back(i);
+            }
+            tree.visit(q, [&](std::uint32_t i) {
+                if (is_valid(tree.records()[i], q, n, error_bound)) found.push_back(i);
+            });
+            std::vector<std::uint32_t> sorted = found;
+            std::sort(sorted.begin(), sorted.end());
+            EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) << "visited twice";
+            ASSERT_EQ(sorted, brute) << "query " << qi << " scale " << scale;
+            hits += brute.empty() ? 0 : 1;
+        }
+        EXPECT_GT(hits, 1000);
+    }
+}
+
+TEST(RecordOctree, RangeQueryMatchesBruteForce) {
+    SplitMix64 rng(99);
+    RecordOctree tree(2.0);
+    std::vector<IrradianceRecord> all;
+    for (int i = 0; i < 2000; ++i) {
+        all.push_back(random_record(rng, {3, 3, 3}, 2.0));
+        tree.insert(all.back());
+    }
+    for (int qi = 0; qi < 500; ++qi) {
+        const Vec3 c = Vec3{3, 3, 3} + Vec3{uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2)};
+        const double radius = uniform(rng, 0.0, 0.8);
+        std::vector<std::uint32_t> brute, found;
+        for (std::uint32_t i = 0; i < all.size(); ++i) {
+            if (length(all[i].position - c) <= radius) brute.push_back(i);
+        }
+        tree.for_each_within(c, radius, [&](std::uint32_t i) { found.push_back(i); });
+        ASSERT_EQ(found, brute);
+    }
+}
+
+TEST(RecordOctree, DegenerateRecordsAreKeptButNeverFound) {
+    RecordOctree tree(1.8);
+    IrradianceRecord bad;
+    bad.position = {std::nan(""), 0, 0};
+    bad.radius = 1.0;
+    tree.insert(bad);
+    IrradianceRecord zero;
+    zero.radius = 0.0;
+    tree.insert(zero);
+    int visited = 0;
+    tree.visit({0, 0, 0}, [&](std::uint32_t) { ++visited; });
+    EXPECT_EQ(visited, 0);
+    EXPECT_EQ(tree.size(), 2u);
+}
+
+}  // namespace
+}  // namespace wardray::cache
