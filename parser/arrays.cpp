@@ -5,12 +5,6 @@
 
 namespace wardray::parser {
 
-namespace {
-
-constexpr std::size_t k_max_array_elements = 100'000'000;
-
-}  // namespace
-
 Value Parser::parse_array_declaration(const Token& kw) {
     auto array = std::make_shared<ArrayValue>();
     std::size_t total = 1;
@@ -19,9 +13,11 @@ Value Parser::parse_array_declaration(const Token& kw) {
         const Token at = peek();
         const double n = parse_float();
         expect("]");
-        if (!(n >= 1.0) || total * static_cast<std::size_t>(n) > k_max_array_elements)
-            fail(at, "array size must be at least 1 and at most " + std::to_string(k_max_array_elements) +
-                         " elements in all");
+        if (!(n >= 1.0)) fail(at, "array size must be at least 1");
+        if (n > static_cast<double>(m_options.max_array_elements) ||
+            static_cast<double>(total) * n > static_cast<double>(m_options.max_array_elements))
+            fail(at, "array has more elements than the limit of " + std::to_string(m_options.max_array_elements) +
+                         "; raise it with --max-array-size");
         array->dims.push_back(static_cast<std::size_t>(n));
         total *= array->dims.back();
     }

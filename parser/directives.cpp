@@ -1,4 +1,5 @@
 // The directive layer: #declare/#local, #if/#while/#for/#switch, #include, #macro, #version, #default.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/keywords.h"
@@ -7,8 +8,6 @@
 namespace wardray::parser {
 
 namespace {
-
-constexpr std::size_t k_max_include_depth = 64;
 
 bool is_opening_directive(const std::string& name) {
     return name == "if" || name == "ifdef" || name == "ifndef" || name == "while" || name == "for" ||
@@ -96,7 +95,7 @@ void Parser::process_directive() {
     } else if (name == "default") {
         directive_default(tok);
     } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
-        fail(tok, "'#" + name + "' is not supported yet");
+        directive_file_io(tok);
     } else {
         fail(tok, "unknown directive '#" + name + "'");
     }
@@ -110,7 +109,14 @@ void Parser::directive_declare(const Token& tok, bool local) {
         parse_string();
     }
     const Token id = expect_identifier();
-    if (is_keyword(id.text)) fail(id, "'" + id.text + "' is a reserved word and cannot be declared");
+    if (is_keyword(id.text)) {
+        // Reported, then the declaration is read and dropped so the error does not cascade.
+        report(make_diagnostic(Severity::Error, id, "'" + id.text + "' is a reserved word and cannot be declared"));
+        expect("=");
+        const Value dropped = parse_rvalue();
+        if (is_punct(peek_expr(), ";")) next();
+        return;
+    }
     if (is_punct(peek_expr(), "[")) {
         // Assignment to an element of an existing array.
         Value* target = lookup_mutable(id.text);
@@ -138,6 +144,10 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
     std::vector<Diagnostic> deferred = std::move(m_declaring.back());
     m_declaring.pop_back();
+    // raw(), not peek_expr(): a macro's #end right here must not be read before the by-reference check below.
+    if (const Token& op = raw(); !std::holds_alternative<Numeric>(v) && op.kind == TokenKind::Punct &&
+                                       (op.text == "+" || op.text == "-" || op.text == "*" || op.text == "/"))
+        fail(op, "'" + op.text + "' cannot be applied to " + value_kind_name(v));
     if (deferred.empty())
         m_deferred_warnings.erase(id.text);
     else
@@ -343,10 +353,11 @@ void Parser::directive_include(const Token& tok) {
     const std::string name = parse_string();
     std::size_t include_depth = 0;
     for (const Frame& f : m_frames) include_depth += f.kind == Frame::Kind::Include ? 1 : 0;
-    if (include_depth >= k_max_include_depth) {
+    if (include_depth >= m_options.max_include_depth) {
         report(make_diagnostic(Severity::Error, tok,
-                               "#include nesting exceeds the limit of " + std::to_string(k_max_include_depth) +
-                                   " (recursive #include?)"));
+                               "#include files nest deeper than the limit of " +
+                                   std::to_string(m_options.max_include_depth) +
+                                   " (recursive #include?); raise it with --max-include-depth"));
         throw FatalError{};
     }
     // Search order: the including file's folder, then the library paths in order.
@@ -371,7 +382,19 @@ void Parser::directive_include(const Token& tok) {
         index = load_file(c, error);
         if (index) break;
     }
-    if (!index) fail(name_tok, "cannot open include file '" + name + "': " + error);
+    if (!index) {
+        Diagnostic d = make_diagnostic(Severity::Error, name_tok, "cannot open include file '" + name + "': " + error);
+        std::string searched;
+        std::vector<std::string> folders;
+        for (const auto& c : candidates) {
+            const std::string folder = c.parent_path().empty() ? "." : c.parent_path().string();
+            if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
+        }
+        for (const auto& f : folders) searched += (searched.empty() ? "" : ", ") + f;
+        d.notes.insert(d.notes.begin(), "searched " + searched);
+        report(std::move(d));
+        throw StatementError{};
+    }
     Frame frame;
     frame.kind = Frame::Kind::Include;
     frame.name = name;
@@ -399,9 +422,10 @@ void Parser::directive_macro(const Token& tok) {
             }
             macro.params.push_back(expect_identifier().text);
             macro.optional.push_back(optional);
-            if (accept(",")) continue;
-            expect(")");
-            break;
+            // POV-Ray compat: the commas between parameters are optional and a trailing one is accepted
+            // (shapes3.inc has both).
+            accept(",");
+            if (accept(")")) break;
         }
     }
     macro.file = m_file;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <string_view>
+#include <unordered_set>
 
 #include "parser/keywords.h"
 #include "parser/parser.h"
@@ -47,6 +49,8 @@ const char* value_kind_name(const Value& v) {
         case 6: return "a transform";
         case 7: return "a camera";
         case 9: return "an array";
+        case 10: return "a function";
+        case 11: return "a file handle";
         default: return "an unsupported item";
     }
 }
@@ -57,9 +61,9 @@ const char* value_kind_name(const Value& v) {
 bool Parser::starts_string(const Token& t) {
     if (t.kind == TokenKind::String) return true;
     if (t.kind != TokenKind::Identifier) return false;
-    static const char* const string_functions[] = {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr"};
-    for (const char* f : string_functions)
-        if (t.text == f) return true;
+    static const std::unordered_set<std::string_view> string_functions = {"concat", "str",    "chr", "substr",
+                                                                          "strupr", "strlwr", "vstr"};
+    if (string_functions.count(t.text) > 0) return true;
     const Value* v = lookup(t.text);
     return v != nullptr && std::holds_alternative<std::string>(*v);
 }
@@ -101,20 +105,22 @@ Value Parser::parse_rvalue() {
             if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
             return element;
         }
+        if (w == "function") return parse_user_function(next());
         if (is_unsupported_block(w)) {
             const Token kw = next();
             warn_unsupported(kw, w);
-            if (w == "function" && accept("(")) {
-                while (!accept(")")) {
-                    if (next().kind == TokenKind::EndOfFile) fail(kw, "function parameters have no closing ')'");
-                }
-            }
             skip_block(kw);
             return Unsupported{w};
         }
         if (const Value* v = lookup(w); v != nullptr && !std::holds_alternative<Numeric>(*v)) {
-            next();
-            return *v;
+            // A function followed by '(' is a call, read as an expression.
+            const auto& tokens = m_files[m_file]->tokens;
+            const bool call = std::holds_alternative<std::shared_ptr<const UserFunction>>(*v) &&
+                              m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "(");
+            if (!call) {
+                next();
+                return *v;
+            }
         }
     }
     return parse_numeric();
@@ -198,7 +204,9 @@ Numeric Parser::parse_relational(bool allow_less) {
         const Token& op = peek_expr();
         if (op.kind != TokenKind::Punct) return a;
         const std::string& s = op.text;
-        if (s != "<" && s != "<=" && s != "=" && s != "!=" && s != ">=" && s != ">") return a;
+        // Relational operators are '<' '<=' '=' '!=' '>=' '>': tell them by their characters, not by compares.
+        const char c0 = s[0];
+        if (!((c0 == '<' || c0 == '>' || c0 == '=') && (s.size() == 1 || s[1] == '=')) && s != "!=") return a;
         if (s == "<" && !allow_less) return a;
         const Token o = next();
         const Numeric b = parse_additive();
@@ -296,6 +304,11 @@ Numeric Parser::parse_postfix(std::optional<Numeric> first) {
 }
 
 std::optional<Numeric> Parser::builtin_constant(const Token& t) {
+    static const std::unordered_set<std::string_view> constants = {
+        "pi", "true", "yes", "on", "false", "no", "off", "x", "y", "z", "t", "u", "v", "clock", "clock_delta",
+        "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock", "final_clock", "image_width",
+        "image_height", "version"};
+    if (constants.count(t.text) == 0) return std::nullopt;
     const std::string& w = t.text;
     if (w == "pi") return Numeric::scalar(std::numbers::pi);
     if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1.0);
@@ -358,6 +371,12 @@ Numeric Parser::parse_primary() {
     }
     if (t.kind != TokenKind::Identifier) fail(t, "expected a float or vector expression but found " + describe_token(t));
 
+    if (const Value* v = lookup(t.text); v != nullptr && !m_macros.count(t.text)) {
+        if (const auto* n = std::get_if<Numeric>(v)) {
+            next();
+            return *n;
+        }
+    }
     if (is_color_keyword(t)) return Numeric::color(parse_color());
     if (auto c = builtin_constant(t)) {
         next();
@@ -375,6 +394,10 @@ Numeric Parser::parse_primary() {
     if (const Value* v = lookup(t.text)) {
         next();
         if (const auto* n = std::get_if<Numeric>(v)) return *n;
+        if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(v)) {
+            const std::shared_ptr<const UserFunction> keep = *f;
+            return call_user_function(t, *keep);
+        }
         if (const auto* u = std::get_if<Unsupported>(v))
             fail(t, "'" + t.text + "' is a " + u->what + ", which is not supported yet");
         fail(t, "expected a float or vector but '" + t.text + "' is " + value_kind_name(*v));

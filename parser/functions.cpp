@@ -44,7 +44,12 @@ std::string Parser::parse_string() {
     if (w == "concat") {
         expect("(");
         std::string s = parse_string();
-        while (accept(",")) s += parse_string();
+        while (accept(",")) {
+            s += parse_string();
+            if (s.size() > m_options.max_string_length)
+                fail(t, "string longer than the limit of " + std::to_string(m_options.max_string_length) +
+                            " characters; raise it with --max-string-length");
+        }
         expect(")");
         return s;
     }
@@ -294,12 +299,73 @@ Numeric Parser::parse_function(const Token& name) {
         state = state * 1812433253u + 12345u;
         return Numeric::scalar(static_cast<double>((state >> 16) & 0x7FFFu) / 32767.0);
     }
-    static const char* const unsupported[] = {"trace", "vturbulence", "max_extent", "min_extent", "inside",
-                                              "eval_pigment", "bitwise_and",
+    if (f == "trace" || f == "inside" || f == "min_extent" || f == "max_extent") return parse_geometry_query(name);
+    static const char* const unsupported[] = {"vturbulence", "eval_pigment", "bitwise_and",
                                               "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");
+}
+
+Numeric Parser::parse_geometry_query(const Token& name) {
+    const std::string& f = name.text;
+    expect("(");
+    const Token obj_at = peek();
+    const Value obj = parse_rvalue();
+    const auto* ov = std::get_if<ObjectValue>(&obj);
+    if (ov == nullptr) fail(obj_at, "the first argument of '" + f + "' must be an object");
+    std::optional<Vec3> origin;
+    std::optional<Vec3> direction;
+    std::optional<Token> normal_var;
+    if (f == "trace" || f == "inside") {
+        expect(",");
+        origin = parse_vector();
+    }
+    if (f == "trace") {
+        expect(",");
+        direction = parse_vector();
+        if (accept(",")) normal_var = expect_identifier();
+    }
+    expect(")");
+    // The parser knows no geometry: it asks the layer that does.
+    if (m_options.query == nullptr) fail(name, f + "() needs the geometry layer, which this program did not provide");
+    const SceneQuery& q = *m_options.query;
+    if (f == "trace") {
+        if (length(*direction) == 0.0) fail(name, "trace() needs a non-zero direction");
+        // The nearest hit over the parts of the (flattened) object.
+        std::optional<QueryHit> best;
+        double best_distance = 0.0;
+        for (const ObjectPart& part : ov->parts) {
+            const std::optional<QueryHit> hit = q.trace(part.object, *origin, *direction);
+            if (!hit) continue;
+            const double d = length(hit->point - *origin);
+            if (!best || d < best_distance) {
+                best = hit;
+                best_distance = d;
+            }
+        }
+        // POV-Ray compat: a miss returns <0,0,0> and sets the normal to <0,0,0>.
+        if (normal_var) assign_existing_or_global(normal_var->text, Numeric::vector3(best ? best->normal : Vec3{}));
+        return Numeric::vector3(best ? best->point : Vec3{});
+    }
+    if (f == "inside") {
+        bool in = false;
+        for (const ObjectPart& part : ov->parts) in = in || q.inside(part.object, *origin);
+        return Numeric::scalar(in ? 1.0 : 0.0);
+    }
+    // Extents: the union of the parts' boxes; unbounded parts give POV-Ray's huge bound.
+    constexpr double k_huge = 1e10;  // POV-Ray compat: what min_extent/max_extent report for infinite objects
+    Vec3 lo{k_huge, k_huge, k_huge};
+    Vec3 hi{-k_huge, -k_huge, -k_huge};
+    for (const ObjectPart& part : ov->parts) {
+        const auto box = q.extent(part.object);
+        const Vec3 a = box ? box->first : Vec3{-k_huge, -k_huge, -k_huge};
+        const Vec3 b = box ? box->second : Vec3{k_huge, k_huge, k_huge};
+        lo = {std::min(lo.x, a.x), std::min(lo.y, a.y), std::min(lo.z, a.z)};
+        hi = {std::max(hi.x, b.x), std::max(hi.y, b.y), std::max(hi.z, b.z)};
+    }
+    if (ov->parts.empty()) lo = hi = Vec3{};
+    return Numeric::vector3(f == "min_extent" ? lo : hi);
 }
 
 }  // namespace wardray::parser

@@ -86,6 +86,9 @@ std::string source_line(std::string_view text, std::uint32_t line) {
 std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::string& path,
                        std::vector<Diagnostic>& errors) {
     std::vector<Token> tokens;
+    // Scene files average about five bytes per token: reserving up front avoids re-copying the vector as it grows
+    // (untouched reserved memory costs nothing).
+    tokens.reserve(text.size() / 3 + 16);
     Cursor cur(text);
     auto error_at = [&](std::uint32_t line, std::uint32_t column, std::uint32_t span, std::string message) {
         Diagnostic d;
@@ -172,7 +175,13 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
                 tok.kind = TokenKind::Directive;
                 tok.text = std::move(name);
             } else {
-                error_at(tok.line, tok.column, 1, "'#' must be followed by a directive name");
+                // POV-Ray compat: a stray '#' (language/image_size.pov has one before '}') is skipped with a warning.
+                Diagnostic d;
+                d.severity = Severity::Warning;
+                d.loc = SourceLoc{path, tok.line, tok.column};
+                d.message = "'#' without a directive name is ignored";
+                d.source_line = source_line(text, tok.line);
+                errors.push_back(std::move(d));
                 cur.advance(1);
                 continue;
             }

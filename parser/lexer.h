@@ -27,7 +27,7 @@ struct Token {
 /// The text of line `line` (from 1) of `text`, without its line ending; empty when out of range.
 std::string source_line(std::string_view text, std::uint32_t line);
 
-/// Tokenises `text`; lexical errors go to `errors` (with `path` and source line) and the scan goes on after them.
+/// Tokenises `text`; lexical errors and warnings go to `errors` (with `path` and source line) and the scan goes on.
 /// The result always ends with one EndOfFile token.
 std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::string& path,
                        std::vector<Diagnostic>& errors);

@@ -13,6 +13,20 @@ namespace wardray::parser {
 
 Parser::Parser(const ParseOptions& options) : m_options(options) {}
 
+std::string SourceFile::line_text(std::uint32_t line) const {
+    // Diagnostics and entity locations ask for lines often: index the line starts once per file.
+    if (line_starts.empty()) {
+        line_starts.push_back(0);
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') line_starts.push_back(i + 1);
+    }
+    if (line == 0 || line > line_starts.size()) return {};
+    const std::size_t start = line_starts[line - 1];
+    std::size_t end = line < line_starts.size() ? line_starts[line] - 1 : text.size();
+    if (end > start && text[end - 1] == '\r') --end;
+    return text.substr(start, end - start);
+}
+
 Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at) : m_parser(parser) {
     constexpr std::size_t k_max_nesting = 400;
     if (++m_parser.m_nesting <= k_max_nesting) return;
@@ -29,11 +43,24 @@ Diagnostic Parser::make_diagnostic(Severity s, const Token& at, std::string mess
     if (at.file < m_files.size()) {
         const SourceFile& f = *m_files[at.file];
         d.loc = SourceLoc{f.path, at.line, at.column};
-        d.source_line = source_line(f.text, at.line);
     }
     d.span = at.kind == TokenKind::EndOfFile ? 1 : at.length;
-    // Notes, innermost first: the macro being expanded and the include chain.
+    // A note without a message only carries a location (for scene entities): skip the costly parts.
+    if (s == Severity::Note && d.message.empty()) return d;
+    if (at.file < m_files.size()) d.source_line = m_files[at.file]->line_text(at.line);
+    // Notes, innermost first: the macro being expanded and the include chain; deep recursion is shortened to
+    // the innermost and outermost few frames.
+    constexpr std::size_t k_shown_each_side = 3;
+    const std::size_t n_frames = m_frames.size();
     for (auto it = m_frames.rbegin(); it != m_frames.rend(); ++it) {
+        const auto from_inside = static_cast<std::size_t>(it - m_frames.rbegin());
+        if (n_frames > 2 * k_shown_each_side + 1 && from_inside >= k_shown_each_side &&
+            from_inside < n_frames - k_shown_each_side) {
+            if (from_inside == k_shown_each_side)
+                d.notes.push_back("... " + std::to_string(n_frames - 2 * k_shown_each_side) +
+                                  " more macro calls and includes ...");
+            continue;
+        }
         const Token& site = it->call_site;
         const std::string where =
             (site.file < m_files.size() ? m_files[site.file]->path : std::string("?")) + ":" + std::to_string(site.line);
@@ -53,6 +80,18 @@ void Parser::report(Diagnostic d) {
 }
 
 void Parser::fail(const Token& at, std::string message) {
+    if (at.kind == TokenKind::EndOfFile && at.file < m_files.size()) {
+        // After an unterminated string the rest of the file is gone: what fails at its end is a consequence.
+        if (m_files[at.file]->truncated) throw FatalError{};
+        // The file ended inside a block: point at the brace that was never closed.
+        if (!m_open_braces.empty() && m_open_braces.back().file == at.file) {
+            Diagnostic d = make_diagnostic(Severity::Error, m_open_braces.back(),
+                                           "this '{' is never closed: the file ends before its '}'");
+            d.notes.insert(d.notes.begin(), "the file ends at line " + std::to_string(at.line) + " inside this block");
+            report(std::move(d));
+            throw FatalError{};
+        }
+    }
     report(make_diagnostic(Severity::Error, at, std::move(message)));
     throw StatementError{};
 }
@@ -101,6 +140,12 @@ void Parser::fail_undeclared(const Token& at) {
 }
 
 void Parser::recover_after_error(std::size_t depth) {
+    // A failed statement keyword followed by a block (`spher { ... }`): skip that block too.
+    if (m_brace_depth == depth && is_punct(raw(), "{")) {
+        ++m_pos;
+        ++m_brace_depth;
+        m_open_braces.push_back(m_files[m_file]->tokens[m_pos - 1]);
+    }
     // Skip the rest of the statement that failed: everything up to its closing brace.
     for (int guard = 0; m_brace_depth > depth && guard < 10'000'000; ++guard) {
         try {
@@ -109,6 +154,7 @@ void Parser::recover_after_error(std::size_t depth) {
         }
     }
     m_brace_depth = depth;
+    if (m_open_braces.size() > depth) m_open_braces.resize(depth);
     if (raw().kind == TokenKind::Punct && raw().text == ";") ++m_pos;
 }
 
@@ -124,7 +170,10 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         std::vector<Diagnostic> lex_errors;
         file->tokens = lex(file->text, 0, path, lex_errors);
         m_files.push_back(std::move(file));
-        for (auto& d : lex_errors) report(std::move(d));
+        for (auto& d : lex_errors) {
+            m_files.back()->truncated = m_files.back()->truncated || d.message == "unterminated string";
+            report(std::move(d));
+        }
         try {
             while (true) {
                 try {

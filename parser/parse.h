@@ -1,6 +1,7 @@
 // Entry points of the scene-language parser.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,9 +11,11 @@
 
 #include "parser/diagnostics.h"
 #include "parser/scene.h"
+#include "parser/scene_query.h"
 
 namespace wardray::parser {
 
+/// How to parse: search paths, predefined values, file-access rules and guard-rail limits.
 struct ParseOptions {
     /// Folders searched by #include after the scene's own folder (POV-Ray's library path, then `+L` paths).
     std::vector<std::filesystem::path> library_paths;
@@ -23,6 +26,32 @@ struct ParseOptions {
     int image_height = 240;
     double clock = 0.0;
     std::size_t max_errors = 20;
+
+    /// Folders besides the scene's own folder and `library_paths` that #fopen may read from.
+    std::vector<std::filesystem::path> read_paths;
+    /// Folders besides the scene's own folder that #fopen may write or append to.
+    std::vector<std::filesystem::path> write_paths;
+    /// What `#fopen ... write/append` does: refuse (an error), discard (check the rules, parse the #write
+    /// directives, write nothing; one warning) or allow (write inside the permitted folders).
+    enum class FileWrites { Refuse, Discard, Allow };
+    /// Safe by default: a parse has no side effects unless the user asks (--allow-file-writes).
+    FileWrites file_writes = FileWrites::Discard;
+
+    // Guard rails: each limit, when exceeded, is an error at its location naming the limit and its switch.
+    /// #while/#for iterations in the whole parse (--max-loop-iterations).
+    std::uint64_t max_loop_iterations = 10'000'000;
+    /// Macros being expanded at once, i.e. macro recursion depth (--max-macro-depth).
+    std::size_t max_macro_depth = 200;
+    /// Nested #include files (--max-include-depth).
+    std::size_t max_include_depth = 64;
+    /// Elements of one array, all dimensions multiplied (--max-array-size).
+    std::size_t max_array_elements = 100'000'000;
+    /// Characters of one string value (--max-string-length).
+    std::size_t max_string_length = 10'000'000;
+
+    /// The geometry layer, for trace(), inside(), min_extent() and max_extent() at parse time; when null those
+    /// functions are an error. Not owned.
+    const SceneQuery* query = nullptr;
 };
 
 /// The outcome of a parse: a scene when there was no error, and every diagnostic in source order.

@@ -22,6 +22,11 @@ struct SourceFile {
     std::string path;  ///< as shown in diagnostics
     std::string text;
     std::vector<Token> tokens;
+    bool truncated = false;  ///< the lexer gave up early (unterminated string): errors at its end are noise
+    mutable std::vector<std::size_t> line_starts;  ///< offset of each line, built on the first diagnostic
+
+    /// The text of line `line` (from 1) without its line ending, found through the line index.
+    std::string line_text(std::uint32_t line) const;
 };
 
 /// Thrown inside the parser to abandon the current statement after an error was reported.
@@ -31,6 +36,8 @@ struct FatalError {};
 
 /// How a token reads in a message: 'word', string "text", '#directive' or end of file.
 std::string describe_token(const Token& t);
+/// True for the primitive shape keywords the renderer draws (sphere ... superellipsoid).
+bool is_shape_keyword(std::string_view word);
 /// "a pigment", "an object", ... for messages about identifiers of the wrong kind.
 const char* value_kind_name(const Value& v);
 
@@ -103,6 +110,10 @@ private:
     void directive_include(const Token& tok);
     void directive_macro(const Token& tok);
     void directive_default(const Token& tok);
+    /// #fopen, #read, #write, #fclose (file_io.cpp), confined to the folders ParseOptions allows.
+    void directive_file_io(const Token& tok);
+    /// Sets an identifier as #read does: an existing one keeps its scope, a new one is global.
+    void assign_existing_or_global(const std::string& name, Value v);
     /// Skips raw tokens of the current file until a directive in `stops` at nesting `depth` 0; returns it
     /// (consumed) or an EndOfFile token when the file ended first.
     Token skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener);
@@ -157,6 +168,17 @@ private:
     Numeric parse_primary();
     Numeric parse_function(const Token& name);
     std::optional<Numeric> builtin_constant(const Token& t);
+    /// trace(), inside(), min_extent(), max_extent() through ParseOptions::query (functions.cpp).
+    Numeric parse_geometry_query(const Token& name);
+
+    // --- user functions (function_compiler.cpp) ---
+    /// Reads `[(params)] { body }` after the keyword `function` and compiles it.
+    std::shared_ptr<const UserFunction> parse_user_function(const Token& kw);
+    /// A warning shown once per parse for each distinct message.
+    void warn_once(const Token& at, const std::string& message);
+    /// Reads the argument list of a call of `f` and evaluates it at parse time.
+    Numeric call_user_function(const Token& name, const UserFunction& f);
+    friend class FunctionCompiler;
     bool starts_string(const Token& t);
 
     // --- appearance (appearance.cpp) ---
@@ -166,6 +188,33 @@ private:
     Finish parse_finish_body(const Token& kw);
     Texture parse_texture_body(const Token& kw);
     void parse_finish_item(Finish& f, const Token& item);
+    /// Reads texture items up to `close` ('}' of a texture block or ']' of a texture_map entry).
+    void parse_texture_items(Texture& tx, const Token& kw, const char* close);
+    Interior parse_interior_body(const Token& kw);
+    SkySphere parse_sky_sphere(const Token& kw);
+    Fog parse_fog(const Token& kw);
+    /// Reads `reflection { ... }` into the finish.
+    void parse_reflection_block(Finish& f);
+
+    // --- patterns (patterns.cpp) ---
+    /// True when `t` can start a float, vector or colour expression.
+    bool starts_value(const Token& t);
+    /// Consumes tokens up to and including `close` at brace depth `depth`.
+    void skip_to_close(const Token& kw, const char* close, std::size_t depth);
+    /// Reads a pattern keyword and its own parameters into `pat`: -1 when `t` is not one, else the length of the
+    /// list of colours/pigments/textures that may follow it (2 for checker and brick, 3 for hexagon, 0 for others).
+    int parse_pattern_keyword(const Token& t, Pattern& pat);
+    /// Reads one pattern modifier (turbulence, frequency, wave type, transform, ...); false when `t` is none.
+    bool parse_pattern_modifier(const Token& t, Pattern& pat);
+    std::vector<ColorMapEntry> parse_color_map(const Token& kw);
+    std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw);
+    /// Takes a leading pigment identifier or array element, when one comes next.
+    bool parse_pigment_start(Pigment& p);
+    void parse_pigment_list(Pigment& p, int count);
+    /// Reads pigment items up to `close` ('}' of a pigment block or ']' of a pigment_map entry).
+    void parse_pigment_items(Pigment& p, const Token& kw, const char* close);
+    Normal parse_normal_body(const Token& kw);
+    void parse_normal_items(Normal& n, const Token& kw, const char* close);
     void skip_block(const Token& kw);
     void skip_optional_block(const Token& kw);
 
@@ -183,6 +232,21 @@ private:
     void parse_radiosity(const Token& kw, RadiositySettings& rad);
     void place_object(ObjectValue ov);
     Texture& texture_to_modify(ObjectValue& ov);
+    /// An object statement's value as one Object: a union node when it holds several parts (or a union).
+    std::optional<Object> as_single_object(ObjectValue& ov);
+    /// Turns a flattened union into one union node (for inverse, clipped_by).
+    void make_union_node(ObjectValue& ov);
+    /// Reads `{ object ... }` (clipped_by, bounded_by) into Objects.
+    std::vector<Object> parse_object_list(const Token& kw, const std::vector<Object>* bounded_by);
+
+    // --- shapes (shapes.cpp) ---
+    /// Reads a primitive's parameters after its '{' (the modifiers follow).
+    Shape parse_shape_parameters(const Token& kw);
+    void parse_triangle(Mesh& mesh, bool smooth);
+    Mesh parse_mesh_body(const Token& kw);
+    Mesh parse_mesh2_body(const Token& kw);
+    template <typename F>
+    void parse_counted_list(const Token& kw, F read_item);
 
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
     class NestingGuard {
@@ -204,6 +268,9 @@ private:
     std::uint32_t m_file = 0;
     std::size_t m_pos = 0;
     std::size_t m_brace_depth = 0;  ///< '{' minus '}' consumed so far, for error recovery
+    std::vector<Token> m_open_braces;  ///< the '{' tokens not closed yet, innermost last
+    /// Files written while writing is off (FileWrites::Discard): kept here so the scene can read them back.
+    std::map<std::string, std::string> m_memory_files;
     std::vector<Frame> m_frames;
     std::vector<Cond> m_conds;
     std::vector<std::unordered_map<std::string, Value>> m_scopes;
@@ -221,6 +288,14 @@ private:
     double m_version = 3.7;
     Pigment m_default_pigment;
     Finish m_default_finish;
+    /// A texture made of the current #default pigment and finish.
+    Texture default_texture() const {
+        Texture t;
+        t.pigment = m_default_pigment;
+        t.finish = m_default_finish;
+        return t;
+    }
+    unsigned m_finish_albedo = 0;  ///< finish items given with `albedo` in the block being read (bits: diffuse, phong, specular)
     Scene m_scene;
 };
 

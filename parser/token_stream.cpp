@@ -8,12 +8,6 @@
 
 namespace wardray::parser {
 
-namespace {
-
-constexpr std::size_t k_max_frame_depth = 256;
-constexpr std::uint64_t k_max_loop_iterations = 10'000'000;
-
-}  // namespace
 // ---------------------------------------------------------------------------------------------------------------
 // Token access
 
@@ -51,8 +45,14 @@ Token Parser::next() {
     Token t = peek();
     if (t.kind != TokenKind::EndOfFile) ++m_pos;
     if (t.kind == TokenKind::Punct) {
-        if (t.text == "{") ++m_brace_depth;
-        if (t.text == "}" && m_brace_depth > 0) --m_brace_depth;
+        if (t.text == "{") {
+            ++m_brace_depth;
+            m_open_braces.push_back(t);
+        }
+        if (t.text == "}" && m_brace_depth > 0) {
+            --m_brace_depth;
+            m_open_braces.pop_back();
+        }
     }
     return t;
 }
@@ -134,7 +134,16 @@ Value* Parser::lookup_mutable(const std::string& name) {
 }
 
 void Parser::declare(const std::string& name, Value v, bool local) {
-    // POV-Ray compat: #declare always writes the global table, #local the innermost (include file or macro).
+    // POV-Ray compat: #local binds in the innermost scope (include file or macro); #declare rebinds the innermost
+    // existing name, a macro's local included, and creates a global only when the name is new.
+    if (!local) {
+        for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
+            const auto found = it->find(name);
+            if (found == it->end()) continue;
+            found->second = std::move(v);
+            return;
+        }
+    }
     auto& scope = local ? m_scopes.back() : m_scopes.front();
     scope[name] = std::move(v);
 }
@@ -213,10 +222,13 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
             fail(name_tok, "macro '" + name_tok.text + "' is missing parameter '" + macro.params[i] + "'");
         }
     }
-    if (m_frames.size() >= k_max_frame_depth) {
+    std::size_t macro_depth = 0;
+    for (const Frame& f : m_frames) macro_depth += f.kind == Frame::Kind::Macro ? 1 : 0;
+    if (macro_depth >= m_options.max_macro_depth) {
         report(make_diagnostic(Severity::Error, name_tok,
-                               "macro and include nesting exceeds the limit of " +
-                                   std::to_string(k_max_frame_depth) + " (runaway recursion?)"));
+                               "macro calls nest deeper than the limit of " +
+                                   std::to_string(m_options.max_macro_depth) +
+                                   " (runaway recursion?); raise it with --max-macro-depth"));
         throw FatalError{};
     }
     Frame frame;
@@ -246,10 +258,10 @@ void Parser::expand_macros() {
 }
 
 bool Parser::count_loop_iteration(const Token& where) {
-    if (++m_loop_iterations <= k_max_loop_iterations) return true;
+    if (++m_loop_iterations <= m_options.max_loop_iterations) return true;
     report(make_diagnostic(Severity::Error, where,
-                           "loops ran more than " + std::to_string(k_max_loop_iterations) +
-                               " iterations in total; stopping (endless #while?)"));
+                           "loops ran more than the limit of " + std::to_string(m_options.max_loop_iterations) +
+                               " iterations in total (endless #while?); raise it with --max-loop-iterations"));
     throw FatalError{};
 }
 
@@ -271,7 +283,10 @@ std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path
     file->tokens = lex(file->text, index, file->path, lex_errors);
     m_files.push_back(std::move(file));
     m_file_index[key] = index;
-    for (auto& d : lex_errors) report(std::move(d));
+    for (auto& d : lex_errors) {
+        m_files.back()->truncated = m_files.back()->truncated || d.message == "unterminated string";
+        report(std::move(d));
+    }
     return index;
 }
 

@@ -8,6 +8,7 @@
 #include <variant>
 #include <vector>
 
+#include "parser/function_vm.h"
 #include "parser/scene.h"
 
 namespace wardray::parser {
@@ -99,9 +100,26 @@ struct Unsupported {
 
 struct ArrayValue;
 
+/// A declared `function { ... }`: a compiled float function, a transform function (returns a vector), or a kind
+/// that is parsed but not evaluated yet (pattern, pigment, spline), which evaluates to zero with a warning.
+struct UserFunction {
+    enum class Kind { Float, Transform, Pattern, Pigment, Spline };
+    Kind kind = Kind::Float;
+    std::shared_ptr<const FunctionProgram> program;  ///< Float: the compiled body
+    Transform transform;                             ///< Transform: maps the point (x, y, z)
+    SourceLoc loc;
+};
+
+struct OpenFile;
+
+/// The identifier #fopen creates; #fclose, or reading past the end, removes it.
+struct FileHandle {
+    std::shared_ptr<OpenFile> file;
+};
+
 /// Anything an identifier can hold.
 using Value = std::variant<Numeric, std::string, Pigment, Finish, Texture, ObjectValue, Transform, CameraSpec,
-                           Unsupported, std::shared_ptr<ArrayValue>>;
+                           Unsupported, std::shared_ptr<ArrayValue>, std::shared_ptr<const UserFunction>, FileHandle>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

@@ -1,4 +1,7 @@
 // Golden tests of diagnostics as users see them, error recovery and the error limit.
+#include <filesystem>
+#include <fstream>
+
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {
@@ -74,6 +77,193 @@ TEST(Diagnostics, GarbageNeverCrashes) {
         EXPECT_FALSE(r.ok()) << text;
         for (const auto& d : r.diagnostics) EXPECT_FALSE(format_diagnostic(d).empty());
     }
+}
+
+
+// --- Golden texts: one test per kind of mistake, the whole first diagnostic as the user sees it. ---
+
+/// The first diagnostic of parsing `text` as test.pov, formatted.
+std::string first_diagnostic(const std::string& text, ParseOptions o = test::default_options()) {
+    const ParseResult r = parse_string(text, "test.pov", o);
+    EXPECT_FALSE(r.ok());
+    return r.diagnostics.empty() ? std::string() : format_diagnostic(r.diagnostics[0]);
+}
+
+TEST(Golden, MisspeltKeyword) {
+    const ParseResult r = test::parse_fail("spher { 0, 1 }\nsphere { 0, 1 }\n");
+    EXPECT_EQ(test::all_diagnostics(r),
+              "test.pov:1:1: error: undeclared identifier 'spher'\n"
+              "    1 | spher { 0, 1 }\n"
+              "      | ^~~~~\n"
+              "note: did you mean 'sphere'?\n"
+              "test.pov: warning: assumed_gamma not given in global_settings; using 1.0\n");
+}
+
+TEST(Golden, UnclosedBraceAtEndOfFile) {
+    EXPECT_EQ(first_diagnostic("sphere { 0, 1\n  pigment { rgb 1 }\n"),
+              "test.pov:1:8: error: this '{' is never closed: the file ends before its '}'\n"
+              "    1 | sphere { 0, 1\n"
+              "      |        ^\n"
+              "note: the file ends at line 3 inside this block\n");
+}
+
+TEST(Golden, VectorWhereFloatExpected) {
+    EXPECT_EQ(first_diagnostic("#declare V = <1, 2, 3>;\nsphere { 0, V }\n"),
+              "test.pov:2:13: error: expected a float but found a vector\n"
+              "    2 | sphere { 0, V }\n"
+              "      |             ^\n");
+}
+
+TEST(Golden, OperatorOnAPigment) {
+    EXPECT_EQ(first_diagnostic("#declare P = pigment { rgb 1 }\n#declare A = P + 1;\n"),
+              "test.pov:2:16: error: '+' cannot be applied to a pigment\n"
+              "    2 | #declare A = P + 1;\n"
+              "      |                ^\n");
+}
+
+TEST(Golden, DivisionByZero) {
+    EXPECT_EQ(first_diagnostic("#declare A = 1 / (2 - 2);\n"),
+              "test.pov:1:16: error: division by zero\n"
+              "    1 | #declare A = 1 / (2 - 2);\n"
+              "      |                ^\n");
+}
+
+TEST(Golden, EndWithoutIf) {
+    EXPECT_EQ(first_diagnostic("sphere { 0, 1 }\n#end\n"),
+              "test.pov:2:1: error: #end without matching #if, #while, #for, #switch or #macro\n"
+              "    2 | #end\n"
+              "      | ^~~~\n");
+}
+
+TEST(Golden, IfWithoutEnd) {
+    EXPECT_EQ(first_diagnostic("#if (1)\nsphere { 0, 1 }\n"),
+              "test.pov:1:1: error: '#if' has no matching #end\n"
+              "    1 | #if (1)\n"
+              "      | ^~~\n");
+}
+
+TEST(Golden, MissingIncludeNamesTheSearchedFolders) {
+    EXPECT_EQ(first_diagnostic("#include \"nosuch.inc\"\n"),
+              "test.pov:1:10: error: cannot open include file 'nosuch.inc': No such file or directory\n"
+              "    1 | #include \"nosuch.inc\"\n"
+              "      |          ^~~~~~~~~~~~\n"
+              "note: searched ., /usr/share/povray-3.7/include\n");
+}
+
+TEST(Golden, ErrorInsideAnIncludeShowsTheChain) {
+    const auto dir = std::filesystem::temp_directory_path() / "wardray_golden_include";
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "outer.inc") << "// outer\n#include \"inner.inc\"\n";
+    std::ofstream(dir / "inner.inc") << "#declare A = 1;\n#declare B = A + Missing;\n";
+    const std::string scene = (dir / "s.pov").string();
+    const ParseResult r = parse_string("\n#include \"outer.inc\"\n", scene, test::default_options());
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(format_diagnostic(r.diagnostics[0]),
+              (dir / "inner.inc").string() + ":2:18: error: undeclared identifier 'Missing'\n"
+              "    2 | #declare B = A + Missing;\n"
+              "      |                  ^~~~~~~\n"
+              "note: included from " + (dir / "outer.inc").string() + ":2\n"
+              "note: included from " + scene + ":2\n");
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Golden, ErrorInsideAMacroShowsTheCall) {
+    EXPECT_EQ(first_diagnostic("#macro M(A)\n  sphere { 0, A + Q }\n#end\nM(1)\n"),
+              "test.pov:2:19: error: undeclared identifier 'Q'\n"
+              "    2 |   sphere { 0, A + Q }\n"
+              "      |                   ^\n"
+              "note: in macro 'M' invoked from test.pov:4\n");
+}
+
+TEST(Golden, WrongMacroArgumentCount) {
+    EXPECT_EQ(first_diagnostic("#macro M(A, B) #end\nM(1, 2, 3)\n"),
+              "test.pov:2:1: error: macro 'M' takes 2 parameter(s) but 3 were given\n"
+              "    2 | M(1, 2, 3)\n"
+              "      | ^\n");
+    EXPECT_EQ(first_diagnostic("#macro M(A, B) #end\nM(1)\n"),
+              "test.pov:2:1: error: macro 'M' is missing parameter 'B'\n"
+              "    2 | M(1)\n"
+              "      | ^\n");
+}
+
+TEST(Golden, ArrayIndexOutOfRange) {
+    EXPECT_EQ(first_diagnostic("#declare A = array[3];\n#declare B = A[3];\n"),
+              "test.pov:2:16: error: index 3 of 'A' is out of range (size 3)\n"
+              "    2 | #declare B = A[3];\n"
+              "      |                ^\n");
+}
+
+TEST(Golden, RunawayLoop) {
+    ParseOptions o = test::default_options();
+    o.max_loop_iterations = 1000;
+    EXPECT_EQ(first_diagnostic("#while (1)\n#end\n", o),
+              "test.pov:1:1: error: loops ran more than the limit of 1000 iterations in total (endless #while?); "
+              "raise it with --max-loop-iterations\n"
+              "    1 | #while (1)\n"
+              "      | ^~~~~~\n");
+}
+
+TEST(Golden, RecursionDepth) {
+    ParseOptions o = test::default_options();
+    o.max_macro_depth = 20;
+    EXPECT_EQ(first_diagnostic("#macro R(N) R(N+1) #end\nR(0)\n", o),
+              "test.pov:1:13: error: macro calls nest deeper than the limit of 20 (runaway recursion?); raise it "
+              "with --max-macro-depth\n"
+              "    1 | #macro R(N) R(N+1) #end\n"
+              "      |             ^\n"
+              "note: in macro 'R' invoked from test.pov:1\n"
+              "note: in macro 'R' invoked from test.pov:1\n"
+              "note: in macro 'R' invoked from test.pov:1\n"
+              "note: ... 14 more macro calls and includes ...\n"
+              "note: in macro 'R' invoked from test.pov:1\n"
+              "note: in macro 'R' invoked from test.pov:1\n"
+              "note: in macro 'R' invoked from test.pov:2\n");
+}
+
+TEST(Golden, UnterminatedString) {
+    const ParseResult r = test::parse_fail("#declare S = \"abc;\nsphere { 0, 1 }\n");
+    EXPECT_EQ(test::all_diagnostics(r),
+              "test.pov:1:14: error: unterminated string\n"
+              "    1 | #declare S = \"abc;\n"
+              "      |              ^\n");
+}
+
+TEST(Golden, RedeclaringAKeyword) {
+    const ParseResult r = test::parse_fail("#declare sphere = 1;\nsphere { 0, 1 }\n");
+    EXPECT_EQ(test::all_diagnostics(r),
+              "test.pov:1:10: error: 'sphere' is a reserved word and cannot be declared\n"
+              "    1 | #declare sphere = 1;\n"
+              "      |          ^~~~~~\n"
+              "test.pov: warning: assumed_gamma not given in global_settings; using 1.0\n");
+}
+
+TEST(Golden, UnknownDotItem) {
+    EXPECT_EQ(first_diagnostic("#declare A = <1, 2, 3>;\n#declare B = A.q;\n"),
+              "test.pov:2:16: error: unknown dot item '.q'\n"
+              "    2 | #declare B = A.q;\n"
+              "      |                ^\n");
+}
+
+TEST(Golden, FunctionBuiltinArgumentCount) {
+    EXPECT_EQ(first_diagnostic("#declare F = function(a) { a + sin(a, 2) }\n"),
+              "test.pov:1:32: error: 'sin' takes 1 argument(s) but 2 were given\n"
+              "    1 | #declare F = function(a) { a + sin(a, 2) }\n"
+              "      |                                ^~~\n");
+}
+
+TEST(Golden, FileReadOutsideAllowedFolders) {
+    EXPECT_EQ(first_diagnostic("#fopen F \"/etc/hostname\" read\n"),
+              "test.pov:1:10: error: reading '/etc/hostname' is not allowed: files are read only from the scene's "
+              "folder, the include path and the folders given as read paths\n"
+              "    1 | #fopen F \"/etc/hostname\" read\n"
+              "      |          ^~~~~~~~~~~~~~~\n");
+}
+
+TEST(Golden, GeometryQueryWithoutGeometryLayer) {
+    EXPECT_EQ(first_diagnostic("#declare B = max_extent(sphere { 0, 1 });\n"),
+              "test.pov:1:14: error: max_extent() needs the geometry layer, which this program did not provide\n"
+              "    1 | #declare B = max_extent(sphere { 0, 1 });\n"
+              "      |              ^~~~~~~~~~\n");
 }
 
 }  // namespace

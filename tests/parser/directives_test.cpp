@@ -308,11 +308,12 @@ TEST(Directives, StringComparisonAndRand) {
 }
 
 TEST(Directives, UnusedDeclarationsDoNotWarn) {
-    Scene s = parse_ok("#declare C = cylinder { 0, y, 1 }\n#declare P = pigment { checker }\nsphere { 0, 1 }\n");
+    Scene s = parse_ok("#declare C = julia_fractal { <0.1, 0, 0, 0> }\n#declare P = pigment { mandel 20 }\n"
+                       "sphere { 0, 1 }\n");
     EXPECT_TRUE(s.warnings.empty());
-    s = parse_ok("#declare P = pigment { checker }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
+    s = parse_ok("#declare P = pigment { mandel 20 }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'checker' is not rendered yet");
+    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'mandel' is not rendered yet");
     EXPECT_EQ(s.warnings[0].loc.line, 2u);  // where the feature is written
 }
 
@@ -341,6 +342,29 @@ TEST(Directives, ColorsIncColours) {
     ASSERT_EQ(s.objects.size(), 2u);
     EXPECT_EQ(s.objects[0].texture.pigment.color.r, 1.0);
     EXPECT_NEAR(s.objects[1].texture.pigment.color.g, 0.556863, 1e-12);
+}
+
+TEST(Directives, DeclareRebindsTheInnermostExistingName) {
+    // shapes.inc's HF macros count with `#local K = 0; ... #declare K = K + 1;`: the macro's K must change.
+    const Scene s = parse_ok(R"(
+        #declare K = 100;
+        #macro Count()
+            #local K = 0;
+            #while (K < 3) #declare K = K + 1; #end
+            sphere { 0, K }
+        #end
+        Count()
+        sphere { 0, K }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 3);
+    EXPECT_EQ(radius(s, 1), 100);  // the global is untouched
+}
+
+TEST(Directives, StrayHashIsAWarning) {
+    const Scene s = parse_ok("sphere { 0, 1 # }\n");
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_EQ(s.warnings[0].message, "'#' without a directive name is ignored");
 }
 
 }  // namespace

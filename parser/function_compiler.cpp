@@ -1,0 +1,392 @@
+// User functions: compiling `function { ... }` bodies to FunctionProgram and calling them at parse time.
+#include <cmath>
+#include <utility>
+
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+struct NamedFn1 {
+    const char* name;
+    MathFn1 fn;
+};
+
+constexpr NamedFn1 k_math1[] = {
+    {"abs", MathFn1::Abs},     {"ceil", MathFn1::Ceil},   {"floor", MathFn1::Floor},  {"int", MathFn1::Int},
+    {"sqrt", MathFn1::Sqrt},   {"sin", MathFn1::Sin},     {"cos", MathFn1::Cos},      {"tan", MathFn1::Tan},
+    {"asin", MathFn1::Asin},   {"acos", MathFn1::Acos},   {"sinh", MathFn1::Sinh},    {"cosh", MathFn1::Cosh},
+    {"tanh", MathFn1::Tanh},   {"asinh", MathFn1::Asinh}, {"acosh", MathFn1::Acosh},  {"atanh", MathFn1::Atanh},
+    {"exp", MathFn1::Exp},     {"ln", MathFn1::Ln},       {"log", MathFn1::Log},      {"radians", MathFn1::Radians},
+    {"degrees", MathFn1::Degrees}};
+
+struct NamedFn2 {
+    const char* name;
+    MathFn2 fn;
+};
+
+constexpr NamedFn2 k_math2[] = {{"atan2", MathFn2::Atan2}, {"pow", MathFn2::Pow}, {"mod", MathFn2::Mod},
+                                {"div", MathFn2::Div}};
+
+Instruction op(Instruction::Op o, std::uint32_t a = 0) {
+    Instruction ins;
+    ins.op = o;
+    ins.a = a;
+    return ins;
+}
+
+}  // namespace
+
+/// Recursive-descent compiler of a function body, reading tokens through the parser (so macros and directives
+/// inside the body work) and emitting stack-machine code.
+class FunctionCompiler {
+public:
+    FunctionCompiler(Parser& parser, FunctionProgram& program) : m_p(parser), m_prog(program) {}
+
+    /// `?:`, the lowest precedence level.
+    void expression() {
+        logical();
+        if (!m_p.is_punct(m_p.peek(), "?")) return;
+        m_p.next();
+        const std::size_t to_else = m_prog.emit(op(Instruction::Op::JumpIfZero));
+        expression();
+        const std::size_t to_end = m_prog.emit(op(Instruction::Op::Jump));
+        m_p.expect(":");
+        m_prog.patch_jump(to_else, m_prog.size());
+        expression();
+        m_prog.adjust_depth(-1);  // only one branch's value is on the stack
+        m_prog.patch_jump(to_end, m_prog.size());
+    }
+
+private:
+    void logical() {
+        relational();
+        while (true) {
+            const Token& t = m_p.peek();
+            if (!m_p.is_punct(t, "&") && !m_p.is_punct(t, "|")) return;
+            const bool is_and = t.text == "&";
+            m_p.next();
+            relational();
+            m_prog.emit(op(is_and ? Instruction::Op::And : Instruction::Op::Or));
+        }
+    }
+
+    void relational() {
+        using Op = Instruction::Op;
+        additive();
+        while (true) {
+            const Token& t = m_p.peek();
+            if (t.kind != TokenKind::Punct) return;
+            Op o;
+            if (t.text == "<") o = Op::Lt;
+            else if (t.text == "<=") o = Op::Le;
+            else if (t.text == "=") o = Op::Eq;
+            else if (t.text == "!=") o = Op::Ne;
+            else if (t.text == ">=") o = Op::Ge;
+            else if (t.text == ">") o = Op::Gt;
+            else return;
+            m_p.next();
+            additive();
+            m_prog.emit(op(o));
+        }
+    }
+
+    void additive() {
+        multiplicative();
+        while (true) {
+            const Token& t = m_p.peek();
+            if (!m_p.is_punct(t, "+") && !m_p.is_punct(t, "-")) return;
+            const bool plus = t.text == "+";
+            m_p.next();
+            multiplicative();
+            m_prog.emit(op(plus ? Instruction::Op::Add : Instruction::Op::Sub));
+        }
+    }
+
+    void multiplicative() {
+        unary();
+        while (true) {
+            const Token& t = m_p.peek();
+            if (!m_p.is_punct(t, "*") && !m_p.is_punct(t, "/")) return;
+            const bool mul = t.text == "*";
+            m_p.next();
+            unary();
+            m_prog.emit(op(mul ? Instruction::Op::Mul : Instruction::Op::Div));
+        }
+    }
+
+    void unary() {
+        const Token t = m_p.peek();
+        const Parser::NestingGuard guard(m_p, t);
+        if (m_p.is_punct(t, "-")) {
+            m_p.next();
+            unary();
+            m_prog.emit(op(Instruction::Op::Neg));
+        } else if (m_p.is_punct(t, "+")) {
+            m_p.next();
+            unary();
+        } else if (m_p.is_punct(t, "!")) {
+            m_p.next();
+            unary();
+            m_prog.emit(op(Instruction::Op::Not));
+        } else {
+            primary();
+        }
+    }
+
+    void constant(double v) {
+        Instruction ins = op(Instruction::Op::Const);
+        ins.value = v;
+        m_prog.emit(ins);
+    }
+
+    /// `( a, b, ... )`, each compiled onto the stack; returns how many.
+    std::uint32_t arguments() {
+        m_p.expect("(");
+        std::uint32_t n = 0;
+        if (m_p.accept(")")) return 0;
+        do {
+            expression();
+            ++n;
+        } while (m_p.accept(","));
+        m_p.expect(")");
+        return n;
+    }
+
+    void expect_count(const Token& name, std::uint32_t got, std::uint32_t min, std::uint32_t max) {
+        if (got >= min && got <= max) return;
+        const std::string want = min == max ? std::to_string(min) : std::to_string(min) + " to " + std::to_string(max);
+        m_p.fail(name, "'" + name.text + "' takes " + want + " argument(s) but " + std::to_string(got) +
+                           " were given");
+    }
+
+    /// A float constant read from a declared identifier, with an optional `.x`-style item for vectors.
+    void declared_numeric(const Token& t, Numeric n) {
+        if (m_p.is_punct(m_p.peek(), ".")) n = m_p.parse_postfix(n);
+        if (n.n != 1) m_p.fail(t, "'" + t.text + "' is a vector; a function body needs a float here");
+        constant(n.v[0]);
+    }
+
+    void call_user(const Token& t, const UserFunction& f) {
+        const std::uint32_t n = arguments();
+        switch (f.kind) {
+            case UserFunction::Kind::Float: {
+                const FunctionProgram& callee = *f.program;
+                if (callee.unsupported().empty() && n != callee.arity())
+                    expect_count(t, n, static_cast<std::uint32_t>(callee.arity()),
+                                 static_cast<std::uint32_t>(callee.arity()));
+                m_prog.emit_call(f.program, n);
+                return;
+            }
+            case UserFunction::Kind::Pattern:
+                m_prog.emit_unsupported(n, "pattern function is not rendered yet");
+                return;
+            default:
+                m_p.fail(t, "'" + t.text + "' returns a vector or colour; only float functions can be called "
+                                           "inside a function yet");
+        }
+    }
+
+    void primary() {
+        const Token t = m_p.peek();
+        if (t.kind == TokenKind::Number) {
+            m_p.next();
+            constant(t.number);
+            return;
+        }
+        if (m_p.is_punct(t, "(")) {
+            m_p.next();
+            expression();
+            m_p.expect(")");
+            return;
+        }
+        if (t.kind != TokenKind::Identifier)
+            m_p.fail(t, "expected a float expression in the function body but found " + describe_token(t));
+        const std::string& w = t.text;
+        // Parameters shadow everything else.
+        const auto& params = m_prog.params();
+        for (std::size_t i = 0; i < params.size(); ++i) {
+            if (params[i] != w) continue;
+            m_p.next();
+            m_prog.emit(op(Instruction::Op::Arg, static_cast<std::uint32_t>(i)));
+            return;
+        }
+        if (const auto m = m_p.m_macros.find(w); m != m_p.m_macros.end()) {
+            m_p.next();
+            m_p.invoke_macro(t, m->second);
+            primary();
+            return;
+        }
+        if (m_p.is_array_element_next()) {
+            const Value element = *m_p.take_array_element();
+            const auto* n = std::get_if<Numeric>(&element);
+            if (n == nullptr) m_p.fail(t, "this element of '" + w + "' is not a float");
+            declared_numeric(t, *n);
+            return;
+        }
+        if (const Value* v = m_p.lookup(w)) {
+            m_p.next();
+            if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(v)) {
+                const std::shared_ptr<const UserFunction> keep = *f;
+                call_user(t, *keep);
+                return;
+            }
+            if (const auto* n = std::get_if<Numeric>(v)) {
+                declared_numeric(t, *n);
+                return;
+            }
+            m_p.fail(t, "'" + w + "' is " + value_kind_name(*v) + "; a function body needs a float here");
+        }
+        for (const auto& [name, fn] : k_math1) {
+            if (w != name) continue;
+            m_p.next();
+            expect_count(t, arguments(), 1, 1);
+            m_prog.emit(op(Instruction::Op::Call1, static_cast<std::uint32_t>(fn)));
+            return;
+        }
+        for (const auto& [name, fn] : k_math2) {
+            if (w != name) continue;
+            m_p.next();
+            expect_count(t, arguments(), 2, 2);
+            m_prog.emit(op(Instruction::Op::Call2, static_cast<std::uint32_t>(fn)));
+            return;
+        }
+        if (w == "atan") {
+            m_p.next();
+            const std::uint32_t n = arguments();
+            expect_count(t, n, 1, 2);
+            if (n == 1) m_prog.emit(op(Instruction::Op::Call1, static_cast<std::uint32_t>(MathFn1::Atan)));
+            else m_prog.emit(op(Instruction::Op::Call2, static_cast<std::uint32_t>(MathFn2::Atan2)));
+            return;
+        }
+        if (w == "min" || w == "max") {
+            m_p.next();
+            const std::uint32_t n = arguments();
+            expect_count(t, n, 1, 256);
+            const auto fn = static_cast<std::uint32_t>(w == "min" ? MathFn2::Min : MathFn2::Max);
+            for (std::uint32_t i = 1; i < n; ++i) m_prog.emit(op(Instruction::Op::Call2, fn));
+            return;
+        }
+        if (w == "select") {
+            m_p.next();
+            const std::uint32_t n = arguments();
+            expect_count(t, n, 3, 4);
+            m_prog.emit(op(n == 3 ? Instruction::Op::Select3 : Instruction::Op::Select4));
+            return;
+        }
+        if (auto c = m_p.builtin_constant(t)) {
+            m_p.next();
+            declared_numeric(t, *c);
+            return;
+        }
+        if (is_keyword(w)) m_p.fail(t, "'" + w + "' cannot be used in a function body");
+        m_p.fail_undeclared(t);
+    }
+
+    Parser& m_p;
+    FunctionProgram& m_prog;
+};
+
+std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw) {
+    auto f = std::make_shared<UserFunction>();
+    f->loc = make_diagnostic(Severity::Note, kw, "").loc;
+    std::vector<std::string> params;
+    if (accept("(")) {
+        if (!accept(")")) {
+            do {
+                params.push_back(expect_identifier().text);
+            } while (accept(","));
+            expect(")");
+        }
+    } else {
+        params = {"x", "y", "z"};
+    }
+    expect("{");
+    const Token first = peek();
+    if (is_word(first, "internal")) {
+        // POV-Ray compat: the built-in functions of functions.inc; accepted, evaluated only when implemented.
+        next();
+        expect("(");
+        const double n = parse_float();
+        expect(")");
+        expect("}");
+        auto program = std::make_shared<FunctionProgram>(params);
+        program->emit_unsupported(static_cast<std::uint32_t>(params.size()),
+                                  "internal function " + std::to_string(static_cast<long long>(n)) +
+                                      " is not supported yet");
+        f->program = std::move(program);
+        return f;
+    }
+    if (is_word(first, "pattern") || is_word(first, "pigment") || is_word(first, "spline")) {
+        const Token block = next();
+        f->kind = first.text == "pattern" ? UserFunction::Kind::Pattern
+                  : first.text == "pigment" ? UserFunction::Kind::Pigment
+                                            : UserFunction::Kind::Spline;
+        skip_block(block);
+        expect("}");
+        return f;
+    }
+    if (is_word(first, "transform")) {
+        f->kind = UserFunction::Kind::Transform;
+        f->transform = parse_transform_body(next());
+        expect("}");
+        return f;
+    }
+    auto program = std::make_shared<FunctionProgram>(std::move(params));
+    FunctionCompiler compiler(*this, *program);
+    compiler.expression();
+    expect("}");
+    f->program = std::move(program);
+    return f;
+}
+
+void Parser::warn_once(const Token& at, const std::string& message) {
+    // Checked before the diagnostic is built: loops may call the same function millions of times.
+    if (m_warned_features.count(message) > 0) return;
+    emit_feature_warning(make_diagnostic(Severity::Warning, at, message));
+}
+
+Numeric Parser::call_user_function(const Token& name, const UserFunction& f) {
+    expect("(");
+    std::vector<double> args;
+    if (!accept(")")) {
+        do {
+            const Token at = peek();
+            const Numeric a = parse_conditional(true);
+            if (a.n != 1) fail(at, "function arguments must be floats");
+            args.push_back(a.v[0]);
+        } while (accept(","));
+        expect(")");
+    }
+    const std::string what = "'" + name.text + "'";
+    switch (f.kind) {
+        case UserFunction::Kind::Float: {
+            const FunctionProgram& program = *f.program;
+            const std::string& reason = program.unsupported();
+            if (reason.rfind("internal", 0) == 0) fail(name, reason + " (called through " + what + ")");
+            if (!reason.empty()) warn_once(name, reason + " (" + what + " evaluates to 0)");
+            else if (args.size() != program.arity())
+                fail(name, what + " takes " + std::to_string(program.arity()) + " argument(s) but " +
+                               std::to_string(args.size()) + " were given");
+            return Numeric::scalar(program.evaluate(args));
+        }
+        case UserFunction::Kind::Transform: {
+            args.resize(3, 0.0);
+            return Numeric::vector3(f.transform.point({args[0], args[1], args[2]}));
+        }
+        case UserFunction::Kind::Pattern:
+            warn_once(name, "pattern function is not rendered yet (" + what + " evaluates to 0)");
+            return Numeric::scalar(0.0);
+        case UserFunction::Kind::Pigment:
+            warn_once(name, "pigment function is not rendered yet (" + what + " evaluates to black)");
+            return Numeric::color(Color{});
+        case UserFunction::Kind::Spline:
+            warn_once(name, "spline function is not rendered yet (" + what + " evaluates to <0,0,0>)");
+            return Numeric::vector3({0, 0, 0});
+    }
+    return Numeric::scalar(0.0);
+}
+
+}  // namespace wardray::parser
