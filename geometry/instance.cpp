@@ -1,4 +1,4 @@
-// ShapeInstance: world-to-object mapping of rays, normals by the inverse transpose, and world bounds.
+// ShapeInstance: parent-to-object mapping of rays, normals by the inverse transpose, clipping and bounds.
 #include "geometry/instance.h"
 
 #include <cmath>
@@ -8,20 +8,40 @@ namespace wardray::geometry {
 
 namespace {
 
+template <typename Shape, typename Description>
+std::optional<AnyShape> wrap(const Description& d) {
+    if (auto r = Shape::create(d)) return AnyShape(std::move(*r));
+    return std::nullopt;
+}
+
 std::optional<AnyShape> make_shape(const parser::Shape& shape) {
     return std::visit(
         [](const auto& s) -> std::optional<AnyShape> {
             using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, parser::Sphere>) {
-                if (auto r = SphereShape::create(s)) return AnyShape(*r);
-            } else if constexpr (std::is_same_v<T, parser::Box>) {
-                if (auto r = BoxShape::create(s)) return AnyShape(*r);
-            } else if constexpr (std::is_same_v<T, parser::Plane>) {
-                if (auto r = PlaneShape::create(s)) return AnyShape(*r);
-            }
+            if constexpr (std::is_same_v<T, parser::Sphere>) return wrap<SphereShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Box>) return wrap<BoxShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Plane>) return wrap<PlaneShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Cylinder> || std::is_same_v<T, parser::Cone>)
+                return wrap<ConeShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Disc>) return wrap<DiscShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Torus>) return wrap<TorusShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Mesh> || std::is_same_v<T, parser::Polygon> ||
+                               std::is_same_v<T, parser::Prism>)
+                return wrap<MeshShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Quadric>) return wrap<QuadricShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Quartic>) return wrap<QuarticShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Csg>) return wrap<CsgShape>(s);
             return std::nullopt;
         },
         shape);
+}
+
+// The inside region's object-space bounds: shapes that know theirs say so, closed shapes use their surface's.
+template <typename S>
+std::optional<Bounds> shape_region(const S& s) {
+    if constexpr (requires { s.region_bounds(); }) return s.region_bounds();
+    else return s.bounds();
 }
 
 bool matrix_is_finite(const Transform::Matrix34& m) {
@@ -60,6 +80,7 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
 ShapeInstance::ShapeInstance(const AnyShape& shape, const parser::Object& object, std::uint32_t index)
     : m_shape(shape),
       m_transform(object.transform),
+      m_object(&object),
       m_index(index),
       m_inverse(object.inverse),
       m_no_shadow(object.no_shadow),
@@ -67,7 +88,8 @@ ShapeInstance::ShapeInstance(const AnyShape& shape, const parser::Object& object
       m_no_reflection(object.no_reflection),
       m_no_radiosity(object.no_radiosity) {}
 
-std::optional<ShapeInstance> ShapeInstance::create(const parser::Object& object, std::uint32_t index) {
+std::optional<ShapeInstance> ShapeInstance::create(const parser::Object& object, std::uint32_t index,
+                                                   bool flip_inverse) {
     // Degenerate objects are skipped here and reported by the parser; they must never reach Embree.
     const Transform& xf = object.transform;
     if (!xf.is_invertible() || !matrix_is_finite(xf.matrix()) || !matrix_is_finite(xf.inverse_matrix()))
@@ -75,12 +97,30 @@ std::optional<ShapeInstance> ShapeInstance::create(const parser::Object& object,
     auto shape = make_shape(object.shape);
     if (!shape) return std::nullopt;
     ShapeInstance inst(*shape, object, index);
-    if (const auto* sphere = std::get_if<SphereShape>(&inst.m_shape)) {
-        inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
-    } else {
-        const auto local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
-        if (local) inst.m_world_bounds = transform_bounds(*local, xf);
+    if (flip_inverse) inst.m_inverse = !inst.m_inverse;
+    std::optional<Bounds> local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
+    std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
+    if (!object.clipped_by.empty()) {
+        // Only the parts of the surface inside every clipping object remain.
+        auto clips = std::make_shared<std::vector<ShapeInstance>>();
+        for (const parser::Object& c : object.clipped_by) {
+            auto ci = create(c, index);
+            if (!ci) return std::nullopt;
+            local = intersect_bounds(local, ci->region_bounds());
+            region = intersect_bounds(region, ci->region_bounds());
+            clips->push_back(std::move(*ci));
+        }
+        inst.m_clips = std::move(clips);
+        if (local && local->empty()) local = Bounds{local->lower, local->lower};
+        if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
+    const auto* sphere = std::get_if<SphereShape>(&inst.m_shape);
+    if (sphere && !inst.m_clips) {
+        inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
+    } else if (local) {
+        inst.m_world_bounds = transform_bounds(*local, xf);
+    }
+    if (region && !inst.m_inverse) inst.m_region_bounds = transform_bounds(*region, xf);
     if (inst.m_world_bounds &&
         (!is_finite(inst.m_world_bounds->lower) || !is_finite(inst.m_world_bounds->upper)))
         return std::nullopt;
@@ -95,9 +135,15 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
         std::visit([&](const auto& s) { return s.intersect_all(local, t_min, t_max); }, m_shape);
     SurfaceHits hits;
     for (const SurfaceHit& h : object_hits) {
+        if (m_clips) {
+            const Vec3 p = local.origin + h.t * local.direction;
+            bool kept = true;
+            for (const ShapeInstance& c : *m_clips) kept = kept && c.inside(p);
+            if (!kept) continue;
+        }
         Vec3 n = normalize(m_transform.normal(h.normal));
         if (!is_finite(n) || !std::isfinite(h.t)) continue;
-        hits.push({h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering});
+        hits.push({h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object});
     }
     return hits;
 }
@@ -107,7 +153,20 @@ std::optional<Hit> ShapeInstance::nearest(const Vec3& origin, const Vec3& direct
     const SurfaceHits hits = intersect_all(origin, direction, t_min, t_max);
     if (hits.empty()) return std::nullopt;
     const SurfaceHit& h = hits[0];
-    return Hit{h.t, origin + h.t * direction, h.normal, m_index};
+    return Hit{h.t, origin + h.t * direction, h.normal, m_index, h.leaf};
+}
+
+std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direction, std::size_t face,
+                                           double t_min, double t_max) const {
+    const auto* mesh = std::get_if<MeshShape>(&m_shape);
+    if (mesh == nullptr || face >= mesh->faces().size()) return std::nullopt;
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const auto h = mesh->intersect_face(local, face, t_min, t_max, true);
+    if (!h) return std::nullopt;
+    Vec3 n = normalize(m_transform.normal(h->normal));
+    if (!is_finite(n)) return std::nullopt;
+    if (m_inverse) n = -n;
+    return Hit{h->t, origin + h->t * direction, n, m_index, m_object};
 }
 
 bool ShapeInstance::visible_to(RayKind kind) const {
@@ -123,6 +182,10 @@ bool ShapeInstance::visible_to(RayKind kind) const {
 
 bool ShapeInstance::inside(const Vec3& p_world) const {
     const Vec3 p = m_transform.inverse_point(p_world);
+    // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
+    if (m_clips)
+        for (const ShapeInstance& c : *m_clips)
+            if (!c.inside(p)) return false;
     const bool in = std::visit([&](const auto& s) { return s.inside(p); }, m_shape);
     return in != m_inverse;
 }

@@ -1,45 +1,68 @@
-// ShapeInstance: one scene object ready for intersection (shape, transform, inverse flag, visibility flags).
+// ShapeInstance: one scene object ready for intersection (shape, transform, inverse, clipping, visibility flags).
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <variant>
+#include <vector>
 
 #include "geometry/box.h"
+#include "geometry/cone.h"
+#include "geometry/csg.h"
+#include "geometry/disc.h"
+#include "geometry/mesh.h"
 #include "geometry/plane.h"
+#include "geometry/quadric.h"
+#include "geometry/quartic.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/sphere.h"
+#include "geometry/superellipsoid.h"
+#include "geometry/torus.h"
 #include "parser/scene.h"
 
 namespace wardray::geometry {
 
-/// Any primitive shape in object space.
-using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape>;
+/// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
+using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, MeshShape,
+                              QuadricShape, QuarticShape, SuperellipsoidShape, CsgShape>;
 
-/// A scene object placed in the world; every query is in double precision on the world ray.
+/// A scene object placed in its parent's space (the world for top-level objects); every query is in double
+/// precision on the parent-space ray. The parser::Object must outlive the instance (hits point at it).
 class ShapeInstance {
 public:
     /// Returns nothing for objects that cannot be drawn without NaN: singular transforms, degenerate shapes,
-    /// non-finite parameters or bounds. `index` is the object's position in parser::Scene::objects.
-    static std::optional<ShapeInstance> create(const parser::Object& object, std::uint32_t index);
+    /// non-finite parameters or bounds. `index` is the object's position in parser::Scene::objects;
+    /// `flip_inverse` inverts the object once more (the subtracted children of a difference).
+    static std::optional<ShapeInstance> create(const parser::Object& object, std::uint32_t index,
+                                               bool flip_inverse = false);
 
-    /// Surface crossings of the world ray with t in (t_min, t_max); normals are unit, world space, pointing
-    /// out of the object (inverse objects flip them and the entering flags).
+    /// Surface crossings of the ray with t in (t_min, t_max); normals are unit, in the parent's space, pointing
+    /// out of the object (inverse objects flip them and the entering flags); `leaf` names the primitive hit.
     SurfaceHits intersect_all(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
     /// The nearest crossing with t in (t_min, t_max), as a Hit.
     std::optional<Hit> nearest(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
+    /// For meshes: the crossing with one face that Embree found in float, recomputed in double, as a Hit.
+    std::optional<Hit> face_hit(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
+                                double t_max) const;
     /// True when a ray of this kind sees the object.
     bool visible_to(RayKind kind) const;
-    /// True for points inside the object (after `inverse`).
+    /// True for points inside the object (after `inverse`, and within every clipping object).
     bool inside(const Vec3& p_world) const;
-    /// World-space bounds of the surface, or nothing when the surface is unbounded (planes).
+    /// Bounds of the surface, or nothing when the surface is unbounded (planes, quadrics).
     const std::optional<Bounds>& world_bounds() const { return m_world_bounds; }
+    /// Bounds of the inside region, or nothing when it is unbounded (inverse objects, planes, discs).
+    const std::optional<Bounds>& region_bounds() const { return m_region_bounds; }
     /// Signed implicit function in object space at the world point (0 on the surface, negative inside the
     /// shape before `inverse`); for tests and diagnostics.
     double object_implicit(const Vec3& p_world) const;
     /// The object's index in parser::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
     const Transform& transform() const { return m_transform; }
+    /// The shape in object space.
+    const AnyShape& shape() const { return m_shape; }
+    /// True when the object is a mesh without clipping, which Embree can trace as native triangles.
+    bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips; }
 
 private:
     ShapeInstance(const AnyShape& shape, const parser::Object& object, std::uint32_t index);
@@ -47,6 +70,9 @@ private:
     AnyShape m_shape;
     Transform m_transform;
     std::optional<Bounds> m_world_bounds;
+    std::optional<Bounds> m_region_bounds;
+    std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point
+    const parser::Object* m_object = nullptr;
     std::uint32_t m_index = 0;
     bool m_inverse = false;
     bool m_no_shadow = false;

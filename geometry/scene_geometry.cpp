@@ -1,5 +1,6 @@
 // SceneGeometry: the Embree device and scene (the only file that includes embree3/rtcore.h), with analytic
-// shapes as user geometry computed in double precision and unbounded shapes intersected outside the BVH.
+// shapes and CSG as user geometry computed in double precision, meshes as native triangles refined in double,
+// and unbounded shapes intersected outside the BVH.
 #include "geometry/scene_geometry.h"
 
 #include <embree3/rtcore.h>
@@ -76,6 +77,8 @@ struct GeometryData {
     std::vector<ShapeInstance> bounded;    ///< Embree primID -> instance
     std::vector<Bounds> padded_bounds;     ///< per bounded instance, grown for the float ray's rounding
     std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
+    std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
+    std::vector<std::uint32_t> mesh_of_geometry;  ///< Embree geomID -> index into meshes
     std::vector<std::uint32_t> skipped;
     std::optional<Bounds> bounds;
     std::optional<Bounds> padded_scene_bounds;
@@ -94,6 +97,8 @@ struct GeometryData {
         if (!error.empty()) throw std::runtime_error(std::string("Embree error during ") + step + ": " + error);
     }
 
+    // The mesh that an Embree triangle geometry holds.
+    const ShapeInstance& mesh(unsigned geom_id) const { return meshes[mesh_of_geometry[geom_id]]; }
     // Runs the Embree traversal over the bounded instances, continuing from the state in q.
     void trace(QueryContext& q, bool shadow) const;
     // Brute-force fallback when the ray cannot be expressed in float (huge coordinates).
@@ -161,10 +166,72 @@ void occluded_callback(const RTCOccludedFunctionNArguments* args) {
     reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
 }
 
+// Embree found a triangle in float: recompute its crossing in double and keep it only when it is nearer than
+// every hit so far (the query's double t_best), so user geometry and triangles are compared in double.
+void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || args->valid[0] == 0) return;
+    auto* q = reinterpret_cast<QueryContext*>(const_cast<RTCIntersectContext*>(args->context));
+    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
+    const ShapeInstance& inst = impl->mesh(RTCHitN_geomID(args->hit, args->N, 0));
+    const auto hit = inst.visible_to(q->kind)
+                         ? inst.face_hit(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min,
+                                         q->t_best)
+                         : std::nullopt;
+    if (!hit) {
+        args->valid[0] = 0;
+        return;
+    }
+    q->t_best = hit->t;
+    q->hit = *hit;
+    q->has_hit = true;
+}
+
+void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || args->valid[0] == 0) return;
+    auto* q = reinterpret_cast<QueryContext*>(const_cast<RTCIntersectContext*>(args->context));
+    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
+    const ShapeInstance& inst = impl->mesh(RTCHitN_geomID(args->hit, args->N, 0));
+    if (!inst.visible_to(RayKind::Shadow) ||
+        !inst.face_hit(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min, q->t_best)) {
+        args->valid[0] = 0;
+        return;
+    }
+    q->has_hit = true;
+}
+
+// One top-level mesh as a native Embree triangle geometry with world-space float vertices.
+void attach_mesh(GeometryData& impl, std::uint32_t mesh_index) {
+    const ShapeInstance& inst = impl.meshes[mesh_index];
+    const auto& mesh = std::get<MeshShape>(inst.shape());
+    RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    impl.check("triangle geometry creation");
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                                 3 * sizeof(float), mesh.vertices().size()));
+    auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                   3 * sizeof(unsigned), mesh.faces().size()));
+    impl.check("triangle buffers");
+    for (std::size_t i = 0; i < mesh.vertices().size(); ++i) {
+        const Vec3 p = inst.transform().point(mesh.vertices()[i]);
+        for (int k = 0; k < 3; ++k) vertices[3 * i + k] = static_cast<float>(p[k]);
+    }
+    for (std::size_t i = 0; i < mesh.faces().size(); ++i)
+        for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(mesh.faces()[i].v[k]);
+    rtcSetGeometryUserData(geom, &impl);
+    rtcSetGeometryIntersectFilterFunction(geom, triangle_intersect_filter);
+    rtcSetGeometryOccludedFilterFunction(geom, triangle_occluded_filter);
+    rtcCommitGeometry(geom);
+    const unsigned id = rtcAttachGeometry(impl.scene, geom);
+    rtcReleaseGeometry(geom);
+    impl.check("triangle geometry setup");
+    if (impl.mesh_of_geometry.size() <= id) impl.mesh_of_geometry.resize(id + 1, 0);
+    impl.mesh_of_geometry[id] = mesh_index;
+}
+
 }  // namespace
 
 void GeometryData::brute_force(QueryContext& q, bool shadow) const {
-    for (const ShapeInstance& inst : bounded) {
+    for (const auto* list : {&bounded, &meshes})
+    for (const ShapeInstance& inst : *list) {
         if (!inst.visible_to(shadow ? RayKind::Shadow : q.kind)) continue;
         if (const auto hit = inst.nearest(q.origin, q.direction, q.t_min, q.t_best)) {
             q.t_best = hit->t;
@@ -176,7 +243,7 @@ void GeometryData::brute_force(QueryContext& q, bool shadow) const {
 }
 
 void GeometryData::trace(QueryContext& q, bool shadow) const {
-    if (bounded.empty()) return;
+    if (bounded.empty() && meshes.empty()) return;
     // Start Embree's float ray where the double ray enters the scene's box: the float origin then carries
     // rounding of the scene's size, not of a far camera's, and the padding of the bounds covers it.
     double t_enter = 0.0;
@@ -222,6 +289,11 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     }
 }
 
+namespace {
+// The analytic shapes and CSG objects as one Embree user geometry (a primitive per object).
+void attach_user_geometry(GeometryData& impl);
+}  // namespace
+
 SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_unique<Impl>()) {
     Impl& impl = *m_impl;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
@@ -232,7 +304,8 @@ SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_uniq
         }
         if (const auto& b = inst->world_bounds()) {
             impl.bounds = impl.bounds ? impl.bounds->merged(*b) : *b;
-            impl.bounded.push_back(*inst);
+            if (inst->is_plain_mesh()) impl.meshes.push_back(*inst);
+            else impl.bounded.push_back(*inst);
         } else {
             impl.unbounded.push_back(*inst);
         }
@@ -252,7 +325,7 @@ SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_uniq
     }
     if (!std::isfinite(impl.magnitude)) impl.magnitude = 0.0;
 
-    if (impl.bounded.empty()) {
+    if (impl.bounded.empty() && impl.meshes.empty()) {
         impl.building = false;
         return;
     }
@@ -275,6 +348,16 @@ SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_uniq
     rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
 
+    for (std::uint32_t i = 0; i < impl.meshes.size(); ++i) attach_mesh(impl, i);
+    if (!impl.bounded.empty()) attach_user_geometry(impl);
+    rtcCommitScene(impl.scene);
+    impl.check("BVH build");
+    impl.building = false;
+}
+
+namespace {
+
+void attach_user_geometry(GeometryData& impl) {
     RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
     impl.check("geometry creation");
     rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(impl.bounded.size()));
@@ -286,10 +369,9 @@ SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_uniq
     rtcAttachGeometry(impl.scene, geom);
     rtcReleaseGeometry(geom);
     impl.check("geometry setup");
-    rtcCommitScene(impl.scene);
-    impl.check("BVH build");
-    impl.building = false;
 }
+
+}  // namespace
 
 SceneGeometry::~SceneGeometry() = default;
 

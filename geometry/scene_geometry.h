@@ -29,7 +29,9 @@ struct Hit {
     double t = 0.0;
     Vec3 position;        ///< world space
     Vec3 normal;          ///< unit geometric normal in world space, pointing out of the shape (inverse flips it)
-    std::uint32_t object = 0;  ///< index into parser::Scene::objects
+    std::uint32_t object = 0;  ///< index into parser::Scene::objects (the top-level object)
+    /// The primitive whose surface was hit (a CSG leaf, or the object itself): its texture applies.
+    const parser::Object* leaf = nullptr;
 };
 
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.

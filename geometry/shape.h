@@ -1,10 +1,18 @@
 // Shape interface pieces shared by the analytic primitives: object-space rays, surface crossings and bounds.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <optional>
+#include <vector>
 
 #include "parser/vec3.h"
+
+namespace wardray::parser {
+struct Object;
+}
 
 namespace wardray::geometry {
 
@@ -19,30 +27,55 @@ struct SurfaceHit {
     double t = 0.0;
     Vec3 normal;           ///< object-space normal pointing out of the shape, not necessarily unit length
     bool entering = true;  ///< the ray passes from outside to inside here
+    const parser::Object* leaf = nullptr;  ///< the primitive whose surface this is (set by ShapeInstance)
 };
 
 /// The surface crossings of a ray with one shape inside (t_min, t_max), sorted by t.
-/// Fixed capacity: every primitive so far is convex (at most two crossings); CSG merges these as intervals.
+/// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes).
 class SurfaceHits {
 public:
-    static constexpr std::size_t capacity = 4;
+    static constexpr std::size_t inline_capacity = 6;
 
-    /// Appends a crossing; callers add them in increasing t. Crossings beyond the capacity are dropped.
+    SurfaceHits() = default;
+    SurfaceHits(const SurfaceHits& o) { *this = o; }
+    SurfaceHits& operator=(const SurfaceHits& o) {
+        if (this == &o) return *this;
+        m_count = o.m_count;
+        m_heap = o.m_heap;
+        if (m_heap.empty()) std::copy(o.m_inline.begin(), o.m_inline.begin() + m_count, m_inline.begin());
+        return *this;
+    }
+
+    /// Appends a crossing; callers add them in increasing t or call sort_by_t() afterwards.
     void push(const SurfaceHit& hit) {
-        if (m_count < capacity) m_hits[m_count++] = hit;
+        if (m_heap.empty() && m_count < inline_capacity) {
+            m_inline[m_count++] = hit;
+            return;
+        }
+        if (m_heap.empty()) m_heap.assign(m_inline.begin(), m_inline.begin() + m_count);
+        m_heap.push_back(hit);
+        ++m_count;
+    }
+    /// Orders the crossings by t (stable, so equal t keep their insertion order).
+    void sort_by_t() {
+        std::stable_sort(data(), data() + m_count, [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
     }
     /// Number of crossings held.
     std::size_t size() const { return m_count; }
     /// True when the ray crosses nothing.
     bool empty() const { return m_count == 0; }
     /// The i-th crossing in order of t.
-    const SurfaceHit& operator[](std::size_t i) const { return m_hits[i]; }
+    const SurfaceHit& operator[](std::size_t i) const { return data()[i]; }
     /// Range access over the crossings.
-    const SurfaceHit* begin() const { return m_hits.data(); }
-    const SurfaceHit* end() const { return m_hits.data() + m_count; }
+    const SurfaceHit* begin() const { return data(); }
+    const SurfaceHit* end() const { return data() + m_count; }
 
 private:
-    std::array<SurfaceHit, capacity> m_hits{};
+    SurfaceHit* data() { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
+    const SurfaceHit* data() const { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
+
+    std::array<SurfaceHit, inline_capacity> m_inline{};
+    std::vector<SurfaceHit> m_heap;
     std::size_t m_count = 0;
 };
 
@@ -55,6 +88,23 @@ struct Bounds {
     double magnitude() const { return std::fmax(max_abs_component(lower), max_abs_component(upper)); }
     /// The smallest box holding both.
     Bounds merged(const Bounds& o) const { return {min(lower, o.lower), max(upper, o.upper)}; }
+    /// The common part of both (may be empty: see empty()).
+    Bounds intersected(const Bounds& o) const { return {max(lower, o.lower), min(upper, o.upper)}; }
+    /// True when some lower coordinate exceeds the upper one.
+    bool empty() const { return lower.x > upper.x || lower.y > upper.y || lower.z > upper.z; }
 };
+
+/// Bounds that may be unbounded (nothing): the merge of anything with the unbounded is unbounded.
+inline std::optional<Bounds> merge_bounds(const std::optional<Bounds>& a, const std::optional<Bounds>& b) {
+    if (!a || !b) return std::nullopt;
+    return a->merged(*b);
+}
+
+/// The common part of two possibly unbounded boxes.
+inline std::optional<Bounds> intersect_bounds(const std::optional<Bounds>& a, const std::optional<Bounds>& b) {
+    if (!a) return b;
+    if (!b) return a;
+    return a->intersected(*b);
+}
 
 }  // namespace wardray::geometry

@@ -1,6 +1,7 @@
 // Scene description: the renderer-independent plain data the parser produces, with a source location on each entity.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <variant>
@@ -23,10 +24,83 @@ struct Color {
     Vec3 rgb() const { return {r, g, b}; }
 };
 
-/// A pigment. Only solid colours so far; patterns and maps extend this struct.
+/// POV-Ray's wave types: how a pattern's value is shaped before the map lookup.
+enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+/// POV-Ray's classic `turbulence` (a displacement by vector fBm) with its octaves, omega and lambda.
+struct Turbulence {
+    Vec3 amount;
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+};
+
+/// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
+/// texture maps).
+struct Pattern {
+    enum class Type {
+        None, Checker, Gradient, Hexagon, Brick, Bozo, Spotted, Granite, Marble, Wood, Agate, Radial, Onion,
+        Leopard, Ripples, Waves, Wrinkles, Bumps, Dents, Crackle, Cells, Boxed, Spherical, Planar, Cylindrical
+    };
+    Type type = Type::None;
+    WaveType wave = WaveType::Ramp;
+    double exponent = 1.0;  ///< poly_wave
+    double frequency = 1.0;
+    double phase = 0.0;
+    int noise_generator = 0;  ///< 0: the scene's global setting
+    Vec3 gradient{1.0, 0.0, 0.0};
+    Vec3 brick_size{8.0, 3.0, 4.5};
+    double mortar = 0.5;
+    double agate_turb = 1.0;
+    Vec3 crackle_form{-1.0, 1.0, 0.0};
+    double crackle_metric = 2.0;
+    double crackle_offset = 0.0;
+    bool crackle_solid = false;
+    std::optional<Turbulence> turbulence;
+    Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
+};
+
+/// One `[value colour]` entry of a colour map (values stored as POV-Ray's single-precision floats).
+struct ColorMapEntry {
+    double value = 0.0;
+    Color color;
+};
+
+struct PigmentMapEntry;
+
+/// A pigment: a solid colour, or a pattern looked up in a colour map or a pigment map.
 struct Pigment {
     Color color;  // POV-Ray compat: the default pigment is black.
+    Pattern pattern;
+    std::vector<ColorMapEntry> color_map;
+    std::vector<PigmentMapEntry> pigment_map;
     SourceLoc loc;
+
+    /// True for a plain colour: no pattern to evaluate.
+    bool is_solid() const { return pattern.type == Pattern::Type::None; }
+};
+
+/// One `[value pigment]` entry of a pigment map.
+struct PigmentMapEntry {
+    double value = 0.0;
+    Pigment pigment;
+};
+
+struct NormalMapEntry;
+
+/// A normal perturbation: a pattern whose slope tilts the shading normal, scaled by `bump_size`.
+struct Normal {
+    Pattern pattern;        ///< None: the normal is not perturbed
+    double amount = 0.5;    ///< bump_size, or the float after the pattern name
+    double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
+    std::vector<NormalMapEntry> normal_map;
+    SourceLoc loc;
+};
+
+/// One `[value normal]` entry of a normal map.
+struct NormalMapEntry {
+    double value = 0.0;
+    Normal normal;
 };
 
 /// Surface finish with POV-Ray 3.7's defaults.
@@ -39,13 +113,55 @@ struct Finish {
     double phong_size = 40.0;
     double specular = 0.0;
     double roughness = 0.05;
+    double metallic = 0.0;  ///< highlight tinted by the pigment
+    Color reflection_min;   ///< reflection at normal incidence (or everywhere without `reflection { a, b }`)
+    Color reflection_max;
+    bool reflection_fresnel = false;
+    double reflection_falloff = 1.0;
+    double reflection_exponent = 1.0;
+    double reflection_metallic = 0.0;
+    bool conserve_energy = false;
+    double irid = 0.0;  ///< thin-film interference amount (`irid { amount thickness turbulence }`)
+    double irid_thickness = 0.0;
+    double irid_turbulence = 0.0;
     SourceLoc loc;
 };
 
+/// The inside of an object: index of refraction and POV-Ray's fade of light passing through.
+struct Interior {
+    double ior = 1.0;
+    double fade_distance = 0.0;
+    double fade_power = 0.0;
+    Color fade_color;
+};
+
+struct TextureMapEntry;
+
+/// A texture: pigment, normal and finish, or a pattern choosing between textures (texture_map); further
+/// `texture` statements on the same object are layers painted over it.
 struct Texture {
     Pigment pigment;
     Finish finish;
+    Normal normal;
+    Pattern map_pattern;  ///< texture_map's pattern (None: a plain texture)
+    std::vector<TextureMapEntry> texture_map;
+    std::vector<Texture> layers;  ///< layers on top of this one, lowest first
 };
+
+/// One `[value texture]` entry of a texture map.
+struct TextureMapEntry {
+    double value = 0.0;
+    Texture texture;
+};
+
+/// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
+/// by `tr`. Map entries are evaluated in their parent's pattern space and are left alone.
+inline void transform_texture(Texture& t, const Transform& tr) {
+    t.pigment.pattern.transform = t.pigment.pattern.transform.then(tr);
+    t.normal.pattern.transform = t.normal.pattern.transform.then(tr);
+    t.map_pattern.transform = t.map_pattern.transform.then(tr);
+    for (Texture& layer : t.layers) transform_texture(layer, tr);
+}
 
 struct Sphere {
     Vec3 center;
@@ -64,19 +180,115 @@ struct Plane {
     double distance = 0.0;
 };
 
-/// The shapes the renderer draws so far; the geometry issue extends this list.
-using Shape = std::variant<Sphere, Box, Plane>;
+/// POV-Ray's `cylinder { base, cap, radius [open] }`.
+struct Cylinder {
+    Vec3 base;
+    Vec3 cap{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    bool open = false;  ///< no end caps
+};
+
+/// POV-Ray's `cone { base, base_radius, cap, cap_radius [open] }`.
+struct Cone {
+    Vec3 base;
+    double base_radius = 1.0;
+    Vec3 cap{0.0, 1.0, 0.0};
+    double cap_radius = 0.0;
+    bool open = false;
+};
+
+/// POV-Ray's `disc { center, normal, radius [, hole_radius] }`.
+struct Disc {
+    Vec3 center;
+    Vec3 normal{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    double hole_radius = 0.0;
+};
+
+/// POV-Ray's `torus { major, minor }` around the y axis at the origin.
+struct Torus {
+    double major = 1.0;
+    double minor = 0.25;
+};
+
+/// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
+struct Mesh {
+    enum class Kind { Triangle, SmoothTriangle, Mesh, Mesh2 };
+    /// One face: three vertex indices and, for smooth faces, three normal indices (-1 when flat).
+    struct Face {
+        std::array<int, 3> v{};
+        std::array<int, 3> n{-1, -1, -1};
+    };
+    Kind kind = Kind::Mesh;
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> normals;
+    std::vector<Face> faces;
+    Vec3 inside_vector;  ///< zero when not given: the mesh has no inside
+};
+
+/// POV-Ray's `polygon { n, points }`: closed sub-polygons (each repeats its first point); later ones cut holes.
+struct Polygon {
+    std::vector<Vec3> points;
+};
+
+/// POV-Ray's `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
+/// A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0, inside where negative.
+struct Quadric {
+    Vec3 squares;
+    Vec3 mixed;
+    Vec3 linear;
+    double constant = 0.0;
+};
+
+/// POV-Ray's `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+struct Superellipsoid {
+    double e = 1.0;
+    double n = 1.0;
+};
+
+/// POV-Ray's `quartic { <a0, ..., a34> }`: the sum of a_i times the monomials x^i y^j z^k (i + j + k <= 4) in
+/// POV-Ray's order (x⁴, x³y, x³z, x³, x²y², ..., z, 1: descending powers of x, then y, then z); inside where negative.
+struct Quartic {
+    std::array<double, 35> coefficients{};
+};
+
+/// POV-Ray's `prism { [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }` with a linear spline:
+/// the 2-D outline (sub-polygons close when their first point repeats; even-odd rule) in the x-z plane (u -> x,
+/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin).
+struct Prism {
+    bool conic = false;
+    double height1 = 0.0;
+    double height2 = 1.0;
+    std::vector<Vec3> points;  ///< (u, v, 0)
+    bool open = false;
+};
+
+struct Object;
+
+/// Constructive solid geometry over child objects (each with its own transform relative to this node).
+struct Csg {
+    enum class Op { Union, Intersection, Difference, Merge };
+    Op op = Op::Union;
+    std::vector<Object> children;
+};
+
+/// The shapes the renderer draws.
+using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Disc, Torus, Mesh, Polygon, Quadric, Superellipsoid,
+                           Quartic, Prism, Csg>;
 
 /// One object of the scene: a shape, its placement, its appearance and its flags.
 struct Object {
     Shape shape;
     Transform transform;  ///< object space to world space, in the order the keywords appeared
     Texture texture;
+    Interior interior;
     bool inverse = false;
     bool no_shadow = false;
     bool no_image = false;
     bool no_reflection = false;
     bool no_radiosity = false;
+    bool has_texture = false;  ///< the statement gave its own texture (else it takes its CSG parent's)
+    std::vector<Object> clipped_by;  ///< clipping objects, placed relative to this object's transform
     SourceLoc loc;
 };
 
@@ -135,7 +347,23 @@ struct GlobalSettings {
     Color ambient_light{1.0, 1.0, 1.0};
     int max_trace_level = 5;
     double adc_bailout = 1.0 / 255.0;
+    int noise_generator = 2;  ///< POV-Ray 3.7's default: range-corrected noise
     std::optional<RadiositySettings> radiosity;
+};
+
+/// `sky_sphere { pigment {...} ... }`: pigments looked up by ray direction, each later one layered over the
+/// earlier ones through its filter and transmit.
+struct SkySphere {
+    std::vector<Pigment> pigments;
+    Transform transform;  ///< sky space to world (rotates the directions)
+    Color emission{1.0, 1.0, 1.0};
+};
+
+/// `fog { distance D color C }`: POV-Ray's constant fog (fog_type 1), exp(−depth/D) of the scene left.
+struct Fog {
+    double distance = 0.0;
+    Color color;
+    SourceLoc loc;
 };
 
 /// Everything the renderer needs from a scene file.
@@ -147,6 +375,8 @@ struct Scene {
     std::vector<Object> objects;
     GlobalSettings global;
     Color background{0.0, 0.0, 0.0};
+    std::optional<SkySphere> sky_sphere;
+    std::vector<Fog> fogs;
     /// Features parsed but not rendered yet, and other warnings found while parsing.
     std::vector<Diagnostic> warnings;
 };

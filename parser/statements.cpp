@@ -1,4 +1,5 @@
-// Scene statements: objects (with union flattening), transforms, lights, camera, global settings, background.
+// Scene statements: objects (union flattening, CSG nodes), transforms, lights, camera, global settings, background.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/keywords.h"
@@ -38,6 +39,10 @@ void Parser::parse_statement() {
         expect("{");
         m_scene.background = parse_color();
         expect("}");
+    } else if (w == "sky_sphere") {
+        m_scene.sky_sphere = parse_sky_sphere(t);
+    } else if (w == "fog") {
+        m_scene.fogs.push_back(parse_fog(t));
     } else if (is_unsupported_block(w)) {
         warn_unsupported(t, w);
         skip_block(t);
@@ -53,12 +58,35 @@ void Parser::parse_statement() {
 bool Parser::is_object_keyword(const Token& t) const {
     if (t.kind != TokenKind::Identifier) return false;
     const std::string& w = t.text;
-    return w == "sphere" || w == "box" || w == "plane" || w == "object" || w == "union" || is_unsupported_object(w);
+    return is_shape_keyword(w) || w == "object" || w == "union" || w == "intersection" || w == "difference" ||
+           w == "merge" || is_unsupported_object(w);
 }
+
+namespace {
+
+// POV-Ray compat: CSG children without a texture of their own take their parent's, down the tree.
+void inherit_textures(Object& o) {
+    auto* csg = std::get_if<Csg>(&o.shape);
+    if (csg == nullptr) return;
+    for (Object& child : csg->children) {
+        if (!child.has_texture) child.texture = o.texture;
+        inherit_textures(child);
+    }
+}
+
+// POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
+void transform_textures(Object& o, bool own_texture, const Transform& tr) {
+    if (own_texture) transform_texture(o.texture, tr);
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
+}
+
+}  // namespace
 
 void Parser::place_object(ObjectValue ov) {
     for (ObjectPart& part : ov.parts) {
-        if (!part.has_texture) part.object.texture = ov.texture.value_or(Texture{m_default_pigment, m_default_finish});
+        if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
+        inherit_textures(part.object);
         m_scene.objects.push_back(std::move(part.object));
     }
     for (Light& l : ov.lights) m_scene.lights.push_back(std::move(l));
@@ -67,7 +95,7 @@ void Parser::place_object(ObjectValue ov) {
 ObjectValue Parser::parse_object(const Token& kw) {
     const NestingGuard guard(*this, kw);
     const std::string& w = kw.text;
-    if (is_unsupported_object(w)) {
+    if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
         warn_unsupported(kw, w);
         skip_block(kw);
         return {};
@@ -81,26 +109,8 @@ ObjectValue Parser::parse_object(const Token& kw) {
         part.object.loc = loc;
         ov.parts.push_back(std::move(part));
     };
-    if (w == "sphere") {
-        Sphere s;
-        s.center = parse_vector();
-        accept(",");  // POV-Ray compat: commas between parameters are optional
-        s.radius = parse_float();
-        add_shape(s);
-    } else if (w == "box") {
-        Box b;
-        b.corner1 = parse_vector();
-        accept(",");
-        b.corner2 = parse_vector();
-        add_shape(b);
-    } else if (w == "plane") {
-        Plane p;
-        const Token at = peek();
-        p.normal = parse_vector();
-        if (length(p.normal) == 0.0) fail(at, "plane normal must not be zero");
-        accept(",");
-        p.distance = parse_float();
-        add_shape(p);
+    if (is_shape_keyword(w)) {
+        add_shape(parse_shape_parameters(kw));
     } else if (w == "object") {
         expand_macros();
         std::optional<Value> element;
@@ -129,6 +139,26 @@ ObjectValue Parser::parse_object(const Token& kw) {
         } else {
             fail(id, "expected an object identifier but found '" + id.text + "'");
         }
+    } else if (w == "intersection" || w == "difference" || w == "merge") {
+        // A real CSG node: each child statement becomes one child object (a union node when it has several parts).
+        Csg csg;
+        csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
+        while (true) {
+            expand_macros();
+            const Token& t = peek();
+            if (is_object_keyword(t)) {
+                const Token child_kw = next();
+                ObjectValue child = parse_object(child_kw);
+                if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
+                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+            } else if (is_word(t, "light_source")) {
+                const Token lkw = next();
+                ov.lights.push_back(parse_light_body(lkw));
+            } else {
+                break;
+            }
+        }
+        add_shape(std::move(csg));
     } else {
         // union: children first, then the union's own modifiers.
         ov.compound = true;
@@ -160,19 +190,23 @@ ObjectValue Parser::parse_object(const Token& kw) {
 
 Texture& Parser::texture_to_modify(ObjectValue& ov) {
     if (ov.compound || ov.parts.size() != 1) {
-        if (!ov.texture) ov.texture = Texture{m_default_pigment, m_default_finish};
+        if (!ov.texture) ov.texture = default_texture();
         return *ov.texture;
     }
     ObjectPart& part = ov.parts.front();
     if (!part.has_texture) {
-        part.object.texture = Texture{m_default_pigment, m_default_finish};
+        part.object.texture = default_texture();
         part.has_texture = true;
     }
     return part.object.texture;
 }
 
 void Parser::apply_transform(ObjectValue& ov, const Transform& tr) {
-    for (ObjectPart& part : ov.parts) part.object.transform = part.object.transform.then(tr);
+    for (ObjectPart& part : ov.parts) {
+        part.object.transform = part.object.transform.then(tr);
+        transform_textures(part.object, part.has_texture, tr);
+    }
+    if (ov.texture) transform_texture(*ov.texture, tr);
     for (Light& l : ov.lights) {
         l.position = tr.point(l.position);
         l.point_at = tr.point(l.point_at);
@@ -181,6 +215,7 @@ void Parser::apply_transform(ObjectValue& ov, const Transform& tr) {
 
 void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
     bool textured = false;
+    std::vector<Object> bounded_by;
     while (true) {
         expand_macros();
         const Token t = peek();
@@ -200,8 +235,7 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
         } else if (w == "texture") {
             if (textured) {
                 // POV-Ray compat: further texture statements are layers on top of the first.
-                warn_unsupported(t, "layered texture");
-                parse_texture_body(t);
+                texture_to_modify(ov).layers.push_back(parse_texture_body(t));
             } else {
                 texture_to_modify(ov) = parse_texture_body(t);
                 textured = true;
@@ -213,19 +247,45 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
                                                 : w == "no_reflection" ? o.no_reflection : o.no_radiosity) = true;
             }
         } else if (w == "inverse") {
-            if (compound) warn_unsupported(t, "inverse of a union");
+            make_union_node(ov);
             for (ObjectPart& part : ov.parts) part.object.inverse = !part.object.inverse;
+        } else if (w == "clipped_by") {
+            const std::vector<Object> clips = parse_object_list(t, &bounded_by);
+            make_union_node(ov);
+            // Clipping objects are given in world space; store them relative to the object so later transforms
+            // move both together.
+            for (ObjectPart& part : ov.parts) {
+                const Transform to_local = part.object.transform.inverse();
+                for (Object clip : clips) {
+                    clip.transform = clip.transform.then(to_local);
+                    part.object.clipped_by.push_back(std::move(clip));
+                }
+            }
+        } else if (w == "bounded_by") {
+            // Bounds are accepted and not needed for correctness: the renderer builds its own.
+            bounded_by = parse_object_list(t, nullptr);
+        } else if (w == "open") {
+            for (ObjectPart& part : ov.parts) {
+                if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
+                if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
+                if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
+            }
         } else if (w == "hollow") {
             parse_bool_optional();
-        } else if (w == "sturm" || w == "open" || w == "split_union" || w == "cutaway_textures") {
+        } else if (w == "sturm" || w == "split_union" || w == "cutaway_textures") {
             if (w == "split_union") parse_bool_optional();
         } else if (w == "double_illuminate") {
             warn_unsupported(t, w);
         } else if (w == "radiosity") {
             warn_unsupported(t, "object radiosity importance");
             skip_block(t);
-        } else if (w == "normal" || w == "interior" || w == "interior_texture" || w == "material" ||
-                   w == "photons" || w == "clipped_by" || w == "bounded_by") {
+        } else if (w == "normal") {
+            texture_to_modify(ov).normal = parse_normal_body(t);
+        } else if (w == "interior") {
+            const Interior interior = parse_interior_body(t);
+            for (ObjectPart& part : ov.parts) part.object.interior = interior;
+        } else if (w == "interior_texture" || w == "material" ||
+                   w == "photons") {
             warn_unsupported(t, w);
             skip_block(t);
         } else if (w == "uv_mapping") {
@@ -524,7 +584,9 @@ void Parser::parse_global_settings(const Token& kw) {
         } else if (w == "photons" || w == "subsurface") {
             warn_unsupported(t, w);
             skip_block(t);
-        } else if (w == "max_intersections" || w == "number_of_waves" || w == "noise_generator" ||
+        } else if (w == "noise_generator") {
+            g.noise_generator = std::clamp(static_cast<int>(parse_float()), 1, 3);
+        } else if (w == "max_intersections" || w == "number_of_waves" ||
                    w == "mm_per_unit") {
             parse_float();
         } else if (w == "irid_wavelength") {

@@ -60,8 +60,26 @@ const char* gi_name(lighting::GiMode mode) {
 }
 
 const char* shape_name(const parser::Shape& shape) {
-    static constexpr const char* names[] = {"sphere", "box", "plane"};
+    static constexpr const char* names[] = {"sphere", "box",   "plane", "cylinder", "cone",           "disc",
+                                            "torus",  "mesh",  "polygon", "quadric", "superellipsoid", "quartic",
+                                            "prism",  "csg"};
     static_assert(std::variant_size_v<parser::Shape> == std::size(names));
+    if (const auto* mesh = std::get_if<parser::Mesh>(&shape)) {
+        switch (mesh->kind) {
+            case parser::Mesh::Kind::Triangle: return "triangle";
+            case parser::Mesh::Kind::SmoothTriangle: return "smooth_triangle";
+            case parser::Mesh::Kind::Mesh: return "mesh";
+            case parser::Mesh::Kind::Mesh2: return "mesh2";
+        }
+    }
+    if (const auto* csg = std::get_if<parser::Csg>(&shape)) {
+        switch (csg->op) {
+            case parser::Csg::Op::Union: return "union";
+            case parser::Csg::Op::Intersection: return "intersection";
+            case parser::Csg::Op::Difference: return "difference";
+            case parser::Csg::Op::Merge: return "merge";
+        }
+    }
     return names[shape.index()];
 }
 

@@ -1,0 +1,121 @@
+// ConeShape: the side as a quadratic in t (one Newton step for far origins) and the two end discs.
+#include "geometry/cone.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wardray::geometry {
+
+ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open)
+    : m_base(base), m_r0(r0), m_r1(r1), m_open(open) {
+    const Vec3 d = cap - base;
+    m_height = length(d);
+    m_axis = d / m_height;
+    m_slope = (r1 - r0) / m_height;
+}
+
+std::optional<ConeShape> ConeShape::create(const parser::Cone& c) {
+    if (!is_finite(c.base) || !is_finite(c.cap) || !std::isfinite(c.base_radius) || !std::isfinite(c.cap_radius))
+        return std::nullopt;
+    const double h = length(c.cap - c.base);
+    if (!(h > 0.0) || !std::isfinite(h)) return std::nullopt;
+    // POV-Ray compat: radii are taken by absolute value; a cone needs a non-zero radius at one end.
+    const double r0 = std::fabs(c.base_radius);
+    const double r1 = std::fabs(c.cap_radius);
+    if (r0 == 0.0 && r1 == 0.0) return std::nullopt;
+    return ConeShape(c.base, c.cap, r0, r1, c.open);
+}
+
+std::optional<ConeShape> ConeShape::create(const parser::Cylinder& c) {
+    if (c.radius == 0.0) return std::nullopt;
+    return create(parser::Cone{c.base, c.radius, c.cap, c.radius, c.open});
+}
+
+SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+    SurfaceHit found[4];
+    int n = 0;
+    const Vec3 o = ray.origin - m_base;
+    const Vec3& d = ray.direction;
+    const double os = dot(o, m_axis);
+    const double ds = dot(d, m_axis);
+    const Vec3 op = o - os * m_axis;
+    const Vec3 dp = d - ds * m_axis;
+    // Side: |o⊥ + t d⊥|² = (r0 + k (os + t ds))², as a t² + 2 b t + c = 0.
+    const double k = m_slope;
+    const double r_o = m_r0 + k * os;
+    const double a = dot(dp, dp) - k * k * ds * ds;
+    const double b = dot(op, dp) - k * ds * r_o;
+    const double c = dot(op, op) - r_o * r_o;
+    auto side = [&](double t) {
+        // One Newton step on the quadratic removes most of the cancellation error of far origins.
+        const double f = (a * t + 2.0 * b) * t + c;
+        const double df = 2.0 * (a * t + b);
+        if (df != 0.0) t -= f / df;
+        const double s = os + t * ds;
+        if (!(s > 0.0 && s < m_height) || !(t > t_min && t < t_max)) return;
+        const Vec3 p = o + t * d;
+        const Vec3 pp = p - s * m_axis;
+        const Vec3 normal = pp - (k * (m_r0 + k * s)) * m_axis;
+        found[n++] = {t, normal, dot(normal, d) < 0.0};
+    };
+    if (a != 0.0) {
+        const double disc = b * b - a * c;
+        if (disc >= 0.0) {
+            const double q = -(b + std::copysign(std::sqrt(disc), b));
+            if (q != 0.0) {
+                side(c / q);
+                side(q / a);
+            }
+        }
+    } else if (b != 0.0) {
+        side(-c / (2.0 * b));
+    }
+    // Caps: the planes s = 0 and s = height within their radii.
+    if (!m_open && ds != 0.0) {
+        const double ends[2] = {0.0, m_height};
+        const double radii[2] = {m_r0, m_r1};
+        for (int e = 0; e < 2; ++e) {
+            const double t = (ends[e] - os) / ds;
+            if (!(t > t_min && t < t_max)) continue;
+            const Vec3 pp = op + t * dp;
+            if (dot(pp, pp) > radii[e] * radii[e]) continue;
+            const Vec3 normal = e == 0 ? -m_axis : m_axis;
+            found[n++] = {t, normal, dot(normal, d) < 0.0};
+        }
+    }
+    std::sort(found, found + n, [](const SurfaceHit& x, const SurfaceHit& y) { return x.t < y.t; });
+    SurfaceHits hits;
+    for (int i = 0; i < n; ++i) hits.push(found[i]);
+    return hits;
+}
+
+std::optional<Bounds> ConeShape::bounds() const {
+    // Each end disc spans r * sqrt(1 - axis_k²) along world axis k.
+    Bounds b{m_base, m_base};
+    const Vec3 ends[2] = {m_base, m_base + m_height * m_axis};
+    const double radii[2] = {m_r0, m_r1};
+    for (int e = 0; e < 2; ++e) {
+        Vec3 half;
+        for (int k = 0; k < 3; ++k) half[k] = radii[e] * std::sqrt(std::fmax(0.0, 1.0 - m_axis[k] * m_axis[k]));
+        b = b.merged({ends[e] - half, ends[e] + half});
+    }
+    return b;
+}
+
+bool ConeShape::inside(const Vec3& p) const {
+    const Vec3 o = p - m_base;
+    const double s = dot(o, m_axis);
+    if (!(s > 0.0 && s < m_height)) return false;
+    const Vec3 pp = o - s * m_axis;
+    const double r = m_r0 + m_slope * s;
+    return dot(pp, pp) < r * r;
+}
+
+double ConeShape::implicit(const Vec3& p) const {
+    const Vec3 o = p - m_base;
+    const double s = dot(o, m_axis);
+    const double side = length(o - s * m_axis) - (m_r0 + m_slope * s);
+    return std::fmax(side, std::fmax(-s, s - m_height));
+}
+
+}  // namespace wardray::geometry

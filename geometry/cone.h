@@ -1,0 +1,40 @@
+// ConeShape: POV-Ray's `cone` and `cylinder` (a cone with equal radii), capped or `open`, in object space.
+#pragma once
+
+#include <optional>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+
+namespace wardray::geometry {
+
+/// A truncated cone between two points, radius varying linearly along the axis; a cylinder when both are equal.
+class ConeShape {
+public:
+    /// Returns nothing for coincident end points or non-finite numbers.
+    static std::optional<ConeShape> create(const parser::Cone& cone);
+    /// The cylinder as a cone with equal radii.
+    static std::optional<ConeShape> create(const parser::Cylinder& cylinder);
+
+    /// Surface crossings (side and caps) with t in (t_min, t_max), sorted.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// Object-space bounding box.
+    std::optional<Bounds> bounds() const;
+    /// True for points strictly inside the solid (also for `open` ones, as POV-Ray's CSG treats them).
+    bool inside(const Vec3& p) const;
+    /// Zero on the surface, negative inside.
+    double implicit(const Vec3& p) const;
+
+private:
+    ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open);
+
+    Vec3 m_base;
+    Vec3 m_axis;  ///< unit, from base to cap
+    double m_height = 0.0;
+    double m_r0 = 0.0;
+    double m_r1 = 0.0;
+    double m_slope = 0.0;  ///< (r1 - r0) / height
+    bool m_open = false;
+};
+
+}  // namespace wardray::geometry

@@ -1,0 +1,100 @@
+// CsgShape: children's crossings filtered by inside tests of the other children, and bounds from the rules.
+#include "geometry/csg.h"
+
+#include <cmath>
+#include <limits>
+
+#include "geometry/instance.h"
+
+namespace wardray::geometry {
+
+std::optional<CsgShape> CsgShape::create(const parser::Csg& csg) {
+    CsgShape shape;
+    auto children = std::make_shared<std::vector<ShapeInstance>>();
+    for (std::size_t i = 0; i < csg.children.size(); ++i) {
+        // POV-Ray compat: a difference is the first child intersected with every other child inverted.
+        const bool flip = csg.op == parser::Csg::Op::Difference && i > 0;
+        auto inst = ShapeInstance::create(csg.children[i], 0, flip);
+        if (!inst) return std::nullopt;
+        children->push_back(std::move(*inst));
+    }
+    switch (csg.op) {
+        case parser::Csg::Op::Union: shape.m_rule = Rule::All; break;
+        case parser::Csg::Op::Merge: shape.m_rule = Rule::Outside; break;
+        case parser::Csg::Op::Intersection:
+        case parser::Csg::Op::Difference: shape.m_rule = Rule::Inside; break;
+    }
+    shape.m_inside_all = shape.m_rule == Rule::Inside;
+    const auto& kids = *children;
+    if (kids.empty()) {
+        // An empty CSG has no surface: a point-sized box far from nothing keeps the BVH happy.
+        shape.m_bounds = Bounds{};
+        shape.m_region = Bounds{};
+    } else if (!shape.m_inside_all) {
+        shape.m_bounds = kids.front().world_bounds();
+        shape.m_region = kids.front().region_bounds();
+        for (const ShapeInstance& k : kids) {
+            shape.m_bounds = merge_bounds(shape.m_bounds, k.world_bounds());
+            shape.m_region = merge_bounds(shape.m_region, k.region_bounds());
+        }
+    } else {
+        // Kept crossings of child i lie on child i's surface and inside every other child's region.
+        std::optional<Bounds> region;
+        for (const ShapeInstance& k : kids) region = intersect_bounds(region, k.region_bounds());
+        shape.m_region = region;
+        bool first = true;
+        std::optional<Bounds> surface;
+        for (std::size_t i = 0; i < kids.size(); ++i) {
+            std::optional<Bounds> b = kids[i].world_bounds();
+            for (std::size_t j = 0; j < kids.size(); ++j)
+                if (j != i) b = intersect_bounds(b, kids[j].region_bounds());
+            if (b && b->empty()) continue;
+            surface = first ? b : merge_bounds(surface, b);
+            first = false;
+        }
+        shape.m_bounds = first ? std::optional<Bounds>(Bounds{}) : surface;
+    }
+    shape.m_children = std::move(children);
+    return shape;
+}
+
+bool CsgShape::keeps(std::size_t child, const Vec3& p) const {
+    const auto& kids = *m_children;
+    for (std::size_t j = 0; j < kids.size(); ++j) {
+        if (j == child) continue;
+        const bool in = kids[j].inside(p);
+        if (m_rule == Rule::Inside && !in) return false;
+        if (m_rule == Rule::Outside && in) return false;
+    }
+    return true;
+}
+
+SurfaceHits CsgShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+    SurfaceHits hits;
+    const auto& kids = *m_children;
+    for (std::size_t i = 0; i < kids.size(); ++i) {
+        for (const SurfaceHit& h : kids[i].intersect_all(ray.origin, ray.direction, t_min, t_max)) {
+            if (m_rule != Rule::All && !keeps(i, ray.origin + h.t * ray.direction)) continue;
+            hits.push(h);
+        }
+    }
+    hits.sort_by_t();
+    return hits;
+}
+
+bool CsgShape::inside(const Vec3& p) const {
+    for (const ShapeInstance& k : *m_children) {
+        const bool in = k.inside(p);
+        if (m_inside_all && !in) return false;
+        if (!m_inside_all && in) return true;
+    }
+    return m_inside_all && !m_children->empty();
+}
+
+double CsgShape::implicit(const Vec3& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (const ShapeInstance& k : *m_children) best = std::fmin(best, std::fabs(k.object_implicit(p)));
+    return best;
+}
+
+}  // namespace wardray::geometry

@@ -1,0 +1,48 @@
+// CsgShape: POV-Ray's union, intersection, difference and merge over child objects, as interval operations.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+
+namespace wardray::geometry {
+
+class ShapeInstance;
+
+/// A CSG node in its own object space; children are ShapeInstances placed relative to it.
+/// POV-Ray's rules: a union keeps every child surface; an intersection keeps a child's crossing where the point
+/// is inside all other children; a difference is the intersection of the first child with the others inverted;
+/// a merge keeps a child's crossing where the point is inside no other child.
+class CsgShape {
+public:
+    /// Returns nothing when a child cannot be built (the whole node is then skipped and reported).
+    static std::optional<CsgShape> create(const parser::Csg& csg);
+
+    /// Crossings with t in (t_min, t_max), sorted, each naming the leaf primitive hit.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// Bounds of the kept surfaces, or nothing when unbounded.
+    std::optional<Bounds> bounds() const { return m_bounds; }
+    /// Bounds of the inside region, or nothing when unbounded.
+    std::optional<Bounds> region_bounds() const { return m_region; }
+    /// POV-Ray's inside test of the combination.
+    bool inside(const Vec3& p) const;
+    /// Smallest distance-like value of the children at the point (zero on some child's surface).
+    double implicit(const Vec3& p) const;
+
+private:
+    enum class Rule { All, Inside, Outside };  // which crossings survive: all, inside others, outside others
+
+    CsgShape() = default;
+    bool keeps(std::size_t child, const Vec3& p) const;
+
+    Rule m_rule = Rule::All;
+    bool m_inside_all = false;  ///< inside needs all children (intersection, difference) or any (union, merge)
+    std::shared_ptr<const std::vector<ShapeInstance>> m_children;
+    std::optional<Bounds> m_bounds;
+    std::optional<Bounds> m_region;
+};
+
+}  // namespace wardray::geometry

@@ -1,0 +1,132 @@
+// MeshShape: double-precision ray-triangle tests (Möller & Trumbore 1997) with interpolated smooth normals.
+#include "geometry/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wardray::geometry {
+
+namespace {
+
+// Distance from p to the triangle abc (Ericson, Real-Time Collision Detection, 5.1.5: closest point).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return length(ap);
+    const Vec3 bp = p - b;
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return length(bp);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + (d1 / (d1 - d3)) * ab));
+    const Vec3 cp = p - c;
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return length(cp);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(p - (a + (d2 / (d2 - d6)) * ac));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return length(p - (b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b)));
+    const double denom = 1.0 / (va + vb + vc);
+    return length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
+}
+
+}  // namespace
+
+std::optional<MeshShape> MeshShape::create(const parser::Mesh& mesh) {
+    MeshShape m;
+    for (const Vec3& v : mesh.vertices)
+        if (!is_finite(v)) return std::nullopt;
+    m.m_vertices = mesh.vertices;
+    m.m_normals = mesh.normals;
+    const int nv = static_cast<int>(mesh.vertices.size());
+    const int nn = static_cast<int>(mesh.normals.size());
+    for (const parser::Mesh::Face& f : mesh.faces) {
+        Face face;
+        bool ok = true;
+        for (int k = 0; k < 3; ++k) {
+            ok = ok && f.v[k] >= 0 && f.v[k] < nv;
+            face.v[k] = f.v[k];
+            face.n[k] = f.n[k];
+        }
+        if (!ok) continue;
+        // Smooth only when all three normals exist and are usable.
+        for (int k = 0; k < 3; ++k)
+            if (face.n[k] < 0 || face.n[k] >= nn || !(length(mesh.normals[face.n[k]]) > 0.0)) face.n = {-1, -1, -1};
+        // Degenerate faces (zero area) can never be hit reliably: leave them out.
+        const Vec3 e1 = m.m_vertices[face.v[1]] - m.m_vertices[face.v[0]];
+        const Vec3 e2 = m.m_vertices[face.v[2]] - m.m_vertices[face.v[0]];
+        if (!(length(cross(e1, e2)) > 0.0)) continue;
+        m.m_faces.push_back(face);
+    }
+    if (m.m_faces.empty()) return std::nullopt;
+    m.m_inside_vector = mesh.inside_vector;
+    m.finish();
+    return m;
+}
+
+void MeshShape::finish() {
+    const Vec3& first = m_vertices[m_faces.front().v[0]];
+    m_bounds = {first, first};
+    for (const Face& f : m_faces)
+        for (int k = 0; k < 3; ++k) m_bounds = m_bounds.merged({m_vertices[f.v[k]], m_vertices[f.v[k]]});
+}
+
+std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::size_t index, double t_min,
+                                                    double t_max, bool known_hit) const {
+    const Face& f = m_faces[index];
+    const Vec3& a = m_vertices[f.v[0]];
+    const Vec3 e1 = m_vertices[f.v[1]] - a;
+    const Vec3 e2 = m_vertices[f.v[2]] - a;
+    const Vec3 pv = cross(ray.direction, e2);
+    const double det = dot(e1, pv);
+    if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
+    const Vec3 tv = ray.origin - a;
+    double u = dot(tv, pv) / det;
+    const Vec3 qv = cross(tv, e1);
+    double v = dot(ray.direction, qv) / det;
+    if (known_hit) {
+        u = std::clamp(u, 0.0, 1.0);
+        v = std::clamp(v, 0.0, 1.0 - u);
+    } else if (u < 0.0 || u > 1.0 || v < 0.0 || u + v > 1.0) {
+        return std::nullopt;
+    }
+    const double t = dot(e2, qv) / det;
+    if (!(t > t_min && t < t_max)) return std::nullopt;
+    const Vec3 ng = cross(e1, e2);
+    Vec3 normal = ng;
+    if (f.n[0] >= 0) {
+        // POV-Ray compat: smooth triangles interpolate their vertex normals, kept on the geometric side.
+        const Vec3 ns = (1.0 - u - v) * normalize(m_normals[f.n[0]]) + u * normalize(m_normals[f.n[1]]) +
+                        v * normalize(m_normals[f.n[2]]);
+        if (length(ns) > 0.0) normal = dot(ns, ng) < 0.0 ? -ns : ns;
+    }
+    return SurfaceHit{t, normal, dot(ng, ray.direction) < 0.0};
+}
+
+SurfaceHits MeshShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+    SurfaceHits hits;
+    for (std::size_t i = 0; i < m_faces.size(); ++i)
+        if (const auto h = intersect_face(ray, i, t_min, t_max)) hits.push(*h);
+    hits.sort_by_t();
+    return hits;
+}
+
+bool MeshShape::inside(const Vec3& p) const {
+    if (m_inside_vector == Vec3{}) return false;
+    // POV-Ray compat: a point is inside a mesh when a ray along inside_vector crosses it an odd number of times.
+    const LocalRay ray{p, m_inside_vector};
+    std::size_t crossings = 0;
+    for (std::size_t i = 0; i < m_faces.size(); ++i)
+        if (intersect_face(ray, i, 0.0, std::numeric_limits<double>::infinity())) ++crossings;
+    return crossings % 2 == 1;
+}
+
+double MeshShape::implicit(const Vec3& p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (const Face& f : m_faces)
+        best = std::fmin(best, point_triangle_distance(p, m_vertices[f.v[0]], m_vertices[f.v[1]], m_vertices[f.v[2]]));
+    return best;
+}
+
+}  // namespace wardray::geometry

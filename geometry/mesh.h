@@ -1,0 +1,60 @@
+// MeshShape: triangles (`triangle`, `smooth_triangle`, `mesh`, `mesh2`, triangulated `polygon`) in object space.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+
+namespace wardray::geometry {
+
+/// A triangle list with optional per-vertex normals. SceneGeometry gives top-level meshes to Embree as native
+/// triangles and refines their hits here in double; intersect_all (brute force) serves CSG and tests.
+class MeshShape {
+public:
+    /// One face: vertex indices and normal indices (-1 when flat).
+    struct Face {
+        std::array<int, 3> v{};
+        std::array<int, 3> n{-1, -1, -1};
+    };
+
+    /// Drops degenerate faces (zero area, bad indices); returns nothing when no face is left.
+    static std::optional<MeshShape> create(const parser::Mesh& mesh);
+    /// The polygon triangulated with POV-Ray's even-odd rule for holes (polygon.cpp).
+    static std::optional<MeshShape> create(const parser::Polygon& polygon);
+    /// A linear-spline prism: side walls and triangulated caps, faces turned outward (prism.cpp).
+    static std::optional<MeshShape> create(const parser::Prism& prism);
+
+    /// All crossings with t in (t_min, t_max), sorted.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// The crossing with one face, if any, with t in (t_min, t_max). With `known_hit` (Embree found this face
+    /// in float) only the plane's t is recomputed and the barycentrics are clamped, so no edge crack opens.
+    std::optional<SurfaceHit> intersect_face(const LocalRay& ray, std::size_t face, double t_min, double t_max,
+                                             bool known_hit = false) const;
+    /// Object-space bounding box of the vertices.
+    std::optional<Bounds> bounds() const { return m_bounds; }
+    /// With an inside_vector: an odd number of crossings along it; without: never inside.
+    bool inside(const Vec3& p) const;
+    /// Distance to the nearest face (zero on the surface).
+    double implicit(const Vec3& p) const;
+
+    const std::vector<Vec3>& vertices() const { return m_vertices; }
+    const std::vector<Face>& faces() const { return m_faces; }
+
+private:
+    MeshShape() = default;
+    void finish();
+
+    std::vector<Vec3> m_vertices;
+    std::vector<Vec3> m_normals;
+    std::vector<Face> m_faces;
+    Vec3 m_inside_vector;
+    Bounds m_bounds;
+};
+
+/// POV-Ray's sub-polygons of a point list: each closes when its first point repeats; an unclosed rest is closed.
+std::vector<std::vector<Vec3>> polygon_loops(const std::vector<Vec3>& points);
+
+}  // namespace wardray::geometry

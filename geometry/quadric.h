@@ -1,0 +1,33 @@
+// QuadricShape: POV-Ray's general second-degree surface `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`.
+#pragma once
+
+#include <optional>
+
+#include "geometry/shape.h"
+#include "parser/scene.h"
+
+namespace wardray::geometry {
+
+/// The surface f(p) = 0 of a quadratic polynomial; inside where f < 0. Unbounded unless clipped or intersected.
+class QuadricShape {
+public:
+    /// Returns nothing when a coefficient is not finite or all second- and first-degree ones vanish.
+    static std::optional<QuadricShape> create(const parser::Quadric& quadric);
+
+    /// Up to two crossings with t in (t_min, t_max), sorted.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// Quadrics are treated as unbounded.
+    std::optional<Bounds> bounds() const { return std::nullopt; }
+    /// True where the polynomial is negative.
+    bool inside(const Vec3& p) const { return implicit(p) < 0.0; }
+    /// The polynomial's value.
+    double implicit(const Vec3& p) const;
+
+private:
+    explicit QuadricShape(const parser::Quadric& q) : m_q(q) {}
+    Vec3 gradient(const Vec3& p) const;
+
+    parser::Quadric m_q;
+};
+
+}  // namespace wardray::geometry

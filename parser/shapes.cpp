@@ -1,0 +1,370 @@
+// Shape statements: the parameters of POV-Ray's primitives, meshes and polygons, and the building of CSG nodes
+// (object modifiers are in statements.cpp).
+#include <cmath>
+
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+bool is_shape_keyword(std::string_view w) {
+    return w == "sphere" || w == "box" || w == "plane" || w == "cylinder" || w == "cone" || w == "disc" ||
+           w == "torus" || w == "triangle" || w == "smooth_triangle" || w == "mesh" || w == "mesh2" ||
+           w == "polygon" || w == "quadric" || w == "superellipsoid" || w == "quartic" ||
+           w == "prism";
+}
+
+Shape Parser::parse_shape_parameters(const Token& kw) {
+    const std::string& w = kw.text;
+    if (w == "sphere") {
+        Sphere s;
+        s.center = parse_vector();
+        accept(",");  // POV-Ray compat: commas between parameters are optional
+        s.radius = parse_float();
+        return s;
+    }
+    if (w == "box") {
+        Box b;
+        b.corner1 = parse_vector();
+        accept(",");
+        b.corner2 = parse_vector();
+        return b;
+    }
+    if (w == "plane") {
+        Plane p;
+        const Token at = peek();
+        p.normal = parse_vector();
+        if (length(p.normal) == 0.0) fail(at, "plane normal must not be zero");
+        accept(",");
+        p.distance = parse_float();
+        return p;
+    }
+    if (w == "cylinder") {
+        Cylinder c;
+        c.base = parse_vector();
+        accept(",");
+        c.cap = parse_vector();
+        accept(",");
+        c.radius = parse_float();
+        if (c.base == c.cap) warn(kw, "degenerate cylinder: base and cap are the same point");
+        return c;
+    }
+    if (w == "cone") {
+        Cone c;
+        c.base = parse_vector();
+        accept(",");
+        c.base_radius = parse_float();
+        accept(",");
+        c.cap = parse_vector();
+        accept(",");
+        c.cap_radius = parse_float();
+        if (c.base == c.cap) warn(kw, "degenerate cone: base and cap are the same point");
+        return c;
+    }
+    if (w == "disc") {
+        Disc d;
+        d.center = parse_vector();
+        accept(",");
+        d.normal = parse_vector();
+        accept(",");
+        d.radius = parse_float();
+        if (accept(",")) d.hole_radius = parse_float();
+        return d;
+    }
+    if (w == "torus") {
+        Torus t;
+        t.major = parse_float();
+        accept(",");
+        t.minor = parse_float();
+        return t;
+    }
+    if (w == "triangle" || w == "smooth_triangle") {
+        const bool smooth = w == "smooth_triangle";
+        Mesh m;
+        m.kind = smooth ? Mesh::Kind::SmoothTriangle : Mesh::Kind::Triangle;
+        parse_triangle(m, smooth);
+        return m;
+    }
+    if (w == "mesh") return parse_mesh_body(kw);
+    if (w == "mesh2") return parse_mesh2_body(kw);
+    if (w == "polygon") {
+        Polygon p;
+        const Token at = peek();
+        const int n = static_cast<int>(std::lround(parse_float()));
+        if (n < 3) fail(at, "a polygon needs at least 3 points");
+        for (int i = 0; i < n; ++i) {
+            accept(",");
+            p.points.push_back(parse_vector());  // POV-Ray compat: 2-D points lie in the z = 0 plane
+        }
+        return p;
+    }
+    if (w == "quadric") {
+        Quadric q;
+        q.squares = parse_vector();
+        accept(",");
+        q.mixed = parse_vector();
+        accept(",");
+        q.linear = parse_vector();
+        accept(",");
+        q.constant = parse_float();
+        return q;
+    }
+    if (w == "prism") {
+        Prism p;
+        while (true) {
+            const Token t = peek();
+            if (is_word(t, "linear_spline") || is_word(t, "linear_sweep")) {
+                next();
+            } else if (is_word(t, "conic_sweep")) {
+                next();
+                p.conic = true;
+            } else if (is_word(t, "quadratic_spline") || is_word(t, "cubic_spline") || is_word(t, "bezier_spline")) {
+                // Curved outlines are drawn through their control points (a polyline) until splines are modelled.
+                next();
+                warn_unsupported(t, "prism " + t.text);
+            } else {
+                break;
+            }
+        }
+        p.height1 = parse_float();
+        accept(",");
+        p.height2 = parse_float();
+        accept(",");
+        const Token at = peek();
+        const int n = static_cast<int>(std::lround(parse_float()));
+        if (n < 3) fail(at, "a prism needs at least 3 points");
+        for (int i = 0; i < n; ++i) {
+            accept(",");
+            const Vec3 uv = parse_vector();
+            p.points.push_back({uv.x, uv.y, 0.0});
+        }
+        return p;
+    }
+    if (w == "quartic") {
+        // Thirty-five coefficients in one vector: read them one by one so no 5-component limit applies.
+        Quartic q;
+        expect("<");
+        for (std::size_t i = 0; i < q.coefficients.size(); ++i) {
+            if (i > 0) expect(",");
+            // The additive level, as in `matrix`: a '>' here closes the vector, it is no comparison.
+            const Token at = peek();
+            const Numeric c = parse_additive();
+            if (c.n != 1) fail(at, "quartic coefficients must be floats");
+            q.coefficients[i] = c.v[0];
+        }
+        expect(">");
+        return q;
+    }
+    Superellipsoid s;
+    const Vec3 en = parse_vector();
+    s.e = en.x;
+    s.n = en.y;
+    return s;
+}
+
+void Parser::parse_triangle(Mesh& mesh, bool smooth) {
+    Mesh::Face face;
+    for (int k = 0; k < 3; ++k) {
+        if (k > 0) accept(",");
+        face.v[k] = static_cast<int>(mesh.vertices.size());
+        mesh.vertices.push_back(parse_vector());
+        if (smooth) {
+            accept(",");
+            face.n[k] = static_cast<int>(mesh.normals.size());
+            mesh.normals.push_back(parse_vector());
+        }
+    }
+    mesh.faces.push_back(face);
+}
+
+Mesh Parser::parse_mesh_body(const Token& kw) {
+    Mesh mesh;
+    mesh.kind = Mesh::Kind::Mesh;
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        if (is_word(t, "hierarchy")) {
+            next();
+            parse_bool_optional();  // an acceleration hint: the renderer builds its own hierarchy
+        } else if (is_word(t, "triangle") || is_word(t, "smooth_triangle")) {
+            next();
+            expect("{");
+            parse_triangle(mesh, t.text == "smooth_triangle");
+            // Per-triangle textures: read and reported, the mesh's own texture is used.
+            while (!accept("}")) {
+                const Token item = next();
+                if (is_word(item, "texture")) {
+                    warn_unsupported(item, "per-triangle texture");
+                    parse_texture_body(item);
+                } else {
+                    fail(item, "expected 'texture' or '}' in a mesh triangle but found " + describe_token(item));
+                }
+            }
+        } else if (is_word(t, "inside_vector")) {
+            next();
+            mesh.inside_vector = parse_vector();
+        } else {
+            break;
+        }
+    }
+    if (mesh.faces.empty()) fail(kw, "a mesh needs at least one triangle");
+    return mesh;
+}
+
+// Reads `{ count, item, item, ... }` where `read_item` consumes one item.
+template <typename F>
+void Parser::parse_counted_list(const Token& kw, F read_item) {
+    expect("{");
+    const Token at = peek();
+    const double count = parse_float();
+    if (count < 0 || count != std::floor(count)) fail(at, "expected a non-negative whole count");
+    for (int i = 0; i < static_cast<int>(count); ++i) {
+        accept(",");
+        read_item();
+    }
+    accept(",");
+    if (!accept("}")) fail(peek(), "more items in '" + kw.text + "' than its count of " + std::to_string(int(count)));
+}
+
+Mesh Parser::parse_mesh2_body(const Token& kw) {
+    Mesh mesh;
+    mesh.kind = Mesh::Kind::Mesh2;
+    std::vector<std::array<int, 3>> normal_indices;
+    auto read_index_triple = [&](std::array<int, 3>& out) {
+        const Vec3 v = parse_vector();
+        for (int k = 0; k < 3; ++k) out[k] = static_cast<int>(std::lround(v[k]));
+    };
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        if (is_word(t, "hierarchy")) {
+            next();
+            parse_bool_optional();
+        } else if (is_word(t, "vertex_vectors")) {
+            next();
+            parse_counted_list(t, [&] { mesh.vertices.push_back(parse_vector()); });
+        } else if (is_word(t, "normal_vectors")) {
+            next();
+            parse_counted_list(t, [&] { mesh.normals.push_back(parse_vector()); });
+        } else if (is_word(t, "uv_vectors")) {
+            next();
+            warn_unsupported(t, "uv_vectors");
+            parse_counted_list(t, [&] { parse_vector(); });
+        } else if (is_word(t, "texture_list")) {
+            next();
+            warn_unsupported(t, "texture_list");
+            parse_counted_list(t, [&] {
+                const Token tex = next();
+                if (!is_word(tex, "texture")) fail(tex, "expected 'texture' in texture_list");
+                parse_texture_body(tex);
+            });
+        } else if (is_word(t, "face_indices")) {
+            next();
+            parse_counted_list(t, [&] {
+                Mesh::Face f;
+                read_index_triple(f.v);
+                mesh.faces.push_back(f);
+                // Optional texture indices after the triple: one or three floats.
+                while (true) {
+                    accept(",");
+                    const Token& p = peek();
+                    if (is_punct(p, "<") || is_punct(p, "}")) break;
+                    parse_float();
+                }
+            });
+        } else if (is_word(t, "normal_indices")) {
+            next();
+            parse_counted_list(t, [&] {
+                std::array<int, 3> n{};
+                read_index_triple(n);
+                normal_indices.push_back(n);
+            });
+        } else if (is_word(t, "uv_indices")) {
+            next();
+            parse_counted_list(t, [&] { parse_vector(); });
+        } else if (is_word(t, "inside_vector")) {
+            next();
+            mesh.inside_vector = parse_vector();
+        } else {
+            break;
+        }
+    }
+    if (mesh.vertices.empty() || mesh.faces.empty()) fail(kw, "mesh2 needs vertex_vectors and face_indices");
+    const int nv = static_cast<int>(mesh.vertices.size());
+    const int nn = static_cast<int>(mesh.normals.size());
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+        Mesh::Face& f = mesh.faces[i];
+        for (int k = 0; k < 3; ++k)
+            if (f.v[k] < 0 || f.v[k] >= nv) fail(kw, "mesh2 face " + std::to_string(i) + " has a vertex index out of range");
+        // POV-Ray compat: without normal_indices, normal_vectors pair with the vertices by index.
+        if (i < normal_indices.size()) {
+            f.n = normal_indices[i];
+        } else if (nn == nv && normal_indices.empty()) {
+            f.n = f.v;
+        }
+        for (int k = 0; k < 3; ++k)
+            if (f.n[k] >= nn) fail(kw, "mesh2 face " + std::to_string(i) + " has a normal index out of range");
+    }
+    return mesh;
+}
+
+std::optional<Object> Parser::as_single_object(ObjectValue& ov) {
+    if (ov.parts.empty()) return std::nullopt;
+    if (!ov.compound && ov.parts.size() == 1) {
+        Object o = std::move(ov.parts.front().object);
+        o.has_texture = ov.parts.front().has_texture;
+        return o;
+    }
+    // The union's transforms are already in its parts, so the node itself sits at the identity.
+    Object node;
+    node.loc = ov.parts.front().object.loc;
+    const Object& first = ov.parts.front().object;
+    node.no_shadow = first.no_shadow;
+    node.no_image = first.no_image;
+    node.no_reflection = first.no_reflection;
+    node.no_radiosity = first.no_radiosity;
+    node.has_texture = ov.texture.has_value();
+    node.texture = ov.texture.value_or(default_texture());
+    Csg csg;
+    for (ObjectPart& part : ov.parts) {
+        part.object.has_texture = part.has_texture;
+        csg.children.push_back(std::move(part.object));
+    }
+    node.shape = std::move(csg);
+    return node;
+}
+
+void Parser::make_union_node(ObjectValue& ov) {
+    if (!ov.compound) return;
+    auto node = as_single_object(ov);
+    ov.parts.clear();
+    ov.compound = false;
+    ov.texture.reset();
+    if (!node) return;
+    ObjectPart part;
+    part.has_texture = node->has_texture;
+    part.object = std::move(*node);
+    ov.parts.push_back(std::move(part));
+}
+
+std::vector<Object> Parser::parse_object_list(const Token& kw, const std::vector<Object>* bounded_by) {
+    expect("{");
+    std::vector<Object> list;
+    while (true) {
+        expand_macros();
+        const Token t = next();
+        if (is_punct(t, "}")) return list;
+        if (bounded_by != nullptr && is_word(t, "bounded_by")) {
+            // POV-Ray compat: `clipped_by { bounded_by }` clips by the bounding objects.
+            list.insert(list.end(), bounded_by->begin(), bounded_by->end());
+        } else if (bounded_by == nullptr && is_word(t, "clipped_by")) {
+            // `bounded_by { clipped_by }`: bounds are only an optimisation, nothing to record.
+        } else if (is_object_keyword(t)) {
+            ObjectValue child = parse_object(t);
+            if (auto o = as_single_object(child)) list.push_back(std::move(*o));
+        } else {
+            fail(t, "expected an object in '" + kw.text + "' but found " + describe_token(t));
+        }
+    }
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,179 @@
+// Tests of CSG: inside tests against POV-Ray's truth tables, crossings on the kept surfaces, leaves, bounds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/instance.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::make_object;
+using test::Random;
+
+// Two or three random closed shapes (optionally a plane) under a CSG operation, with a random transform.
+parser::Object random_csg(Random& rng, parser::Csg::Op op, bool allow_plane) {
+    parser::Csg csg;
+    csg.op = op;
+    const int n = rng.integer(2, 3);
+    for (int i = 0; i < n; ++i) {
+        parser::Object child = make_object(test::random_shape(rng, allow_plane && i > 0), rng.transform(0.5));
+        child.inverse = rng.chance(0.15);
+        csg.children.push_back(child);
+    }
+    return make_object(csg, rng.transform());
+}
+
+bool expected_inside(const parser::Csg& csg, const std::vector<bool>& in) {
+    bool result = csg.op == parser::Csg::Op::Intersection || csg.op == parser::Csg::Op::Difference;
+    for (std::size_t i = 0; i < in.size(); ++i) {
+        switch (csg.op) {
+            case parser::Csg::Op::Union:
+            case parser::Csg::Op::Merge: result = result || in[i]; break;
+            case parser::Csg::Op::Intersection: result = result && in[i]; break;
+            case parser::Csg::Op::Difference: result = result && (i == 0 ? in[i] : !in[i]); break;
+        }
+    }
+    return result;
+}
+
+constexpr parser::Csg::Op kOps[] = {parser::Csg::Op::Union, parser::Csg::Op::Intersection,
+                                     parser::Csg::Op::Difference, parser::Csg::Op::Merge};
+
+TEST(Csg, InsideFollowsTheTruthTables) {
+    Random rng(5);
+    for (parser::Csg::Op op : kOps) {
+        for (int trial = 0; trial < 100; ++trial) {
+            const parser::Object obj = random_csg(rng, op, true);
+            const auto inst = ShapeInstance::create(obj, 0);
+            ASSERT_TRUE(inst);
+            const auto& csg = std::get<parser::Csg>(obj.shape);
+            for (int k = 0; k < 20; ++k) {
+                const Vec3 p_world = obj.transform.point(rng.vec(-2, 2));
+                const Vec3 p_local = obj.transform.inverse_point(p_world);
+                std::vector<bool> in;
+                for (const parser::Object& c : csg.children) in.push_back(ShapeInstance::create(c, 0)->inside(p_local));
+                EXPECT_EQ(inst->inside(p_world), expected_inside(csg, in));
+            }
+        }
+    }
+}
+
+// Every crossing of an intersection, difference or merge separates inside from outside of the whole CSG,
+// lies on the surface of the leaf it names, and (for bounded results) inside the CSG's bounds.
+TEST(Csg, CrossingsSeparateInsideFromOutside) {
+    Random rng(6);
+    for (parser::Csg::Op op : kOps) {
+        int checked = 0;
+        int failures = 0;
+        for (int trial = 0; trial < 200; ++trial) {
+            const parser::Object obj = random_csg(rng, op, true);
+            const auto inst = ShapeInstance::create(obj, 0);
+            ASSERT_TRUE(inst);
+            const Vec3 target = obj.transform.point(rng.vec(-1, 1));
+            const Vec3 origin = target + rng.direction() * rng.uniform(1.0, 15.0);
+            const Vec3 dir = normalize(target - origin);
+            const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+            const auto& bounds = inst->world_bounds();
+            for (const SurfaceHit& h : hits) {
+                const Vec3 p = origin + h.t * dir;
+                ASSERT_NE(h.leaf, nullptr);
+                // The leaf is one of the children, and the point is on that child's surface.
+                const auto& csg = std::get<parser::Csg>(obj.shape);
+                const parser::Object* leaf = h.leaf;
+                const auto it = std::find_if(csg.children.begin(), csg.children.end(),
+                                             [&](const parser::Object& c) { return &c == leaf; });
+                ASSERT_NE(it, csg.children.end());
+                const auto leaf_inst = ShapeInstance::create(*leaf, 0);
+                const Vec3 p_csg = obj.transform.inverse_point(p);
+                EXPECT_NEAR(leaf_inst->object_implicit(p_csg), 0.0, 1e-8);
+                if (bounds) {
+                    const double pad = 1e-9 * (bounds->magnitude() + 1);
+                    for (int k = 0; k < 3; ++k) {
+                        EXPECT_GE(p[k], bounds->lower[k] - pad);
+                        EXPECT_LE(p[k], bounds->upper[k] + pad);
+                    }
+                }
+                if (op == parser::Csg::Op::Union) continue;  // unions keep inner surfaces
+                const double eps = 1e-7;
+                failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
+                ++checked;
+            }
+        }
+        if (op == parser::Csg::Op::Union) continue;
+        EXPECT_GT(checked, 50);
+        EXPECT_LE(failures, checked / 100) << "op " << static_cast<int>(op);
+    }
+}
+
+TEST(Csg, DifferenceCutsAHoleAndFlipsTheNormal) {
+    parser::Csg csg;
+    csg.op = parser::Csg::Op::Difference;
+    csg.children.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
+    csg.children.push_back(make_object(parser::Sphere{{0, 0, -1}, 0.5}));
+    const parser::Object obj = make_object(csg);
+    const auto inst = ShapeInstance::create(obj, 4);
+    ASSERT_TRUE(inst);
+    // Through the hole: the sphere's inner surface at z = -0.5, facing the ray.
+    const auto h = inst->nearest({0, 0, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4.5, 1e-12);
+    EXPECT_NEAR(h->normal.z, -1.0, 1e-12);
+    EXPECT_EQ(h->object, 4u);
+    EXPECT_EQ(h->leaf, &std::get<parser::Csg>(obj.shape).children[1]);
+    // Beside the hole: the box's face.
+    const auto b = inst->nearest({0.8, 0.8, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(b);
+    EXPECT_NEAR(b->t, 4.0, 1e-12);
+    EXPECT_EQ(b->leaf, &std::get<parser::Csg>(obj.shape).children[0]);
+}
+
+TEST(Csg, MergeRemovesInnerSurfacesUnionKeepsThem) {
+    parser::Csg csg;
+    csg.children.push_back(make_object(parser::Sphere{{-0.5, 0, 0}, 1}));
+    csg.children.push_back(make_object(parser::Sphere{{0.5, 0, 0}, 1}));
+    csg.op = parser::Csg::Op::Union;
+    const auto u = ShapeInstance::create(make_object(csg), 0);
+    csg.op = parser::Csg::Op::Merge;
+    const auto m = ShapeInstance::create(make_object(csg), 0);
+    EXPECT_EQ(u->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 4u);
+    EXPECT_EQ(m->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 2u);
+}
+
+TEST(Csg, IntersectionWithPlaneIsBounded) {
+    parser::Csg csg;
+    csg.op = parser::Csg::Op::Intersection;
+    csg.children.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
+    csg.children.push_back(make_object(parser::Plane{{0, 1, 0}, 0.25}));
+    const auto inst = ShapeInstance::create(make_object(csg), 0);
+    ASSERT_TRUE(inst && inst->world_bounds());
+    EXPECT_NEAR(inst->world_bounds()->upper.y, 1.0, 1e-12);
+    EXPECT_NEAR(inst->world_bounds()->lower.x, -1.0, 1e-12);
+    // The box clipped at y = 0.25: a ray from above hits the cut.
+    const auto h = inst->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4.75, 1e-12);
+}
+
+TEST(Csg, ClippedByKeepsOnlyTheSurfaceInsideTheClip) {
+    parser::Object obj = make_object(parser::Sphere{{0, 0, 0}, 1});
+    obj.clipped_by.push_back(make_object(parser::Plane{{0, 0, 1}, 0.0}));
+    const auto inst = ShapeInstance::create(obj, 0);
+    ASSERT_TRUE(inst);
+    // The front half (z < 0) remains; a ray along +z meets it at z = -1 and then sees the inside of nothing else.
+    const SurfaceHits hits = inst->intersect_all({0, 0, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 1u);
+    EXPECT_NEAR(hits[0].t, 4.0, 1e-12);
+    // From behind, the ray passes the missing back half and hits the inside of the front half.
+    const SurfaceHits back = inst->intersect_all({0, 0, 5}, {0, 0, -1}, 0.0, 1e30);
+    ASSERT_EQ(back.size(), 1u);
+    EXPECT_NEAR(back[0].t, 6.0, 1e-12);
+    EXPECT_FALSE(inst->inside({0, 0, 0.5}));
+    EXPECT_TRUE(inst->inside({0, 0, -0.5}));
+    // A plane's inside is unbounded, so the clip keeps the sphere's bounds.
+    EXPECT_NEAR(inst->world_bounds()->upper.z, 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace wardray::geometry

@@ -1,0 +1,276 @@
+// Tests of the primitives beyond sphere, box and plane: random rays hit the surface, normals point outward,
+// entering flags and inside tests agree, and POV-Ray's parameter conventions hold.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "geometry/instance.h"
+#include "geometry/polynomial.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::make_object;
+using test::Random;
+
+// Checks random rays against random objects from `make`: every crossing lies on the surface (implicit ≈ 0
+// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
+// shapes, inside just behind the normal and outside just in front of it.
+void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
+                 double surface_tolerance = 1e-9, int min_hits = 150) {
+    Random rng(seed);
+    int checked = 0;
+    int inside_failures = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        parser::Object obj = make_object(make(rng), rng.transform());
+        const auto inst = ShapeInstance::create(obj, 3);
+        ASSERT_TRUE(inst.has_value()) << "trial " << trial;
+        const auto& b = inst->world_bounds();
+        const double scale = b ? std::fmax(b->magnitude(), max_abs_component(b->upper - b->lower)) : 10.0;
+        const Vec3 target = obj.transform.point(rng.vec(-0.8, 0.8));
+        const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
+        const Vec3 dir = (target - origin) * rng.uniform(0.1, 10.0);
+        const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            const SurfaceHit& h = hits[i];
+            const Vec3 p = origin + h.t * dir;
+            ASSERT_TRUE(std::isfinite(h.t));
+            ASSERT_NEAR(length(h.normal), 1.0, 1e-12);
+            EXPECT_EQ(h.leaf, &obj);
+            EXPECT_NEAR(inst->object_implicit(p), 0.0, surface_tolerance * scale) << "trial " << trial;
+            EXPECT_EQ(h.entering, dot(h.normal, dir) < 0.0);
+            if (i > 0) EXPECT_GE(h.t, hits[i - 1].t);
+            if (solid) {
+                const double eps = 1e-6 * scale;
+                // Points near edges and rims may leave the solid sideways: count, do not fail on each.
+                inside_failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, min_hits);
+    EXPECT_LE(inside_failures, checked / 100) << "of " << checked;
+}
+
+TEST(Primitives, Cylinder) {
+    check_shape([](Random& r) {
+        return parser::Cylinder{r.vec(-1, 1), r.vec(-1, 1), r.uniform(0.2, 1.0), r.chance(0.3)};
+    }, true, 11);
+}
+
+TEST(Primitives, Cone) {
+    check_shape([](Random& r) {
+        return parser::Cone{r.vec(-1, 1), r.uniform(0.0, 1.0), r.vec(-1, 1), r.uniform(0.1, 1.0), r.chance(0.3)};
+    }, true, 12);
+}
+
+TEST(Primitives, Torus) {
+    check_shape([](Random& r) { return parser::Torus{r.uniform(0.5, 1.5), r.uniform(0.1, 0.5)}; }, true, 13);
+}
+
+TEST(Primitives, Disc) {
+    check_shape([](Random& r) {
+        return parser::Disc{r.vec(-0.3, 0.3), r.direction(), r.uniform(0.8, 1.5), r.uniform(0.0, 0.5)};
+    }, false, 14, 1e-9, 60);
+}
+
+TEST(Primitives, QuadricEllipsoidAndHyperboloid) {
+    check_shape([](Random& r) {
+        const double sign = r.chance(0.5) ? 1.0 : -1.0;
+        return parser::Quadric{{r.uniform(0.5, 2), sign * r.uniform(0.5, 2), r.uniform(0.5, 2)}, r.vec(-0.2, 0.2),
+                               r.vec(-0.3, 0.3), -r.uniform(0.3, 1.0)};
+    }, true, 15);
+}
+
+TEST(Primitives, Superellipsoid) {
+    check_shape([](Random& r) { return parser::Superellipsoid{r.uniform(0.2, 2.0), r.uniform(0.2, 2.0)}; }, true,
+                16, 1e-8);
+}
+
+// A closed tetrahedron with outward faces and an inside_vector, as a mesh.
+parser::Mesh tetrahedron(Random& r) {
+    parser::Mesh m;
+    m.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    for (Vec3& v : m.vertices) v = v + r.vec(-0.2, 0.2);
+    // Orient each face so that its normal points away from the opposite vertex.
+    const int faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    for (int f = 0; f < 4; ++f) {
+        parser::Mesh::Face face;
+        face.v = {faces[f][0], faces[f][1], faces[f][2]};
+        const int opposite = 6 - faces[f][0] - faces[f][1] - faces[f][2];
+        const Vec3 n = cross(m.vertices[face.v[1]] - m.vertices[face.v[0]], m.vertices[face.v[2]] - m.vertices[face.v[0]]);
+        if (dot(n, m.vertices[opposite] - m.vertices[face.v[0]]) > 0) std::swap(face.v[1], face.v[2]);
+        m.faces.push_back(face);
+    }
+    m.inside_vector = {0.3, 0.7, 0.1};
+    return m;
+}
+
+TEST(Primitives, ClosedMeshWithInsideVector) { check_shape(tetrahedron, true, 17); }
+
+// A random star-shaped outline (closed by repeating its first point), with a square hole half of the time.
+parser::Prism random_prism(Random& r) {
+    parser::Prism p;
+    p.conic = r.chance(0.4);
+    p.height1 = p.conic ? r.uniform(0.2, 0.5) : r.uniform(-1.0, 0.0);
+    p.height2 = p.conic ? r.uniform(0.8, 1.2) : r.uniform(0.3, 1.0);
+    const int n = r.integer(3, 9);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * M_PI * i / n;
+        const double radius = (i % 2 == 0 ? 1.0 : 0.6) * r.uniform(0.8, 1.2);
+        p.points.push_back({radius * std::cos(a), radius * std::sin(a), 0});
+    }
+    p.points.push_back(p.points.front());
+    if (r.chance(0.5)) {
+        for (Vec3 q : {Vec3{-0.2, -0.2, 0}, Vec3{0.2, -0.2, 0}, Vec3{0.2, 0.2, 0}, Vec3{-0.2, 0.2, 0}, Vec3{-0.2, -0.2, 0}})
+            p.points.push_back(q);
+    }
+    return p;
+}
+
+TEST(Primitives, PrismLinearAndConic) { check_shape(random_prism, true, 19); }
+
+TEST(Primitives, PrismInsideFollowsTheOutline) {
+    parser::Prism p;
+    p.height1 = 0;
+    p.height2 = 1;
+    p.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 0},
+                {0.5, 0.5, 0}, {1.5, 0.5, 0}, {1.5, 1.5, 0}, {0.5, 1.5, 0}, {0.5, 0.5, 0}};
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    EXPECT_TRUE(inst->inside({0.25, 0.5, 0.25}));
+    EXPECT_FALSE(inst->inside({1.0, 0.5, 1.0}));  // the hole
+    EXPECT_FALSE(inst->inside({0.25, 1.5, 0.25}));  // above
+    // Straight down onto the top cap (outline v is z).
+    const auto h = inst->nearest({0.25, 5, 0.25}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 4.0, 1e-12);
+    EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
+}
+
+TEST(Primitives, PolygonWithHoleByEvenOddRule) {
+    // A 2 x 2 square with a 1 x 1 square hole: POV-Ray's sub-polygons close when their first point repeats.
+    parser::Polygon poly;
+    poly.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 0},
+                   {0.5, 0.5, 0}, {1.5, 0.5, 0}, {1.5, 1.5, 0}, {0.5, 1.5, 0}, {0.5, 0.5, 0}};
+    const auto inst = ShapeInstance::create(make_object(poly), 0);
+    ASSERT_TRUE(inst);
+    auto hit_at = [&](double x, double y) { return inst->nearest({x, y, -5}, {0, 0, 1}, 0.0, 1e30).has_value(); };
+    EXPECT_TRUE(hit_at(0.25, 0.25));
+    EXPECT_TRUE(hit_at(1.75, 1.0));
+    EXPECT_FALSE(hit_at(1.0, 1.0));  // in the hole
+    EXPECT_FALSE(hit_at(2.5, 1.0));  // outside
+    const auto h = inst->nearest({0.2, 0.3, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 5.0, 1e-12);
+}
+
+TEST(Primitives, SmoothTriangleInterpolatesNormals) {
+    parser::Mesh m;
+    m.kind = parser::Mesh::Kind::SmoothTriangle;
+    m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.normals = {{-1, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+    parser::Mesh::Face f;
+    f.v = {0, 1, 2};
+    f.n = {0, 1, 2};
+    m.faces.push_back(f);
+    const auto inst = ShapeInstance::create(make_object(m), 0);
+    ASSERT_TRUE(inst);
+    const auto near0 = inst->nearest({0.01, 0.01, -1}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(near0);
+    EXPECT_LT(near0->normal.x, -0.6);  // close to vertex 0's normal
+    const auto near1 = inst->nearest({0.98, 0.01, -1}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(near1);
+    EXPECT_GT(near1->normal.x, 0.6);
+}
+
+TEST(Primitives, CylinderCapsAndOpen) {
+    const parser::Cylinder closed{{0, 0, 0}, {0, 2, 0}, 1.0, false};
+    parser::Cylinder open = closed;
+    open.open = true;
+    const auto a = ShapeInstance::create(make_object(closed), 0);
+    const auto b = ShapeInstance::create(make_object(open), 0);
+    ASSERT_TRUE(a && b);
+    // Straight down the axis: the closed one is hit on its top cap, the open one not at all.
+    const auto h = a->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 3.0, 1e-12);
+    EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
+    EXPECT_FALSE(b->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30));
+    // Open cylinders stay solid for inside tests.
+    EXPECT_TRUE(b->inside({0, 1, 0}));
+}
+
+TEST(Primitives, TorusFourCrossingsAlongItsDiameter) {
+    const auto inst = ShapeInstance::create(make_object(parser::Torus{2.0, 0.5}), 0);
+    ASSERT_TRUE(inst);
+    const SurfaceHits hits = inst->intersect_all({-10, 0, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 4u);
+    const double want[4] = {7.5, 8.5, 11.5, 12.5};
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(hits[i].t, want[i], 1e-12);
+    // A far origin keeps the precision (the quartic is solved from the point nearest the centre).
+    const SurfaceHits far = inst->intersect_all({-1e6, 0, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(far.size(), 4u);
+    EXPECT_NEAR(far[0].t, 1e6 - 2.5, 1e-7);
+}
+
+// POV-Ray's torus written as a general quartic: (x² + y² + z² + R² - r²)² - 4R²(x² + z²).
+parser::Quartic torus_quartic(double major, double minor) {
+    parser::Quartic q;
+    const double k = major * major - minor * minor;
+    auto& c = q.coefficients;
+    c[0] = 1;                                 // x⁴
+    c[4] = 2;                                 // x²y²
+    c[7] = 2;                                 // x²z²
+    c[9] = 2 * k - 4 * major * major;         // x²
+    c[20] = 1;                                // y⁴
+    c[23] = 2;                                // y²z²
+    c[25] = 2 * k;                            // y²
+    c[30] = 1;                                // z⁴
+    c[32] = 2 * k - 4 * major * major;        // z²
+    c[34] = k * k;                            // 1
+    return q;
+}
+
+TEST(Primitives, QuarticMatchesTheTorus) {
+    Random rng(18);
+    for (int trial = 0; trial < 300; ++trial) {
+        const double major = rng.uniform(0.5, 1.5), minor = rng.uniform(0.1, 0.4);
+        const Transform xf = rng.transform();
+        const auto q = ShapeInstance::create(make_object(torus_quartic(major, minor), xf), 0);
+        const auto t = ShapeInstance::create(make_object(parser::Torus{major, minor}, xf), 0);
+        ASSERT_TRUE(q && t);
+        const Vec3 target = xf.point(rng.vec(-1, 1));
+        const Vec3 origin = target + rng.direction() * rng.uniform(1.0, 20.0);
+        const Vec3 dir = (target - origin) * rng.uniform(0.1, 10.0);
+        const SurfaceHits hq = q->intersect_all(origin, dir, 0.0, 1e30);
+        const SurfaceHits ht = t->intersect_all(origin, dir, 0.0, 1e30);
+        ASSERT_EQ(hq.size(), ht.size()) << "trial " << trial;
+        for (std::size_t i = 0; i < hq.size(); ++i) {
+            EXPECT_NEAR(hq[i].t, ht[i].t, 1e-9 * ht[i].t);
+            EXPECT_NEAR(dot(hq[i].normal, ht[i].normal), 1.0, 1e-9);
+        }
+        EXPECT_EQ(q->inside(target), t->inside(target));
+    }
+}
+
+TEST(Polynomial, RootsOfAQuarticWithCloseRoots) {
+    // (x - 1)(x - 1.001)(x + 2)(x - 3)
+    const double r[4] = {1.0, 1.001, -2.0, 3.0};
+    double c[5] = {1, 0, 0, 0, 0};
+    for (double root : r) {
+        for (int i = 4; i > 0; --i) c[i] = c[i - 1] - root * c[i];
+        c[0] = -root * c[0];
+    }
+    double roots[4];
+    ASSERT_EQ(polynomial_roots(c, 4, -10, 10, roots), 4);
+    EXPECT_NEAR(roots[0], -2.0, 1e-12);
+    EXPECT_NEAR(roots[1], 1.0, 1e-10);
+    EXPECT_NEAR(roots[2], 1.001, 1e-10);
+    EXPECT_NEAR(roots[3], 3.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace wardray::geometry
