@@ -1,4 +1,4 @@
-// Integrator: POV-Ray 3.7's direct lighting (ambient, emission, diffuse, phong, specular) with hard shadows.
+// Integrator: POV-Ray 3.7's ray recursion (TraceRay), direct light with filtered shadows, sky_sphere and fog.
 #include "lighting/direct_lighting.h"
 
 #include <algorithm>
@@ -6,12 +6,16 @@
 #include <numbers>
 
 #include "geometry/scene_geometry.h"
+#include "lighting/noise.h"
+#include "lighting/pattern.h"
+#include "lighting/pigment.h"
 
 namespace wardray::lighting {
 
 namespace {
 
 constexpr double kDegrees = std::numbers::pi / 180.0;
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 
 // POV-Ray compat: the spotlight edge is a cubic (smoothstep) ramp in cos α between falloff and radius.
 double smooth_ramp(double low, double high, double x) {
@@ -21,7 +25,60 @@ double smooth_ramp(double low, double high, double x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
+// POV-Ray's filter colour of a pigment: what passes through it, rgb·filter + transmit.
+Vec3 transmittance(const parser::Color& c) { return c.rgb() * c.filter + Vec3{c.transmit, c.transmit, c.transmit}; }
+
+bool pigment_opaque(const parser::Pigment& p) {
+    if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
+    for (const auto& e : p.color_map)
+        if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
+    for (const auto& e : p.pigment_map)
+        if (!pigment_opaque(e.pigment)) return false;
+    return true;
+}
+
+bool texture_opaque(const parser::Texture& t) {
+    if (!t.texture_map.empty()) {
+        for (const auto& e : t.texture_map)
+            if (!texture_opaque(e.texture)) return false;
+        return true;
+    }
+    // POV-Ray compat: only the layers' pigments decide whether light passes.
+    if (!pigment_opaque(t.pigment)) return false;
+    for (const auto& layer : t.layers)
+        if (!texture_opaque(layer)) return false;
+    return true;
+}
+
+bool object_opaque(const parser::Object& o) {
+    if (!texture_opaque(o.texture)) return false;
+    if (const auto* csg = std::get_if<parser::Csg>(&o.shape))
+        for (const parser::Object& child : csg->children)
+            if (!object_opaque(child)) return false;
+    return true;
+}
+
 }  // namespace
+
+bool InteriorStack::contains(std::uint32_t o) const {
+    for (int i = 0; i < size; ++i)
+        if (objects[i] == o) return true;
+    return false;
+}
+
+void InteriorStack::push(std::uint32_t o) {
+    if (size < kMax) objects[size++] = o;
+}
+
+bool InteriorStack::remove(std::uint32_t o) {
+    for (int i = size - 1; i >= 0; --i) {
+        if (objects[i] != o) continue;
+        for (int j = i; j + 1 < size; ++j) objects[j] = objects[j + 1];
+        --size;
+        return true;
+    }
+    return false;
+}
 
 Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry& geometry,
                        IntegratorOptions options)
@@ -29,6 +86,7 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
     // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
     // `#version 3.6` (or older) still gets it.
     m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
+    m_noise_generator = scene.global.noise_generator;
     if (scene.global.radiosity && options.gi != GiMode::Off)
         m_limitations.push_back("radiosity is not computed yet: the image has direct light only");
     for (const parser::Light& light : scene.lights) {
@@ -37,17 +95,148 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
             break;
         }
     }
+    // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
+    // inside too), which changes the relative indices of refraction. Containment is found by the parity of
+    // crossings along one ray from the camera.
+    {
+        std::vector<int> crossings(scene.objects.size(), 0);
+        const Vec3 origin = scene.camera.location;
+        const Vec3 dir = normalize(Vec3{0.1234, 0.9871, 0.0456});
+        double t0 = geometry.self_intersection_offset(origin);
+        for (int i = 0; i < 4096; ++i) {
+            const std::optional<geometry::Hit> hit =
+                geometry.intersect(geometry::Ray{origin, dir, t0, 1e30, geometry::RayKind::Camera});
+            if (!hit) break;
+            ++crossings[hit->object];
+            t0 = hit->t + geometry.self_intersection_offset(hit->position);
+        }
+        for (std::size_t o = 0; o < crossings.size(); ++o)
+            if (crossings[o] % 2 == 1) m_camera_interiors.push(static_cast<std::uint32_t>(o));
+    }
+    // Shadow rays need to look through objects only when something lets light pass.
+    m_opaque.reserve(scene.objects.size());
+    for (const parser::Object& o : scene.objects) {
+        const bool opaque = object_opaque(o);
+        m_opaque.push_back(opaque ? 1 : 0);
+        m_any_transparent = m_any_transparent || !opaque;
+    }
 }
 
 Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, RayCounters& counters) const {
     ++counters.camera;
-    const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
-    if (!hit) return m_scene.background.rgb();
-    return shade(*hit, normalize(ray.direction), counters);
+    RayState state;
+    state.interiors = m_camera_interiors;
+    return trace(ray, state, false, counters);
 }
 
-Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, Vec3& to_light,
-                                RayCounters& counters) const {
+Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool continued, RayCounters& counters) const {
+    // POV-Ray compat: a ray beyond max_trace_level, or weighing less than adc_bailout, is black.
+    if (in.level >= m_scene.global.max_trace_level || in.weight < m_scene.global.adc_bailout) return {};
+    RayState state = in;
+    if (!continued) ++state.level;
+    const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
+    const double scale = length(ray.direction);
+    const Vec3 direction = ray.direction / scale;
+    Vec3 colour;
+    double depth = INFINITY;
+    if (hit) {
+        depth = hit->t * scale;
+        colour = shade(*hit, direction, depth, state, counters);
+    } else {
+        colour = sky(direction);
+    }
+    if (!m_scene.fogs.empty()) colour = apply_fog(colour, depth);
+    return colour;
+}
+
+Vec3 Integrator::sky(const Vec3& direction) const {
+    Vec3 colour;
+    Vec3 filter{1.0, 1.0, 1.0};
+    if (m_scene.sky_sphere) {
+        // POV-Ray 3.7's ComputeSky: pigments from the last to the first, each seen through those before it.
+        const parser::SkySphere& sky = *m_scene.sky_sphere;
+        const Vec3 p = sky.transform.is_identity() ? direction : sky.transform.inverse_point(direction);
+        for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
+            const parser::Color c = evaluate_pigment(*it, p, m_noise_generator);
+            colour += c.rgb() * (1.0 - c.filter - c.transmit) * filter * sky.emission.rgb();
+            filter = filter * transmittance(c);
+        }
+    }
+    // POV-Ray compat: the background's own filter and transmit are ignored.
+    return colour + m_scene.background.rgb() * filter;
+}
+
+Vec3 Integrator::apply_fog(const Vec3& colour, double depth) const {
+    // POV-Ray's constant fog: attenuation exp(−depth/distance) (at least the fog's transmit), filtered by its
+    // colour where it has filter; the rest of the ray sees the fog colour.
+    Vec3 attenuation{1.0, 1.0, 1.0};
+    Vec3 added;
+    for (const parser::Fog& fog : m_scene.fogs) {
+        if (std::fabs(fog.distance) <= kEpsilon) continue;
+        const parser::Color& c = fog.color;
+        double att = std::exp(-depth / fog.distance);
+        att = std::max(att, c.transmit);
+        attenuation = attenuation * (Vec3{1.0 - c.filter, 1.0 - c.filter, 1.0 - c.filter} + c.rgb() * c.filter) * att;
+        added += c.rgb() * (1.0 - att);
+    }
+    return added + attenuation * colour;
+}
+
+Vec3 Integrator::texture_filter(const parser::Texture& texture, const Vec3& p) const {
+    if (!texture.texture_map.empty()) {
+        const Vec3 tp = warp_point(texture.map_pattern, p);
+        const double v = pattern_value(texture.map_pattern, tp, m_noise_generator);
+        const auto& map = texture.texture_map;
+        const MapLookup m = search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        const Vec3 cur = texture_filter(map[m.cur].texture, tp);
+        if (m.prev == m.cur) return cur;
+        return cur * m.fraction + texture_filter(map[m.prev].texture, tp) * (1.0 - m.fraction);
+    }
+    Vec3 filter = transmittance(evaluate_pigment(texture.pigment, p, m_noise_generator));
+    for (const parser::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p);
+    return filter;
+}
+
+Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
+                               RayCounters& counters) const {
+    // POV-Ray walks the shadow ray through every surface it crosses, multiplying their filter colours and the
+    // fade of the interiors it leaves.
+    Vec3 filter{1.0, 1.0, 1.0};
+    double t_origin = 0.0;
+    double t0 = m_geometry.self_intersection_offset(p);
+    const double t1 = distance - t0;
+    for (int crossing = 0; crossing < 64 && t0 < t1; ++crossing) {
+        ++counters.shadow;
+        const geometry::Ray ray{p, dir, t0, t1, geometry::RayKind::Shadow};
+        const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
+        if (!hit) break;
+        if (m_opaque[hit->object]) return {};
+        const parser::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
+        filter = filter * texture_filter(object.texture, hit->position);
+        const parser::Interior& interior = m_scene.objects[hit->object].interior;
+        if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
+            std::fabs(interior.fade_distance) > kEpsilon) {
+            const double d = (hit->t - t_origin) / interior.fade_distance;
+            const Vec3 fc = interior.fade_color.rgb();
+            const Vec3 one{1.0, 1.0, 1.0};
+            if (interior.fade_power >= 1000.0) {
+                const Vec3 k = (one - fc) * -d;
+                filter = filter * Vec3{std::exp(k.x), std::exp(k.y), std::exp(k.z)};
+            } else {
+                filter = filter * (fc + (one - fc) / (1.0 + std::pow(d, interior.fade_power)));
+            }
+        }
+        // Entering adds the interior, leaving removes it (POV-Ray's ComputeShadowMedia bookkeeping).
+        if (interiors.size == 0 || !interiors.remove(hit->object)) interiors.push(hit->object);
+        if (max_abs_component(filter) < kEpsilon) return {};
+        t_origin = hit->t;
+        t0 = hit->t + m_geometry.self_intersection_offset(hit->position);
+    }
+    return filter;
+}
+
+Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n,
+                                const InteriorStack& interiors, Vec3& to_light, RayCounters& counters) const {
     using Type = parser::Light::Type;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
@@ -61,7 +250,8 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
         if (distance <= 0.0) return {};
         to_light = d / distance;
     }
-    if (dot(n, to_light) <= 0.0) return {};
+    // POV-Ray compat: lights at grazing angles below EPSILON do not reach the surface.
+    if (dot(n, to_light) < kEpsilon) return {};
 
     double attenuation = 1.0;
     if (light.type == Type::Spot) {
@@ -80,53 +270,85 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
     }
     if (attenuation <= 0.0) return {};
 
+    Vec3 filter{1.0, 1.0, 1.0};
     if (!light.shadowless) {
-        const double offset = m_geometry.self_intersection_offset(p);
-        geometry::Ray shadow{p, to_light, offset, distance - offset, geometry::RayKind::Shadow};
-        ++counters.shadow;
-        if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
+        if (m_any_transparent) {
+            filter = shadow_filter(p, to_light, distance, interiors, counters);
+            if (filter == Vec3{}) return {};
+        } else {
+            const double offset = m_geometry.self_intersection_offset(p);
+            geometry::Ray shadow{p, to_light, offset, distance - offset, geometry::RayKind::Shadow};
+            ++counters.shadow;
+            if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
+        }
     }
-    return light.color.rgb() * attenuation;
+    return light.color.rgb() * filter * attenuation;
 }
 
-Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& view_dir, RayCounters& counters) const {
-    const parser::Object& object = m_scene.objects[hit.object];
-    const parser::Finish& finish = object.texture.finish;
-    const Vec3 pigment = object.texture.pigment.color.rgb();
-
-    // POV-Ray compat: the normal is turned to face the viewer before lighting.
-    Vec3 n = hit.normal;
-    if (dot(n, view_dir) > 0.0) n = -n;
-
-    Vec3 colour = pigment * finish.emission.rgb();
-    if (m_ambient_is_light) colour += pigment * finish.ambient.rgb() * m_scene.global.ambient_light.rgb();
-
+Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                              const Vec3& n, RayCounters& counters) const {
+    Vec3 colour;
+    const Vec3& view_dir = s.direction;
     const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
+    // POV-Ray's metallic highlight tint: 1 + metallic·(1 − F)·(pigment − 1), F an empirical Fresnel curve.
+    auto metallic_tint = [&](double cos_light) {
+        const double x = std::fabs(std::acos(std::clamp(cos_light, -1.0, 1.0))) / (std::numbers::pi / 2.0);
+        const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+        return Vec3{1.0, 1.0, 1.0} + (pigment - Vec3{1.0, 1.0, 1.0}) * (finish.metallic * (1.0 - f));
+    };
     for (const parser::Light& light : m_scene.lights) {
         Vec3 to_light;
-        const Vec3 arriving = light_arriving(light, hit.position, n, to_light, counters);
+        const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, to_light, counters);
         if (arriving == Vec3{}) continue;
         const double cos_i = dot(n, to_light);
-        // Lambert with POV-Ray's brilliance exponent: diffuse * cos^brilliance.
-        if (finish.diffuse != 0.0) {
-            const double shape = finish.brilliance == 1.0 ? cos_i : std::pow(cos_i, finish.brilliance);
-            colour += pigment * arriving * (finish.diffuse * shape);
+        Vec3 light_colour;  // this light's diffuse and highlights
+        // Lambert with POV-Ray's brilliance exponent: diffuse · opacity · cos^brilliance.
+        if (finish.diffuse > 0.0) {
+            const double shape = finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
+            light_colour += pigment * arriving * (finish.diffuse * opacity * shape);
         }
         // POV-Ray compat: shadowless (fill) lights cause no highlights.
-        if (light.shadowless) continue;
-        // Phong highlight: phong * cos(reflected, light)^phong_size.
+        if (light.shadowless) {
+            if (finish.irid > 0.0)
+                light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
+            colour += light_colour;
+            continue;
+        }
+        const Vec3 tint = finish.metallic > 0.0 ? metallic_tint(cos_i) : Vec3{1.0, 1.0, 1.0};
+        // Phong highlight: phong · cos(reflected, light)^phong_size (POV-Ray drops tiny values for sizes ≥ 60).
         if (finish.phong > 0.0) {
             const double c = dot(reflected, to_light);
-            if (c > 0.0) colour += arriving * (finish.phong * std::pow(c, finish.phong_size));
+            if (c > 0.0 && (finish.phong_size < 60.0 || c > 0.0008))
+                light_colour += arriving * tint * (finish.phong * std::pow(c, finish.phong_size));
         }
-        // Blinn specular: specular * cos(half vector, normal)^(1/roughness).
+        // Blinn specular: specular · cos(half vector, normal)^(1/roughness).
         if (finish.specular > 0.0) {
             const Vec3 half = normalize(to_light - view_dir);
             const double c = dot(half, n);
-            if (c > 0.0) colour += arriving * (finish.specular * std::pow(c, 1.0 / finish.roughness));
+            if (c > 0.0) light_colour += arriving * tint * (finish.specular * std::pow(c, 1.0 / finish.roughness));
         }
+        if (finish.irid > 0.0)
+            light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
+        colour += light_colour;
     }
     return colour;
+}
+
+Vec3 Integrator::iridescence(const parser::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+                             const Vec3& p) const {
+    // Thin-film interference: phase 2π·thickness·(|cos θ_light| + |cos θ_eye|) per wavelength; the film
+    // thickness varies with POV-Ray's 5-octave turbulence when `turbulence` is given.
+    double film = finish.irid_thickness;
+    if (finish.irid_turbulence != 0.0) {
+        const double t = 2.0 * turbulence(p, TurbulenceParams{5, 0.5, 2.0}, m_noise_generator) - 1.0;
+        film *= 1.0 + t * finish.irid_turbulence;
+    }
+    // POV-Ray's default irid_wavelength (global_settings) is rgb <0.70, 0.52, 0.48>.
+    constexpr double kWavelength[3] = {0.70, 0.52, 0.48};
+    const double phase =
+        2.0 * std::numbers::pi * film * (std::fabs(dot(n, to_light)) + std::fabs(dot(n, view_dir)));
+    return {1.0 + finish.irid * std::cos(phase / kWavelength[0]), 1.0 + finish.irid * std::cos(phase / kWavelength[1]),
+            1.0 + finish.irid * std::cos(phase / kWavelength[2])};
 }
 
 }  // namespace wardray::lighting

@@ -1,6 +1,8 @@
-// Integrator: the colour seen along a ray, from POV-Ray 3.7's direct-lighting model.
+// Integrator: the colour seen along a ray, from POV-Ray 3.7's lighting model (direct light, textures, reflection,
+// refraction, transparency, sky and fog).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -23,16 +25,36 @@ enum class GiMode { Off, Cache, Reference };
 struct RayCounters {
     std::uint64_t camera = 0;
     std::uint64_t shadow = 0;
+    std::uint64_t secondary = 0;  ///< reflected, refracted and transmitted rays
 
     RayCounters& operator+=(const RayCounters& o) {
         camera += o.camera;
         shadow += o.shadow;
+        secondary += o.secondary;
         return *this;
     }
 };
 
 struct IntegratorOptions {
     GiMode gi = GiMode::Off;
+};
+
+/// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), by object index.
+struct InteriorStack {
+    static constexpr int kMax = 16;
+    std::array<std::uint32_t, kMax> objects{};
+    int size = 0;
+
+    bool contains(std::uint32_t o) const;
+    void push(std::uint32_t o);
+    bool remove(std::uint32_t o);
+};
+
+/// What travels with a ray through the recursion: POV-Ray's trace level, weight (for adc_bailout) and interiors.
+struct RayState {
+    int level = 0;
+    double weight = 1.0;
+    InteriorStack interiors;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread.
@@ -47,16 +69,66 @@ public:
     const std::vector<std::string>& limitations() const { return m_limitations; }
 
 private:
-    /// Colour of the surface at `hit` seen from direction `-view_dir`.
-    Vec3 shade(const geometry::Hit& hit, const Vec3& view_dir, RayCounters& counters) const;
-    /// The light arriving at `p` from `light` unblocked, as colour times attenuation; zero when in shadow.
-    Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, Vec3& to_light,
-                        RayCounters& counters) const;
+    /// Where a texture is being shaded: the surface point, its normals and the ray that found it.
+    struct Surface {
+        const geometry::Hit* hit = nullptr;
+        const parser::Object* object = nullptr;  ///< the primitive hit (its texture applies)
+        Vec3 p_texture;                           ///< the point textures are evaluated at (enclosing space)
+        Vec3 raw_normal;                          ///< unit, turned to face the incoming ray
+        Vec3 direction;                           ///< unit direction of the incoming ray
+        double depth = 0.0;                       ///< distance from the ray's origin
+        const InteriorStack* interiors = nullptr;  ///< the interiors the incoming ray is in
+    };
+
+    /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then fog).
+    Vec3 trace(const geometry::Ray& ray, const RayState& state, bool continued, RayCounters& counters) const;
+    /// The colour of the surface at `hit`, `depth` along the unit `direction`.
+    Vec3 shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
+               RayCounters& counters) const;
+    /// POV-Ray's ComputeOneTextureColour: a texture_map blends the lit colours of its entries.
+    Vec3 shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
+                       const RayState& state, RayCounters& counters) const;
+    /// POV-Ray's ComputeLightedTexture: the layers of a plain texture, then refraction and reflection.
+    Vec3 shade_layers(const parser::Texture& texture, const Surface& s, const std::vector<const parser::Pattern*>& warps,
+                      const RayState& state, RayCounters& counters) const;
+    /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
+    Vec3 direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                      const Vec3& n, RayCounters& counters) const;
+    /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
+    /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON).
+    Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
+                        Vec3& to_light, RayCounters& counters) const;
+    /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
+    /// of every surface it crosses).
+    /// `interiors` are those of the ray that found `p` (POV-Ray starts the shadow ray with them and fades light
+    /// crossing an interior).
+    Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
+                       RayCounters& counters) const;
+    /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
+    Vec3 texture_filter(const parser::Texture& texture, const Vec3& p) const;
+    /// A reflected ray's colour (POV-Ray's ComputeReflection, with its fix-ups for bumped normals).
+    Vec3 reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
+                 RayCounters& counters) const;
+    /// POV-Ray's ComputeIridColour: the thin-film interference factor for light arriving along `to_light` and
+    /// leaving toward the viewer along −`view_dir`.
+    Vec3 iridescence(const parser::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+                     const Vec3& p) const;
+    /// A refracted or transmitted ray's colour; sets `total_internal` when the ray reflects instead.
+    Vec3 refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
+                 bool& total_internal, RayCounters& counters) const;
+    /// POV-Ray's ComputeSky: sky_sphere pigments over the background colour.
+    Vec3 sky(const Vec3& direction) const;
+    /// POV-Ray's constant fog over a ray segment of length `depth`.
+    Vec3 apply_fog(const Vec3& colour, double depth) const;
 
     const parser::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
     IntegratorOptions m_options;
     bool m_ambient_is_light = true;
+    bool m_any_transparent = false;  ///< some object can let light through (filter or transmit somewhere)
+    std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
+    int m_noise_generator = 2;
+    InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them
     std::vector<std::string> m_limitations;
 };
 

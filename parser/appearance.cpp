@@ -30,6 +30,8 @@ Color Parser::parse_color() {
         const Token t = any ? peek_expr() : peek();
         const std::string& w = t.text;
         if (t.kind == TokenKind::Identifier && (w == "color" || w == "colour")) {
+            // A second `color` keyword starts the next colour (old-style colour map entries).
+            if (any) break;
             next();
             continue;
         }
@@ -99,63 +101,11 @@ void Parser::skip_optional_block(const Token& kw) {
     if (is_punct(peek(), "{")) skip_block(kw);
 }
 
-Pigment Parser::parse_pigment_body(const Token& kw) {
-    expect("{");
-    const std::size_t depth = m_brace_depth;
-    Pigment p = m_default_pigment;
-    p.loc = make_diagnostic(Severity::Note, kw, "").loc;
-    expand_macros();
-    if (is_array_element_next()) {
-        const Token at = peek();
-        const Value element = *take_array_element();
-        if (const auto* ep = std::get_if<Pigment>(&element)) p = *ep;
-        else if (const auto* n = std::get_if<Numeric>(&element)) p.color = n->to_color();
-        else fail(at, "this array element is not a pigment or colour");
-    }
-    const Token& first = peek();
-    if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<Pigment>(*v)) {
-            next();
-            p = std::get<Pigment>(*v);
-        }
-    }
-    while (true) {
-        expand_macros();
-        const Token& t = peek();
-        if (is_punct(t, "}")) {
-            next();
-            return p;
-        }
-        if (t.kind == TokenKind::Identifier && !is_color_keyword(t)) {
-            Transform ignored;
-            const Token item = t;
-            if (parse_transform_item(item, ignored)) continue;  // no effect on a solid colour
-            if (item.text == "quick_color" || item.text == "quick_colour") {
-                next();
-                parse_color();
-                continue;
-            }
-            if (is_pattern_keyword(item.text) || is_unsupported_block(item.text)) {
-                warn_unsupported(item, "pigment pattern '" + item.text + "'");
-                // The rest of this pigment describes the pattern: skip it.
-                while (m_brace_depth >= depth) {
-                    if (next().kind == TokenKind::EndOfFile) fail(kw, "pigment block has no closing '}'");
-                }
-                return p;
-            }
-            const Value* v = lookup(item.text);
-            if (v == nullptr && !is_keyword(item.text) && !m_macros.count(item.text)) fail_undeclared(item);
-            if (v != nullptr && !std::holds_alternative<Numeric>(*v))
-                fail(item, "'" + item.text + "' cannot be used in a pigment here");
-        }
-        p.color = parse_color();
-    }
-}
-
 void Parser::parse_finish_item(Finish& f, const Token& item) {
     const std::string& w = item.text;
+    // `albedo` rescales the value when the finish block ends (see parse_finish_body).
     auto scalar_with_albedo = [&]() {
-        accept_keyword("albedo");
+        if (accept_keyword("albedo")) m_finish_albedo |= w == "diffuse" ? 1u : (w == "phong" ? 2u : 4u);
         return parse_float();
     };
     if (w == "ambient") {
@@ -180,23 +130,34 @@ void Parser::parse_finish_item(Finish& f, const Token& item) {
         f.roughness = parse_float();
         if (f.roughness <= 0.0) fail(item, "roughness must be greater than 0");
     } else if (w == "reflection") {
-        warn_unsupported(item, "reflection");
         if (is_punct(peek(), "{")) {
-            skip_block(item);
+            parse_reflection_block(f);
         } else {
-            parse_color();
-            if (accept(",")) parse_color();
+            // Old syntax: one colour for every angle; a second one makes it `reflection { a, b }`.
+            f.reflection_min = f.reflection_max = parse_color();
+            f.reflection_falloff = 1.0;
+            f.reflection_fresnel = false;
+            if (accept(",")) f.reflection_max = parse_color();
         }
+    } else if (w == "reflection_exponent") {
+        f.reflection_exponent = parse_float();
     } else if (w == "metallic") {
-        warn_unsupported(item, "metallic");
-        parse_bool_optional();
+        f.metallic = starts_value(peek()) ? parse_float() : 1.0;
     } else if (w == "conserve_energy") {
-        warn_unsupported(item, "conserve_energy");
-        parse_bool_optional();
-    } else if (w == "crand" || w == "reflection_exponent") {
-        warn_unsupported(item, w);
+        f.conserve_energy = parse_bool_optional();
+    } else if (w == "crand") {
+        warn(item, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
         parse_float();
-    } else if (w == "irid" || w == "subsurface") {
+    } else if (w == "irid") {
+        expect("{");
+        f.irid = parse_float();
+        while (!accept("}")) {
+            const Token t = next();
+            if (is_word(t, "thickness")) f.irid_thickness = parse_float();
+            else if (is_word(t, "turbulence")) f.irid_turbulence = parse_vector().x;
+            else fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
+        }
+    } else if (w == "subsurface") {
         warn_unsupported(item, w);
         skip_block(item);
     } else {
@@ -206,6 +167,7 @@ void Parser::parse_finish_item(Finish& f, const Token& item) {
 
 Finish Parser::parse_finish_body(const Token& kw) {
     expect("{");
+    m_finish_albedo = 0;
     Finish f = m_default_finish;
     f.loc = make_diagnostic(Severity::Note, kw, "").loc;
     expand_macros();
@@ -224,7 +186,17 @@ Finish Parser::parse_finish_body(const Token& kw) {
     }
     while (true) {
         const Token t = next();
-        if (is_punct(t, "}")) return f;
+        if (is_punct(t, "}")) {
+            // POV-Ray's albedo forms: the value given is the albedo; convert it to POV-Ray's coefficient.
+            if (m_finish_albedo & 1u) f.diffuse *= (f.brilliance + 1.0) / 2.0;
+            if (m_finish_albedo & 2u) f.phong *= (f.phong_size + 1.0) / 2.0;
+            if (m_finish_albedo & 4u) {
+                const double r = 1.0 / f.roughness;
+                f.specular *= (r + 2.0) / (4.0 * (2.0 - std::pow(2.0, -r / 2.0)));
+            }
+            m_finish_albedo = 0;
+            return f;
+        }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a finish item but found '" + t.text + "'");
         if (lookup(t.text) != nullptr) fail(t, "'" + t.text + "' must come first in the finish block");
         if (!is_keyword(t.text)) fail_undeclared(t);
@@ -234,8 +206,13 @@ Finish Parser::parse_finish_body(const Token& kw) {
 
 Texture Parser::parse_texture_body(const Token& kw) {
     expect("{");
+    Texture tx = default_texture();
+    parse_texture_items(tx, kw, "}");
+    return tx;
+}
+
+void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
     const std::size_t depth = m_brace_depth;
-    Texture tx{m_default_pigment, m_default_finish};
     expand_macros();
     if (is_array_element_next()) {
         const Token at = peek();
@@ -253,27 +230,174 @@ Texture Parser::parse_texture_body(const Token& kw) {
     while (true) {
         expand_macros();
         const Token t = peek();
-        Transform ignored;
-        if (parse_transform_item(t, ignored)) continue;  // no effect on solid colours
-        next();
-        if (is_punct(t, "}")) return tx;
+        Transform tr;
+        if (parse_transform_item(t, tr)) {
+            transform_texture(tx, tr);
+            continue;
+        }
+        if (is_punct(t, close)) {
+            next();
+            return;
+        }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a texture item but found '" + t.text + "'");
+        // texture_map patterns: `texture { gradient y texture_map { ... } }` or `checker texture {..} texture {..}`.
+        const int count = parse_pattern_keyword(t, tx.map_pattern);
+        if (count >= 0) {
+            tx.texture_map.clear();
+            for (int i = 0; i < count && is_word(peek(), "texture"); ++i) {
+                const Token tkw = next();
+                tx.texture_map.push_back({static_cast<double>(i), parse_texture_body(tkw)});
+                accept(",");
+            }
+            continue;
+        }
+        if (tx.map_pattern.type != Pattern::Type::None && parse_pattern_modifier(t, tx.map_pattern)) continue;
+        next();
         if (t.text == "pigment") {
             tx.pigment = parse_pigment_body(t);
         } else if (t.text == "finish") {
             tx.finish = parse_finish_body(t);
         } else if (t.text == "normal") {
-            warn_unsupported(t, "normal");
-            skip_block(t);
-        } else if (is_pattern_keyword(t.text)) {
-            warn_unsupported(t, "texture pattern '" + t.text + "'");
-            while (m_brace_depth >= depth) {
-                if (next().kind == TokenKind::EndOfFile) fail(kw, "texture block has no closing '}'");
+            tx.normal = parse_normal_body(t);
+        } else if (t.text == "texture_map") {
+            expect("{");
+            tx.texture_map.clear();
+            while (!accept("}")) {
+                const Token open = expect("[");
+                TextureMapEntry e;
+                e.value = static_cast<double>(static_cast<float>(parse_float()));
+                accept(",");
+                e.texture = default_texture();
+                parse_texture_items(e.texture, open, "]");
+                tx.texture_map.push_back(std::move(e));
             }
-            return tx;
+            if (tx.texture_map.empty()) fail(t, "a texture_map must have at least one entry");
+        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text)) {
+            warn_unsupported(t, "texture pattern '" + t.text + "'");
+            skip_to_close(kw, close, depth);
+            return;
         } else {
             if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
             fail(t, "expected pigment, finish, normal or a transform in texture but found '" + t.text + "'");
+        }
+    }
+}
+
+void Parser::parse_reflection_block(Finish& f) {
+    // reflection { [min,] max [fresnel] [falloff F] [exponent E] [metallic M] }
+    const Token kw = expect("{");
+    f.reflection_min = parse_color();
+    f.reflection_max = f.reflection_min;
+    accept(",");
+    const bool two_colours = starts_value(peek());
+    if (two_colours) f.reflection_max = parse_color();
+    while (true) {
+        const Token t = next();
+        if (is_punct(t, "}")) return;
+        if (is_word(t, "fresnel")) {
+            f.reflection_fresnel = parse_bool_optional();
+            // POV-Ray compat: `reflection { r fresnel }` means Fresnel from 0 up to r.
+            if (f.reflection_fresnel && !two_colours) f.reflection_min = Color{};
+        } else if (is_word(t, "falloff")) {
+            f.reflection_falloff = parse_float();
+        } else if (is_word(t, "exponent")) {
+            f.reflection_exponent = parse_float();
+        } else if (is_word(t, "metallic")) {
+            f.reflection_metallic = starts_value(peek()) ? parse_float() : 1.0;
+        } else {
+            fail(t, "expected fresnel, falloff, exponent or metallic in reflection but found " + describe_token(t));
+        }
+    }
+}
+
+Interior Parser::parse_interior_body(const Token& /*kw*/) {
+    expect("{");
+    Interior in;
+    while (true) {
+        expand_macros();
+        const Token t = next();
+        if (is_punct(t, "}")) return in;
+        if (t.kind != TokenKind::Identifier) fail(t, "expected an interior item but found " + describe_token(t));
+        if (t.text == "ior") {
+            in.ior = parse_float();
+        } else if (t.text == "fade_distance") {
+            in.fade_distance = parse_float();
+        } else if (t.text == "fade_power") {
+            in.fade_power = parse_float();
+        } else if (t.text == "fade_color" || t.text == "fade_colour") {
+            in.fade_color = parse_color();
+        } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples") {
+            warn_unsupported(t, "interior " + t.text);
+            parse_float();
+        } else if (t.text == "media") {
+            warn_unsupported(t, "media");
+            skip_block(t);
+        } else {
+            if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
+            fail(t, "expected ior, fade_distance, fade_power or fade_color in interior but found '" + t.text + "'");
+        }
+    }
+}
+
+SkySphere Parser::parse_sky_sphere(const Token& kw) {
+    expect("{");
+    SkySphere sky;
+    expand_macros();
+    if (const Token& first = peek(); first.kind == TokenKind::Identifier && !is_keyword(first.text)) {
+        // A declared sky_sphere: identifiers of this kind are not stored yet (warned where declared).
+        const Value* v = lookup(first.text);
+        if (v == nullptr) fail_undeclared(first);
+        if (!std::holds_alternative<Unsupported>(*v)) fail(first, "'" + first.text + "' is not a sky_sphere");
+        next();
+    }
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        Transform tr;
+        if (parse_transform_item(t, tr)) {
+            sky.transform = sky.transform.then(tr);
+            continue;
+        }
+        next();
+        if (is_punct(t, "}")) break;
+        if (is_word(t, "pigment")) {
+            sky.pigments.push_back(parse_pigment_body(t));
+        } else if (is_word(t, "emission")) {
+            sky.emission = parse_color();
+        } else {
+            fail(t, "expected pigment, emission or a transform in sky_sphere but found " + describe_token(t));
+        }
+    }
+    if (sky.pigments.empty()) warn(kw, "sky_sphere without a pigment");
+    return sky;
+}
+
+Fog Parser::parse_fog(const Token& kw) {
+    expect("{");
+    Fog fog;
+    fog.loc = make_diagnostic(Severity::Note, kw, "").loc;
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        Transform ignored;
+        if (parse_transform_item(t, ignored)) continue;  // only ground fog uses its transform
+        if (starts_value(t)) {
+            fog.color = parse_color();
+            continue;
+        }
+        next();
+        if (is_punct(t, "}")) return fog;
+        if (is_word(t, "distance")) {
+            fog.distance = parse_float();
+        } else if (is_word(t, "fog_type")) {
+            if (static_cast<int>(parse_float()) != 1) warn_unsupported(t, "ground fog (fog_type 2)");
+        } else if (is_word(t, "turbulence") || is_word(t, "fog_offset") || is_word(t, "fog_alt") ||
+                   is_word(t, "turb_depth") || is_word(t, "up") || is_word(t, "octaves") || is_word(t, "omega") ||
+                   is_word(t, "lambda")) {
+            warn_unsupported(t, "fog " + t.text);
+            parse_numeric();
+        } else {
+            fail(t, "expected distance, a colour or fog_type in fog but found " + describe_token(t));
         }
     }
 }

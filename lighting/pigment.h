@@ -1,0 +1,27 @@
+// Pigment evaluation: the colour of a pigment (solid, colour-mapped or pigment-mapped pattern) at a point.
+#pragma once
+
+#include "parser/scene.h"
+#include "parser/vec3.h"
+
+namespace wardray::lighting {
+
+/// The five-component colour of `pigment` at `p` (in the pigment's enclosing space: world space for an object's
+/// pigment). Solid pigments return their colour without evaluating anything.
+inline parser::Color evaluate_pigment(const parser::Pigment& pigment, const Vec3& p, int noise_generator);
+
+/// The pattern path of evaluate_pigment (POV-Ray's Compute_Pigment for patterned pigments).
+parser::Color evaluate_patterned_pigment(const parser::Pigment& pigment, const Vec3& p, int noise_generator);
+
+inline parser::Color evaluate_pigment(const parser::Pigment& pigment, const Vec3& p, int noise_generator) {
+    if (pigment.is_solid()) return pigment.color;
+    return evaluate_patterned_pigment(pigment, p, noise_generator);
+}
+
+/// Linear interpolation of all five components: a + f·(b − a).
+inline parser::Color lerp(const parser::Color& a, const parser::Color& b, double f) {
+    return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b),
+            a.filter + f * (b.filter - a.filter), a.transmit + f * (b.transmit - a.transmit)};
+}
+
+}  // namespace wardray::lighting

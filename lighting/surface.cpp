@@ -1,0 +1,281 @@
+// Surface shading: POV-Ray 3.7's texture evaluation (texture maps, layers, normals, finishes), transparency,
+// refraction through interiors and reflection (trace.cpp's ComputeLightedTexture and friends).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/scene_geometry.h"
+#include "lighting/direct_lighting.h"
+#include "lighting/normal.h"
+#include "lighting/pattern.h"
+#include "lighting/pigment.h"
+
+namespace wardray::lighting {
+
+namespace {
+
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+
+// POV-Ray's greyscale weights.
+double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+double max3(const Vec3& c) { return std::max(c.x, std::max(c.y, c.z)); }
+
+// One layer's reflection, gathered while the layers are shaded and traced afterwards.
+struct LayerReflection {
+    double weight;
+    Vec3 normal;
+    Vec3 reflectivity;
+    double exponent;
+};
+
+// POV-Ray's ComputeReflectivity: the reflected fraction and the reflection ray's weight.
+// Standard: min + (max − min)·(1 − cos θ)^falloff. Fresnel: the unpolarised Fresnel reflectance for the relative
+// index `ior` (Cook & Torrance 1982, eq. 8 form), blending min and max.
+Vec3 reflectivity(const parser::Finish& f, double cos_i, double ior, double& weight) {
+    const Vec3 rmin = f.reflection_min.rgb();
+    const Vec3 rmax = f.reflection_max.rgb();
+    if (!f.reflection_fresnel) {
+        weight *= std::max(max3(rmax), max3(rmin));
+        const double frac = std::fabs(f.reflection_falloff - 1.0) > kEpsilon ? std::pow(1.0 - cos_i, f.reflection_falloff)
+                                                                           : 1.0 - cos_i;
+        if (std::fabs(frac) < kEpsilon) return rmin;
+        if (std::fabs(frac - 1.0) < kEpsilon) return rmax;
+        return rmax * frac + rmin * (1.0 - frac);
+    }
+    Vec3 r = rmax;
+    const double sqx = ior * ior + cos_i * cos_i - 1.0;
+    if (sqx > 0.0) {
+        const double g = std::sqrt(sqx);
+        const double a = (g - cos_i) / (g + cos_i);
+        const double b = (cos_i * (g + cos_i) - 1.0) / (cos_i * (g - cos_i) + 1.0);
+        const double fr = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
+        r = rmax * fr + rmin * (1.0 - fr);
+    }
+    weight *= max3(r);
+    return r;
+}
+
+}  // namespace
+
+Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
+                       RayCounters& counters) const {
+    // The leaf primitive carries the texture (a CSG child's own or the one it inherited).
+    const parser::Object& object = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
+    Surface s;
+    s.hit = &hit;
+    s.object = &object;
+    s.p_texture = hit.position;
+    s.direction = direction;
+    // POV-Ray compat: the normal is turned to face the incoming ray before anything else.
+    s.raw_normal = dot(hit.normal, direction) > 0.0 ? -hit.normal : hit.normal;
+    s.depth = depth;
+    s.interiors = &state.interiors;
+    std::vector<const parser::Pattern*> warps;
+    return shade_texture(object.texture, s, warps, state, counters);
+}
+
+Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
+                               const RayState& state, RayCounters& counters) const {
+    if (texture.texture_map.empty()) return shade_layers(texture, s, warps, state, counters);
+    // texture_map: each entry is lit on its own at the map's warped point, and the colours are blended.
+    const parser::Pattern& pattern = texture.map_pattern;
+    s.p_texture = warp_point(pattern, s.p_texture);
+    const double value = pattern_value(pattern, s.p_texture, m_noise_generator);
+    const auto& map = texture.texture_map;
+    const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+    warps.push_back(&pattern);
+    Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, counters);
+    if (m.prev != m.cur) {
+        const Vec3 other = shade_texture(map[m.prev].texture, s, warps, state, counters);
+        colour = colour * m.fraction + other * (1.0 - m.fraction);
+    }
+    warps.pop_back();
+    return colour;
+}
+
+Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
+                              const std::vector<const parser::Pattern*>& warps, const RayState& state,
+                              RayCounters& counters) const {
+    // POV-Ray lists the top layer first; the texture holds the bottom layer and the layers painted over it.
+    // Fixed-size storage keeps the common single-layer case free of allocations.
+    constexpr std::size_t kMaxLayers = 8;
+    std::array<const parser::Texture*, kMaxLayers> layers{};
+    std::size_t layer_count = 0;
+    for (auto it = texture.layers.rbegin(); it != texture.layers.rend() && layer_count + 1 < kMaxLayers; ++it)
+        layers[layer_count++] = &*it;
+    layers[layer_count++] = &texture;
+
+    const double bailout = m_scene.global.adc_bailout;
+    const std::uint32_t object_id = s.hit->object;
+    const parser::Interior& interior = m_scene.objects[object_id].interior;
+    Vec3 colour;
+    Vec3 filter{1.0, 1.0, 1.0};  // what the layers so far let through
+    double trans = 1.0;
+    Vec3 top_normal = s.raw_normal;
+    std::array<LayerReflection, kMaxLayers> reflections;  // filled before use
+    std::size_t reflection_count = 0;
+    for (std::size_t li = 0; li < layer_count; ++li) {
+        const parser::Texture* layer = layers[li];
+        if (trans <= bailout) break;
+        Vec3 n = s.raw_normal;
+        if (layer->normal.pattern.type != parser::Pattern::Type::None) {
+            for (const parser::Pattern* w : warps) n = warp_normal(*w, n);
+            n = perturb_normal(layer->normal, n, s.p_texture, m_noise_generator);
+            for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = unwarp_normal(**it, n);
+        }
+        if (reflection_count == 0) top_normal = n;
+        const parser::Color pc = evaluate_pigment(layer->pigment, s.p_texture, m_noise_generator);
+        const Vec3 pigment = pc.rgb();
+        const parser::Finish& f = layer->finish;
+
+        LayerReflection r;
+        r.weight = state.weight * trans;
+        r.normal = n;
+        r.exponent = f.reflection_exponent;
+        const double cos_i = -dot(s.direction, n);
+        double ior = 1.0;
+        if (f.reflection_fresnel) {
+            // POV-Ray's ComputeRelativeIOR from the interiors the ray is in.
+            const InteriorStack& in = state.interiors;
+            if (in.size == 0) ior = interior.ior;
+            else if (in.contains(object_id))
+                ior = in.size == 1 ? 1.0 / interior.ior
+                                   : m_scene.objects[in.objects[in.size - 1]].interior.ior / interior.ior;
+            else ior = interior.ior / m_scene.objects[in.objects[in.size - 1]].interior.ior;
+        }
+        r.reflectivity = reflectivity(f, cos_i, ior, r.weight);
+        if (f.reflection_metallic != 0.0) {
+            // Metallic reflection is tinted by the pigment away from grazing angles.
+            const double x = std::fabs(std::acos(std::clamp(cos_i, -1.0, 1.0))) / (std::numbers::pi / 2.0);
+            const double fr = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+            r.reflectivity = r.reflectivity * (Vec3{1.0, 1.0, 1.0} + (pigment - Vec3{1.0, 1.0, 1.0}) *
+                                                                       (f.reflection_metallic * (1.0 - fr)));
+        }
+
+        // POV-Ray 3.7: the layer's own light is scaled by its opacity, 1 − filter − transmit.
+        const double opacity = 1.0 - pc.filter - pc.transmit;
+        Vec3 own = pigment * f.emission.rgb() * opacity;
+        if (m_ambient_is_light) own += pigment * f.ambient.rgb() * m_scene.global.ambient_light.rgb() * opacity;
+        if (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)
+            own += direct_light(f, pigment, opacity, s, n, counters);
+        colour += own * filter;
+
+        filter = filter * (pigment * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});
+        if (f.conserve_energy) {
+            const Vec3& rf = r.reflectivity;
+            filter = filter * Vec3{std::min(1.0, 1.0 - rf.x), std::min(1.0, 1.0 - rf.y), std::min(1.0, 1.0 - rf.z)};
+        }
+        trans = std::min(1.0, std::fabs(grey(filter)));
+        reflections[reflection_count++] = r;
+    }
+
+    // Light from behind the surface: straight through (ior 1) or refracted by the interior.
+    bool total_internal = false;
+    if (trans > bailout) {
+        const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
+        const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, counters);
+        Vec3 fade{1.0, 1.0, 1.0};
+        if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kEpsilon) {
+            // POV-Ray's interior fade over the distance travelled inside: exponential for fade_power ≥ 1000,
+            // else fade_color + (1 − fade_color) / (1 + (d/fade_distance)^fade_power).
+            const Vec3 fc = interior.fade_color.rgb();
+            const Vec3 one{1.0, 1.0, 1.0};
+            if (interior.fade_power >= 1000.0) {
+                const Vec3 k = (one - fc) * (-s.depth / interior.fade_distance);
+                fade = Vec3{std::exp(k.x), std::exp(k.y), std::exp(k.z)};
+            } else {
+                const double att = 1.0 + std::pow(s.depth / interior.fade_distance, interior.fade_power);
+                fade = fc + (one - fc) / att;
+            }
+        }
+        colour += total_internal ? fade * through : fade * through * filter;
+    }
+
+    for (std::size_t i = 0; i < reflection_count; ++i) {
+        const LayerReflection& r = reflections[i];
+        const parser::Finish& finish = layers[i]->finish;
+        // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
+        if (total_internal && length(r.normal - top_normal) <= kEpsilon) continue;
+        if (r.reflectivity == Vec3{}) continue;
+        Vec3 reflected = reflect(s, r.normal, r.weight, finish, state, counters);
+        if (r.exponent != 1.0) {
+            // POV-Ray's reflection `exponent e` raises the reflected colour to 1/e.
+            const double e = 1.0 / r.exponent;
+            reflected = {std::pow(reflected.x, e), std::pow(reflected.y, e), std::pow(reflected.z, e)};
+        }
+        colour += r.reflectivity * reflected;
+    }
+    return colour;
+}
+
+Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
+                         const RayState& state, RayCounters& counters) const {
+    // Mirror direction about the (possibly bumped) normal; POV-Ray bends it back above the true surface.
+    Vec3 d = s.direction - 2.0 * dot(s.direction, n) * n;
+    const double k = dot(d, s.raw_normal);
+    if (k < 0.0) {
+        if (dot(d, n) < 0.0) d = s.direction - 2.0 * dot(s.direction, s.raw_normal) * s.raw_normal;
+        else d += -2.0 * k * s.raw_normal;
+    }
+    RayState next = state;
+    next.weight = weight;
+    const Vec3& p = s.hit->position;
+    const geometry::Ray ray{p, normalize(d), m_geometry.self_intersection_offset(p), 1e30,
+                            geometry::RayKind::Reflection};
+    ++counters.secondary;
+    const Vec3 colour = trace(ray, next, false, counters);
+    if (finish.irid <= 0.0) return colour;
+    return colour * iridescence(finish, ray.direction, s.direction, n, p);
+}
+
+Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
+                         const RayState& state, bool& total_internal, RayCounters& counters) const {
+    total_internal = false;
+    RayState next = state;
+    next.weight = weight;
+    // POV-Ray's interior bookkeeping: entering pushes the object, leaving the innermost pops it; the relative
+    // index is outside over inside (the atmosphere's index is 1).
+    const std::uint32_t id = s.hit->object;
+    const double inner = m_scene.objects[id].interior.ior;
+    InteriorStack& in = next.interiors;
+    auto top_ior = [&]() { return m_scene.objects[in.objects[in.size - 1]].interior.ior; };
+    double ior = 1.0;
+    if (in.size == 0) {
+        in.push(id);
+        ior = 1.0 / inner;
+    } else if (in.objects[in.size - 1] == id) {
+        in.remove(id);
+        ior = in.size == 0 ? inner : inner / top_ior();
+    } else if (in.remove(id)) {
+        ior = 1.0;
+    } else {
+        ior = top_ior() / inner;
+        in.push(id);
+    }
+    const Vec3& p = s.hit->position;
+    const double offset = m_geometry.self_intersection_offset(p);
+    ++counters.secondary;
+    if (std::fabs(ior - 1.0) < kEpsilon) {
+        // POV-Ray compat: light passing straight through continues the same ray (no new trace level).
+        const geometry::Ray ray{p, s.direction, offset, 1e30, geometry::RayKind::Camera};
+        return trace(ray, next, true, counters);
+    }
+    // Snell's law in vector form (Heckbert 1989): t = η·d + (η cos i − sqrt(1 + η²(cos² i − 1)))·n.
+    double cos_n = dot(s.direction, n);
+    Vec3 local = -n;
+    if (cos_n <= 0.0) {
+        local = n;
+        cos_n = -cos_n;
+    }
+    const double t = 1.0 + ior * ior * (cos_n * cos_n - 1.0);
+    if (t < 0.0) {
+        total_internal = true;
+        return reflect(s, n, weight, finish, state, counters);
+    }
+    const Vec3 d = s.direction * ior + local * (ior * cos_n - std::sqrt(t));
+    const geometry::Ray ray{p, normalize(d), offset, 1e30, geometry::RayKind::Camera};
+    return trace(ray, next, false, counters);
+}
+
+}  // namespace wardray::lighting

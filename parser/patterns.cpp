@@ -1,0 +1,450 @@
+// Patterns: pattern keywords and modifiers, colour/pigment/normal maps, and the pigment and normal blocks.
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+using PType = Pattern::Type;
+
+const std::pair<const char*, PType> k_pattern_names[] = {
+    {"checker", PType::Checker},   {"gradient", PType::Gradient}, {"hexagon", PType::Hexagon},
+    {"brick", PType::Brick},       {"bozo", PType::Bozo},         {"spotted", PType::Spotted},
+    {"granite", PType::Granite},   {"marble", PType::Marble},     {"wood", PType::Wood},
+    {"agate", PType::Agate},       {"radial", PType::Radial},     {"onion", PType::Onion},
+    {"leopard", PType::Leopard},   {"ripples", PType::Ripples},   {"waves", PType::Waves},
+    {"wrinkles", PType::Wrinkles}, {"bumps", PType::Bumps},       {"dents", PType::Dents},
+    {"crackle", PType::Crackle},   {"cells", PType::Cells},       {"boxed", PType::Boxed},
+    {"spherical", PType::Spherical}, {"planar", PType::Planar},   {"cylindrical", PType::Cylindrical}};
+
+ColorMapEntry entry(double v, double r, double g, double b) { return {v, Color{r, g, b, 0.0, 0.0}}; }
+
+// POV-Ray compat: map positions are single-precision floats in POV-Ray.
+double map_value(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
+    // POV-Ray 3.7's built-in maps for a pattern pigment without a map of its own.
+    switch (type) {
+        case PType::Bozo:
+            return {entry(0.4, 1, 1, 1), entry(0.4, 0, 1, 0), entry(0.6, 0, 1, 0),
+                    entry(0.6, 0, 0, 1), entry(0.8, 0, 0, 1), entry(0.8, 1, 0, 0)};
+        case PType::Brick:
+            return {entry(0.0, 0.5, 0.5, 0.5), entry(1.0, 0.6, 0.15, 0.15)};
+        case PType::Wood:
+            return {entry(0.6, 0.666, 0.312, 0.2), entry(0.6, 0.4, 0.1333, 0.066)};
+        case PType::Radial:
+            return {entry(0.0, 0, 1, 1), entry(0.333, 1, 1, 0), entry(0.666, 1, 0, 1), entry(1.0, 0, 1, 1)};
+        case PType::Agate:
+            return {entry(0.0, 1, 1, 1),       entry(0.5, 0.95, 0.75, 0.5), entry(0.5, 0.9, 0.7, 0.5),
+                    entry(0.6, 0.9, 0.7, 0.4), entry(0.6, 1.0, 0.7, 0.4),   entry(1.0, 0.6, 0.3, 0.0)};
+        case PType::Marble:
+            return {entry(0.0, 0.9, 0.8, 0.8), entry(0.9, 0.9, 0.08, 0.08), entry(0.9, 0, 0, 0)};
+        case PType::Hexagon:
+            return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0), entry(2.0, 1, 0, 0)};
+        case PType::Checker:
+            // POV-Ray compat: checker takes the first two of hexagon's colours.
+            return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0)};
+        default:
+            return {entry(0.0, 0, 0, 0), entry(1.0, 1, 1, 1)};
+    }
+}
+
+}  // namespace
+
+bool Parser::starts_value(const Token& t) {
+    if (t.kind == TokenKind::Number) return true;
+    if (is_punct(t, "<") || is_punct(t, "(") || is_punct(t, "-") || is_punct(t, "+")) return true;
+    if (t.kind != TokenKind::Identifier) return false;
+    if (is_color_keyword(t)) return true;
+    const Value* v = lookup(t.text);
+    return v != nullptr && std::holds_alternative<Numeric>(*v);
+}
+
+void Parser::skip_to_close(const Token& kw, const char* close, std::size_t depth) {
+    while (true) {
+        const Token& t = peek();
+        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '" + close + "'");
+        const bool ours = m_brace_depth == depth && is_punct(t, close);
+        next();
+        if (ours) return;
+    }
+}
+
+int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
+    if (t.kind != TokenKind::Identifier) return -1;
+    const PType* found = nullptr;
+    for (const auto& [name, type] : k_pattern_names)
+        if (t.text == name) found = &type;
+    if (found == nullptr) return -1;
+    next();
+    const PType previous = pat.type;
+    pat.type = *found;
+    switch (pat.type) {
+        case PType::Gradient:
+            pat.gradient = normalize(parse_vector());
+            break;
+        case PType::Marble:
+        case PType::Wood:
+            pat.wave = WaveType::Triangle;
+            break;
+        case PType::Agate:
+            // POV-Ray compat: agate always carries turbulence parameters (its amount stays 0 unless given).
+            if (!pat.turbulence) pat.turbulence = Turbulence{};
+            pat.agate_turb = 1.0;
+            break;
+        case PType::Crackle:
+            pat.crackle_form = {-1.0, 1.0, 0.0};
+            pat.crackle_metric = 2.0;
+            pat.crackle_offset = 0.0;
+            pat.crackle_solid = false;
+            break;
+        case PType::Checker:
+            pat.frequency = 0.0;
+            return 2;
+        case PType::Hexagon:
+            pat.frequency = 0.0;
+            return 3;
+        case PType::Brick:
+            if (previous != PType::Brick) {
+                pat.brick_size = {8.0, 3.0, 4.5};
+                pat.mortar = 0.5;
+            }
+            pat.frequency = 0.0;
+            return 2;
+        default:
+            break;
+    }
+    return 0;
+}
+
+bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
+    if (t.kind != TokenKind::Identifier) return false;
+    Transform tr;
+    if (parse_transform_item(t, tr)) {
+        pat.transform = pat.transform.then(tr);
+        return true;
+    }
+    const std::string w = t.text;
+    auto turb = [&]() -> Turbulence& {
+        if (!pat.turbulence) pat.turbulence = Turbulence{};
+        return *pat.turbulence;
+    };
+    static const std::pair<const char*, WaveType> waves[] = {
+        {"ramp_wave", WaveType::Ramp},       {"triangle_wave", WaveType::Triangle}, {"sine_wave", WaveType::Sine},
+        {"scallop_wave", WaveType::Scallop}, {"cubic_wave", WaveType::Cubic},       {"poly_wave", WaveType::Poly}};
+    for (const auto& [name, wave] : waves) {
+        if (w != name) continue;
+        next();
+        pat.wave = wave;
+        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = parse_float();
+        return true;
+    }
+    if (w == "turbulence") {
+        next();
+        turb().amount = parse_vector();
+    } else if (w == "octaves") {
+        next();
+        // POV-Ray compat: octaves are clamped to 1..10.
+        turb().octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
+    } else if (w == "omega") {
+        next();
+        turb().omega = parse_float();
+    } else if (w == "lambda") {
+        next();
+        turb().lambda = parse_float();
+    } else if (w == "frequency") {
+        next();
+        pat.frequency = parse_float();
+    } else if (w == "phase") {
+        next();
+        pat.phase = parse_float();
+    } else if (w == "noise_generator") {
+        next();
+        const int g = static_cast<int>(parse_float());
+        if (g < 0 || g > 3) fail(t, "noise_generator must be 0, 1, 2 or 3");
+        pat.noise_generator = g;
+    } else if (w == "agate_turb") {
+        next();
+        pat.agate_turb = parse_float();
+        turb();
+    } else if (w == "brick_size") {
+        next();
+        pat.brick_size = parse_vector();
+    } else if (w == "mortar") {
+        next();
+        pat.mortar = parse_float();
+    } else if (w == "form") {
+        next();
+        pat.crackle_form = parse_vector();
+    } else if (w == "metric") {
+        next();
+        pat.crackle_metric = parse_float();
+    } else if (w == "offset") {
+        next();
+        pat.crackle_offset = parse_float();
+    } else if (w == "solid") {
+        next();
+        pat.crackle_solid = true;
+    } else if (w == "no_bump_scale") {
+        next();
+    } else if (w == "warp") {
+        next();
+        warn_unsupported(t, "warp");
+        skip_block(t);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+std::vector<ColorMapEntry> Parser::parse_color_map(const Token& kw) {
+    expect("{");
+    std::vector<ColorMapEntry> map;
+    while (true) {
+        expand_macros();
+        const Token t = next();
+        if (is_punct(t, "}")) break;
+        if (t.kind == TokenKind::Identifier && map.empty()) {
+            // A declared colour map arrives as a pigment holding only its map.
+            const Value* v = lookup(t.text);
+            if (v == nullptr) fail_undeclared(t);
+            if (const auto* p = std::get_if<Pigment>(v); p && !p->color_map.empty()) {
+                map = p->color_map;
+                expect("}");
+                return map;
+            }
+            if (!std::holds_alternative<Unsupported>(*v)) fail(t, "'" + t.text + "' is not a color_map");
+            skip_to_close(kw, "}", m_brace_depth);
+            return default_color_map(PType::None);
+        }
+        if (!is_punct(t, "[")) fail(t, "expected '[' or '}' in " + kw.text + " but found " + describe_token(t));
+        const double value = parse_float();
+        accept(",");
+        if (is_color_keyword(peek())) {
+            map.push_back({map_value(value), parse_color()});
+        } else {
+            const Token at = peek();
+            const Numeric e = parse_numeric();
+            if (e.n == 1) {
+                // POV-Ray's old form: [from, to colour1 colour2] spans an interval.
+                accept(",");
+                const Color from = parse_color();
+                if (!accept_keyword("color")) accept_keyword("colour");
+                const Color to = parse_color();
+                map.push_back({map_value(value), from});
+                map.push_back({map_value(e.v[0]), to});
+            } else {
+                if (e.n > 5) fail(at, "a colour has at most 5 components");
+                map.push_back({map_value(value), e.to_color()});
+            }
+        }
+        expect("]");
+    }
+    if (map.empty()) fail(kw, "a color_map must have at least one entry");
+    return map;
+}
+
+bool Parser::parse_pigment_start(Pigment& p) {
+    expand_macros();
+    if (is_array_element_next()) {
+        const Token at = peek();
+        const Value element = *take_array_element();
+        if (const auto* ep = std::get_if<Pigment>(&element)) p = *ep;
+        else if (const auto* n = std::get_if<Numeric>(&element)) p.color = n->to_color();
+        else fail(at, "this array element is not a pigment or colour");
+        return true;
+    }
+    const Token& first = peek();
+    if (first.kind == TokenKind::Identifier) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Pigment>(*v)) {
+            next();
+            const SourceLoc loc = p.loc;
+            p = std::get<Pigment>(*v);
+            p.loc = loc;
+            return true;
+        }
+    }
+    return false;
+}
+
+Pigment Parser::parse_pigment_body(const Token& kw) {
+    expect("{");
+    Pigment p = m_default_pigment;
+    p.loc = make_diagnostic(Severity::Note, kw, "").loc;
+    parse_pigment_start(p);
+    parse_pigment_items(p, kw, "}");
+    return p;
+}
+
+void Parser::parse_pigment_list(Pigment& p, int count) {
+    // `checker A, B` / `hexagon A, B, C` / `brick A, B`: colours or pigments at values 0, 1, 2; missing ones
+    // come from the pattern's default map.
+    std::vector<ColorMapEntry> defaults = default_color_map(p.pattern.type);
+    p.color_map.clear();
+    p.pigment_map.clear();
+    if (is_word(peek(), "pigment")) {
+        for (int i = 0; i < count && is_word(peek(), "pigment"); ++i) {
+            const Token kw = next();
+            p.pigment_map.push_back({static_cast<double>(i), parse_pigment_body(kw)});
+            accept(",");
+        }
+        for (int i = static_cast<int>(p.pigment_map.size()); i < count; ++i) {
+            Pigment fill = m_default_pigment;
+            p.pigment_map.push_back({static_cast<double>(i), fill});
+        }
+        return;
+    }
+    for (int i = 0; i < count && starts_value(peek()); ++i) {
+        p.color_map.push_back({static_cast<double>(i), parse_color()});
+        accept(",");
+    }
+    for (int i = static_cast<int>(p.color_map.size()); i < count; ++i) p.color_map.push_back(defaults[i]);
+}
+
+void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close) {
+    const std::size_t depth = m_brace_depth;
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        if (is_punct(t, close)) {
+            next();
+            break;
+        }
+        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '" + close + "'");
+        if (t.kind == TokenKind::Identifier && !is_color_keyword(t)) {
+            const int count = parse_pattern_keyword(t, p.pattern);
+            if (count > 0) parse_pigment_list(p, count);
+            if (count >= 0 || parse_pattern_modifier(t, p.pattern)) continue;
+            if (t.text == "color_map" || t.text == "colour_map") {
+                next();
+                p.color_map = parse_color_map(t);
+                p.pigment_map.clear();
+                continue;
+            }
+            if (t.text == "pigment_map") {
+                next();
+                p.pigment_map = parse_pigment_map(t);
+                p.color_map.clear();
+                continue;
+            }
+            if (t.text == "quick_color" || t.text == "quick_colour") {
+                next();
+                parse_color();
+                continue;
+            }
+            if (is_pattern_keyword(t.text) || is_unsupported_block(t.text)) {
+                warn_unsupported(t, "pigment pattern '" + t.text + "'");
+                // The rest of this pigment describes the pattern: skip it and keep the solid colour.
+                p.pattern = Pattern{};
+                p.color_map.clear();
+                p.pigment_map.clear();
+                skip_to_close(kw, close, depth);
+                return;
+            }
+            const Value* v = lookup(t.text);
+            if (v == nullptr && !is_keyword(t.text) && !m_macros.count(t.text)) fail_undeclared(t);
+            if (v != nullptr && !std::holds_alternative<Numeric>(*v))
+                fail(t, "'" + t.text + "' cannot be used in a pigment here");
+        }
+        p.color = parse_color();
+        p.pattern.type = PType::None;
+    }
+    if (!p.is_solid() && p.color_map.empty() && p.pigment_map.empty()) p.color_map = default_color_map(p.pattern.type);
+}
+
+std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {
+    expect("{");
+    std::vector<PigmentMapEntry> map;
+    while (true) {
+        expand_macros();
+        const Token t = next();
+        if (is_punct(t, "}")) break;
+        if (!is_punct(t, "[")) fail(t, "expected '[' or '}' in pigment_map but found " + describe_token(t));
+        PigmentMapEntry e;
+        e.value = map_value(parse_float());
+        accept(",");
+        e.pigment = m_default_pigment;
+        e.pigment.loc = make_diagnostic(Severity::Note, t, "").loc;
+        parse_pigment_start(e.pigment);
+        parse_pigment_items(e.pigment, kw, "]");
+        map.push_back(std::move(e));
+    }
+    if (map.empty()) fail(kw, "a pigment_map must have at least one entry");
+    return map;
+}
+
+Normal Parser::parse_normal_body(const Token& kw) {
+    expect("{");
+    Normal n;
+    n.loc = make_diagnostic(Severity::Note, kw, "").loc;
+    expand_macros();
+    const Token& first = peek();
+    if (first.kind == TokenKind::Identifier) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Unsupported>(*v)) {
+            // A declared normal: identifiers of this kind are not stored yet (warned where declared).
+            skip_to_close(kw, "}", m_brace_depth);
+            return n;
+        }
+    }
+    parse_normal_items(n, kw, "}");
+    return n;
+}
+
+void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
+    const std::size_t depth = m_brace_depth;
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        if (is_punct(t, close)) {
+            next();
+            return;
+        }
+        if (t.kind != TokenKind::Identifier) fail(t, "expected a normal item but found " + describe_token(t));
+        const int count = parse_pattern_keyword(t, n.pattern);
+        if (count >= 0) {
+            for (int i = 0; i < count && is_word(peek(), "normal"); ++i) {
+                const Token nkw = next();
+                n.normal_map.push_back({static_cast<double>(i), parse_normal_body(nkw)});
+                accept(",");
+            }
+            // POV-Ray compat: an optional bump amount follows the pattern.
+            accept(",");
+            if (starts_value(peek())) n.amount = parse_float();
+            continue;
+        }
+        if (parse_pattern_modifier(t, n.pattern)) continue;
+        next();
+        if (t.text == "bump_size") {
+            n.amount = parse_float();
+        } else if (t.text == "accuracy") {
+            n.delta = parse_float();
+        } else if (t.text == "normal_map") {
+            expect("{");
+            n.normal_map.clear();
+            while (!accept("}")) {
+                const Token open = expect("[");
+                NormalMapEntry e;
+                e.value = map_value(parse_float());
+                accept(",");
+                parse_normal_items(e.normal, open, "]");
+                n.normal_map.push_back(std::move(e));
+            }
+        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text) || t.text == "bump_map" ||
+                   t.text == "slope_map") {
+            warn_unsupported(t, "normal pattern '" + t.text + "'");
+            n = Normal{};
+            skip_to_close(kw, close, depth);
+            return;
+        } else {
+            if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
+            fail(t, "expected a normal pattern or modifier but found '" + t.text + "'");
+        }
+    }
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,179 @@
+// Textures against POV-Ray 3.7: noise and pattern values printed by POV-Ray itself (f_noise3d, eval_pigment),
+// map lookup rules, texture transforms, and reflection/transparency against analytic answers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/scene_geometry.h"
+#include "lighting/direct_lighting.h"
+#include "lighting/noise.h"
+#include "lighting/pattern.h"
+#include "lighting/pigment.h"
+#include "parser/parse.h"
+
+namespace wardray::lighting {
+namespace {
+
+parser::Scene parse(const std::string& text) {
+    parser::ParseOptions options;
+    const parser::ParseResult r =
+        parser::parse_string("global_settings { assumed_gamma 1 }\n" + text, "test.pov", options);
+    EXPECT_TRUE(r.ok());
+    for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
+    return r.scene.value_or(parser::Scene{});
+}
+
+// A pigment mapping the raw pattern value onto grey levels 0..1.
+parser::Pigment grey_ramp(parser::Pattern::Type type) {
+    parser::Pigment p;
+    p.pattern.type = type;
+    p.color_map = {{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}};
+    return p;
+}
+
+TEST(Noise, MatchesPovRaysNoiseFunction) {
+    // POV-Ray 3.7.0.10: #debug str(f_noise3d(x, y, z), 0, 12), noise_generator 2 (the default).
+    struct Sample {
+        Vec3 p;
+        double expected;
+    };
+    const Sample samples[] = {{{0.3, 0.7, 1.1}, 0.689585217264},   {{-2.25, 5.5, 0.125}, 0.408067910158},
+                              {{10.5, -3.75, 7.2}, 0.669307813391}, {{0.01, 0.02, 0.03}, 0.307115252171},
+                              {{123.4, -56.7, 8.9}, 0.320953256784}, {{-0.5, -0.5, -0.5}, 0.560727982465}};
+    for (const Sample& s : samples) EXPECT_NEAR(noise(s.p, 2), s.expected, 1e-11) << s.p.x;
+}
+
+TEST(Patterns, MatchPovRaysEvalPigment) {
+    // POV-Ray 3.7.0.10: eval_pigment(pigment { P color_map { [0 rgb 0] [1 rgb 1] } }, point).red (float colours).
+    using T = parser::Pattern::Type;
+    const Vec3 points[] = {{0.3, 0.7, 1.1}, {-2.25, 5.5, 0.125}, {10.5, -3.75, 7.2}, {-0.5, -0.5, -0.5}};
+    struct Row {
+        T type;
+        double expected[4];
+    };
+    const Row rows[] = {
+        {T::Granite, {0.244587064, 0.374362886, 0.693381965, 0.275481880}},
+        {T::Crackle, {0.124382854, 0.051822271, 0.070177607, 0.572031081}},
+        {T::Wrinkles, {0.696829081, 0.336533368, 0.650689900, 0.659337223}},
+        {T::Cells, {0.992742598, 0.502220988, 0.834779084, 0.206389710}},
+        {T::Marble, {0.536339879, 0.407481164, 0.841214001, 0.817570210}},
+        {T::Waves, {0.602790296, 0.399426669, 0.608640313, 0.737113416}},
+    };
+    for (const Row& row : rows) {
+        parser::Pigment pig = grey_ramp(row.type);
+        if (row.type == T::Marble) {
+            pig.pattern.wave = parser::WaveType::Triangle;
+            pig.pattern.turbulence = parser::Turbulence{{0.7, 0.7, 0.7}};
+        }
+        for (int i = 0; i < 4; ++i)
+            EXPECT_NEAR(evaluate_pigment(pig, points[i], 2).r, row.expected[i], 2e-6)
+                << static_cast<int>(row.type) << " at point " << i;
+    }
+}
+
+TEST(Patterns, MapLookupFollowsPovRaysRules) {
+    parser::Pigment p = grey_ramp(parser::Pattern::Type::Gradient);
+    p.color_map = {{0.2, {1, 0, 0}}, {0.5, {0, 1, 0}}, {0.5, {0, 0, 1}}, {0.8, {1, 1, 1}}};
+    // Below the first entry: the first colour; above the last: the last; a repeated value is a sharp edge.
+    EXPECT_DOUBLE_EQ(evaluate_pigment(p, {0.1, 0, 0}, 2).r, 1.0);
+    EXPECT_DOUBLE_EQ(evaluate_pigment(p, {0.9, 0, 0}, 2).g, 1.0);
+    EXPECT_NEAR(evaluate_pigment(p, {0.35, 0, 0}, 2).r, 0.5, 1e-6);
+    EXPECT_NEAR(evaluate_pigment(p, {0.35, 0, 0}, 2).g, 0.5, 1e-6);
+    EXPECT_NEAR(evaluate_pigment(p, {0.65, 0, 0}, 2).b, 1.0, 1e-6);
+    EXPECT_NEAR(evaluate_pigment(p, {0.65, 0, 0}, 2).r, 0.5, 1e-6);
+}
+
+TEST(Patterns, WaveTypesShapeTheValue) {
+    parser::Pattern pat;
+    pat.type = parser::Pattern::Type::Gradient;
+    pat.wave = parser::WaveType::Triangle;
+    EXPECT_NEAR(pattern_value(pat, {0.25, 0, 0}, 2), 0.5, 1e-12);
+    EXPECT_NEAR(pattern_value(pat, {0.75, 0, 0}, 2), 0.5, 1e-12);
+    pat.wave = parser::WaveType::Sine;
+    EXPECT_NEAR(pattern_value(pat, {0.25, 0, 0}, 2), 1.0, 1e-12);
+    pat.wave = parser::WaveType::Poly;
+    pat.exponent = 2.0;
+    EXPECT_NEAR(pattern_value(pat, {0.5, 0, 0}, 2), 0.25, 1e-12);
+    pat.wave = parser::WaveType::Ramp;
+    pat.frequency = 2.0;
+    pat.phase = 0.1;
+    EXPECT_NEAR(pattern_value(pat, {0.3, 0, 0}, 2), std::fmod(0.7, 1.00001), 1e-12);
+}
+
+TEST(Textures, ObjectTransformsAfterTheTextureMoveIt) {
+    const parser::Scene scene = parse(
+        "sphere { 0, 1 pigment { checker rgb 1, rgb 0 scale 0.5 } translate <0.5, 0, 0> }\n"
+        "sphere { 0, 1 translate <0.5, 0, 0> pigment { checker rgb 1, rgb 0 scale 0.5 } }\n");
+    ASSERT_EQ(scene.objects.size(), 2u);
+    // The first pigment moved with the sphere by half a checker; the second did not.
+    const Vec3 p{0.1, 0.1, 0.1};
+    EXPECT_DOUBLE_EQ(evaluate_pigment(scene.objects[0].texture.pigment, p, 2).r, 0.0);
+    EXPECT_DOUBLE_EQ(evaluate_pigment(scene.objects[1].texture.pigment, p, 2).r, 1.0);
+}
+
+TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
+    const parser::Scene scene = parse(
+        "plane { y, 0 pigment { gradient x color_map { [0, 0.5 color rgb 0 color rgb 1] [0.5 rgb <1, 0, 0>] } } }\n"
+        "plane { y, 0 pigment { bozo pigment_map { [0.3 rgb 1] [0.7 checker rgb 0, rgb 1] } turbulence 0.5 } }\n"
+        "plane { y, 0 pigment { marble } normal { bumps 0.4 scale 0.2 } finish { reflection { 0.1, 0.9 fresnel } } }\n");
+    ASSERT_EQ(scene.objects.size(), 3u);
+    const auto& map = scene.objects[0].texture.pigment.color_map;
+    ASSERT_EQ(map.size(), 3u);
+    EXPECT_DOUBLE_EQ(map[1].value, 0.5);
+    EXPECT_DOUBLE_EQ(map[1].color.g, 1.0);
+    const parser::Pigment& bozo = scene.objects[1].texture.pigment;
+    ASSERT_EQ(bozo.pigment_map.size(), 2u);
+    EXPECT_EQ(bozo.pigment_map[1].pigment.pattern.type, parser::Pattern::Type::Checker);
+    ASSERT_TRUE(bozo.pattern.turbulence.has_value());
+    const parser::Texture& t = scene.objects[2].texture;
+    EXPECT_EQ(t.pigment.pattern.wave, parser::WaveType::Triangle);
+    EXPECT_EQ(t.pigment.color_map.size(), 3u);  // marble's default map
+    EXPECT_EQ(t.normal.pattern.type, parser::Pattern::Type::Bumps);
+    EXPECT_DOUBLE_EQ(t.normal.amount, 0.4);
+    EXPECT_TRUE(t.finish.reflection_fresnel);
+}
+
+// A camera ray straight down onto a plane at y = 0 with the given texture, over a background colour.
+Vec3 look_down(const std::string& object, const std::string& extra = "") {
+    const parser::Scene scene = parse("background { rgb <0.2, 0.4, 0.6> }\n" + extra + object);
+    EXPECT_FALSE(scene.objects.empty());
+    const geometry::SceneGeometry geometry(scene);
+    const Integrator integrator(scene, geometry, {});
+    RayCounters counters;
+    return integrator.trace_camera_ray({{0.3, 1.0, 0.3}, {0, -1, 0}}, counters);
+}
+
+TEST(Transparency, TransmitShowsWhatIsBehind) {
+    // Fully transmitting, no light of its own: the background shows through unchanged.
+    const Vec3 c = look_down("plane { y, 0 pigment { rgbt <1, 0, 0, 1> } finish { ambient 0 diffuse 0 } }\n");
+    EXPECT_NEAR(c.x, 0.2, 1e-12);
+    EXPECT_NEAR(c.z, 0.6, 1e-12);
+    // Filter tints it by the pigment: rgb·filter.
+    const Vec3 f = look_down("plane { y, 0 pigment { rgbf <1, 0.5, 0, 1> } finish { ambient 0 diffuse 0 } }\n");
+    EXPECT_NEAR(f.x, 0.2, 1e-12);
+    EXPECT_NEAR(f.y, 0.2, 1e-12);
+    EXPECT_NEAR(f.z, 0.0, 1e-12);
+}
+
+TEST(Reflection, MirrorReflectsTheBackgroundByItsReflectivity) {
+    const Vec3 c = look_down("plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 0.5 } }\n");
+    EXPECT_NEAR(c.y, 0.2, 1e-12);
+    // Fresnel at normal incidence for ior 1.5: ((1.5 − 1)/(1.5 + 1))² = 0.04 of the maximum.
+    const Vec3 f = look_down(
+        "plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection { 1 fresnel } }"
+        " interior { ior 1.5 } }\n");
+    EXPECT_NEAR(f.z, 0.6 * 0.04, 1e-9);
+}
+
+TEST(Reflection, MaxTraceLevelStopsTheRecursion) {
+    // A black half-mirror floor under a glowing half-mirror ceiling: each level adds the ceiling's glow, halved
+    // per bounce, until max_trace_level ends the recursion.
+    const std::string mirrors =
+        "plane { y, 0 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 0.5 } }\n"
+        "plane { y, 2 pigment { rgb 1 } finish { ambient 0 emission 1 diffuse 0 reflection 0.5 } }\n";
+    EXPECT_NEAR(look_down(mirrors, "global_settings { max_trace_level 3 }\n").x, 0.5, 1e-12);
+    EXPECT_NEAR(look_down(mirrors, "global_settings { max_trace_level 5 }\n").x, 0.625, 1e-12);
+}
+
+}  // namespace
+}  // namespace wardray::lighting
