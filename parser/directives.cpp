@@ -84,7 +84,8 @@ void Parser::process_directive() {
         m_version = parse_float();
         if (is_punct(peek_expr(), ";")) next();
     } else if (name == "debug" || name == "render" || name == "statistics") {
-        parse_string();
+        const std::string message = parse_string();
+        if (m_options.debug_output) m_options.debug_output(message);
     } else if (name == "warning") {
         const std::string message = parse_string();
         warn(tok, message);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,9 @@ struct ParseOptions {
     int image_height = 240;
     double clock = 0.0;
     std::size_t max_errors = 20;
+    /// Receives the text of #debug (and #render, #statistics) as POV-Ray prints it on its console; null
+    /// discards it.
+    std::function<void(const std::string&)> debug_output;
 
     /// Folders besides the scene's own folder and `library_paths` that #fopen may read from.
     std::vector<std::filesystem::path> read_paths;

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
 #include "parser/parse.h"
@@ -204,6 +205,17 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     parse_options.declares = options.declares;
     parse_options.image_width = options.width;
     parse_options.image_height = options.height;
+    parse_options.read_paths = options.read_paths;
+    parse_options.write_paths = options.write_paths;
+    if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
+    if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;
+    if (options.max_macro_depth) parse_options.max_macro_depth = *options.max_macro_depth;
+    if (options.max_include_depth) parse_options.max_include_depth = *options.max_include_depth;
+    if (options.max_array_size) parse_options.max_array_elements = *options.max_array_size;
+    if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
+    const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing
+    parse_options.query = &object_query;
+    parse_options.debug_output = [](const std::string& text) { std::cerr << text << std::flush; };
     auto phase_start = Clock::now();
     parser::ParseResult parse = parser::parse_file(options.scene, parse_options);
     const double parse_seconds = seconds_since(phase_start);

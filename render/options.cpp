@@ -159,6 +159,24 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
         else if (v == "reference") o.gi = lighting::GiMode::Reference;
         else if (v == "off") o.gi = lighting::GiMode::Off;
         else return UsageError{"--gi must be cache, reference or off"};
+    } else if (name == "--read-path" || name == "--write-path") {
+        const auto v = value();
+        if (!v || v->empty()) return UsageError{name + " needs a folder"};
+        (name == "--read-path" ? o.read_paths : o.write_paths).emplace_back(*v);
+    } else if (name == "--allow-file-writes") {
+        o.allow_file_writes = true;
+    } else if (auto* limit = name == "--max-loop-iterations" ? &o.max_loop_iterations
+                             : name == "--max-macro-depth"   ? &o.max_macro_depth
+                             : name == "--max-include-depth" ? &o.max_include_depth
+                             : name == "--max-array-size"    ? &o.max_array_size
+                             : name == "--max-string-length" ? &o.max_string_length
+                                                             : nullptr) {
+        const auto v = value();
+        std::uint64_t n = 0;
+        const char* end = v ? v->data() + v->size() : nullptr;
+        if (!v || v->empty() || std::from_chars(v->data(), end, n).ptr != end || n == 0)
+            return UsageError{name + " needs a positive whole number"};
+        *limit = n;
     } else if (name == "--stats") {
         const auto v = value();
         if (!v || v->empty()) return UsageError{"--stats needs a file name"};
@@ -222,6 +240,9 @@ std::string usage_text() {
            "  --check           parse and describe the scene, render nothing\n"
            "  --gi=cache|reference|off  how indirect light is computed\n"
            "  --stats file.json write timings and ray counts\n"
+           "  --read-path DIR, --write-path DIR, --allow-file-writes   where #fopen may read and write\n"
+           "  --max-loop-iterations N, --max-macro-depth N, --max-include-depth N,\n"
+           "  --max-array-size N, --max-string-length N   raise the parser's guard rails\n"
            "  --help, --version\n"
            "With no scene, renders the bundled default scene.\n";
 }

@@ -1,6 +1,7 @@
 // Options: the command line, in POV-Ray's switch syntax plus wardray's long options.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -31,6 +32,16 @@ struct Options {
     std::vector<std::pair<std::string, double>> declares;
     std::vector<std::filesystem::path> library_paths;
     std::optional<std::filesystem::path> stats;
+    /// #fopen may also read from these folders (--read-path) and write into these (--write-path).
+    std::vector<std::filesystem::path> read_paths;
+    std::vector<std::filesystem::path> write_paths;
+    bool allow_file_writes = false;  ///< --allow-file-writes: #write really writes (inside the permitted folders)
+    // Parser guard rails; empty keeps the parser's defaults.
+    std::optional<std::uint64_t> max_loop_iterations;
+    std::optional<std::uint64_t> max_macro_depth;
+    std::optional<std::uint64_t> max_include_depth;
+    std::optional<std::uint64_t> max_array_size;
+    std::optional<std::uint64_t> max_string_length;
     bool check_only = false;
     bool verbose = false;
     bool show_help = false;

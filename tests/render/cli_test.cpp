@@ -162,6 +162,34 @@ TEST(Cli, SameImageForAnyThreadCount) {
     EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
 }
 
+TEST(Cli, ParseTimeGeometryQueriesAndDebugOutputMatchPovRay) {
+    // POV-Ray 3.7 prints: P=1.0000,4.0000,6.0000 N=0.0000,1.0000,0.0000 in=1 lo=-1.000,0.000,2.000 ...
+    const fs::path dir = work_dir("queries");
+    write_file(dir / "q.pov", R"(#declare S = sphere { <1, 2, 3>, 2 scale <1, 1, 2> }
+#declare N = <0, 0, 0>;
+#declare P = trace(S, <1, 10, 6>, <0, -1, 0>, N);
+#debug concat("P=", vstr(3, P, ",", 0, 4), " N=", vstr(3, N, ",", 0, 4), " in=", str(inside(S, <1, 2, 6>), 0, 0),
+              " lo=", vstr(3, min_extent(S), ",", 0, 3), " hi=", vstr(3, max_extent(S), ",", 0, 3), "
+")
+)");
+    const auto r = wardray("q.pov --check", dir);
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    EXPECT_NE(r.output.find("P=1.0000,4.0000,6.0000 N=0.0000,1.0000,0.0000 in=1 lo=-1.000,0.000,2.000 "
+                            "hi=3.000,4.000,10.000"),
+              std::string::npos)
+        << r.output;
+}
+
+TEST(Cli, GuardRailSwitchesRaiseTheParserLimits) {
+    const fs::path dir = work_dir("limits");
+    write_file(dir / "loop.pov", "#declare I = 0;\n#while (I < 50)\n  #declare I = I + 1;\n#end\n");
+    const auto tight = wardray("loop.pov --check --max-loop-iterations 10", dir);
+    EXPECT_EQ(tight.exit_status, 1) << tight.output;
+    EXPECT_NE(tight.output.find("--max-loop-iterations"), std::string::npos) << tight.output;
+    EXPECT_EQ(wardray("loop.pov --check --max-loop-iterations 100", dir).exit_status, 0);
+    EXPECT_EQ(wardray("loop.pov --check --max-loop-iterations 0", dir).exit_status, 2);
+}
+
 TEST(Cli, DiffReportsMetricsAndWritesADifferenceImage) {
     const fs::path dir = work_dir("diff");
     write_file(dir / "small.pov", kSmallScene);
