@@ -27,21 +27,15 @@ void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, 
         parser::Object obj = make_object(make(rng), rng.transform());
         const auto inst = ShapeInstance::create(obj, 3);
         ASSERT_TRUE(inst.has_value()) << "trial " << trial;
-        const auto& b = inst->world_bounds();
-        const double scale = b ? std::fmax(b->magnitude(), max_abs_component(b->upper - b->lower)) : 10.0;
-        const Vec3 target = obj.transform.point(rng.vec(-0.8, 0.8));
-        const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
-        const Vec3 dir = (target - origin) * rng.uniform(0.1, 10.0);
-        const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+        const double scale = test::object_scale(*inst);
+        const test::AimedRay ray = test::aim_random_ray(rng, obj, 0.8);
+        const SurfaceHits hits = inst->intersect_all(ray.origin, ray.direction, 0.0, 1e30);
         for (std::size_t i = 0; i < hits.size(); ++i) {
             const SurfaceHit& h = hits[i];
-            const Vec3 p = origin + h.t * dir;
-            ASSERT_TRUE(std::isfinite(h.t));
-            ASSERT_NEAR(length(h.normal), 1.0, 1e-12);
+            const Vec3 p = ray.origin + h.t * ray.direction;
+            SCOPED_TRACE("trial " + std::to_string(trial));
+            test::expect_valid_crossing(*inst, hits, i, ray, surface_tolerance);
             EXPECT_EQ(h.leaf, &obj);
-            EXPECT_NEAR(inst->object_implicit(p), 0.0, surface_tolerance * scale) << "trial " << trial;
-            EXPECT_EQ(h.entering, dot(h.normal, dir) < 0.0);
-            if (i > 0) EXPECT_GE(h.t, hits[i - 1].t);
             if (solid) {
                 const double eps = 1e-6 * scale;
                 // Points near edges and rims may leave the solid sideways: count, do not fail on each.

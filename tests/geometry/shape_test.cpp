@@ -12,12 +12,6 @@ namespace {
 using test::make_object;
 using test::Random;
 
-// Size of an object for relative tolerances: its bounds' magnitude, or 10 for planes.
-double object_scale(const ShapeInstance& inst) {
-    if (const auto& b = inst.world_bounds()) return std::fmax(b->magnitude(), max_abs_component(b->upper - b->lower));
-    return 10.0;
-}
-
 // Checks every crossing of random rays against one random object: on the surface, unit outward normal,
 // entering flags that match the normal and the inside test.
 void check_random_hits(bool inverse, int shape_kind_seed) {
@@ -28,31 +22,21 @@ void check_random_hits(bool inverse, int shape_kind_seed) {
         obj.inverse = inverse;
         const auto inst = ShapeInstance::create(obj, 7);
         ASSERT_TRUE(inst.has_value());
-        const double scale = object_scale(*inst);
-        // Aim at a point near the object's centre from a random place around it.
-        const Vec3 target = obj.transform.point(rng.vec(-1.0, 1.0));
-        const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
-        const Vec3 dir = (target - origin) * rng.uniform(0.1, 10.0);
-        const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+        const double scale = test::object_scale(*inst);
+        const test::AimedRay ray = test::aim_random_ray(rng, obj, 1.0);
+        const SurfaceHits hits = inst->intersect_all(ray.origin, ray.direction, 0.0, 1e30);
         for (std::size_t i = 0; i < hits.size(); ++i) {
             const SurfaceHit& h = hits[i];
-            const Vec3 p = origin + h.t * dir;
-            ASSERT_TRUE(std::isfinite(h.t));
-            ASSERT_NEAR(length(h.normal), 1.0, 1e-12);
-            // On the surface: the object-space implicit function vanishes relative to the object's scale.
-            EXPECT_NEAR(inst->object_implicit(p), 0.0, 1e-10 * scale);
+            const Vec3 p = ray.origin + h.t * ray.direction;
+            test::expect_valid_crossing(*inst, hits, i, ray, 1e-10);
             // Outward (after inverse): a small step along the normal is outside, against it inside.
             const double eps = 1e-6 * scale;
             EXPECT_FALSE(inst->inside(p + eps * h.normal)) << "trial " << trial;
             EXPECT_TRUE(inst->inside(p - eps * h.normal)) << "trial " << trial;
-            EXPECT_EQ(h.entering, dot(h.normal, dir) < 0.0);
-            if (i > 0) {
-                EXPECT_GE(h.t, hits[i - 1].t);
-            }
             ++checked;
         }
         // The nearest hit agrees with the first crossing.
-        const auto nearest = inst->nearest(origin, dir, 0.0, 1e30);
+        const auto nearest = inst->nearest(ray.origin, ray.direction, 0.0, 1e30);
         ASSERT_EQ(nearest.has_value(), !hits.empty());
         if (nearest) {
             EXPECT_EQ(nearest->t, hits[0].t);

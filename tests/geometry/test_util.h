@@ -1,9 +1,13 @@
 // Helpers shared by the geometry tests: seeded random transforms, rays and scenes.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cmath>
 #include <cstdint>
 #include <random>
 
+#include "geometry/instance.h"
 #include "parser/scene.h"
 
 namespace wardray::geometry::test {
@@ -50,6 +54,40 @@ inline parser::Shape random_shape(Random& rng, bool allow_plane) {
     if (kind == 0) return parser::Sphere{rng.vec(-1.0, 1.0), rng.uniform(0.2, 1.5)};
     if (kind == 1) return parser::Box{rng.vec(-1.5, 1.5), rng.vec(-1.5, 1.5)};
     return parser::Plane{rng.vec(-2.0, 2.0), rng.uniform(-3.0, 3.0)};
+}
+
+/// Size of an object for relative tolerances: its bounds' magnitude, or 10 for unbounded objects.
+inline double object_scale(const ShapeInstance& inst) {
+    if (const auto& b = inst.world_bounds()) return std::fmax(b->magnitude(), max_abs_component(b->upper - b->lower));
+    return 10.0;
+}
+
+/// A random ray aimed at a point near the object's centre (drawn within ±spread in object space) from a random
+/// place 0.5 to 20 units away, with a direction of random length.
+struct AimedRay {
+    Vec3 origin;
+    Vec3 direction;
+};
+inline AimedRay aim_random_ray(Random& rng, const parser::Object& obj, double spread) {
+    const Vec3 target = obj.transform.point(rng.vec(-spread, spread));
+    const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
+    return {origin, (target - origin) * rng.uniform(0.1, 10.0)};
+}
+
+/// What crossing i of `hits` along `ray` must satisfy for any shape: a finite t not below the previous one, a
+/// unit normal, a point on the surface (implicit function within tolerance × the object's scale) and an
+/// entering flag that agrees with the normal.
+inline void expect_valid_crossing(const ShapeInstance& inst, const SurfaceHits& hits, std::size_t i,
+                                  const AimedRay& ray, double surface_tolerance) {
+    const SurfaceHit& h = hits[i];
+    ASSERT_TRUE(std::isfinite(h.t));
+    ASSERT_NEAR(length(h.normal), 1.0, 1e-12);
+    EXPECT_NEAR(inst.object_implicit(ray.origin + h.t * ray.direction), 0.0,
+                surface_tolerance * object_scale(inst));
+    EXPECT_EQ(h.entering, dot(h.normal, ray.direction) < 0.0);
+    if (i > 0) {
+        EXPECT_GE(h.t, hits[i - 1].t);
+    }
 }
 
 }  // namespace wardray::geometry::test
