@@ -97,7 +97,7 @@ Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::v
 Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
                               const std::vector<const parser::Pattern*>& warps, const RayState& state,
                               RayCounters& counters) const {
-    // POV-Ray lists the top layer first; the texture holds the bottom layer and the layers painted over it.
+    // POV-Ray's last listed texture is the top layer; the texture holds the bottom layer and the layers over it.
     // Fixed-size storage keeps the common single-layer case free of allocations.
     constexpr std::size_t kMaxLayers = 8;
     std::array<const parser::Texture*, kMaxLayers> layers{};

@@ -37,6 +37,8 @@ Color Parser::parse_color() {
         }
         if (t.kind == TokenKind::Identifier && (w.rfind("rgb", 0) == 0 || w.rfind("srgb", 0) == 0) &&
             is_color_keyword(t)) {
+            // POV-Ray compat: so does a second rgb/rgbt/... keyword (`checker rgb A rgb B` lists two colours).
+            if (any) break;
             next();
             const bool srgb = w[0] == 's';
             const std::string form = srgb ? w.substr(1) : w;

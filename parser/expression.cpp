@@ -82,13 +82,16 @@ Value Parser::parse_rvalue() {
         if (w == "pigment") return parse_pigment_body(next());
         if (w == "finish") return parse_finish_body(next());
         if (w == "texture") {
-            const Texture tx = parse_texture_body(next());
-            while (is_word(peek_expr(), "texture")) {
-                const Token layer = next();
-                warn_unsupported(layer, "layered texture");
-                parse_texture_body(layer);
-            }
+            Texture tx = parse_texture_body(next());
+            // POV-Ray compat: further textures in one declaration are layers painted over the first.
+            while (is_word(peek_expr(), "texture")) tx.layers.push_back(parse_texture_body(next()));
             return tx;
+        }
+        if (w == "color_map" || w == "colour_map") {
+            // A declared colour map is kept as a pigment holding only that map; parse_color_map reads it back.
+            Pigment p;
+            p.color_map = parse_color_map(next());
+            return p;
         }
         if (w == "transform") return parse_transform_body(next());
         if (w == "camera") return parse_camera_body(next());

@@ -148,6 +148,31 @@ TEST(Color, ColorForms) {
     expect_color(eval_background("srgb <0.5, 0, 1>"), half, 0, 1, 0, 0);
 }
 
+TEST(Color, ASecondRgbKeywordStartsTheNextColourOfAList) {
+    // POV-Ray compat: `checker rgbt A rgbt B` (no comma) lists two colours, as with the comma.
+    for (const char* list : {"rgbt <0, 1, 0, 0.5> rgb <1, 0, 0>", "rgbt <0, 1, 0, 0.5>, rgb <1, 0, 0>"}) {
+        const Scene s = parse_ok(std::string("sphere { 0, 1 pigment { checker ") + list + " } }");
+        ASSERT_EQ(s.objects.size(), 1u);
+        const auto& map = s.objects[0].texture.pigment.color_map;
+        ASSERT_EQ(map.size(), 2u) << list;
+        expect_color(map[0].color, 0, 1, 0, 0, 0.5);
+        expect_color(map[1].color, 1, 0, 0, 0, 0);
+    }
+}
+
+TEST(Color, DeclaredColorMapsAndLayeredTexturesAreKept) {
+    const Scene s = parse_ok(
+        "#declare CM = color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }\n"
+        "#declare T = texture { pigment { gradient x color_map { CM } } } texture { pigment { rgbt 1 } }\n"
+        "sphere { 0, 1 texture { T } }");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Texture& t = s.objects[0].texture;
+    ASSERT_EQ(t.pigment.color_map.size(), 2u);
+    expect_color(t.pigment.color_map[1].color, 0, 0, 1, 0, 0);
+    ASSERT_EQ(t.layers.size(), 1u);
+    expect_color(t.layers[0].pigment.color, 1, 1, 1, 0, 1);
+}
+
 TEST(Color, IdentifiersCarryFiveComponents) {
     const std::string prelude = "#declare C = color rgbt <1, 0, 0, 0.5>;\n#declare D = C * 0.5;\n";
     expect_color(eval_background("color C", prelude), 1, 0, 0, 0, 0.5);
