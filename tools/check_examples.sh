@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Report: the share of POV-Ray's example scenes that `wardray --check` parses without error, and the top errors.
+# Report: the share of POV-Ray's example scenes that `wardray --check` parses without error, and the top errors;
+# then render coverage: the share that parse with no "... is not rendered yet" warning, and what blocks the rest.
 # Set CHECK_LIST=1 to also print every failing scene with its first error.
 set -u
 usage() { echo "usage: $0 WARDRAY_BINARY [EXAMPLES_DIR] [TIMEOUT_SECONDS]" >&2; exit 2; }
@@ -11,14 +12,15 @@ limit=${3:-20}
 results=$(mktemp)
 trap 'rm -f "$results"' EXIT
 
-# One line per scene: "ok<TAB>path" or "fail<TAB>path<TAB>first error line".
+# One line per scene: "ok<TAB>path<TAB>features not rendered (;-separated)" or "fail<TAB>path<TAB>first error line".
 while IFS= read -r -d '' scene; do
     dir=$(dirname "$scene")
-    err=$(cd "$dir" && timeout "$limit" "$bin" --check "$(basename "$scene")" 2>&1 > /dev/null; echo "status=$?")
+    err=$(cd "$dir" && timeout "$limit" "$bin" --check "$(basename "$scene")" 2>&1; echo "status=$?")
     status=${err##*status=}
     err=${err%status=*}
     if [ $status -eq 0 ]; then
-        printf 'ok\t%s\n' "$scene" >> "$results"
+        missing=$(printf '%s\n' "$err" | grep -o "[^:]* is not rendered yet" | sed 's/ is not rendered yet//; s/^ *//' | sort -u | paste -sd ';')
+        printf 'ok\t%s\t%s\n' "$scene" "$missing" >> "$results"
     else
         first=$(printf '%s\n' "$err" | grep -m1 ': error: ')
         [ $status -eq 124 ] && first="error: timed out after ${limit} s"
@@ -41,8 +43,9 @@ def normalise(line):
     msg = re.sub(r"\b\d+(\.\d+)?\b", "N", msg)
     return msg.strip()
 
-ok = total = 0
+ok = total = rendered = 0
 counts = collections.Counter()
+blockers = collections.Counter()
 examples = {}
 with open(sys.argv[1], encoding="utf-8", errors="replace") as f:
     for row in f:
@@ -50,6 +53,9 @@ with open(sys.argv[1], encoding="utf-8", errors="replace") as f:
         total += 1
         if parts[0] == "ok":
             ok += 1
+            features = [f for f in (parts[2] if len(parts) > 2 else "").split(";") if f]
+            rendered += not features
+            blockers.update(features)
             continue
         key = normalise(parts[2] if len(parts) > 2 else "")
         counts[key] += 1
@@ -65,4 +71,9 @@ if os.environ.get("CHECK_LIST") == "1":
 print("most frequent first errors:")
 for msg, n in counts.most_common(10):
     print(f"  {n:4d}  {msg}   (e.g. {examples[msg]})")
+pct = 100.0 * rendered / total if total else 0.0
+print(f"example scenes with no 'not rendered yet' warning: {rendered} of {total} ({pct:.1f} %)")
+print("what blocks the rest (scenes per feature, most frequent first):")
+for feature, n in blockers.most_common(15):
+    print(f"  {n:4d}  {feature}")
 PY
