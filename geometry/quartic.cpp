@@ -67,12 +67,9 @@ Vec3 QuarticShape::gradient(const Vec3& p) const {
 
 SurfaceHits QuarticShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
     SurfaceHits hits;
-    const double len = length(ray.direction);
-    if (!(len > 0.0) || !std::isfinite(len)) return hits;
-    const Vec3 u = ray.direction / len;
-    // Measure s from the point of the line nearest the object's origin, in units of length.
-    const double s0 = -dot(ray.origin, u);
-    const Vec3 o = ray.origin + s0 * u;
+    const auto line = centre_line(ray);
+    if (!line) return hits;
+    const auto& [u, o, s0, len] = *line;
     double px[5][5], py[5][5], pz[5][5];
     linear_powers(o.x, u.x, px);
     linear_powers(o.y, u.y, py);

@@ -22,6 +22,25 @@ struct LocalRay {
     Vec3 direction;
 };
 
+/// A ray's line seen from its point nearest the object-space origin, so polynomial coefficients take the shape's
+/// scale rather than the ray origin's: unit direction `u`, that point `o` (o·u = 0), the distance `s0` from the
+/// ray's origin to it along u, and the direction's `length`; a distance s from `o` is t = (s0 + s) / length.
+struct CentredLine {
+    Vec3 u;
+    Vec3 o;
+    double s0 = 0.0;
+    double length = 0.0;
+};
+
+/// Nothing for a zero, infinite or NaN direction.
+inline std::optional<CentredLine> centre_line(const LocalRay& ray) {
+    const double len = wardray::length(ray.direction);
+    if (!(len > 0.0) || !std::isfinite(len)) return std::nullopt;
+    const Vec3 u = ray.direction / len;
+    const double s0 = -dot(ray.origin, u);
+    return CentredLine{u, ray.origin + s0 * u, s0, len};
+}
+
 /// One place where a ray crosses a shape's surface.
 struct SurfaceHit {
     double t = 0.0;

@@ -17,12 +17,9 @@ std::optional<TorusShape> TorusShape::create(const parser::Torus& t) {
 
 SurfaceHits TorusShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
     SurfaceHits hits;
-    const double len = length(ray.direction);
-    if (!(len > 0.0) || !std::isfinite(len)) return hits;
-    const Vec3 u = ray.direction / len;
-    // Shift to the point of the line nearest the centre: the coefficients then have the torus's scale.
-    const double s0 = -dot(ray.origin, u);
-    const Vec3 o = ray.origin + s0 * u;
+    const auto line = centre_line(ray);
+    if (!line) return hits;
+    const auto& [u, o, s0, len] = *line;
     const double outer = m_major + m_minor;
     const double h2 = outer * outer - dot(o, o);
     if (h2 < 0.0) return hits;
