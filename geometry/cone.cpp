@@ -83,7 +83,9 @@ SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t
             found[n++] = {t, normal, dot(normal, d) < 0.0};
         }
     }
-    std::sort(found, found + n, [](const SurfaceHit& x, const SurfaceHit& y) { return x.t < y.t; });
+    // At most four crossings: an insertion sort (std::sort here trips GCC 12's -Warray-bounds false positive).
+    for (int i = 1; i < n; ++i)
+        for (int j = i; j > 0 && found[j].t < found[j - 1].t; --j) std::swap(found[j], found[j - 1]);
     SurfaceHits hits;
     for (int i = 0; i < n; ++i) hits.push(found[i]);
     return hits;
