@@ -294,20 +294,15 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
         stats["non_finite_pixels"] = result.non_finite_pixels;
         stats["supersampled_pixels"] = result.supersampled_pixels;
         stats["cache"] = nullptr;  // the irradiance cache reports here once it exists
-        const fs::path tmp = options.stats->string() + ".part";
-        {
+        const auto error = write_atomically(*options.stats, [&](const fs::path& tmp) -> std::optional<std::string> {
             std::ofstream f(tmp);
             f << stats.dump(2) << "\n";
-            if (!f) {
-                std::cerr << "wardray: error: cannot write statistics to '" << options.stats->string() << "'\n";
-                fs::remove(tmp, ec);
-                return kExitScene;
-            }
-        }
-        fs::rename(tmp, *options.stats, ec);
-        if (ec) {
-            std::cerr << "wardray: error: cannot write statistics to '" << options.stats->string()
-                      << "': " << ec.message() << "\n";
+            f.close();
+            if (!f) return std::string("write failed");
+            return std::nullopt;
+        });
+        if (error) {
+            std::cerr << "wardray: error: statistics: " << *error << "\n";
             return kExitScene;
         }
     }

@@ -134,20 +134,15 @@ void remove_partial_output_on_signal() {
     for (int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, remove_partial_and_exit);
 }
 
-std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format) {
+std::optional<std::string> write_atomically(
+    const std::filesystem::path& path,
+    const std::function<std::optional<std::string>(const std::filesystem::path& temporary)>& write) {
     const std::filesystem::path tmp = temporary_name(path);
     const PartialFileGuard guard(tmp);
-    std::optional<std::string> write_error;
-    switch (format) {
-        case ImageFormat::Png: write_error = write_png(film, tmp); break;
-        case ImageFormat::Exr: write_error = write_exr(film, tmp); break;
-        case ImageFormat::Hdr: write_error = write_hdr(film, tmp); break;
-    }
-    const bool ok = !write_error.has_value();
     std::error_code ec;
-    if (!ok) {
+    if (const auto error = write(tmp)) {
         std::filesystem::remove(tmp, ec);
-        return "cannot write '" + path.string() + "': " + *write_error;
+        return "cannot write '" + path.string() + "': " + *error;
     }
     std::filesystem::rename(tmp, path, ec);
     if (ec) {
@@ -155,6 +150,17 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
         return "cannot write '" + path.string() + "': " + ec.message();
     }
     return std::nullopt;
+}
+
+std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format) {
+    return write_atomically(path, [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
+        switch (format) {
+            case ImageFormat::Png: return write_png(film, tmp);
+            case ImageFormat::Exr: return write_exr(film, tmp);
+            case ImageFormat::Hdr: return write_hdr(film, tmp);
+        }
+        return std::string("unknown image format");
+    });
 }
 
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error) {

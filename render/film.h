@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,13 @@ private:
     int m_height = 0;
     std::vector<float> m_rgb;
 };
+
+/// Writes a file the way every output of wardray is written: `write` fills a temporary file beside `path`
+/// (returning an error message or nothing), which is renamed over `path` only when complete and removed
+/// otherwise, also when a signal interrupts the run (see remove_partial_output_on_signal).
+std::optional<std::string> write_atomically(
+    const std::filesystem::path& path,
+    const std::function<std::optional<std::string>(const std::filesystem::path& temporary)>& write);
 
 /// Writes `film` to `path` in `format`: first under a temporary name in the same folder, renamed over `path`
 /// only when complete, so a failed write never leaves a partial image. Returns an error message or nothing.
