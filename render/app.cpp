@@ -108,16 +108,22 @@ void describe_scene(const parser::Scene& scene, std::ostream& out) {
         << (scene.camera.type == parser::Camera::Type::Orthographic ? "orthographic" : "perspective")
         << " at " << vec_text(scene.camera.location) << " looking along " << vec_text(scene.camera.direction)
         << "\n";
+    // "objects: 3 (box 1, sphere 2)": a total, then the count of each kind in name order.
+    auto counts = [&out](const char* label, std::size_t total, const std::map<std::string, int>& by_kind) {
+        out << label << ": " << total;
+        const char* separator = " (";
+        for (const auto& [name, n] : by_kind) {
+            out << separator << name << ' ' << n;
+            separator = ", ";
+        }
+        out << (by_kind.empty() ? "" : ")") << "\n";
+    };
     std::map<std::string, int> objects;
     for (const parser::Object& o : scene.objects) ++objects[shape_name(o.shape)];
-    out << "objects: " << scene.objects.size();
-    for (const auto& [name, n] : objects) out << (name == objects.begin()->first ? " (" : ", ") << name << ' ' << n;
-    out << (objects.empty() ? "" : ")") << "\n";
+    counts("objects", scene.objects.size(), objects);
     std::map<std::string, int> lights;
     for (const parser::Light& l : scene.lights) ++lights[light_name(l.type)];
-    out << "lights: " << scene.lights.size();
-    for (const auto& [name, n] : lights) out << (name == lights.begin()->first ? " (" : ", ") << name << ' ' << n;
-    out << (lights.empty() ? "" : ")") << "\n";
+    counts("lights", scene.lights.size(), lights);
     out << "radiosity: " << (scene.global.radiosity ? "on" : "off") << "\n";
     out << "warnings: " << scene.warnings.size() << "\n";
     for (const parser::Diagnostic& w : scene.warnings) out << "  " << w.loc.path << ':' << w.loc.line << ':'
