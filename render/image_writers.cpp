@@ -74,34 +74,45 @@ unsigned char encode_srgb8(float v) {
     return static_cast<unsigned char>(std::floor(srgb_encode(clipped) * 255.0 + 0.5));
 }
 
-std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path) {
-    File file(std::fopen(path.c_str(), "wb"));
-    if (!file) return std::string("cannot open for writing");
+namespace {
+
+// The libpng calls, in a function of their own: libpng reports errors by longjmp, so only plain locals may
+// live across its setjmp (the caller owns the file and the row buffer). Returns false on a libpng error.
+bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
         png_destroy_write_struct(&png, nullptr);
-        return std::string("libpng could not start");
+        return false;
     }
-    std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * 3);
-    // libpng reports errors by longjmp; nothing with a destructor is created between here and the end.
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        return std::string("libpng failed while writing");
+        return false;
     }
-    png_init_io(png, file.get());
+    png_init_io(png, file);
     png_set_IHDR(png, info, film.width(), film.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
-    const std::vector<float>& data = film.data();
+    const float* data = film.data().data();
+    const std::size_t row_size = static_cast<std::size_t>(film.width()) * 3;
     for (int y = 0; y < film.height(); ++y) {
-        const float* src = &data[static_cast<std::size_t>(y) * film.width() * 3];
-        for (std::size_t i = 0; i < row.size(); ++i) row[i] = encode_srgb8(src[i]);
-        png_write_row(png, row.data());
+        const float* src = data + static_cast<std::size_t>(y) * row_size;
+        for (std::size_t i = 0; i < row_size; ++i) row[i] = encode_srgb8(src[i]);
+        png_write_row(png, row);
     }
     png_write_end(png, info);
     png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+}  // namespace
+
+std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path) {
+    File file(std::fopen(path.c_str(), "wb"));
+    if (!file) return std::string("cannot open for writing");
+    std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * 3);
+    if (!write_png_rows(file.get(), film, row.data())) return std::string("libpng failed while writing");
     if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return std::string("write failed");
     return std::nullopt;
 }
