@@ -15,13 +15,18 @@ double largest_error_bound(const parser::RadiositySettings& settings) {
 
 }  // namespace
 
+TileCache::TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {
+    for (int d = 0; d < cache.depth_count(); ++d) m_own.emplace_back(cache.reach(d));
+}
+
 Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) {
     const LookupParams clamped = m_cache->clamp_params(depth, params);
     InterpolationAccumulator acc(p, n, clamped);
     m_cache->accumulate(acc, p, depth);
-    // This tile's own records of the same depth, in the order they were made.
-    for (const IrradianceRecord& r : m_records) {
-        if (r.depth == depth) acc.add(r);
+    // Then this tile's own records of the same depth.
+    if (depth >= 0 && depth < static_cast<int>(m_own.size())) {
+        const RecordOctree& own = m_own[static_cast<std::size_t>(depth)];
+        own.visit(p, [&](std::uint32_t i) { acc.add(own.records()[i]); });
     }
     const Interpolation out = acc.result();
     ++m_lookups;
@@ -33,10 +38,18 @@ void TileCache::add(IrradianceRecord record) {
     if (record.depth < 0 || record.depth >= m_cache->depth_count()) return;
     record.pass = m_pass;
     m_cache->clamp_new_record(record);
-    for (IrradianceRecord& own : m_records) {
-        if (own.depth == record.depth) neighbour_clamp(own, record);
+    // Křivánek et al. 2006 against this tile's own records, both ways (see IrradianceCache::clamp_mutual).
+    RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
+    own.for_each_within(record.position, record.radius, [&](std::uint32_t i) {
+        record.radius = std::min(record.radius, own.records()[i].radius + length(own.records()[i].position - record.position));
+    });
+    std::vector<std::uint32_t> candidates;
+    own.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
+    for (const std::uint32_t i : candidates) {
+        IrradianceRecord& other = own.record(i);
+        other.radius = std::min(other.radius, record.radius + length(other.position - record.position));
     }
-    m_records.push_back(record);
+    m_order.emplace_back(record.depth, own.insert(record));
 }
 
 IrradianceCache::IrradianceCache(const parser::RadiositySettings& settings)
@@ -61,21 +74,36 @@ int IrradianceCache::begin_pass(int tile_count) {
 
 TileCache& IrradianceCache::tile(int index) { return *m_tiles.at(static_cast<std::size_t>(index)); }
 
-void IrradianceCache::end_pass() {
-    if (!m_in_pass) return;
+void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
+    if (!m_in_pass) throw std::logic_error("IrradianceCache::merge_tiles outside a pass");
     // Every pass gets its row of statistics, even one that made no records.
     const auto rows = static_cast<std::size_t>(m_pass) + 1;
     if (m_records_per_pass.size() < rows) m_records_per_pass.resize(rows, std::vector<std::uint64_t>(m_octrees.size()));
-    // Tile order, never thread-completion order: the merged cache is the same for any thread count.
-    for (const std::unique_ptr<TileCache>& t : m_tiles) {
-        for (IrradianceRecord record : t->m_records) {
+    // The order given, never thread-completion order: the merged cache is the same for any thread count.
+    for (const int i : tiles) {
+        if (i < 0 || i >= static_cast<int>(m_tiles.size())) continue;
+        TileCache& t = *m_tiles[static_cast<std::size_t>(i)];
+        for (const auto& [depth, index] : t.m_order) {
+            IrradianceRecord record = t.m_own[static_cast<std::size_t>(depth)].records()[index];
             clamp_mutual(record);
             m_octrees[static_cast<std::size_t>(record.depth)].insert(record);
             count_record(record);
         }
-        m_lookups += t->m_lookups;
-        m_hits += t->m_hits;
+        m_lookups += t.m_lookups;
+        m_hits += t.m_hits;
+        // The tile starts afresh: what it made is now part of the frozen cache.
+        t.m_order.clear();
+        for (RecordOctree& own : t.m_own) own = RecordOctree(own.reach());
+        t.m_lookups = 0;
+        t.m_hits = 0;
     }
+}
+
+void IrradianceCache::end_pass() {
+    if (!m_in_pass) return;
+    std::vector<int> all(m_tiles.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    merge_tiles(all);
     m_tiles.clear();
     m_in_pass = false;
     ++m_pass;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cache/interpolation.h"
@@ -45,16 +46,19 @@ public:
     /// is dropped), clamping its radius against its neighbours (Křivánek et al. 2006): against the frozen cache
     /// only the new record shrinks, against this tile's own records both may.
     void add(IrradianceRecord record);
-    /// This tile's records in the order they were added.
-    const std::vector<IrradianceRecord>& records() const { return m_records; }
+    /// How many records this tile has made in the pass.
+    std::size_t record_count() const { return m_order.size(); }
 
 private:
     friend class IrradianceCache;
-    TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {}
+    TileCache(const IrradianceCache& cache, int pass);
 
     const IrradianceCache* m_cache;
     int m_pass;
-    std::vector<IrradianceRecord> m_records;
+    /// This tile's records by depth, filed like the cache's so that lookups stay logarithmic.
+    std::vector<RecordOctree> m_own;
+    /// (depth, index) of each record in the order it was made: the order end_pass() merges them in.
+    std::vector<std::pair<int, std::uint32_t>> m_order;
     std::uint64_t m_lookups = 0;
     std::uint64_t m_hits = 0;
 };
@@ -62,8 +66,9 @@ private:
 /// The irradiance cache (Ward, Rubinstein & Clear 1988) with a deterministic fill: the cache is frozen during a
 /// pass, each tile collects its new records in its TileCache, and end_pass() merges them in tile order.
 ///
-/// Use: begin_pass(tiles); every tile t (any thread, any order) calls tile(t).lookup / tile(t).add;
-/// end_pass(). Outside a pass, lookup() reads the cache from any number of threads.
+/// Use: begin_pass(tiles); every tile t (any thread, any order) calls tile(t).lookup / tile(t).add, optionally in
+/// waves with merge_tiles() between them; end_pass(). Outside a pass, lookup() reads the cache from any number
+/// of threads.
 class IrradianceCache {
 public:
     /// One depth per `recursion_limit` bounce; octrees filed for the largest error bound lookup_params() can give.
@@ -79,6 +84,10 @@ public:
     int begin_pass(int tile_count);
     /// The view of tile `index` in the open pass (thread-safe: each tile has its own).
     TileCache& tile(int index);
+    /// Merges the records of `tiles`, in that order, into the frozen cache, where every tile then sees them; call
+    /// only while no tile of the pass is being worked on. A pass done in waves of tiles, merged after each wave,
+    /// shares records much sooner and stays the same for any thread count.
+    void merge_tiles(const std::vector<int>& tiles);
     /// Merges the tiles' records in tile order (neighbour clamping against all earlier records) and closes the pass.
     void end_pass();
     bool in_pass() const { return m_in_pass; }

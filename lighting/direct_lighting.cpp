@@ -87,8 +87,7 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
     // `#version 3.6` (or older) still gets it.
     m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
     m_noise_generator = scene.global.noise_generator;
-    if (scene.global.radiosity && options.gi != GiMode::Off)
-        m_limitations.push_back("radiosity is not computed yet: the image has direct light only");
+    m_gi_enabled = scene.global.radiosity.has_value() && options.gi != GiMode::Off;
     for (const parser::Light& light : scene.lights) {
         if (light.type == parser::Light::Type::Cylinder) {
             m_limitations.push_back("cylinder light sources are not rendered yet");
@@ -122,16 +121,20 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
     }
 }
 
-Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, RayCounters& counters) const {
-    ++counters.camera;
+Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
+    ++ctx.rays.camera;
     RayState state;
+    state.adc_bailout = m_scene.global.adc_bailout;
+    state.max_level = m_scene.global.max_trace_level;
     state.interiors = m_camera_interiors;
-    return trace(ray, state, false, counters);
+    return trace(ray, state, false, ctx);
 }
 
-Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool continued, RayCounters& counters) const {
+Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool continued, TraceContext& ctx,
+                       double* hit_distance) const {
+    if (hit_distance) *hit_distance = INFINITY;
     // POV-Ray compat: a ray beyond max_trace_level, or weighing less than adc_bailout, is black.
-    if (in.level >= m_scene.global.max_trace_level || in.weight < m_scene.global.adc_bailout) return {};
+    if (in.level >= in.max_level || in.weight < in.adc_bailout) return {};
     RayState state = in;
     if (!continued) ++state.level;
     const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
@@ -141,7 +144,8 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     double depth = INFINITY;
     if (hit) {
         depth = hit->t * scale;
-        colour = shade(*hit, direction, depth, state, counters);
+        if (hit_distance) *hit_distance = depth;
+        colour = shade(*hit, direction, depth, state, ctx);
     } else {
         colour = sky(direction);
     }
@@ -198,7 +202,7 @@ Vec3 Integrator::texture_filter(const parser::Texture& texture, const Vec3& p) c
 }
 
 Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                               RayCounters& counters) const {
+                               TraceContext& ctx) const {
     // POV-Ray walks the shadow ray through every surface it crosses, multiplying their filter colours and the
     // fade of the interiors it leaves.
     Vec3 filter{1.0, 1.0, 1.0};
@@ -206,7 +210,7 @@ Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, 
     double t0 = m_geometry.self_intersection_offset(p);
     const double t1 = distance - t0;
     for (int crossing = 0; crossing < 64 && t0 < t1; ++crossing) {
-        ++counters.shadow;
+        ++ctx.rays.shadow;
         const geometry::Ray ray{p, dir, t0, t1, geometry::RayKind::Shadow};
         const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
         if (!hit) break;
@@ -236,7 +240,7 @@ Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, 
 }
 
 Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n,
-                                const InteriorStack& interiors, Vec3& to_light, RayCounters& counters) const {
+                                const InteriorStack& interiors, Vec3& to_light, TraceContext& ctx) const {
     using Type = parser::Light::Type;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
@@ -273,12 +277,12 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
     Vec3 filter{1.0, 1.0, 1.0};
     if (!light.shadowless) {
         if (m_any_transparent) {
-            filter = shadow_filter(p, to_light, distance, interiors, counters);
+            filter = shadow_filter(p, to_light, distance, interiors, ctx);
             if (filter == Vec3{}) return {};
         } else {
             const double offset = m_geometry.self_intersection_offset(p);
             geometry::Ray shadow{p, to_light, offset, distance - offset, geometry::RayKind::Shadow};
-            ++counters.shadow;
+            ++ctx.rays.shadow;
             if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
         }
     }
@@ -286,7 +290,7 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
 }
 
 Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
-                              const Vec3& n, RayCounters& counters) const {
+                              const Vec3& n, TraceContext& ctx) const {
     Vec3 colour;
     const Vec3& view_dir = s.direction;
     const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
@@ -298,7 +302,7 @@ Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment,
     };
     for (const parser::Light& light : m_scene.lights) {
         Vec3 to_light;
-        const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, to_light, counters);
+        const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, to_light, ctx);
         if (arriving == Vec3{}) continue;
         const double cos_i = dot(n, to_light);
         Vec3 light_colour;  // this light's diffuse and highlights
@@ -307,8 +311,8 @@ Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment,
             const double shape = finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
             light_colour += pigment * arriving * (finish.diffuse * opacity * shape);
         }
-        // POV-Ray compat: shadowless (fill) lights cause no highlights.
-        if (light.shadowless) {
+        // POV-Ray compat: shadowless (fill) lights cause no highlights, nor does any light on a gather ray's path.
+        if (light.shadowless || !s.highlights) {
             if (finish.irid > 0.0)
                 light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
             colour += light_colour;

@@ -16,6 +16,10 @@ struct Ray;
 struct Hit;
 }  // namespace wardray::geometry
 
+namespace wardray::cache {
+class TileCache;
+}  // namespace wardray::cache
+
 namespace wardray::lighting {
 
 /// How indirect light is computed (`--gi`).
@@ -26,17 +30,33 @@ struct RayCounters {
     std::uint64_t camera = 0;
     std::uint64_t shadow = 0;
     std::uint64_t secondary = 0;  ///< reflected, refracted and transmitted rays
+    std::uint64_t gather = 0;     ///< hemisphere rays for indirect light (cache gathers and reference paths)
+    std::uint64_t gathers = 0;    ///< hemisphere gathers made (new cache records, or reference estimates)
 
     RayCounters& operator+=(const RayCounters& o) {
         camera += o.camera;
         shadow += o.shadow;
         secondary += o.secondary;
+        gather += o.gather;
+        gathers += o.gathers;
         return *this;
     }
 };
 
 struct IntegratorOptions {
     GiMode gi = GiMode::Off;
+    int reference_rays = 256;  ///< --gi-rays: paths per pixel in reference mode
+    bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
+    /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
+    /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
+    double footprint = 0.0;
+};
+
+/// What one worker carries through the ray recursion of one tile: its counters and its view of the cache.
+struct TraceContext {
+    RayCounters rays;
+    cache::TileCache* cache = nullptr;  ///< the tile's view of the irradiance cache (cache mode only)
+    bool final_pass = true;             ///< false in POV-Ray's pretrace passes
 };
 
 /// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), by object index.
@@ -53,7 +73,12 @@ struct InteriorStack {
 /// What travels with a ray through the recursion: POV-Ray's trace level, weight (for adc_bailout) and interiors.
 struct RayState {
     int level = 0;
+    int max_level = 5;    ///< POV-Ray's max_trace_level, raised for gathers so they always see one surface
     double weight = 1.0;
+    double adc_bailout = 0.0;  ///< POV-Ray's ticket bailout: the scene's, or radiosity's inside a gather
+    int gi_depth = 0;          ///< radiosity bounce depth: 0 for camera paths, +1 per gather
+    bool gather_ray = false;   ///< on a gather ray's path: highlights are left out (POV-Ray compat)
+    std::uint64_t path_seed = 0;  ///< reference mode: tells the independent paths of one pixel apart
     InteriorStack interiors;
 };
 
@@ -63,7 +88,10 @@ public:
     Integrator(const parser::Scene& scene, const geometry::SceneGeometry& geometry, IntegratorOptions options);
 
     /// Linear RGB radiance arriving along a camera ray (the background where it hits nothing).
-    Vec3 trace_camera_ray(const geometry::Ray& ray, RayCounters& counters) const;
+    Vec3 trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const;
+
+    /// True when indirect light goes through an irradiance cache that the renderer must fill in passes.
+    bool uses_cache() const { return m_gi_enabled && m_options.gi == GiMode::Cache; }
 
     /// Warnings about what this integrator leaves out of the picture (reported once per render).
     const std::vector<std::string>& limitations() const { return m_limitations; }
@@ -78,44 +106,59 @@ private:
         Vec3 direction;                           ///< unit direction of the incoming ray
         double depth = 0.0;                       ///< distance from the ray's origin
         const InteriorStack* interiors = nullptr;  ///< the interiors the incoming ray is in
+        bool highlights = true;  ///< POV-Ray compat: false on gather rays' paths (no phong or specular)
     };
 
-    /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then fog).
-    Vec3 trace(const geometry::Ray& ray, const RayState& state, bool continued, RayCounters& counters) const;
+    /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then fog);
+    /// `hit_distance`, when given, receives the distance to the surface hit (+infinity for none).
+    Vec3 trace(const geometry::Ray& ray, const RayState& state, bool continued, TraceContext& ctx,
+               double* hit_distance = nullptr) const;
+    /// POV-Ray's ComputeAmbient: the indirect irradiance at the surface for the normal `n_layer` (used when the
+    /// radiosity block says `normal on`), times brightness and mixed toward grey by gray_threshold.
+    Vec3 indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,
+                  TraceContext& ctx) const;
+    /// Cache mode: interpolate from the tile's cache view, or gather a new record when too few are valid.
+    Vec3 cached_irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
+                           TraceContext& ctx) const;
+    /// Reference mode: a Monte Carlo estimate, many rays at the first bounce and one per path deeper.
+    Vec3 reference_irradiance(const Vec3& p, const Vec3& n, const RayState& state, TraceContext& ctx) const;
+    /// The radiance arriving at `p` along the gather direction `dir`, traced as POV-Ray's radiosity rays are.
+    Vec3 gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
+                         TraceContext& ctx, double& distance) const;
     /// The colour of the surface at `hit`, `depth` along the unit `direction`.
     Vec3 shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
-               RayCounters& counters) const;
+               TraceContext& ctx) const;
     /// POV-Ray's ComputeOneTextureColour: a texture_map blends the lit colours of its entries.
     Vec3 shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
-                       const RayState& state, RayCounters& counters) const;
+                       const RayState& state, TraceContext& ctx) const;
     /// POV-Ray's ComputeLightedTexture: the layers of a plain texture, then refraction and reflection.
     Vec3 shade_layers(const parser::Texture& texture, const Surface& s, const std::vector<const parser::Pattern*>& warps,
-                      const RayState& state, RayCounters& counters) const;
+                      const RayState& state, TraceContext& ctx) const;
     /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
     Vec3 direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
-                      const Vec3& n, RayCounters& counters) const;
+                      const Vec3& n, TraceContext& ctx) const;
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON).
     Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
-                        Vec3& to_light, RayCounters& counters) const;
+                        Vec3& to_light, TraceContext& ctx) const;
     /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
     /// of every surface it crosses).
     /// `interiors` are those of the ray that found `p` (POV-Ray starts the shadow ray with them and fades light
     /// crossing an interior).
     Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                       RayCounters& counters) const;
+                       TraceContext& ctx) const;
     /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
     Vec3 texture_filter(const parser::Texture& texture, const Vec3& p) const;
     /// A reflected ray's colour (POV-Ray's ComputeReflection, with its fix-ups for bumped normals).
     Vec3 reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
-                 RayCounters& counters) const;
+                 TraceContext& ctx) const;
     /// POV-Ray's ComputeIridColour: the thin-film interference factor for light arriving along `to_light` and
     /// leaving toward the viewer along −`view_dir`.
     Vec3 iridescence(const parser::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
                      const Vec3& p) const;
     /// A refracted or transmitted ray's colour; sets `total_internal` when the ray reflects instead.
     Vec3 refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
-                 bool& total_internal, RayCounters& counters) const;
+                 bool& total_internal, TraceContext& ctx) const;
     /// POV-Ray's ComputeSky: sky_sphere pigments over the background colour.
     Vec3 sky(const Vec3& direction) const;
     /// POV-Ray's constant fog over a ray segment of length `depth`.
@@ -125,6 +168,7 @@ private:
     const geometry::SceneGeometry& m_geometry;
     IntegratorOptions m_options;
     bool m_ambient_is_light = true;
+    bool m_gi_enabled = false;  ///< the scene has a radiosity block and --gi is not off
     bool m_any_transparent = false;  ///< some object can let light through (filter or transmit somewhere)
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;

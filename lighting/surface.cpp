@@ -59,7 +59,7 @@ Vec3 reflectivity(const parser::Finish& f, double cos_i, double ior, double& wei
 }  // namespace
 
 Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
-                       RayCounters& counters) const {
+                       TraceContext& ctx) const {
     // The leaf primitive carries the texture (a CSG child's own or the one it inherited).
     const parser::Object& object = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
     Surface s;
@@ -71,13 +71,14 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.raw_normal = dot(hit.normal, direction) > 0.0 ? -hit.normal : hit.normal;
     s.depth = depth;
     s.interiors = &state.interiors;
+    s.highlights = !state.gather_ray;
     std::vector<const parser::Pattern*> warps;
-    return shade_texture(object.texture, s, warps, state, counters);
+    return shade_texture(object.texture, s, warps, state, ctx);
 }
 
 Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
-                               const RayState& state, RayCounters& counters) const {
-    if (texture.texture_map.empty()) return shade_layers(texture, s, warps, state, counters);
+                               const RayState& state, TraceContext& ctx) const {
+    if (texture.texture_map.empty()) return shade_layers(texture, s, warps, state, ctx);
     // texture_map: each entry is lit on its own at the map's warped point, and the colours are blended.
     const parser::Pattern& pattern = texture.map_pattern;
     s.p_texture = warp_point(pattern, s.p_texture);
@@ -85,9 +86,9 @@ Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::v
     const auto& map = texture.texture_map;
     const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
     warps.push_back(&pattern);
-    Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, counters);
+    Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, ctx);
     if (m.prev != m.cur) {
-        const Vec3 other = shade_texture(map[m.prev].texture, s, warps, state, counters);
+        const Vec3 other = shade_texture(map[m.prev].texture, s, warps, state, ctx);
         colour = colour * m.fraction + other * (1.0 - m.fraction);
     }
     warps.pop_back();
@@ -96,7 +97,7 @@ Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::v
 
 Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
                               const std::vector<const parser::Pattern*>& warps, const RayState& state,
-                              RayCounters& counters) const {
+                              TraceContext& ctx) const {
     // POV-Ray's last listed texture is the top layer; the texture holds the bottom layer and the layers over it.
     // Fixed-size storage keeps the common single-layer case free of allocations.
     constexpr std::size_t kMaxLayers = 8;
@@ -106,13 +107,17 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
         layers[layer_count++] = &*it;
     layers[layer_count++] = &texture;
 
-    const double bailout = m_scene.global.adc_bailout;
+    const double bailout = state.adc_bailout;
     const std::uint32_t object_id = s.hit->object;
     const parser::Interior& interior = m_scene.objects[object_id].interior;
     Vec3 colour;
     Vec3 filter{1.0, 1.0, 1.0};  // what the layers so far let through
     double trans = 1.0;
     Vec3 top_normal = s.raw_normal;
+    // Radiosity: indirect light reaches a surface only below the recursion limit.
+    const bool gi_needed = m_gi_enabled && state.gi_depth < m_scene.global.radiosity->recursion_limit;
+    bool gi_done = false;
+    Vec3 indirect_light;
     std::array<LayerReflection, kMaxLayers> reflections;  // filled before use
     std::size_t reflection_count = 0;
     for (std::size_t li = 0; li < layer_count; ++li) {
@@ -157,8 +162,22 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
         const double opacity = 1.0 - pc.filter - pc.transmit;
         Vec3 own = pigment * f.emission.rgb() * opacity;
         if (m_ambient_is_light) own += pigment * f.ambient.rgb() * m_scene.global.ambient_light.rgb() * opacity;
-        if (f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0)
-            own += direct_light(f, pigment, opacity, s, n, counters);
+        if (gi_needed && f.diffuse != 0.0) {
+            // POV-Ray compat (ComputeLightedTexture): indirect light is computed once, at the first layer whose
+            // diffuse part could pass the bailout, and then lights every layer's diffuse (brilliance aside).
+            if (!gi_done) {
+                const double most = grey(filter * pigment) * opacity * f.diffuse;
+                if (most > state.adc_bailout) {
+                    indirect_light = indirect(s, n, state.weight * most, state, ctx);
+                    gi_done = true;
+                }
+            }
+            own += pigment * indirect_light * (opacity * f.diffuse);
+        }
+        // POV-Ray compat: pretrace camera rays only fill the cache, so their own direct light is skipped.
+        const bool pretrace_eye = !ctx.final_pass && state.gi_depth == 0;
+        if ((f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0) && !pretrace_eye)
+            own += direct_light(f, pigment, opacity, s, n, ctx);
         colour += own * filter;
 
         filter = filter * (pigment * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});
@@ -174,7 +193,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
     bool total_internal = false;
     if (trans > bailout) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
-        const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, counters);
+        const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
         Vec3 fade{1.0, 1.0, 1.0};
         if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kEpsilon) {
             // POV-Ray's interior fade over the distance travelled inside: exponential for fade_power ≥ 1000,
@@ -198,7 +217,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
         // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
         if (total_internal && length(r.normal - top_normal) <= kEpsilon) continue;
         if (r.reflectivity == Vec3{}) continue;
-        Vec3 reflected = reflect(s, r.normal, r.weight, finish, state, counters);
+        Vec3 reflected = reflect(s, r.normal, r.weight, finish, state, ctx);
         if (r.exponent != 1.0) {
             // POV-Ray's reflection `exponent e` raises the reflected colour to 1/e.
             const double e = 1.0 / r.exponent;
@@ -210,7 +229,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
 }
 
 Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
-                         const RayState& state, RayCounters& counters) const {
+                         const RayState& state, TraceContext& ctx) const {
     // Mirror direction about the (possibly bumped) normal; POV-Ray bends it back above the true surface.
     Vec3 d = s.direction - 2.0 * dot(s.direction, n) * n;
     const double k = dot(d, s.raw_normal);
@@ -223,14 +242,14 @@ Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const p
     const Vec3& p = s.hit->position;
     const geometry::Ray ray{p, normalize(d), m_geometry.self_intersection_offset(p), 1e30,
                             geometry::RayKind::Reflection};
-    ++counters.secondary;
-    const Vec3 colour = trace(ray, next, false, counters);
+    ++ctx.rays.secondary;
+    const Vec3 colour = trace(ray, next, false, ctx);
     if (finish.irid <= 0.0) return colour;
     return colour * iridescence(finish, ray.direction, s.direction, n, p);
 }
 
 Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
-                         const RayState& state, bool& total_internal, RayCounters& counters) const {
+                         const RayState& state, bool& total_internal, TraceContext& ctx) const {
     total_internal = false;
     RayState next = state;
     next.weight = weight;
@@ -255,11 +274,11 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const p
     }
     const Vec3& p = s.hit->position;
     const double offset = m_geometry.self_intersection_offset(p);
-    ++counters.secondary;
+    ++ctx.rays.secondary;
     if (std::fabs(ior - 1.0) < kEpsilon) {
         // POV-Ray compat: light passing straight through continues the same ray (no new trace level).
         const geometry::Ray ray{p, s.direction, offset, 1e30, geometry::RayKind::Camera};
-        return trace(ray, next, true, counters);
+        return trace(ray, next, true, ctx);
     }
     // Snell's law in vector form (Heckbert 1989): t = η·d + (η cos i − sqrt(1 + η²(cos² i − 1)))·n.
     double cos_n = dot(s.direction, n);
@@ -271,11 +290,11 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const p
     const double t = 1.0 + ior * ior * (cos_n * cos_n - 1.0);
     if (t < 0.0) {
         total_internal = true;
-        return reflect(s, n, weight, finish, state, counters);
+        return reflect(s, n, weight, finish, state, ctx);
     }
     const Vec3 d = s.direction * ior + local * (ior * cos_n - std::sqrt(t));
     const geometry::Ray ray{p, normalize(d), offset, 1e30, geometry::RayKind::Camera};
-    return trace(ray, next, false, counters);
+    return trace(ray, next, false, ctx);
 }
 
 }  // namespace wardray::lighting

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "cache/irradiance_cache.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
@@ -256,9 +257,34 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     lighting::IntegratorOptions integrator_options;
     integrator_options.gi =
         options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
+    integrator_options.reference_rays = options.gi_rays;
+    integrator_options.gradients = options.gi_gradients;
+    if (scene.camera.type == parser::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
+        integrator_options.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     const lighting::Integrator integrator(scene, *geometry, integrator_options);
     for (const std::string& limitation : integrator.limitations())
         std::cerr << options.scene.string() << ": warning: " << limitation << "\n";
+
+    // The irradiance cache, only when the scene asks for radiosity and --gi is cache; +RFI starts it from a file.
+    std::unique_ptr<cache::IrradianceCache> irradiance_cache;
+    const fs::path cache_file = options.radiosity_file.value_or(options.scene.stem().string() + ".rca");
+    if (integrator.uses_cache()) {
+        irradiance_cache = std::make_unique<cache::IrradianceCache>(*scene.global.radiosity);
+        if (options.radiosity_load) {
+            std::ifstream in(cache_file, std::ios::binary);
+            if (!in) {
+                std::cerr << "wardray: warning: cannot read radiosity file '" << cache_file.string()
+                          << "'; starting with an empty cache\n";
+            } else {
+                try {
+                    irradiance_cache->load(in);
+                } catch (const cache::CacheFileError& e) {
+                    std::cerr << "wardray: warning: radiosity file '" << cache_file.string() << "' not used: "
+                              << e.what() << "\n";
+                }
+            }
+        }
+    }
 
     // Render.
     ProgressLine progress(isatty(STDERR_FILENO) != 0);
@@ -268,8 +294,9 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     settings.height = options.height;
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
                           options.antialias_gamma};
-    const RenderResult result =
-        render_image(scene, integrator, settings, [&](double f) { progress.update("render", f); });
+    settings.pretrace = options.pretrace;
+    const RenderResult result = render_image(
+        scene, integrator, settings, [&](double f) { progress.update("render", f); }, irradiance_cache.get());
     progress.finish();
     const double render_seconds = seconds_since(phase_start);
 
@@ -278,6 +305,19 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     if (options.write_output) {
         if (auto error = write_image(result.film, output, format)) {
             std::cerr << "wardray: error: " << *error << "\n";
+            return kExitScene;
+        }
+    }
+    if (irradiance_cache && options.radiosity_save) {
+        const auto error = write_atomically(cache_file, [&](const fs::path& tmp) -> std::optional<std::string> {
+            std::ofstream f(tmp, std::ios::binary);
+            irradiance_cache->save(f);
+            f.close();
+            if (!f) return std::string("write failed");
+            return std::nullopt;
+        });
+        if (error) {
+            std::cerr << "wardray: error: radiosity file: " << *error << "\n";
             return kExitScene;
         }
     }
@@ -293,13 +333,38 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
                                                : static_cast<int>(std::thread::hardware_concurrency());
         stats["gi"] = gi_name(integrator_options.gi);
         stats["radiosity_block"] = scene.global.radiosity.has_value();
-        stats["phases"] = {{"parse", parse_seconds}, {"build", build_seconds}, {"pretrace", 0.0},
-                           {"render", render_seconds}, {"write", write_seconds}};
+        double pretrace_seconds = 0.0;
+        nlohmann::json passes = nlohmann::json::array();
+        for (const PassTiming& pass : result.passes) {
+            if (pass.kind == "pretrace") pretrace_seconds += pass.seconds;
+            passes.push_back({{"kind", pass.kind}, {"block_size", pass.block_size}, {"seconds", pass.seconds}});
+        }
+        stats["phases"] = {{"parse", parse_seconds}, {"build", build_seconds}, {"pretrace", pretrace_seconds},
+                           {"render", render_seconds - pretrace_seconds}, {"write", write_seconds}};
+        stats["passes"] = passes;
         stats["total_seconds"] = seconds_since(start);
-        stats["rays"] = {{"camera", result.rays.camera}, {"shadow", result.rays.shadow}};
+        stats["rays"] = {{"camera", result.rays.camera},
+                         {"shadow", result.rays.shadow},
+                         {"secondary", result.rays.secondary},
+                         {"gather", result.rays.gather}};
+        stats["gathers"] = result.rays.gathers;
         stats["non_finite_pixels"] = result.non_finite_pixels;
         stats["supersampled_pixels"] = result.supersampled_pixels;
-        stats["cache"] = nullptr;  // the irradiance cache reports here once it exists
+        stats["cache"] = nullptr;
+        if (irradiance_cache) {
+            const cache::CacheStatistics cs = irradiance_cache->statistics();
+            nlohmann::json per_pass = nlohmann::json::array();
+            for (const auto& depths : cs.records) per_pass.push_back(depths);
+            stats["cache"] = {{"records_per_pass_and_depth", per_pass},
+                              {"records", cs.total_records},
+                              {"lookups", cs.lookups},
+                              {"hits", cs.hits},
+                              {"hit_rate", cs.hit_rate()},
+                              {"mean_radius", cs.mean_radius},
+                              {"rays_per_record", result.rays.gathers > 0 ? static_cast<double>(result.rays.gather) /
+                                                                                static_cast<double>(result.rays.gathers)
+                                                                          : 0.0}};
+        }
         const auto error = write_atomically(*options.stats, [&](const fs::path& tmp) -> std::optional<std::string> {
             std::ofstream f(tmp);
             f << stats.dump(2) << "\n";

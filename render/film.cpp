@@ -83,7 +83,12 @@ const OiioReader* oiio_reader(std::string& error) {
 // A temporary name beside the target, keeping the folder so the final rename is atomic.
 std::filesystem::path temporary_name(const std::filesystem::path& path) {
     std::filesystem::path tmp = path;
-    tmp.replace_filename("." + path.filename().string() + ".part" + std::to_string(::getpid()));
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about `"." + std::string`.
+    std::string name = ".";
+    name += path.filename().string();
+    name += ".part";
+    name += std::to_string(::getpid());
+    tmp.replace_filename(name);
     return tmp;
 }
 

@@ -51,6 +51,20 @@ std::optional<UsageError> apply_pov_switch(bool plus, const std::string& body, O
         if (body.substr(2) != "1") return bad("only sampling method 1 (+AM1) is supported so far");
         return std::nullopt;
     }
+    // POV-Ray's radiosity file switches: +RFI loads, +RFO saves, +RF<name> names the file.
+    if (starts_with_ci(body, "RFI") && body.size() == 3) {
+        o.radiosity_load = plus;
+        return std::nullopt;
+    }
+    if (starts_with_ci(body, "RFO") && body.size() == 3) {
+        o.radiosity_save = plus;
+        return std::nullopt;
+    }
+    if (starts_with_ci(body, "RF")) {
+        if (body.size() == 2) return bad("expected a radiosity file name");
+        o.radiosity_file = body.substr(2);
+        return std::nullopt;
+    }
     if (starts_with_ci(body, "WT")) {
         int n = 0;
         if (!parse_int(body.substr(2), n) || n < 1 || n > 1024) return bad("expected a thread count 1..1024");
@@ -159,6 +173,18 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
         else if (v == "reference") o.gi = lighting::GiMode::Reference;
         else if (v == "off") o.gi = lighting::GiMode::Off;
         else return UsageError{"--gi must be cache, reference or off"};
+    } else if (name == "--gi-rays") {
+        const auto v = value();
+        int n = 0;
+        if (!v || !parse_int(*v, n) || n < 1 || n > 1000000) return UsageError{"--gi-rays needs a count 1..1000000"};
+        o.gi_rays = n;
+    } else if (name == "--gi-gradients") {
+        const auto v = value();
+        if (v == "on") o.gi_gradients = true;
+        else if (v == "off") o.gi_gradients = false;
+        else return UsageError{"--gi-gradients must be on or off"};
+    } else if (name == "--no-pretrace") {
+        o.pretrace = false;
     } else if (name == "--read-path" || name == "--write-path") {
         const auto v = value();
         if (!v || v->empty()) return UsageError{name + " needs a folder"};
@@ -238,7 +264,11 @@ std::string usage_text() {
            "  Declare=N=V       define the float N before parsing\n"
            "  +D -D +V -V       accepted as in POV-Ray\n"
            "  --check           parse and describe the scene, render nothing\n"
-           "  --gi=cache|reference|off  how indirect light is computed\n"
+           "  --gi=cache|reference|off  how indirect light is computed (default: cache with a radiosity block)\n"
+           "  --gi-rays N               reference mode: paths per pixel (default 256)\n"
+           "  --gi-gradients=on|off     cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)\n"
+           "  --no-pretrace             cache mode: skip the pretrace passes\n"
+           "  +RFI +RFO +RF<file>       load / save the irradiance cache (default file: the scene's name, .rca)\n"
            "  --stats file.json write timings and ray counts\n"
            "  --read-path DIR, --write-path DIR, --allow-file-writes   where #fopen may read and write\n"
            "  --max-loop-iterations N, --max-macro-depth N, --max-include-depth N,\n"

@@ -29,6 +29,12 @@ struct Options {
     double jitter = 1.0;               ///< +J1.0, -J: 0
     double antialias_gamma = 2.5;      ///< +AG2.5
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
+    int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
+    bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
+    bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
+    bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
+    bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
+    std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca
     std::vector<std::pair<std::string, double>> declares;
     std::vector<std::filesystem::path> library_paths;
     std::optional<std::filesystem::path> stats;

@@ -7,18 +7,20 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <mutex>
 
+#include "cache/irradiance_cache.h"
 #include "render/camera.h"
 
 namespace wardray::render {
 
 namespace {
 
-/// What one tile adds to the totals.
+/// What one tile adds to the totals, and the trace context its rays carry.
 struct TileCounters {
-    lighting::RayCounters rays;
+    lighting::TraceContext trace;
     std::uint64_t non_finite = 0;
     std::uint64_t supersampled = 0;
 };
@@ -30,7 +32,7 @@ public:
         : m_camera(camera), m_integrator(integrator), m_counters(counters) {}
 
     Vec3 operator()(double px, double py) const {
-        Vec3 c = m_integrator.trace_camera_ray(m_camera.ray(px, py), m_counters.rays);
+        Vec3 c = m_integrator.trace_camera_ray(m_camera.ray(px, py), m_counters.trace);
         if (!is_finite(c)) {
             ++m_counters.non_finite;
             c = Vec3{};
@@ -129,42 +131,150 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
         for (int x = x0; x < x1; ++x) film.set_pixel(x, y, colour[at(x, y)]);
 }
 
+
+/// Runs `body(tile, x0, y0, x1, y1)` for the given tiles on the thread pool; `done()` is called as each finishes.
+template <typename Body, typename Done>
+void for_each_tile(const RenderSettings& settings, const std::vector<int>& tiles, const Body& body, const Done& done) {
+    const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            const int tile = tiles[i];
+            const int x0 = (tile % tiles_x) * settings.tile_size;
+            const int y0 = (tile / tiles_x) * settings.tile_size;
+            body(tile, x0, y0, std::min(x0 + settings.tile_size, settings.width),
+                 std::min(y0 + settings.tile_size, settings.height));
+            done();
+        }
+    });
+}
+
+/// The tiles in waves of 1, 2, 4, 8, ... taken coarse to fine (every 2^k-th tile across and down first), so that
+/// the first waves spread over the whole image and later waves reuse what they cached.
+std::vector<std::vector<int>> tile_waves(int tiles_x, int tiles_y) {
+    std::vector<int> order;
+    std::vector<char> taken(static_cast<std::size_t>(tiles_x) * tiles_y, 0);
+    int step = 1;
+    while (step < std::max(tiles_x, tiles_y)) step *= 2;
+    for (; step >= 1; step /= 2) {
+        for (int ty = 0; ty < tiles_y; ty += step) {
+            for (int tx = 0; tx < tiles_x; tx += step) {
+                const int t = ty * tiles_x + tx;
+                if (taken[t]) continue;
+                taken[t] = 1;
+                order.push_back(t);
+            }
+        }
+    }
+    std::vector<std::vector<int>> waves;
+    std::size_t size = 1;
+    for (std::size_t i = 0; i < order.size(); i += size, size *= 2)
+        waves.emplace_back(order.begin() + i, order.begin() + std::min(order.size(), i + size));
+    return waves;
+}
+
+/// A uniform number in [0, 1) from a pretrace position and pass, so pretrace jitter is the same on every run.
+double pretrace_jitter(int pass, double x, double y, int axis) {
+    const Vec3 j = jitter_at(x + 0.25 * axis, y + 1024.0 * pass);
+    return j[axis] + 0.5;
+}
+
 }  // namespace
 
+std::vector<double> pretrace_sizes(const parser::RadiositySettings& rs, int width, int height) {
+    // POV-Ray compat (view.cpp): block sizes from pretrace_start to pretrace_end of the larger image side,
+    // halving each step, the end at least one pixel.
+    const double side = std::max(width, height);
+    const double start = side * rs.pretrace_start;
+    const double end = std::max(1.0, side * rs.pretrace_end);
+    std::vector<double> sizes;
+    if (!(start >= end)) return {end};
+    const int steps = static_cast<int>(std::floor(std::log2(start / end) + (1.0 - 1e-10))) + 1;
+    for (int i = 0; i < std::min(steps, 64); ++i) sizes.push_back(std::max(start * std::ldexp(1.0, -i), end));
+    return sizes;
+}
+
 RenderResult render_image(const parser::Scene& scene, const lighting::Integrator& integrator,
-                          const RenderSettings& settings, const ProgressFn& progress) {
-    RenderResult result{Film(settings.width, settings.height), {}};
+                          const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
+    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}};
     const CameraModel camera(scene.camera, settings.width, settings.height);
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
     const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
     const int tile_count = tiles_x * tiles_y;
     std::vector<TileCounters> tile_counters(tile_count);
+    const bool cached = cache != nullptr && integrator.uses_cache() && scene.global.radiosity.has_value();
+
+    // Without a cache every tile is independent: one wave. With one, tiles go in waves and each wave's records are
+    // merged (in a fixed order) before the next starts, so the image is the same for any thread count.
+    std::vector<std::vector<int>> waves;
+    if (cached) {
+        waves = tile_waves(tiles_x, tiles_y);
+    } else {
+        waves.emplace_back(tile_count);
+        for (int t = 0; t < tile_count; ++t) waves[0][t] = t;
+    }
+    std::vector<double> sizes;
+    if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
+    const double total_work = static_cast<double>(tile_count) * (sizes.size() + 1);
     std::atomic<int> tiles_done{0};
     std::mutex progress_mutex;
+    auto tile_done = [&]() {
+        const int done = ++tiles_done;
+        if (!progress) return;
+        std::lock_guard<std::mutex> lock(progress_mutex);
+        progress(done / total_work);
+    };
+    // One pass over the image in waves, `body` rendering one tile with its trace context.
+    auto run_pass = [&](bool final_pass, const auto& body) {
+        if (cached) cache->begin_pass(tile_count);
+        for (const std::vector<int>& wave : waves) {
+            for_each_tile(settings, wave, [&](int tile, int x0, int y0, int x1, int y1) {
+                lighting::TraceContext& ctx = tile_counters[tile].trace;
+                ctx.cache = cached ? &cache->tile(tile) : nullptr;
+                ctx.final_pass = final_pass;
+                body(tile, x0, y0, x1, y1, ctx);
+                ctx.cache = nullptr;
+            }, tile_done);
+            if (cached) cache->merge_tiles(wave);
+        }
+        if (cached) cache->end_pass();
+    };
 
-    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
-        for (int tile = range.begin(); tile != range.end(); ++tile) {
-            const int x0 = (tile % tiles_x) * settings.tile_size;
-            const int y0 = (tile / tiles_x) * settings.tile_size;
-            const int x1 = std::min(x0 + settings.tile_size, settings.width);
-            const int y1 = std::min(y0 + settings.tile_size, settings.height);
-            const Sampler sample(camera, integrator, tile_counters[tile]);
-            if (settings.antialias.enabled) {
-                render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias,
-                                         tile_counters[tile]);
-            } else {
-                for (int y = y0; y < y1; ++y)
-                    for (int x = x0; x < x1; ++x) result.film.set_pixel(x, y, sample(x + 0.5, y + 0.5));
+    // POV-Ray's pretrace: camera rays on a coarse grid fill the cache (their colours are thrown away), the grid
+    // halving each pass; each pass sees the records of the passes and waves before it.
+    for (std::size_t pass = 0; pass < sizes.size(); ++pass) {
+        const auto pass_start = std::chrono::steady_clock::now();
+        const double size = sizes[pass];
+        const double jitter = std::min(1.0, size / 2.0);
+        const double offset = (size - 1.0) / 2.0;
+        run_pass(false, [&](int, int x0, int y0, int x1, int y1, lighting::TraceContext& ctx) {
+            // POV-Ray compat (RadiosityTask): one jittered ray per size × size block, the grid anchored at the origin.
+            for (double y = std::ceil((y0 - 0.5) / size) * size; y < y1; y += size) {
+                for (double x = std::ceil((x0 - 0.5) / size) * size; x < x1; x += size) {
+                    const double px = x + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 0) + 0.5;
+                    const double py = y + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 1) + 0.5;
+                    integrator.trace_camera_ray(camera.ray(px, py), ctx);
+                }
             }
-            const int done = ++tiles_done;
-            if (progress) {
-                std::lock_guard<std::mutex> lock(progress_mutex);
-                progress(static_cast<double>(done) / tile_count);
-            }
+        });
+        result.passes.push_back({"pretrace", size, std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                                                                 pass_start).count()});
+    }
+
+    const auto final_start = std::chrono::steady_clock::now();
+    run_pass(true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
+        const Sampler sample(camera, integrator, tile_counters[tile]);
+        if (settings.antialias.enabled) {
+            render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
+        } else {
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) result.film.set_pixel(x, y, sample(x + 0.5, y + 0.5));
         }
     });
+    result.passes.push_back(
+        {"final", 1.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - final_start).count()});
     for (const TileCounters& t : tile_counters) {
-        result.rays += t.rays;
+        result.rays += t.trace.rays;
         result.non_finite_pixels += t.non_finite;
         result.supersampled_pixels += t.supersampled;
     }

@@ -3,11 +3,17 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
 #include "parser/scene.h"
 #include "render/film.h"
+
+namespace wardray::cache {
+class IrradianceCache;
+}  // namespace wardray::cache
 
 namespace wardray::render {
 
@@ -25,6 +31,14 @@ struct RenderSettings {
     int height = 240;
     int tile_size = 32;  ///< POV-Ray's render block size; antialiasing decisions are made per block
     AntialiasSettings antialias;
+    bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
+};
+
+/// One pass over the image: a pretrace pass with its block size in pixels, or the final pass.
+struct PassTiming {
+    std::string kind;  ///< "pretrace" or "final"
+    double block_size = 1.0;
+    double seconds = 0.0;
 };
 
 /// Called as tiles complete with the fraction done (0..1); called from worker threads, one at a time.
@@ -36,11 +50,19 @@ struct RenderResult {
     lighting::RayCounters rays;
     std::uint64_t non_finite_pixels = 0;  ///< pixels whose radiance was NaN or infinite (written as black)
     std::uint64_t supersampled_pixels = 0;
+    std::vector<PassTiming> passes;
 };
 
-/// Renders every pixel. Each pixel depends only on its own rays, so tiles may finish in any order
-/// and the image is the same for any number of threads.
+/// POV-Ray's pretrace block sizes in pixels for an image of width × height: pretrace_start to pretrace_end of the
+/// larger side, halving.
+std::vector<double> pretrace_sizes(const parser::RadiositySettings& settings, int width, int height);
+
+/// Renders every pixel. Each pixel depends only on its own rays and on the cache as it stood when the pass began
+/// (plus its own tile's records), so tiles may finish in any order and the image is the same for any number of
+/// threads. With an irradiance cache (and an integrator in cache mode) the pretrace passes fill it first; the
+/// cache keeps every record made, for statistics and +RFO.
 RenderResult render_image(const parser::Scene& scene, const lighting::Integrator& integrator,
-                          const RenderSettings& settings, const ProgressFn& progress);
+                          const RenderSettings& settings, const ProgressFn& progress,
+                          cache::IrradianceCache* cache = nullptr);
 
 }  // namespace wardray::render

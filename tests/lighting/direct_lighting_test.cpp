@@ -34,7 +34,7 @@ parser::Light point_light(const Vec3& p, double intensity = 1.0) {
 double radiance_at(const parser::Scene& scene, double x, double z, GiMode gi = GiMode::Off) {
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {gi});
-    RayCounters counters;
+    TraceContext counters;
     geometry::Ray ray{{x, 1.0, z}, {0, -1, 0}};
     return integrator.trace_camera_ray(ray, counters).y;
 }
@@ -149,10 +149,10 @@ TEST(DirectLighting, MissIsBackground) {
     scene.background = {0.1, 0.2, 0.3};
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {});
-    RayCounters counters;
+    TraceContext counters;
     const Vec3 c = integrator.trace_camera_ray({{0, 0, 0}, {0, 0, 1}}, counters);
     EXPECT_EQ(c, (Vec3{0.1, 0.2, 0.3}));
-    EXPECT_EQ(counters.camera, 1u);
+    EXPECT_EQ(counters.rays.camera, 1u);
 }
 
 }  // namespace

@@ -139,7 +139,7 @@ Vec3 look_down(const std::string& object, const std::string& extra = "") {
     EXPECT_FALSE(scene.objects.empty());
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {});
-    RayCounters counters;
+    TraceContext counters;
     return integrator.trace_camera_ray({{0.3, 1.0, 0.3}, {0, -1, 0}}, counters);
 }
 

@@ -1,0 +1,120 @@
+// Indirect light: POV-Ray 3.7's radiosity (ComputeAmbient) through wardray's irradiance cache, or brute force.
+#include <algorithm>
+#include <cmath>
+
+#include "cache/gather.h"
+#include "cache/hemisphere_sampler.h"
+#include "cache/irradiance_cache.h"
+#include "cache/irradiance_record.h"
+#include "geometry/scene_geometry.h"
+#include "lighting/direct_lighting.h"
+
+namespace wardray::lighting {
+
+namespace {
+
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+
+// POV-Ray's greyscale weights.
+double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
+/// POV-Ray compat (GetRecursionSettings): rays per gather halve with each bounce, at least 5.
+int rays_at_depth(const parser::RadiositySettings& rs, int depth) {
+    return std::max(5, static_cast<int>(rs.count * std::ldexp(1.0, -depth)));
+}
+
+}  // namespace
+
+Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,
+                          TraceContext& ctx) const {
+    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    const Vec3& p = s.hit->position;
+    // POV-Ray compat: `normal on` gathers around the perturbed normal, otherwise around the true one.
+    const Vec3 n = rs.normal ? n_layer : s.raw_normal;
+    Vec3 e = m_options.gi == GiMode::Reference ? reference_irradiance(p, n, state, ctx)
+                                               : cached_irradiance(p, n, weight, state, ctx);
+    // POV-Ray compat (ComputeAmbient): gray_threshold mixes toward grey, then brightness scales.
+    if (rs.gray_threshold != 0.0) {
+        const double g = grey(e);
+        e = e * (1.0 - rs.gray_threshold) + Vec3{g, g, g} * rs.gray_threshold;
+    }
+    return e * rs.brightness;
+}
+
+Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
+                                 TraceContext& ctx, double& distance) const {
+    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    // POV-Ray compat (GetRecursionSettings, GatherLight): a gather ray starts afresh at trace level
+    // ⌊1.5·(depth+1)⌋ with weight (brightness/2)^(depth+1), radiosity's adc_bailout, and room for one more level.
+    RayState next;
+    next.level = static_cast<int>(1.5 * (state.gi_depth + 1));
+    next.max_level = std::max(state.max_level, next.level + 1);
+    next.weight = std::max(rs.adc_bailout + kEpsilon, std::pow(0.5 * rs.brightness, state.gi_depth + 1));
+    next.adc_bailout = rs.adc_bailout;
+    next.gi_depth = state.gi_depth + 1;
+    next.gather_ray = true;
+    next.path_seed = path_seed;
+    next.interiors = state.interiors;
+    const geometry::Ray ray{p, dir, m_geometry.self_intersection_offset(p), 1e30, geometry::RayKind::Gather};
+    ++ctx.rays.gather;
+    return trace(ray, next, false, ctx, &distance);
+}
+
+Vec3 Integrator::cached_irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
+                                   TraceContext& ctx) const {
+    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    const int depth = state.gi_depth;
+    // Lazy evaluation (Ward, Rubinstein & Clear 1988): reuse the valid records when they cover the point.
+    cache::LookupParams params = cache::lookup_params(rs, depth, ctx.final_pass, weight);
+    params.gradients = m_options.gradients;
+    cache::Interpolation found;
+    if (ctx.cache) {
+        found = ctx.cache->lookup(p, n, depth, params);
+        if (found.sufficient) return found.irradiance;
+    }
+    // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
+    ++ctx.rays.gathers;
+    const cache::Strata strata = cache::strata_for_count(rays_at_depth(rs, depth));
+    const cache::GatherResult gathered = cache::gather(
+        p, n, strata,
+        [&](const Vec3& dir) {
+            cache::RadianceSample sample;
+            sample.radiance = gather_radiance(p, dir, state, 0, ctx, sample.distance);
+            return sample;
+        },
+        static_cast<std::uint64_t>(depth));
+    if (ctx.cache) {
+        const cache::RadiusLimits limits = cache::radius_limits(rs, depth, length(p - m_scene.camera.location),
+                                                                m_options.footprint * length(p - m_scene.camera.location));
+        cache::RecordOptions options;
+        options.gradients = m_options.gradients;
+        options.gradient_radius_cap = m_options.gradients;
+        ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
+    }
+    // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
+    if (found.records > 0) return (found.irradiance * found.coverage + gathered.irradiance) / (found.coverage + 1.0);
+    return gathered.irradiance;
+}
+
+Vec3 Integrator::reference_irradiance(const Vec3& p, const Vec3& n, const RayState& state, TraceContext& ctx) const {
+    // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π) by
+    // stratified Monte Carlo; the first bounce takes all of --gi-rays, each deeper bounce continues its path with
+    // one ray, so a pixel averages --gi-rays independent paths.
+    const int rays = state.gi_depth == 0 ? std::max(1, m_options.reference_rays) : 1;
+    cache::SplitMix64 rng(cache::seed_from(p, n, state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth));
+    const std::vector<cache::HemisphereSample> samples =
+        cache::stratified_cosine_samples(cache::strata_for_count(rays), rng);
+    Vec3 t, b;
+    cache::orthonormal_basis(n, t, b);
+    ++ctx.rays.gathers;
+    Vec3 sum;
+    for (const cache::HemisphereSample& sample : samples) {
+        const Vec3& d = sample.direction;
+        double distance = 0.0;
+        const Vec3 l = gather_radiance(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx, distance);
+        if (is_finite(l)) sum += l;
+    }
+    return samples.empty() ? Vec3{} : sum / static_cast<double>(samples.size());
+}
+
+}  // namespace wardray::lighting
