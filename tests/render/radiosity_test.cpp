@@ -1,0 +1,202 @@
+// Radiosity as a user runs it: the cache and the reference mode against an analytic furnace, against each other
+// and against POV-Ray's converged render; repeatability for any thread count; nothing paid without a radiosity block.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "process.h"
+#include "render/film.h"
+#include "render/image_metrics.h"
+
+namespace wardray::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kBoxScene = fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "radiosity" / "box.pov";
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "radiosity" / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string wardray() { return shell_quote(WARDRAY_BINARY); }
+
+render::Film read(const fs::path& path) {
+    std::string error;
+    auto film = render::read_image(path, error);
+    EXPECT_TRUE(film) << error;
+    return film ? std::move(*film) : render::Film(1, 1);
+}
+
+nlohmann::json read_json(const fs::path& path) {
+    std::ifstream f(path);
+    return nlohmann::json::parse(f, nullptr, false);
+}
+
+/// Compares two renders, and on failure leaves both and a difference image for a person to look at.
+void expect_close(const fs::path& dir, const render::Film& image, const render::Film& reference, double max_rrmse,
+                  double max_bad, const std::string& what) {
+    const auto cmp = render::compare_images(image, reference);
+    ASSERT_TRUE(cmp) << "image sizes differ";
+    std::ostringstream figures;
+    figures << std::fixed << std::setprecision(4) << what << ": rRMSE " << 100 * cmp->rrmse << " %, bad pixels "
+            << 100 * cmp->bad_pixel_fraction << " %, non-finite " << cmp->non_finite;
+    std::cout << "[ radiosity] " << figures.str() << "\n";
+    const bool pass = cmp->rrmse <= max_rrmse && cmp->bad_pixel_fraction <= max_bad && cmp->non_finite == 0;
+    if (!pass) {
+        render::write_image(render::difference_image(image, reference), dir / "difference.png", render::ImageFormat::Png);
+        render::write_image(image, dir / "image.png", render::ImageFormat::Png);
+        render::write_image(reference, dir / "reference.png", render::ImageFormat::Png);
+    }
+    EXPECT_LE(cmp->rrmse, max_rrmse) << figures.str() << "; images in " << dir;
+    EXPECT_LE(cmp->bad_pixel_fraction, max_bad) << figures.str() << "; images in " << dir;
+    EXPECT_EQ(cmp->non_finite, 0u);
+}
+
+// A closed sphere seen from inside, emission e and diffuse d, lit by nothing else: every point sees the same
+// radiance, so with recursion_limit k it is exactly e·(1 + d + … + d^k), whatever the rays sample.
+struct FurnaceCase {
+    std::string gi;
+    int recursion_limit;
+};
+
+// Names the case in test output instead of dumping its bytes.
+void PrintTo(const FurnaceCase& c, std::ostream* os) { *os << c.gi << " recursion_limit " << c.recursion_limit; }
+
+class RadiosityFurnace : public ::testing::TestWithParam<FurnaceCase> {};
+
+TEST_P(RadiosityFurnace, MatchesTheGeometricSeries) {
+    const FurnaceCase& c = GetParam();
+    const fs::path dir = fresh_dir("furnace_" + c.gi + std::to_string(c.recursion_limit));
+    std::ofstream(dir / "furnace.pov") << "#version 3.7;\n"
+        "global_settings { assumed_gamma 1 radiosity { count 50 recursion_limit " << c.recursion_limit << " } }\n"
+        "camera { location 0 look_at z angle 90 }\n"
+        "sphere { 0, 10 pigment { rgb 1 } finish { emission 0.5 diffuse 0.5 ambient 0.3 } }\n";
+    const auto run = run_command(wardray() + " +Ifurnace.pov +Oout.hdr +W32 +H24 -A --gi=" + c.gi + " --gi-rays 16",
+                                 dir.string());
+    ASSERT_EQ(run.exit_status, 0) << run.output;
+    const render::Film film = read(dir / "out.hdr");
+    double expected = 0.0;
+    for (int k = 0; k <= c.recursion_limit; ++k) expected += 0.5 * std::pow(0.5, k);
+    // In a 3.7 radiosity scene `ambient` is not light, so it must not show up.
+    for (int y = 0; y < film.height(); ++y)
+        for (int x = 0; x < film.width(); ++x)
+            ASSERT_NEAR(film.pixel(x, y).y, expected, 2e-3 * expected) << "pixel " << x << "," << y;
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, RadiosityFurnace,
+                         ::testing::Values(FurnaceCase{"cache", 1}, FurnaceCase{"cache", 2}, FurnaceCase{"cache", 3},
+                                           FurnaceCase{"reference", 1}, FurnaceCase{"reference", 2}),
+                         [](const ::testing::TestParamInfo<FurnaceCase>& info) {
+                             return info.param.gi + std::to_string(info.param.recursion_limit);
+                         });
+
+TEST(Radiosity, CacheImageIsTheSameForAnyThreadCountAndRun) {
+    const fs::path dir = fresh_dir("threads");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W64 +H48 -A";
+    for (const char* run : {"+WT1 +Oone.hdr", "+WT2 +Otwo.hdr", "+WT2 +Oagain.hdr", "+WT3 +Othree.hdr"}) {
+        const auto r = run_command(wardray() + scene + " " + run, dir.string());
+        ASSERT_EQ(r.exit_status, 0) << r.output;
+    }
+    auto bytes = [&](const char* name) {
+        std::ifstream f(dir / name, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(f), {});
+    };
+    const std::string one = bytes("one.hdr");
+    ASSERT_FALSE(one.empty());
+    EXPECT_EQ(one, bytes("two.hdr"));
+    EXPECT_EQ(one, bytes("again.hdr"));
+    EXPECT_EQ(one, bytes("three.hdr"));
+}
+
+TEST(Radiosity, CacheAgreesWithTheReferenceOnTheBox) {
+    // The scene's own moderate settings (count 200, error_bound 0.5) against brute force with 1024 paths per pixel.
+    // Measured: about 1 % rRMSE, of which the reference's own noise is a good part.
+    const fs::path dir = fresh_dir("cache_vs_reference");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W64 +H48 -A +WT2";
+    const auto cache = run_command(wardray() + scene + " +Ocache.hdr --stats cache.json", dir.string());
+    ASSERT_EQ(cache.exit_status, 0) << cache.output;
+    const auto reference = run_command(wardray() + scene + " +Oreference.hdr --gi=reference --gi-rays 1024",
+                                       dir.string());
+    ASSERT_EQ(reference.exit_status, 0) << reference.output;
+    expect_close(dir, read(dir / "cache.hdr"), read(dir / "reference.hdr"), 0.025, 0.01, "box cache vs reference");
+
+    // The final pass makes few records: the pretrace did the work.
+    const nlohmann::json stats = read_json(dir / "cache.json");
+    ASSERT_TRUE(stats.is_object());
+    const auto& per_pass = stats["cache"]["records_per_pass_and_depth"];
+    ASSERT_GE(per_pass.size(), 2u);
+    std::uint64_t total = 0, final_depth0 = per_pass.back()[0].get<std::uint64_t>();
+    for (const auto& pass : per_pass)
+        for (const auto& n : pass) total += n.get<std::uint64_t>();
+    EXPECT_GT(total, 0u);
+    EXPECT_LT(final_depth0 * 10, total) << stats["cache"].dump();
+}
+
+TEST(Radiosity, SceneWithoutRadiosityPaysNothing) {
+    const fs::path dir = fresh_dir("pay_for_use");
+    const fs::path plain = fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "default.pov";
+    auto r = run_command(wardray() + " +I" + shell_quote(plain.string()) + " +W32 +H24 -A +Oa.png --stats a.json",
+                         dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    nlohmann::json stats = read_json(dir / "a.json");
+    EXPECT_EQ(stats["rays"]["gather"].get<std::uint64_t>(), 0u);
+    EXPECT_TRUE(stats["cache"].is_null());
+    EXPECT_EQ(stats["passes"].size(), 1u);
+    // A radiosity scene with --gi=off traces no gather rays either.
+    r = run_command(wardray() + " +I" + shell_quote(kBoxScene.string()) + " +W32 +H24 -A +Ob.png --gi=off --stats b.json",
+                    dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    stats = read_json(dir / "b.json");
+    EXPECT_EQ(stats["rays"]["gather"].get<std::uint64_t>(), 0u);
+    EXPECT_TRUE(stats["cache"].is_null());
+}
+
+TEST(Radiosity, SavedCacheIsReusedByTheNextRender) {
+    const fs::path dir = fresh_dir("cache_file");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W48 +H36 -A";
+    auto r = run_command(wardray() + scene + " +Ofirst.hdr +RFO +RFbox.rca", dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    ASSERT_TRUE(fs::exists(dir / "box.rca"));
+    r = run_command(wardray() + scene + " +Ofresh.hdr --no-pretrace --stats fresh.json", dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    r = run_command(wardray() + scene + " +Oloaded.hdr --no-pretrace +RFI +RFbox.rca --stats loaded.json", dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    const auto fresh = read_json(dir / "fresh.json")["gathers"].get<std::uint64_t>();
+    const auto loaded = read_json(dir / "loaded.json")["gathers"].get<std::uint64_t>();
+    EXPECT_LT(loaded * 5, fresh) << "a loaded cache should leave few gathers to do";
+    expect_close(dir, read(dir / "loaded.hdr"), read(dir / "first.hdr"), 0.02, 0.01, "loaded cache vs first render");
+    // A damaged file is a warning, and the render goes on with an empty cache.
+    std::ofstream(dir / "box.rca", std::ios::trunc) << "not a cache";
+    r = run_command(wardray() + scene + " +Obroken.hdr +RFI +RFbox.rca", dir.string());
+    EXPECT_EQ(r.exit_status, 0) << r.output;
+    EXPECT_NE(r.output.find("box.rca"), std::string::npos) << r.output;
+}
+
+// Converged against converged (METRICS.md): POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01,
+// nearest_count 20 against the reference mode. About a minute of POV-Ray, so in the slow tier.
+TEST(RadiositySlow, ReferenceMatchesConvergedPovRay) {
+    const fs::path dir = fresh_dir("povray_converged");
+    fs::copy_file(kBoxScene, dir / "box.pov");
+    const std::string size = " +W80 +H60 -A +WT2";
+    const auto pov = run_command("povray +Ibox.pov +Opovray.hdr +FH -D -V" + size +
+                                     " Declare=Count=1600 Declare=ErrorBound=0.1 Declare=PretraceEnd=0.01"
+                                     " Declare=NearestCount=20",
+                                 dir.string());
+    ASSERT_EQ(pov.exit_status, 0) << pov.output;
+    const auto ours = run_command(wardray() + " +Ibox.pov +Owardray.hdr --gi=reference --gi-rays 2048" + size,
+                                  dir.string());
+    ASSERT_EQ(ours.exit_status, 0) << ours.output;
+    expect_close(dir, read(dir / "wardray.hdr"), read(dir / "povray.hdr"), 0.02, 0.005, "box reference vs POV-Ray");
+}
+
+}  // namespace
+}  // namespace wardray::test
