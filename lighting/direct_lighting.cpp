@@ -2,6 +2,7 @@
 #include "lighting/direct_lighting.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 
@@ -274,19 +275,97 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
     }
     if (attenuation <= 0.0) return {};
 
-    Vec3 filter{1.0, 1.0, 1.0};
-    if (!light.shadowless) {
-        if (m_any_transparent) {
-            filter = shadow_filter(p, to_light, distance, interiors, ctx);
-            if (filter == Vec3{}) return {};
-        } else {
-            const double offset = m_geometry.self_intersection_offset(p);
-            geometry::Ray shadow{p, to_light, offset, distance - offset, geometry::RayKind::Shadow};
-            ++ctx.rays.shadow;
-            if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
-        }
+    const Vec3 colour = light.color.rgb() * attenuation;
+    if (light.shadowless) return colour;
+    if (light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
+        light.type != Type::Cylinder)
+        return area_light_shadow(light, colour, p, interiors, ctx);
+    return colour * shadow_towards(p, to_light, distance, interiors, ctx);
+}
+
+Vec3 Integrator::shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
+                                TraceContext& ctx) const {
+    if (m_any_transparent) return shadow_filter(p, dir, distance, interiors, ctx);
+    const double offset = m_geometry.self_intersection_offset(p);
+    geometry::Ray shadow{p, dir, offset, distance - offset, geometry::RayKind::Shadow};
+    ++ctx.rays.shadow;
+    if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
+    return {1.0, 1.0, 1.0};
+}
+
+Vec3 Integrator::area_light_shadow(const parser::Light& light, const Vec3& colour, const Vec3& p,
+                                   const InteriorStack& interiors, TraceContext& ctx) const {
+    const int n1 = light.area_size1;
+    const int n2 = light.area_size2;
+    Vec3 axis1 = light.area_axis1;
+    Vec3 axis2 = light.area_axis2;
+    if (light.orient) {
+        // POV-Ray compat: `orient` turns the light's square to face the point, both axes as long as axis1.
+        const Vec3 d = normalize(light.position - p);
+        const Vec3 helper = std::fabs(std::fabs(d.z) - 1.0) < 0.01 ? Vec3{0.0, 1.0, 0.0} : Vec3{0.0, 0.0, 1.0};
+        const double len = length(axis1);
+        axis1 = normalize(cross(d, helper)) * len;
+        axis2 = normalize(cross(d, axis1)) * len;
     }
-    return light.color.rgb() * filter * attenuation;
+    // Jitter is random in POV-Ray; here it is a fixed function of the point, so renders repeat exactly.
+    std::uint64_t state = std::bit_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ULL ^
+                          std::bit_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4FULL ^
+                          std::bit_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ULL;
+    auto uniform = [&state]() {
+        state += 0x9E3779B97F4A7C15ULL;
+        std::uint64_t z = state;
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    std::vector<Vec3> grid(static_cast<std::size_t>(n1) * n2);
+    std::vector<char> known(grid.size(), 0);
+    // The light arriving from grid point (u, v): the colour taken at the centre, times the shadow towards it.
+    auto sample = [&](int u, int v) -> Vec3 {
+        const std::size_t k = static_cast<std::size_t>(u) * n2 + v;
+        if (known[k]) return grid[k];
+        double ju = u, jv = v;
+        if (light.jitter) {
+            ju += uniform() - 0.5;
+            jv += uniform() - 0.5;
+        }
+        Vec3 offset;
+        if (light.circular && n1 > 1 && n2 > 1) {
+            // POV-Ray compat (circular area lights): the square grid's shells are mapped onto circles.
+            ju = ju / (n1 - 1) - 0.5 + 0.001;
+            jv = jv / (n2 - 1) - 0.5 + 0.001;
+            const double scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+            offset = axis1 * (ju * scale) + axis2 * (jv * scale);
+        } else {
+            if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
+            if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+        }
+        const Vec3 d = light.position + offset - p;
+        const double distance = length(d);
+        const Vec3 c = distance > 0.0 ? colour * shadow_towards(p, d / distance, distance, interiors, ctx) : colour;
+        grid[k] = c;
+        known[k] = 1;
+        return c;
+    };
+    auto differ = [](const Vec3& a, const Vec3& b) {
+        return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z) > 0.1;
+    };
+    // POV-Ray's adaptive area light: average the region's four corners, and split it in four while corners differ
+    // by more than 0.1 (summed RGB) or the level is below `adaptive`, down to single grid cells.
+    auto region = [&](auto&& self, int u1, int v1, int u2, int v2, int level) -> Vec3 {
+        Vec3 c[4] = {sample(u1, v1), sample(u2, v1), sample(u1, v2), sample(u2, v2)};
+        if ((u2 - u1 > 1 || v2 - v1 > 1) && (level < light.adaptive || differ(c[0], c[1]) || differ(c[1], c[3]) ||
+                                             differ(c[3], c[2]) || differ(c[2], c[0]))) {
+            const int ul = (u1 + u2) / 2, uh = (u1 + u2 + 1) / 2;
+            const int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
+            c[0] = self(self, u1, v1, ul, vl, level + 1);
+            c[1] = self(self, uh, v1, u2, vl, level + 1);
+            c[2] = self(self, u1, vh, ul, v2, level + 1);
+            c[3] = self(self, uh, vh, u2, v2, level + 1);
+        }
+        return (c[0] + c[1] + c[2] + c[3]) * 0.25;
+    };
+    return region(region, 0, 0, n1 - 1, n2 - 1, 0);
 }
 
 Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,

@@ -141,6 +141,14 @@ private:
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON).
     Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
                         Vec3& to_light, TraceContext& ctx) const;
+    /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
+    /// opaque, else the filter colours of what stands between (shadow_filter).
+    Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
+                        TraceContext& ctx) const;
+    /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
+    /// towards the points of the light's grid.
+    Vec3 area_light_shadow(const parser::Light& light, const Vec3& colour, const Vec3& p,
+                           const InteriorStack& interiors, TraceContext& ctx) const;
     /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
     /// of every surface it crosses).
     /// `interiors` are those of the ray that found `p` (POV-Ray starts the shadow ray with them and fades light

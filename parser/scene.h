@@ -316,6 +316,16 @@ struct Light {
     double radius = 30.0;
     double falloff = 45.0;
     double tightness = 0.0;
+    // `area_light axis1, axis2, size1, size2` with its options, POV-Ray's defaults.
+    bool area = false;
+    Vec3 area_axis1;
+    Vec3 area_axis2;
+    int area_size1 = 1;
+    int area_size2 = 1;
+    int adaptive = 100;  ///< POV-Ray's default: subdivide to the full grid
+    bool jitter = false;
+    bool circular = false;
+    bool orient = false;
     SourceLoc loc;
 };
 

@@ -394,6 +394,8 @@ Light Parser::parse_light_body(const Token& kw) {
         if (parse_transform_item(t, tr)) {
             light.position = tr.point(light.position);
             light.point_at = tr.point(light.point_at);
+            light.area_axis1 = tr.vector(light.area_axis1);
+            light.area_axis2 = tr.vector(light.area_axis2);
             continue;
         }
         if (is_color_keyword(t)) {
@@ -415,19 +417,32 @@ Light Parser::parse_light_body(const Token& kw) {
         else if (w == "fade_power") light.fade_power = parse_float();
         else if (w == "shadowless") light.shadowless = true;
         else if (w == "area_light") {
-            warn_unsupported(t, "area_light");
-            parse_vector();
-            accept(",");
-            parse_vector();
-            accept(",");
-            parse_float();
-            accept(",");
-            parse_float();
+            light.area = true;
+            light.area_axis1 = parse_vector();
+            expect(",");
+            light.area_axis2 = parse_vector();
+            expect(",");
+            const Token& at1 = peek();
+            const double n1 = parse_float();
+            expect(",");
+            const Token& at2 = peek();
+            const double n2 = parse_float();
+            // POV-Ray compat: sizes are truncated, and a size below 1 is an error.
+            if (!(n1 >= 1.0) || n1 > 1e4) fail(at1, "area_light size must be between 1 and 10000");
+            if (!(n2 >= 1.0) || n2 > 1e4) fail(at2, "area_light size must be between 1 and 10000");
+            light.area_size1 = static_cast<int>(n1);
+            light.area_size2 = static_cast<int>(n2);
         } else if (w == "adaptive") {
-            parse_float();
-        } else if (w == "jitter" || w == "circular" || w == "orient") {
-            // Area light options; the area light itself was already reported.
-        } else if (w == "area_illumination" || w == "media_interaction" || w == "media_attenuation") {
+            light.adaptive = std::max(0, static_cast<int>(std::min(parse_float(), 100.0)));
+        } else if (w == "jitter") {
+            light.jitter = true;
+        } else if (w == "circular") {
+            light.circular = true;
+        } else if (w == "orient") {
+            light.orient = true;
+        } else if (w == "area_illumination") {
+            if (parse_bool_optional()) warn_unsupported(t, "area_illumination");
+        } else if (w == "media_interaction" || w == "media_attenuation") {
             parse_bool_optional();
         } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
             warn_unsupported(t, w);

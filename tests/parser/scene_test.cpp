@@ -118,12 +118,28 @@ TEST(Light, AllFields) {
     EXPECT_EQ(s.lights[3].type, Light::Type::Cylinder);
 }
 
-TEST(Light, AreaLightWarnsAndStillLights) {
-    const Scene s = parse_ok("light_source { <0, 5, 0> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 4, 4 "
-                             "adaptive 1 jitter circular orient }");
+TEST(Light, AreaLightKeepsItsGridAndOptions) {
+    const Scene s = parse_ok("light_source { <0, 5, 0> color rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 4, 3.7 "
+                             "adaptive 1 jitter circular orient rotate y*90 }");
     ASSERT_EQ(s.lights.size(), 1u);
-    ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0].message, "area_light is not rendered yet");
+    EXPECT_TRUE(s.warnings.empty());
+    const Light& l = s.lights[0];
+    EXPECT_TRUE(l.area);
+    EXPECT_EQ(l.area_size1, 4);
+    EXPECT_EQ(l.area_size2, 3);  // POV-Ray truncates the sizes
+    EXPECT_EQ(l.adaptive, 1);
+    EXPECT_TRUE(l.jitter && l.circular && l.orient);
+    // The axes turn with the light (left-handed: rotating x by 90° about y gives −z).
+    expect_vec(l.area_axis1, {0, 0, -1});
+    expect_vec(l.area_axis2, {1, 0, 0});
+    EXPECT_EQ(parse_ok("light_source { 0, 1 }").lights[0].adaptive, 100);  // full grid unless told
+}
+
+TEST(Light, AreaLightSizeBelowOneIsAnError) {
+    const ParseResult r = test::parse_fail("light_source { 0, 1 area_light x, z, 0, 4 }");
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].message, "area_light size must be between 1 and 10000");
+    EXPECT_EQ(r.diagnostics[0].loc.column, 38u);  // at the size
 }
 
 TEST(Objects, ShapesTransformsAndFlags) {
