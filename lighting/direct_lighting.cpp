@@ -241,7 +241,8 @@ Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, 
 }
 
 Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n,
-                                const InteriorStack& interiors, Vec3& to_light, TraceContext& ctx) const {
+                                const InteriorStack& interiors, bool area_lights, Vec3& to_light,
+                                TraceContext& ctx) const {
     using Type = parser::Light::Type;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
@@ -277,7 +278,7 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
 
     const Vec3 colour = light.color.rgb() * attenuation;
     if (light.shadowless) return colour;
-    if (light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
+    if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)
         return area_light_shadow(light, colour, p, interiors, ctx);
     return colour * shadow_towards(p, to_light, distance, interiors, ctx);
@@ -381,7 +382,8 @@ Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment,
     };
     for (const parser::Light& light : m_scene.lights) {
         Vec3 to_light;
-        const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, to_light, ctx);
+        // POV-Ray compat (GetRadiosityQualityFlags): on a gather ray's path area lights are point lights.
+        const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, s.highlights, to_light, ctx);
         if (arriving == Vec3{}) continue;
         const double cos_i = dot(n, to_light);
         Vec3 light_colour;  // this light's diffuse and highlights

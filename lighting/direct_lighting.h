@@ -106,7 +106,8 @@ private:
         Vec3 direction;                           ///< unit direction of the incoming ray
         double depth = 0.0;                       ///< distance from the ray's origin
         const InteriorStack* interiors = nullptr;  ///< the interiors the incoming ray is in
-        bool highlights = true;  ///< POV-Ray compat: false on gather rays' paths (no phong or specular)
+        /// POV-Ray compat: false on gather rays' paths, which see no phong or specular and area lights as points.
+        bool highlights = true;
     };
 
     /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then fog);
@@ -138,9 +139,10 @@ private:
     Vec3 direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                       const Vec3& n, TraceContext& ctx) const;
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
-    /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON).
+    /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
+    /// `area_lights` false an area light counts as a point light at its centre.
     Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
-                        Vec3& to_light, TraceContext& ctx) const;
+                        bool area_lights, Vec3& to_light, TraceContext& ctx) const;
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
     Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
