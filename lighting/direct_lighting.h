@@ -57,6 +57,10 @@ struct TraceContext {
     RayCounters rays;
     cache::TileCache* cache = nullptr;  ///< the tile's view of the irradiance cache (cache mode only)
     bool final_pass = true;             ///< false in POV-Ray's pretrace passes
+    /// --aov irradiance: the indirect irradiance first computed on the current camera path lands here.
+    bool capture_irradiance = false;
+    bool captured = false;
+    Vec3 irradiance;
 };
 
 /// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), by object index.

@@ -38,7 +38,12 @@ Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, 
         const double g = grey(e);
         e = e * (1.0 - rs.gray_threshold) + Vec3{g, g, g} * rs.gray_threshold;
     }
-    return e * rs.brightness;
+    e = e * rs.brightness;
+    if (ctx.capture_irradiance && !ctx.captured && state.gi_depth == 0) {
+        ctx.irradiance = e;
+        ctx.captured = true;
+    }
+    return e;
 }
 
 Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -18,6 +19,7 @@
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
 #include "parser/parse.h"
+#include "render/camera.h"
 #include "render/diff_command.h"
 #include "render/options.h"
 #include "render/renderer.h"
@@ -295,6 +297,7 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
                           options.antialias_gamma};
     settings.pretrace = options.pretrace;
+    settings.irradiance_aov = options.aov_irradiance.has_value();
     const RenderResult result = render_image(
         scene, integrator, settings, [&](double f) { progress.update("render", f); }, irradiance_cache.get());
     progress.finish();
@@ -307,6 +310,27 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
             std::cerr << "wardray: error: " << *error << "\n";
             return kExitScene;
         }
+    }
+    // The diagnostic images (--aov), in the format their names say.
+    auto write_aov = [&](const fs::path& path, const Film& film) {
+        const auto error = write_image(film, path, format_from_extension(path).value_or(ImageFormat::Png));
+        if (error) std::cerr << "wardray: error: " << *error << "\n";
+        return !error;
+    };
+    if (options.aov_irradiance && result.irradiance && !write_aov(*options.aov_irradiance, *result.irradiance))
+        return kExitScene;
+    if (options.aov_records) {
+        Film marked = result.film;
+        if (irradiance_cache) {
+            const CameraModel camera(scene.camera, options.width, options.height);
+            for (const cache::IrradianceRecord& r : irradiance_cache->records(0)) {
+                double px = 0.0, py = 0.0;
+                if (!camera.project(r.position, px, py)) continue;
+                const int x = static_cast<int>(std::floor(px)), y = static_cast<int>(std::floor(py));
+                if (x >= 0 && y >= 0 && x < options.width && y < options.height) marked.set_pixel(x, y, {1.0, 0.0, 0.0});
+            }
+        }
+        if (!write_aov(*options.aov_records, marked)) return kExitScene;
     }
     if (irradiance_cache && options.radiosity_save) {
         const auto error = write_atomically(cache_file, [&](const fs::path& tmp) -> std::optional<std::string> {

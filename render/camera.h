@@ -13,6 +13,8 @@ public:
 
     /// The ray through image position (px, py); pixel (x, y)'s centre is (x + 0.5, y + 0.5).
     geometry::Ray ray(double px, double py) const;
+    /// The image position (pixel units) where the world point `p` appears; false when it is behind the camera.
+    bool project(const Vec3& p, double& px, double& py) const;
 
 private:
     parser::Camera m_camera;

@@ -183,6 +183,12 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
         if (v == "on") o.gi_gradients = true;
         else if (v == "off") o.gi_gradients = false;
         else return UsageError{"--gi-gradients must be on or off"};
+    } else if (name == "--aov") {
+        const auto kind = value();
+        const auto file = next();
+        if (!kind || (*kind != "irradiance" && *kind != "records") || !file || file->empty())
+            return UsageError{"--aov needs a kind (irradiance or records) and a file name"};
+        (*kind == "irradiance" ? o.aov_irradiance : o.aov_records) = *file;
     } else if (name == "--no-pretrace") {
         o.pretrace = false;
     } else if (name == "--read-path" || name == "--write-path") {
@@ -268,6 +274,8 @@ std::string usage_text() {
            "  --gi-rays N               reference mode: paths per pixel (default 256)\n"
            "  --gi-gradients=on|off     cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)\n"
            "  --no-pretrace             cache mode: skip the pretrace passes\n"
+           "  --aov irradiance FILE     also write the indirect irradiance alone\n"
+           "  --aov records FILE        also write the image with each cache record (first bounce) as a red dot\n"
            "  +RFI +RFO +RF<file>       load / save the irradiance cache (default file: the scene's name, .rca)\n"
            "  --stats file.json write timings and ray counts\n"
            "  --read-path DIR, --write-path DIR, --allow-file-writes   where #fopen may read and write\n"

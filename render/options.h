@@ -35,6 +35,8 @@ struct Options {
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
     bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
     std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca
+    std::optional<std::filesystem::path> aov_irradiance;  ///< --aov irradiance FILE: indirect irradiance alone
+    std::optional<std::filesystem::path> aov_records;     ///< --aov records FILE: the image with the records as dots
     std::vector<std::pair<std::string, double>> declares;
     std::vector<std::filesystem::path> library_paths;
     std::optional<std::filesystem::path> stats;

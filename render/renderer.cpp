@@ -28,8 +28,21 @@ struct TileCounters {
 /// Traces and shades one image position, keeping NaN and infinity out of the picture.
 class Sampler {
 public:
-    Sampler(const CameraModel& camera, const lighting::Integrator& integrator, TileCounters& counters)
-        : m_camera(camera), m_integrator(integrator), m_counters(counters) {}
+    Sampler(const CameraModel& camera, const lighting::Integrator& integrator, TileCounters& counters,
+            Film* irradiance = nullptr)
+        : m_camera(camera), m_integrator(integrator), m_counters(counters), m_irradiance(irradiance) {}
+
+    /// Pixel (x, y)'s centre sample, which also fills the irradiance film when there is one.
+    Vec3 centre(int x, int y) const {
+        lighting::TraceContext& ctx = m_counters.trace;
+        ctx.capture_irradiance = m_irradiance != nullptr;
+        ctx.captured = false;
+        const Vec3 c = (*this)(x + 0.5, y + 0.5);
+        if (m_irradiance)
+            m_irradiance->set_pixel(x, y, ctx.captured && is_finite(ctx.irradiance) ? ctx.irradiance : Vec3{});
+        ctx.capture_irradiance = false;
+        return c;
+    }
 
     Vec3 operator()(double px, double py) const {
         Vec3 c = m_integrator.trace_camera_ray(m_camera.ray(px, py), m_counters.trace);
@@ -44,6 +57,7 @@ private:
     const CameraModel& m_camera;
     const lighting::Integrator& m_integrator;
     TileCounters& m_counters;
+    Film* m_irradiance;
 };
 
 // A jitter offset in [-0.5, 0.5) from a sample position: the same position always jitters the same way,
@@ -107,7 +121,7 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
         done[at(x0 - 1, y)] = 1;
         for (int x = x0; x < x1; ++x) {
             const std::size_t cur = at(x, y), left = at(x - 1, y), top = at(x, y - 1);
-            colour[cur] = sample(x + 0.5, y + 0.5);
+            colour[cur] = sample.centre(x, y);
             const bool left_differs = encoded_distance(colour[left], colour[cur], aa.gamma) >= aa.threshold;
             const bool top_differs = encoded_distance(colour[top], colour[cur], aa.gamma) >= aa.threshold;
             if (left_differs && !done[left]) {
@@ -196,13 +210,14 @@ std::vector<double> pretrace_sizes(const parser::RadiositySettings& rs, int widt
 
 RenderResult render_image(const parser::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
-    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}};
+    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt};
     const CameraModel camera(scene.camera, settings.width, settings.height);
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
     const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
     const int tile_count = tiles_x * tiles_y;
     std::vector<TileCounters> tile_counters(tile_count);
     const bool cached = cache != nullptr && integrator.uses_cache() && scene.global.radiosity.has_value();
+    if (settings.irradiance_aov) result.irradiance.emplace(settings.width, settings.height);
 
     // Without a cache every tile is independent: one wave. With one, tiles go in waves and each wave's records are
     // merged (in a fixed order) before the next starts, so the image is the same for any thread count.
@@ -263,12 +278,13 @@ RenderResult render_image(const parser::Scene& scene, const lighting::Integrator
 
     const auto final_start = std::chrono::steady_clock::now();
     run_pass(true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
-        const Sampler sample(camera, integrator, tile_counters[tile]);
+        const Sampler sample(camera, integrator, tile_counters[tile],
+                             result.irradiance ? &*result.irradiance : nullptr);
         if (settings.antialias.enabled) {
             render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
         } else {
             for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) result.film.set_pixel(x, y, sample(x + 0.5, y + 0.5));
+                for (int x = x0; x < x1; ++x) result.film.set_pixel(x, y, sample.centre(x, y));
         }
     });
     result.passes.push_back(

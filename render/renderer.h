@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,7 @@ struct RenderSettings {
     int tile_size = 32;  ///< POV-Ray's render block size; antialiasing decisions are made per block
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
+    bool irradiance_aov = false;  ///< keep each pixel's indirect irradiance (at its centre sample) in a second film
 };
 
 /// One pass over the image: a pretrace pass with its block size in pixels, or the final pass.
@@ -51,6 +53,7 @@ struct RenderResult {
     std::uint64_t non_finite_pixels = 0;  ///< pixels whose radiance was NaN or infinite (written as black)
     std::uint64_t supersampled_pixels = 0;
     std::vector<PassTiming> passes;
+    std::optional<Film> irradiance;  ///< RenderSettings::irradiance_aov: indirect irradiance per pixel, else empty
 };
 
 /// POV-Ray's pretrace block sizes in pixels for an image of width × height: pretrace_start to pretrace_end of the

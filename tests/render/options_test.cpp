@@ -105,3 +105,30 @@ TEST(Options, UsageErrorsNameTheProblem) {
 
 }  // namespace
 }  // namespace wardray::render
+
+namespace wardray::render {
+namespace {
+
+TEST(Options, RadiositySwitches) {
+    const Options o = parse_ok({"+RFI", "+RFO", "+RFcache.rca", "--gi=reference", "--gi-rays", "64",
+                                "--gi-gradients=off", "--no-pretrace", "--aov", "irradiance", "irr.exr", "--aov",
+                                "records", "rec.png"});
+    EXPECT_TRUE(o.radiosity_load);
+    EXPECT_TRUE(o.radiosity_save);
+    ASSERT_TRUE(o.radiosity_file);
+    EXPECT_EQ(o.radiosity_file->string(), "cache.rca");
+    EXPECT_EQ(o.gi, lighting::GiMode::Reference);
+    EXPECT_EQ(o.gi_rays, 64);
+    EXPECT_FALSE(o.gi_gradients);
+    EXPECT_FALSE(o.pretrace);
+    ASSERT_TRUE(o.aov_irradiance && o.aov_records);
+    EXPECT_EQ(o.aov_irradiance->string(), "irr.exr");
+    EXPECT_EQ(o.aov_records->string(), "rec.png");
+    EXPECT_FALSE(parse_ok({"+RFI", "-RFI"}).radiosity_load);
+    EXPECT_NE(parse_error({"--gi-rays", "0"}).find("--gi-rays"), std::string::npos);
+    EXPECT_NE(parse_error({"--aov", "normals", "n.png"}).find("--aov"), std::string::npos);
+    EXPECT_NE(parse_error({"--gi-gradients=maybe"}).find("--gi-gradients"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wardray::render

@@ -80,16 +80,23 @@ TEST_P(RadiosityFurnace, MatchesTheGeometricSeries) {
         "global_settings { assumed_gamma 1 radiosity { count 50 recursion_limit " << c.recursion_limit << " } }\n"
         "camera { location 0 look_at z angle 90 }\n"
         "sphere { 0, 10 pigment { rgb 1 } finish { emission 0.5 diffuse 0.5 ambient 0.3 } }\n";
-    const auto run = run_command(wardray() + " +Ifurnace.pov +Oout.hdr +W32 +H24 -A --gi=" + c.gi + " --gi-rays 16",
+    const auto run = run_command(wardray() + " +Ifurnace.pov +Oout.hdr +W32 +H24 -A --gi=" + c.gi +
+                                     " --gi-rays 16 --aov irradiance irradiance.hdr",
                                  dir.string());
     ASSERT_EQ(run.exit_status, 0) << run.output;
     const render::Film film = read(dir / "out.hdr");
+    const render::Film irradiance = read(dir / "irradiance.hdr");
     double expected = 0.0;
     for (int k = 0; k <= c.recursion_limit; ++k) expected += 0.5 * std::pow(0.5, k);
+    // What arrives is the radiance of the rest of the sphere, one bounce shorter: (L − e) / d.
+    const double arriving = (expected - 0.5) / 0.5;
     // In a 3.7 radiosity scene `ambient` is not light, so it must not show up.
-    for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x)
+    for (int y = 0; y < film.height(); ++y) {
+        for (int x = 0; x < film.width(); ++x) {
             ASSERT_NEAR(film.pixel(x, y).y, expected, 2e-3 * expected) << "pixel " << x << "," << y;
+            ASSERT_NEAR(irradiance.pixel(x, y).y, arriving, 2e-3 * expected) << "irradiance at " << x << "," << y;
+        }
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, RadiosityFurnace,
@@ -139,6 +146,27 @@ TEST(Radiosity, CacheAgreesWithTheReferenceOnTheBox) {
         for (const auto& n : pass) total += n.get<std::uint64_t>();
     EXPECT_GT(total, 0u);
     EXPECT_LT(final_depth0 * 10, total) << stats["cache"].dump();
+}
+
+TEST(Radiosity, RecordsImageMarksEachFirstBounceRecord) {
+    const fs::path dir = fresh_dir("records_aov");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W64 +H48 -A";
+    const auto r = run_command(wardray() + scene + " +Oimage.hdr --aov records records.hdr --stats stats.json",
+                               dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    const render::Film image = read(dir / "image.hdr");
+    const render::Film marked = read(dir / "records.hdr");
+    std::uint64_t dots = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            if (marked.pixel(x, y) == Vec3{1.0, 0.0, 0.0} && !(image.pixel(x, y) == marked.pixel(x, y))) ++dots;
+    std::uint64_t depth0 = 0;
+    const nlohmann::json stats = read_json(dir / "stats.json");
+    for (const auto& pass : stats["cache"]["records_per_pass_and_depth"])
+        depth0 += pass[0].get<std::uint64_t>();
+    // Every first-bounce record was made at a visible point, so it lands on the image; several may share a pixel.
+    EXPECT_GT(dots, depth0 / 4);
+    EXPECT_LE(dots, depth0);
 }
 
 TEST(Radiosity, SceneWithoutRadiosityPaysNothing) {
