@@ -62,7 +62,11 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
     next.interiors = state.interiors;
     const geometry::Ray ray{p, dir, m_geometry.self_intersection_offset(p), 1e30, geometry::RayKind::Gather};
     ++ctx.rays.gather;
-    return trace(ray, next, false, ctx, &distance);
+    const Vec3 l = trace(ray, next, false, ctx, &distance);
+    // POV-Ray compat (GatherLight): max_sample scales a sample down so that its largest channel is at most that.
+    const double brightest = std::max(l.x, std::max(l.y, l.z));
+    if (rs.max_sample > 0.0 && brightest > rs.max_sample) return l * (rs.max_sample / brightest);
+    return l;
 }
 
 Vec3 Integrator::cached_irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,

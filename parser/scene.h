@@ -346,6 +346,7 @@ struct RadiositySettings {
     double gray_threshold = 0.0;
     double adc_bailout = 0.01;
     bool always_sample = false;
+    double max_sample = -1.0;  ///< brightest a gather sample may be (its largest channel); ≤ 0: no limit
     bool normal = false;
     bool media = false;
     SourceLoc loc;

@@ -554,10 +554,8 @@ void Parser::parse_radiosity(const Token& kw, RadiositySettings& rad) {
         else if (w == "always_sample") rad.always_sample = parse_bool_optional();
         else if (w == "normal") rad.normal = parse_bool_optional();
         else if (w == "media") rad.media = parse_bool_optional();
-        else if (w == "max_sample") {
-            warn_unsupported(t, "radiosity max_sample");
-            parse_float();
-        } else if (w == "subsurface") {
+        else if (w == "max_sample") rad.max_sample = parse_float();
+        else if (w == "subsurface") {
             warn_unsupported(t, "radiosity subsurface");
             parse_bool_optional();
         } else if (w == "save_file" || w == "load_file") {

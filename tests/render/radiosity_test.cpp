@@ -106,6 +106,22 @@ INSTANTIATE_TEST_SUITE_P(Modes, RadiosityFurnace,
                              return info.param.gi + std::to_string(info.param.recursion_limit);
                          });
 
+TEST(Radiosity, MaxSampleLimitsEveryGatherSample) {
+    // The furnace with recursion_limit 1: each gather sample sees radiance e = 0.5, limited to 0.2.
+    const fs::path dir = fresh_dir("max_sample");
+    std::ofstream(dir / "furnace.pov") << "#version 3.7;\n"
+        "global_settings { assumed_gamma 1 radiosity { count 50 recursion_limit 1 max_sample 0.2 } }\n"
+        "camera { location 0 look_at z angle 90 }\n"
+        "sphere { 0, 10 pigment { rgb 1 } finish { emission 0.5 diffuse 0.5 } }\n";
+    for (const char* gi : {"cache", "reference"}) {
+        const auto run = run_command(wardray() + " +Ifurnace.pov +Oout.hdr +W16 +H12 -A --gi-rays 8 --gi=" + gi,
+                                     dir.string());
+        ASSERT_EQ(run.exit_status, 0) << run.output;
+        const render::Film film = read(dir / "out.hdr");
+        EXPECT_NEAR(film.pixel(8, 6).y, 0.5 + 0.5 * 0.2, 1e-3) << gi;
+    }
+}
+
 TEST(Radiosity, CacheImageIsTheSameForAnyThreadCountAndRun) {
     const fs::path dir = fresh_dir("threads");
     const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W64 +H48 -A";
