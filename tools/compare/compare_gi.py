@@ -6,7 +6,7 @@ For every scene of the list, each renderer renders the scene over a ladder of ra
 scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 threads each, N runs per point.
 Each image is compared (rRMSE, bad pixels; ../shared/docs/METRICS.md) with the converged reference of its own
 renderer: POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01, nearest_count 20; wardray's brute-force
-`--gi=reference` with its rays per pixel doubled until a second seed (or, without a seed option, twice the rays)
+`--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
 changes the image by less than 0.5 % rRMSE. References are cached (build/compare-cache). Writes
 <out>/gi_comparison.csv, .json, .md and one error-against-time plot per scene under <out>/gi_comparison/.
 
@@ -53,8 +53,19 @@ def scene_name(path):
     return path.stem
 
 
+def next_rays(rays, change, tolerance, max_rays):
+    """Rays per pixel for the next convergence check: noise falls as 1/sqrt(rays), so aim where `change` would be
+    10 % under the tolerance, at least twice the current count, rounded up to a power of two, at most max_rays."""
+    wanted = rays * (change / tolerance) ** 2 * 1.2
+    n = 2 * rays
+    while n < wanted:
+        n *= 2
+    return min(n, max_rays)
+
+
 def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, name):
-    """wardray's converged image: brute force with rays doubled until the image stops changing (METRICS.md)."""
+    """wardray's converged image: brute force with enough rays that a second seed changes the image by less than
+    the tolerance (METRICS.md); without a seed option, that halving the rays does."""
     if ward.gi_mode == "off":
         image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work, f"wardray --gi=off image of {name}")
         progress.finish((name, "wardray", None), None if cached else seconds)
@@ -62,32 +73,30 @@ def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, n
                        "check": "none: wardray ran with --gi=off (development mode)"}
     if not ward.has_reference:
         raise RenderFailed("this wardray has no --gi=reference with --gi-rays (see wardray --help)")
-    rays, previous = cfg["start_rays"], None
+
+    def render(rays, seed):
+        progress.show(name, f"reference {rays} rays" + (f" seed {seed}" if seed else ""), "wardray", 1, 1)
+        image, seconds, cached = cache.render(ward, text, scene_dir, size, ward.reference_args(rays, seed), work,
+                                              f"wardray reference of {name}, {rays} rays"
+                                              + (f", seed {seed}" if seed else ""))
+        progress.finish((name, "wardray", None), None if cached else seconds)
+        return image, seconds
+
+    rays, tolerance, max_rays = cfg["start_rays"], cfg["tolerance"], cfg["max_rays"]
     while True:
-        seeds = (1, 2) if ward.has_seed else (None,)
-        images = []
-        for seed in seeds:
-            progress.show(name, f"reference {rays} rays" + (f" seed {seed}" if seed else ""), "wardray", 1, 1)
-            image, seconds, cached = cache.render(ward, text, scene_dir, size, ward.reference_args(rays, seed), work,
-                                                  f"wardray reference of {name}, {rays} rays, seed {seed}")
-            progress.finish((name, "wardray", None), None if cached else seconds)
-            images.append((image, seconds))
+        # A pair of images whose difference measures the noise left at `rays`; the reference is the first one.
         if ward.has_seed:
-            change = image_error(read_linear_rgb(images[1][0]), read_linear_rgb(images[0][0]))["rrmse"]
-            how = f"second seed changes rRMSE by {100 * change:.2f} % at {rays} rays"
-        elif previous is not None:
-            change = image_error(read_linear_rgb(images[0][0]), read_linear_rgb(previous))["rrmse"]
-            how = (f"no seed option: doubling the rays from {rays // 2} to {rays} changes rRMSE by "
-                   f"{100 * change:.2f} %")
+            (ref, seconds), (other, _) = render(rays, 1), render(rays, 2)
         else:
-            change, how = None, ""
-        previous = images[0][0]
-        converged = change is not None and change < cfg["tolerance"]
-        if converged or rays * 2 > cfg["max_rays"]:
-            return images[0][0], {"rays": rays, "seconds": images[0][1], "converged": converged,
-                                  "check": how or "not checked (single step)"}
-        rays *= 2
-        progress.add([(name, "wardray", None)] * len(seeds))
+            (ref, seconds), (other, _) = render(rays, None), render(rays // 2, None)
+        change = image_error(read_linear_rgb(other), read_linear_rgb(ref))["rrmse"]
+        how = (f"a second seed changes rRMSE by {100 * change:.2f} % at {rays} rays" if ward.has_seed else
+               f"no seed option: {rays // 2} instead of {rays} rays changes rRMSE by {100 * change:.2f} %")
+        converged = bool(change < tolerance)
+        if converged or rays >= max_rays:
+            return ref, {"rays": rays, "seconds": seconds, "converged": converged, "check": how}
+        rays = next_rays(rays, change, tolerance, max_rays)
+        progress.add([(name, "wardray", None)] * 2)
 
 
 def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
@@ -218,23 +227,26 @@ def main():
             skipped.append({"scene": str(path), "reason": f"radiosity block cannot be rewritten: {e}"})
             continue
         ward = next((r for r in renderers if r.name == "wardray"), None)
-        problem = ward.check(path, path.parent) if ward else None
+        problem, warnings = ward.check(path, path.parent) if ward else (None, [])
         if problem:
             skipped.append({"scene": str(path), "reason": f"wardray --check: {problem}"})
             continue
-        scenes.append(path)
+        scenes.append((path, warnings))
     for s in skipped:
         print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
 
     plan = []
-    for path in scenes:
+    for path, _ in scenes:
         name = scene_name(path)
         for r in renderers:
-            plan += [(name, r.name, None)] * (2 if r.name == "wardray" and getattr(r, "has_seed", False) else 1)
+            plan += [(name, r.name, None)] * (2 if r.name == "wardray" and r.gi_mode != "off" else 1)
         plan += [(name, r.name, p["label"]) for p in points for _ in range(args.runs) for r in renderers]
     progress = Progress(plan)
     started = time.monotonic()
-    results = [measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress) for path in scenes]
+    results = []
+    for path, warnings in scenes:
+        results.append(measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress))
+        results[-1]["wardray_warnings"] = warnings
     wall = time.monotonic() - started
     progress.note(f"compare: rendering took {format_seconds(wall)}")
 

@@ -35,7 +35,7 @@ def image_error(image, reference):
     rrmse = math.sqrt(((img - ref) ** 2).mean()) / mean_ref if mean_ref > 0 else math.inf
     y_img, y_ref = luminance(img), luminance(ref)
     bad = np.abs(y_img - y_ref) > 0.1 * y_ref + 0.01 * (y_ref.mean() if y_ref.size else 0.0)
-    return {"rrmse": rrmse, "bad_fraction": float(bad.mean()) if bad.size else 1.0, "non_finite": non_finite}
+    return {"rrmse": float(rrmse), "bad_fraction": float(bad.mean()) if bad.size else 1.0, "non_finite": non_finite}
 
 
 def crossing_time(points, target):

@@ -59,7 +59,7 @@ class Progress:
         self.done += 1
 
     def add(self, jobs):
-        """Adds jobs found to be needed while running (another doubling of the reference's rays)."""
+        """Adds jobs found to be needed while running (another convergence check of a reference)."""
         self.plan[self.done:self.done] = list(jobs)
 
     def note(self, message):

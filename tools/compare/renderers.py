@@ -98,13 +98,16 @@ class Wardray:
         return args
 
     def check(self, scene_path, scene_dir):
-        """None when wardray parses the scene, else its first error line."""
+        """(first error line or None, warning lines) from `wardray --check` on the scene."""
         proc = subprocess.run([str(self.exe), "--check", f"+L{scene_dir}", f"+I{scene_path}"],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
+        lines = proc.stdout.splitlines()
+        # Diagnostics read "path:line:col: warning: message"; keep them without the folder.
+        warnings = [l.split("/")[-1] for l in lines if re.search(r":\d+:\d+: warning: ", l)]
         if proc.returncode == 0:
-            return None
-        errors = [l for l in proc.stdout.splitlines() if "error" in l]
-        return (errors or proc.stdout.strip().splitlines() or [f"exit status {proc.returncode}"])[0]
+            return None, warnings
+        errors = [l for l in lines if "error" in l]
+        return (errors or lines or [f"exit status {proc.returncode}"])[0], warnings
 
 
 def local_includes(text, scene_dir):

@@ -169,9 +169,11 @@ def markdown(data, plot_dir):
         "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (../shared/docs/METRICS.md) are "
         "taken against the converged reference of its own renderer: POV-Ray's at "
         + ", ".join(f"`{k} {v}`" for k, v in data["references"]["povray_reference"].items())
-        + "; wardray's is its brute-force mode (`--gi=reference`, no cache) with the rays per pixel doubled until "
-        + {True: "a second seed", False: "doubling the rays (wardray has no seed option)"}.get(
-            data.get("wardray_has_seed"), "a second seed (or, without a seed option, doubling the rays)")
+        + "; wardray's is its brute-force mode (`--gi=reference`, no cache) with the rays per pixel raised until "
+        + {True: "a second seed",
+           False: "halving the rays (wardray has no seed option; if the two renders share their first paths, this "
+                  "check is up to 1.4 times more lenient than a second seed would be)"}.get(
+            data.get("wardray_has_seed"), "a second seed (or, without a seed option, halving the rays)")
         + f" changes the image by less than {100 * data['references']['wardray_reference']['tolerance']:.1f} % "
         "rRMSE. The rRMSE between the two references shows how much of any difference is the lighting model rather "
         "than noise or cache error.",
@@ -222,6 +224,13 @@ def markdown(data, plot_dir):
                   "(the last column of each scene's table below gives wardray's error against POV-Ray's reference).",
                   ""]
 
+    unsupported = [s for s in data["scenes"] if s.get("wardray_warnings")]
+    if unsupported:
+        lines += ["wardray warns of scene features it does not render (yet) on "
+                  + ", ".join(f"{s['scene']} ({len(s['wardray_warnings'])})" for s in unsupported)
+                  + "; there the references differ by design, not only by noise. The warnings are listed under "
+                  "each scene below.", ""]
+
     lines += ["## Per scene", ""]
     for s in data["scenes"]:
         lines += [f"### {s['scene']}", "", f"`{s['path']}`", "",
@@ -235,6 +244,8 @@ def markdown(data, plot_dir):
         if non_finite:
             lines += ["", "**Non-finite pixels** (a failure whatever the errors say): "
                       + ", ".join(f"{LABELS[p['renderer']]} at {p['label']}" for p in non_finite) + "."]
+        if s.get("wardray_warnings"):
+            lines += ["", "`wardray --check` warnings:", ""] + [f"- `{w}`" for w in s["wardray_warnings"]]
         if s["failures"]:
             lines += ["", "Failures:", ""] + [f"- {f.splitlines()[0]}" for f in s["failures"]]
         lines.append("")

@@ -123,5 +123,14 @@ class CrossingTest(unittest.TestCase):
         self.assertEqual(crossing_time([], 0.05), (None, False))
 
 
+class ReferenceRaysTest(unittest.TestCase):
+    def test_aims_past_the_tolerance_in_powers_of_two(self):
+        from compare_gi import next_rays
+        self.assertEqual(next_rays(64, 0.006, 0.005, 8192), 128)    # nearly there: just double
+        self.assertEqual(next_rays(64, 0.05, 0.005, 8192), 8192)    # 100x the noise power: 7680 -> 8192
+        self.assertEqual(next_rays(64, 0.05, 0.005, 4096), 4096)    # capped
+        self.assertEqual(next_rays(64, 0.02, 0.005, 8192), 2048)    # 16 x 1.2 x 64 = 1229 -> 2048
+
+
 if __name__ == "__main__":
     unittest.main()
