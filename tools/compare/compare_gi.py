@@ -129,7 +129,7 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
         if "povray" in refs and "wardray" in refs:
             result["reference_mismatch"] = image_error(refs["wardray"], refs["povray"])
         active = [r for r in renderers if r.name in refs]
-        for p in points:
+        for p_index, p in enumerate(points):
             wrapper, _ = rewrite_radiosity(text, p["radiosity"])
             (work / "scene.pov").write_text(wrapper)
             rows = {r.name: {"renderer": r.name, "label": p["label"], "settings": p["radiosity"],
@@ -143,8 +143,12 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                         continue
                     progress.show(name, p["label"], r.label, i + 1, runs)
                     extra = p.get("wardray_args", []) if r.name == "wardray" else []
+                    # A fresh name per run, so an image left by an earlier run can never be read as this one's.
+                    output = work / f"{r.name}-{p_index}-{i}.hdr"
                     try:
-                        seconds = run_timed(r.command("scene.pov", "out.hdr", size, scene_dir, extra), work)
+                        seconds = run_timed(r.command("scene.pov", output.name, size, scene_dir, extra), work)
+                        if not output.is_file():
+                            raise RenderFailed(f"{r.label} exited without writing {output.name}")
                     except RenderFailed as e:
                         failed.add(r.name)
                         result["failures"].append(f"{r.label} at {p['label']}: {e}")
@@ -152,7 +156,8 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                         progress.finish(job, None)
                         continue
                     progress.finish(job, seconds)
-                    image = read_linear_rgb(work / "out.hdr")
+                    image = read_linear_rgb(output)
+                    output.unlink()
                     err = image_error(image, refs[r.name])
                     if "povray" in refs:
                         err["rrmse_vs_povray_reference"] = image_error(image, refs["povray"])["rrmse"]

@@ -5,15 +5,23 @@ import numpy as np
 
 
 def read_linear_rgb(path):
-    """A linear HDR/EXR image as a float64 array of shape (height, width, 3)."""
+    """A linear HDR/EXR image as a float64 array of shape (height, width, 3).
+
+    Reads through ImageInput rather than ImageBuf, which goes through OpenImageIO's image cache: reading renders that
+    rewrote one file name through ImageBuf sometimes returned the previous renderer's pixels."""
     import OpenImageIO as oiio  # imported here so the unit tests need only numpy
 
-    buf = oiio.ImageBuf(str(path))
-    if buf.has_error:
-        raise RuntimeError(f"cannot read {path}: {buf.geterror()}")
-    pixels = buf.get_pixels(oiio.FLOAT)
-    if pixels is None or pixels.ndim != 3 or pixels.shape[2] < 3:
-        raise RuntimeError(f"{path}: expected an RGB image, got {None if pixels is None else pixels.shape}")
+    inp = oiio.ImageInput.open(str(path))
+    if inp is None:
+        raise RuntimeError(f"cannot read {path}: {oiio.geterror()}")
+    try:
+        pixels = inp.read_image(oiio.FLOAT)
+        spec = inp.spec()
+    finally:
+        inp.close()
+    if pixels is None or spec.nchannels < 3:
+        raise RuntimeError(f"{path}: expected an RGB image ({inp.geterror() if pixels is None else spec.nchannels})")
+    pixels = pixels.reshape(spec.height, spec.width, spec.nchannels)
     return pixels[:, :, :3].astype(np.float64)
 
 

@@ -145,8 +145,11 @@ class RenderCache:
                   flush=True)
             return image, seconds, True
         (work / "scene.pov").write_text(scene_text)
+        (work / "cached.hdr").unlink(missing_ok=True)
         cmd = renderer.command("scene.pov", "cached.hdr", size, scene_dir, extra)
         seconds = run_timed(cmd, work)
+        if not (work / "cached.hdr").is_file():
+            raise RenderFailed(f"{' '.join(cmd)} exited without writing its image")
         shutil.move(str(work / "cached.hdr"), image)
         meta.write_text(json.dumps({"what": what, "seconds": seconds, "command": cmd, "version": renderer.version,
                                     "created": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}, indent=1))

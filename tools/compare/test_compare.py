@@ -104,6 +104,26 @@ class ErrorTest(unittest.TestCase):
         self.assertEqual(e["rrmse"], 0.0)
 
 
+class ReadTest(unittest.TestCase):
+    def test_a_rewritten_file_is_read_anew(self):
+        # Reading a file rewritten under the same name once returned the old pixels (in the full tool, not here).
+        try:
+            import OpenImageIO as oiio
+        except ImportError:
+            self.skipTest("no OpenImageIO Python bindings")
+        import tempfile
+        from gimetrics import read_linear_rgb
+        with tempfile.TemporaryDirectory() as tmp:
+            path = pathlib.Path(tmp) / "out.hdr"
+            for value in (0.25, 2.0):
+                buf = oiio.ImageBuf(oiio.ImageSpec(4, 3, 3, oiio.FLOAT))
+                oiio.ImageBufAlgo.fill(buf, (value, value, value))
+                self.assertTrue(buf.write(str(path)))
+                image = read_linear_rgb(path)
+                self.assertEqual(image.shape, (3, 4, 3))
+                self.assertAlmostEqual(float(image.mean()), value, places=2)
+
+
 class CrossingTest(unittest.TestCase):
     def test_interpolates_in_log_log_space(self):
         # Error falls as 1/sqrt(t): from 8 % at 1 s to 2 % at 16 s; 4 % is reached at 4 s.
