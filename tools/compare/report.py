@@ -141,17 +141,29 @@ def plot_scene(scene, data, path):
 
 
 def headline(data):
-    """Rows of the headline table and the plain list of where wardray is not ahead."""
-    rows, not_ahead = [], []
+    """Rows of the headline table, and the scene and target pairs where wardray is not ahead, by reason."""
+    rows = []
+    not_ahead = {"POV-Ray is faster": [], "only POV-Ray reaches the target": [], "neither reaches the target": [],
+                 "unclear (a time is only a bound)": []}
+    measured = 0
     for s in data["scenes"]:
         for target in TARGETS:
             pov, ward = crossing(s, "povray", target), crossing(s, "wardray", target)
             ratio, faster = compare_times(pov, ward)
             rows.append(f"| {s['scene']} | {pct(target, 0)} | {fmt_time(pov)} | {fmt_time(ward)} | {ratio} | {faster} |")
-            if pov["measured"] and ward["measured"] and not faster.startswith("wardray"):
-                not_ahead.append(f"{s['scene']} at {pct(target, 0)}: {faster}"
-                                 + (f", wardray/POV-Ray time {ratio}" if ratio != "—" else ""))
-    return rows, not_ahead
+            if not (pov["measured"] and ward["measured"]):
+                continue
+            measured += 1
+            where = f"{s['scene']} at {pct(target, 0)}" + (f" (wardray/POV-Ray {ratio})" if ratio != "—" else "")
+            if faster == "POV-Ray":
+                not_ahead["POV-Ray is faster"].append(where)
+            elif faster.startswith("POV-Ray"):
+                not_ahead["only POV-Ray reaches the target"].append(where)
+            elif faster.startswith("neither"):
+                not_ahead["neither reaches the target"].append(where)
+            elif faster.startswith("unclear"):
+                not_ahead["unclear (a time is only a bound)"].append(where)
+    return rows, not_ahead, measured
 
 
 def markdown(data, plot_dir):
@@ -198,13 +210,17 @@ def markdown(data, plot_dir):
         "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
         "|---|---:|---:|---:|---:|---|",
     ]
-    rows, not_ahead = headline(data)
+    rows, not_ahead, measured = headline(data)
     lines += rows + [""]
-    if not_ahead:
-        lines += ["**Where wardray is not ahead** (" + f"{len(not_ahead)} of {len(rows)}" + " scene and target "
-                  "pairs):", ""] + [f"- {n}" for n in not_ahead] + [""]
-    elif any("not measured" not in r for r in rows):
-        lines += ["wardray is ahead at every scene and target measured.", ""]
+    count = sum(len(v) for v in not_ahead.values())
+    if count:
+        lines += [f"**wardray is not ahead on {count} of the {measured} scene and target pairs measured.**", ""]
+        for reason, where in not_ahead.items():
+            if where:
+                lines.append(f"- {reason}: " + "; ".join(where) + ".")
+        lines.append("")
+    elif measured:
+        lines += [f"wardray is ahead on all {measured} scene and target pairs measured.", ""]
 
     lines += ["## References", "",
               "| scene | POV-Ray reference (s) | wardray reference (s) | wardray rays/pixel | wardray convergence | "
