@@ -11,6 +11,7 @@ changes the image by less than 0.5 % rRMSE. References are cached (build/compare
 <out>/gi_comparison.csv, .json, .md and one error-against-time plot per scene under <out>/gi_comparison/.
 
 usage: tools/compare/compare_gi.py [--scenes FILE] [--size WxH] [--runs N] [--quick] [--out DIR]
+                                   [--ladder-set full|extended] [--allow-unsupported]
                                    [--wardray PATH] [--renderers povray,wardray] [--report-only]
 """
 import argparse
@@ -67,7 +68,8 @@ def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, n
     """wardray's converged image: brute force with enough rays that a second seed changes the image by less than
     the tolerance (METRICS.md); without a seed option, that halving the rays does."""
     if ward.gi_mode == "off":
-        image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work, f"wardray --gi=off image of {name}")
+        image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work,
+                                              f"wardray --gi=off image of {name}")
         progress.finish((name, "wardray", None), None if cached else seconds)
         return image, {"rays": None, "seconds": seconds, "converged": False,
                        "check": "none: wardray ran with --gi=off (development mode)"}
@@ -180,10 +182,14 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenes", default=str(HERE / "scenes.txt"), help="scene list, one .pov per line")
     ap.add_argument("--ladder", default=str(HERE / "ladder.json"), help="quality ladders and reference settings")
-    ap.add_argument("--size", type=parse_size, default=(160, 120), help="image size WxH (default 160x120)")
+    ap.add_argument("--size", type=parse_size, default=(96, 72),
+                    help="image size WxH (default 96x72, so that the full run stays well under an hour on 2 cores)")
     ap.add_argument("--runs", type=int, default=3, help="timed runs per ladder point and renderer (default 3)")
     ap.add_argument("--quick", action="store_true",
                     help="smoke test: two ladder points and cheap, unconverged references")
+    ap.add_argument("--ladder-set", default="full", help="which ladder of --ladder to run (full, extended)")
+    ap.add_argument("--allow-unsupported", action="store_true",
+                    help="also compare scenes for which wardray --check warns of features it does not render")
     ap.add_argument("--out", default=str(ROOT / "docs" / "reports"), help="folder for the report (docs/reports)")
     ap.add_argument("--wardray", default="/work/main/build/wardray", help="wardray binary")
     ap.add_argument("--povray", default="povray", help="POV-Ray binary")
@@ -204,7 +210,10 @@ def main():
         return 0
 
     ladder = json.loads(pathlib.Path(args.ladder).read_text())
-    points = ladder["quick" if args.quick else "full"]
+    set_name = "quick" if args.quick else args.ladder_set
+    if set_name not in ladder or not isinstance(ladder[set_name], list):
+        ap.error(f"{args.ladder} has no ladder {set_name!r}")
+    points = ladder[set_name]
     cfg = {"povray_reference": ladder["quick_povray_reference" if args.quick else "povray_reference"],
            "wardray_reference": ladder["quick_wardray_reference" if args.quick else "wardray_reference"]}
     wanted = [n.strip() for n in args.renderers.split(",") if n.strip()]
@@ -236,6 +245,12 @@ def main():
         if problem:
             skipped.append({"scene": str(path), "reason": f"wardray --check: {problem}"})
             continue
+        # A scene wardray renders without some of its features compares neither images nor times fairly.
+        unsupported = [w for w in warnings if "not rendered" in w or "not supported" in w]
+        if unsupported and not args.allow_unsupported:
+            skipped.append({"scene": str(path), "reason": "wardray does not render all of it (use "
+                            "--allow-unsupported to compare anyway): " + "; ".join(unsupported)})
+            continue
         scenes.append((path, warnings))
     for s in skipped:
         print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
@@ -258,7 +273,7 @@ def main():
     data = {
         "command": " ".join(["tools/compare/compare_gi.py"] + sys.argv[1:]),
         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-        "size": list(args.size), "runs": args.runs, "quick": args.quick, "threads": 2,
+        "size": list(args.size), "runs": args.runs, "quick": args.quick, "ladder_set": set_name, "threads": 2,
         "wall_seconds": wall,
         "renderers": {r.name: r.version for r in renderers},
         "wardray_gi": args.wardray_gi if "wardray" in wanted else None,

@@ -62,8 +62,9 @@ def pct(x, digits=2):
 
 
 def write_csv(data, path):
-    fields = ["scene", "renderer", "kind", "point", "settings", "wardray_args", "runs", "seconds_median", "seconds_runs",
-              "rrmse_median", "bad_fraction_median", "non_finite_max", "rrmse_vs_povray_reference_median", "note"]
+    fields = ["scene", "renderer", "kind", "point", "settings", "wardray_args", "runs", "seconds_median",
+              "seconds_runs", "rrmse_median", "bad_fraction_median", "non_finite_max",
+              "rrmse_vs_povray_reference_median", "note"]
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
@@ -150,7 +151,8 @@ def headline(data):
         for target in TARGETS:
             pov, ward = crossing(s, "povray", target), crossing(s, "wardray", target)
             ratio, faster = compare_times(pov, ward)
-            rows.append(f"| {s['scene']} | {pct(target, 0)} | {fmt_time(pov)} | {fmt_time(ward)} | {ratio} | {faster} |")
+            rows.append(f"| {s['scene']} | {pct(target, 0)} | {fmt_time(pov)} | {fmt_time(ward)} | {ratio} "
+                        f"| {faster} |")
             if not (pov["measured"] and ward["measured"]):
                 continue
             measured += 1
@@ -179,8 +181,9 @@ def markdown(data, plot_dir):
         f"Produced by `{data['command']}` on {data['date']} (rendering took {data['wall_seconds'] / 60:.1f} min).",
         "",
         f"Each scene is rendered at {w}x{h}, antialiasing off, linear HDR, 2 threads per renderer, over a ladder of "
-        "radiosity settings (`tools/compare/ladder.json`; each point overrides `count`, `error_bound`, "
-        "`pretrace_start`, `pretrace_end` and `nearest_count` of every radiosity block in the scene's "
+        f"radiosity settings (ladder `{data.get('ladder_set', 'full')}` of `tools/compare/ladder.json`; each point "
+        "overrides `count`, `error_bound`, `pretrace_start`, `pretrace_end` and `nearest_count` of every radiosity "
+        "block in the scene's "
         "`global_settings`, everything else stays as the scene has it; wardray follows the same block). "
         f"Times are whole-process wall clock, the median of {data['runs']} runs, the two renderers' runs interleaved "
         "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (../shared/docs/METRICS.md) are "
