@@ -143,6 +143,36 @@ class CrossingTest(unittest.TestCase):
         self.assertEqual(crossing_time([], 0.05), (None, False))
 
 
+class HeadlineTest(unittest.TestCase):
+    @staticmethod
+    def scene(name, pov, ward):
+        points = [{"renderer": "povray", "seconds": t, "rrmse": e, "label": f"p{i}"} for i, (t, e) in enumerate(pov)]
+        points += [{"renderer": "wardray", "seconds": t, "rrmse": e, "label": f"p{i}"} for i, (t, e) in enumerate(ward)]
+        return {"scene": name, "points": points}
+
+    def test_says_where_wardray_is_not_ahead(self):
+        import report
+        data = {"scenes": [
+            # Same curve shape, wardray four times faster: ahead at every target it reaches.
+            self.scene("fast", [(4, 0.08), (16, 0.04), (64, 0.015)], [(1, 0.08), (4, 0.04), (16, 0.015)]),
+            # wardray's curve is POV-Ray's, twice as slow.
+            self.scene("slow", [(1, 0.08), (4, 0.01)], [(2, 0.08), (8, 0.01)]),
+            # wardray never gets below 3 %.
+            self.scene("stuck", [(1, 0.08), (4, 0.01)], [(1, 0.08), (4, 0.03)]),
+        ]}
+        rows, not_ahead, measured = report.headline(data)
+        self.assertEqual(measured, 9)
+        self.assertEqual(len(rows), 9)
+        self.assertIn("| fast | 5 % |", rows[0])
+        self.assertTrue(rows[0].endswith("| 0.25 | wardray |"), rows[0])
+        self.assertEqual(not_ahead["POV-Ray is faster"],
+                         [f"slow at {t} (wardray/POV-Ray 2.00)" for t in ("5 %", "2 %", "1 %")]
+                         + ["stuck at 5 % (wardray/POV-Ray 1.42)"])
+        self.assertEqual(not_ahead["only POV-Ray reaches the target"],
+                         ["stuck at 2 % (wardray/POV-Ray > 1.59)", "stuck at 1 %"])
+        self.assertEqual(not_ahead["neither reaches the target"], ["fast at 1 %"])
+
+
 class ReferenceRaysTest(unittest.TestCase):
     def test_aims_past_the_tolerance_in_powers_of_two(self):
         from compare_gi import next_rays
