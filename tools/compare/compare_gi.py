@@ -263,24 +263,25 @@ def main():
         plan += [(name, r.name, p["label"]) for p in points for _ in range(args.runs) for r in renderers]
     progress = Progress(plan)
     started = time.monotonic()
-    results = []
-    for path, warnings in scenes:
-        results.append(measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress))
-        results[-1]["wardray_warnings"] = warnings
-    wall = time.monotonic() - started
-    progress.note(f"compare: rendering took {format_seconds(wall)}")
-
     data = {
         "command": " ".join(["tools/compare/compare_gi.py"] + sys.argv[1:]),
         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
         "size": list(args.size), "runs": args.runs, "quick": args.quick, "ladder_set": set_name, "threads": 2,
-        "wall_seconds": wall,
+        "wall_seconds": 0.0,
         "renderers": {r.name: r.version for r in renderers},
         "wardray_gi": args.wardray_gi if "wardray" in wanted else None,
         "wardray_has_seed": next((r.has_seed for r in renderers if r.name == "wardray"), None),
-        "ladder": points, "references": cfg, "scenes": results, "skipped": skipped,
+        "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
     }
     out.mkdir(parents=True, exist_ok=True)
+    for path, warnings in scenes:
+        result = measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress)
+        result["wardray_warnings"] = warnings
+        data["scenes"].append(result)
+        data["wall_seconds"] = time.monotonic() - started
+        # Saved after every scene: an interrupted run still gives a report with --report-only.
+        data_path.write_text(json.dumps(data, indent=1))
+    progress.note(f"compare: rendering took {format_seconds(data['wall_seconds'])}")
     data_path.write_text(json.dumps(data, indent=1))
     report.write_all(data, out)
     return 0
