@@ -252,6 +252,14 @@ def markdown(data, plot_dir):
                   "(the last column of each scene's table below gives wardray's error against POV-Ray's reference).",
                   ""]
 
+    unconverged = [s["scene"] for s in data["scenes"]
+                   if s["references"].get("wardray") and not s["references"]["wardray"]["converged"]]
+    if unconverged:
+        lines += ["wardray's reference is **not converged** on " + ", ".join(unconverged) + ": an image's error "
+                  "against it cannot fall below the reference's own noise (about the change quoted above), so "
+                  "wardray's low targets may read \"not reached\" for that reason alone. Raise `max_rays` in "
+                  "`tools/compare/ladder.json` (cached references are kept) to converge them.", ""]
+
     unsupported = [s for s in data["scenes"] if s.get("wardray_warnings")]
     if unsupported:
         lines += ["wardray warns of scene features it does not render (yet) on "
