@@ -278,6 +278,10 @@ def main():
         result = measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress)
         result["wardray_warnings"] = warnings
         data["scenes"].append(result)
+        ward = next((r for r in renderers if r.name == "wardray"), None)
+        if ward and ward.rebuilt() and not data.get("rebuilt"):
+            data["rebuilt"] = f"wardray was rebuilt while {result['scene']} was measured"
+            progress.note(f"compare: warning: {data['rebuilt']}; later figures mix two builds")
         data["wall_seconds"] = time.monotonic() - started
         # Saved after every scene: an interrupted run still gives a report with --report-only.
         data_path.write_text(json.dumps(data, indent=1))

@@ -22,14 +22,24 @@ class RenderFailed(RuntimeError):
     """A renderer exited with an error; the message holds the end of its output."""
 
 
-def run_timed(cmd, cwd, timeout=None):
-    """Runs `cmd`, returns its whole-process wall-clock seconds; raises RenderFailed on a non-zero exit."""
-    start = time.perf_counter()
-    try:
-        proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                              errors="replace", timeout=timeout)
-    except subprocess.TimeoutExpired as e:
-        raise RenderFailed(f"{' '.join(cmd)} timed out after {timeout} s") from e
+def run_timed(cmd, cwd, timeout=None, attempts=10):
+    """Runs `cmd`, returns its whole-process wall-clock seconds; raises RenderFailed on a non-zero exit.
+
+    A binary that cannot be started (missing or being relinked: wardray is rebuilt in place) is retried a minute
+    later, up to `attempts` times."""
+    for attempt in range(1, attempts + 1):
+        start = time.perf_counter()
+        try:
+            proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                  errors="replace", timeout=timeout)
+            break
+        except subprocess.TimeoutExpired as e:
+            raise RenderFailed(f"{' '.join(cmd)} timed out after {timeout} s") from e
+        except OSError as e:
+            if attempt == attempts:
+                raise RenderFailed(f"cannot start {cmd[0]}: {e}") from e
+            print(f"\ncompare: cannot start {cmd[0]} ({e}); retrying in a minute", file=sys.stderr, flush=True)
+            time.sleep(60)
     elapsed = time.perf_counter() - start
     if proc.returncode != 0:
         raise RenderFailed(f"{' '.join(cmd)} failed ({proc.returncode}):\n{proc.stdout[-1500:]}")
@@ -71,7 +81,7 @@ class Wardray:
                                            stderr=subprocess.STDOUT, text=True, errors="replace", timeout=60).stdout
                 version = subprocess.run([str(self.exe), "--version"], stdout=subprocess.PIPE,
                                          stderr=subprocess.STDOUT, text=True, errors="replace", timeout=60).stdout
-                digest = hashlib.sha256(self.exe.read_bytes()).hexdigest()
+                digest = self.digest()
                 break
             except (OSError, subprocess.SubprocessError) as e:
                 if time.monotonic() > deadline:
@@ -83,6 +93,16 @@ class Wardray:
         self.version = f"{version.strip() or 'wardray'} (binary sha256 {digest[:12]})"
         self.has_reference = "reference" in help_text and "--gi-rays" in help_text
         self.has_seed = re.search(r"--seed\b", help_text) is not None
+
+    def digest(self):
+        return hashlib.sha256(self.exe.read_bytes()).hexdigest()
+
+    def rebuilt(self):
+        """True when the binary is no longer the one measured at the start (or cannot be read)."""
+        try:
+            return self.digest()[:12] not in self.version
+        except OSError:
+            return True
 
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size

@@ -181,6 +181,8 @@ def markdown(data, plot_dir):
     if data.get("wardray_gi") == "off":
         lines += ["**wardray ran with `--gi=off`** (development of this tool before wardray's cache existed): its "
                   "curve shows direct light only and means nothing.", ""]
+    if data.get("rebuilt"):
+        lines += [f"**{data['rebuilt']}**: figures from that scene on may mix two builds of wardray.", ""]
     lines += [
         f"Produced by `{data['command']}` on {data['date']} (rendering took {data['wall_seconds'] / 60:.1f} min).",
         "",
