@@ -131,6 +131,9 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
         if "povray" in refs and "wardray" in refs:
             result["reference_mismatch"] = image_error(refs["wardray"], refs["povray"])
         active = [r for r in renderers if r.name in refs]
+        for r in renderers:
+            if r not in active:
+                progress.drop(name, r.name)
         for p_index, p in enumerate(points):
             wrapper, _ = rewrite_radiosity(text, p["radiosity"])
             (work / "scene.pov").write_text(wrapper)

@@ -62,6 +62,10 @@ class Progress:
         """Adds jobs found to be needed while running (another convergence check of a reference)."""
         self.plan[self.done:self.done] = list(jobs)
 
+    def drop(self, scene, renderer):
+        """Removes a renderer's remaining jobs on a scene from the plan (its reference failed)."""
+        self.plan[self.done:] = [j for j in self.plan[self.done:] if j[0] != scene or j[1] != renderer]
+
     def note(self, message):
         self.stream.write(("\r\x1b[K" if self.tty else "") + message + "\n")
         self.stream.flush()

@@ -42,7 +42,9 @@ def run_timed(cmd, cwd, timeout=None, attempts=10):
             time.sleep(60)
     elapsed = time.perf_counter() - start
     if proc.returncode != 0:
-        raise RenderFailed(f"{' '.join(cmd)} failed ({proc.returncode}):\n{proc.stdout[-1500:]}")
+        last = next((l.strip() for l in reversed(proc.stdout.splitlines()) if l.strip()), "no output")
+        raise RenderFailed(f"{pathlib.Path(cmd[0]).name} exited with {proc.returncode}: {last}\n"
+                           f"command: {' '.join(cmd)}\n{proc.stdout[-1500:]}")
     return elapsed
 
 
@@ -106,8 +108,9 @@ class Wardray:
 
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
+        gi = [] if any(a.startswith("--gi=") for a in extra) else [f"--gi={self.gi_mode}"]
         return [str(self.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A",
-                f"+WT{THREADS}", f"+L{scene_dir}", f"--gi={self.gi_mode}", *extra]
+                f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
 
     def reference_args(self, rays, seed=None):
         if self.gi_mode == "off":
