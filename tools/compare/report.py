@@ -191,7 +191,8 @@ def markdown(data, plot_dir):
         "overrides `count`, `error_bound`, `pretrace_start`, `pretrace_end` and `nearest_count` of every radiosity "
         "block in the scene's "
         "`global_settings`, everything else stays as the scene has it; wardray follows the same block). "
-        f"Times are whole-process wall clock, the median of {data['runs']} runs, the two renderers' runs interleaved "
+        f"Times are whole-process wall clock, the median of {data['runs']} run{'s' if data['runs'] != 1 else ''}, "
+        "the two renderers' runs interleaved "
         "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (../shared/docs/METRICS.md) are "
         "taken against the converged reference of its own renderer: POV-Ray's at "
         + ", ".join(f"`{k} {v}`" for k, v in data["references"]["povray_reference"].items())
@@ -204,7 +205,7 @@ def markdown(data, plot_dir):
         "rRMSE. The rRMSE between the two references shows how much of any difference is the lighting model rather "
         "than noise or cache error.",
         "",
-        "Renderers: " + "; ".join(v if v.startswith("POV-Ray") else f"{LABELS[k]} {v}"
+        "Renderers: " + "; ".join(v if v.lower().startswith(LABELS[k].lower()) else f"{LABELS[k]} {v}"
                                   for k, v in data["renderers"].items()) + ".",
         "",
         "These machines are shared and noisy: read the ratios, measured side by side, not the absolute seconds.",
