@@ -214,8 +214,8 @@ def markdown(data, plot_dir):
         "",
         "Time each renderer needs to reach rRMSE 5 %, 2 % and 1 % against its own reference, interpolated on its "
         "error-against-time curve (straight lines between ladder points in log-log space, first crossing). "
-        "\"≤ t\" means the fastest ladder point already meets the target; \"not reached\" gives the lowest error measured. "
-        "The ratio is wardray's time over POV-Ray's: below 1, wardray is faster.",
+        "\"≤ t\" means the fastest ladder point already meets the target; \"not reached\" gives the lowest error "
+        "measured. The ratio is wardray's time over POV-Ray's: below 1, wardray is faster.",
         "",
         "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
         "|---|---:|---:|---:|---:|---|",
