@@ -11,6 +11,7 @@ packages=(
   libcgal-dev libboost-dev                 # mesh geometry, the Spirit X3 parser
   libgtest-dev nlohmann-json3-dev          # tests, --stats JSON
   povray povray-includes povray-examples fonts-povray  # the reference renderer, its includes and scenes
+  python3-numpy python3-openimageio python3-matplotlib  # tools/compare: read HDR images, plot error against time
 )
 
 missing=()

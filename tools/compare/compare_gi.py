@@ -1,0 +1,298 @@
+#!/usr/bin/env python3
+"""Error against run time for global illumination, POV-Ray 3.7 and wardray side by side.
+
+For every scene of the list, each renderer renders the scene over a ladder of radiosity quality settings
+(tools/compare/ladder.json; every radiosity block of the scene's global_settings is overridden in a wrapper
+scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 threads each, N runs per point.
+Each image is compared (rRMSE, bad pixels; ../shared/docs/METRICS.md) with the converged reference of its own
+renderer: POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01, nearest_count 20; wardray's brute-force
+`--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
+changes the image by less than 0.5 % rRMSE. References are cached (build/compare-cache). Writes
+<out>/gi_comparison.csv, .json, .md and one error-against-time plot per scene under <out>/gi_comparison/.
+
+usage: tools/compare/compare_gi.py [--scenes FILE] [--size WxH] [--runs N] [--quick] [--out DIR]
+                                   [--ladder-set full|extended] [--allow-unsupported]
+                                   [--wardray PATH] [--renderers povray,wardray] [--report-only]
+"""
+import argparse
+import json
+import pathlib
+import statistics
+import sys
+import tempfile
+import time
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+sys.path.insert(0, str(HERE))
+
+from gimetrics import image_error, read_linear_rgb  # noqa: E402
+from povrewrite import RewriteError, rewrite_radiosity  # noqa: E402
+from progress import Progress, format_seconds  # noqa: E402
+from renderers import PovRay, RenderCache, RenderFailed, Wardray, run_timed  # noqa: E402
+import report  # noqa: E402
+
+
+def load_scene_list(path):
+    scenes = []
+    for line in pathlib.Path(path).read_text().splitlines():
+        line = line.strip()
+        if line and not line.startswith("#"):
+            p = pathlib.Path(line)
+            scenes.append(p if p.is_absolute() else (ROOT / p))
+    return scenes
+
+
+def parse_size(text):
+    w, _, h = text.lower().partition("x")
+    if not (w.isdigit() and h.isdigit() and int(w) > 0 and int(h) > 0):
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT, got {text!r}")
+    return int(w), int(h)
+
+
+def scene_name(path):
+    return path.stem
+
+
+def next_rays(rays, change, tolerance, max_rays):
+    """Rays per pixel for the next convergence check: noise falls as 1/sqrt(rays), so aim where `change` would be
+    10 % under the tolerance, at least twice the current count, rounded up to a power of two, at most max_rays."""
+    wanted = rays * (change / tolerance) ** 2 * 1.2
+    n = 2 * rays
+    while n < wanted:
+        n *= 2
+    return min(n, max_rays)
+
+
+def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, name):
+    """wardray's converged image: brute force with enough rays that a second seed changes the image by less than
+    the tolerance (METRICS.md); without a seed option, that halving the rays does."""
+    if ward.gi_mode == "off":
+        image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work,
+                                              f"wardray --gi=off image of {name}")
+        progress.finish((name, "wardray", None), None if cached else seconds)
+        return image, {"rays": None, "seconds": seconds, "converged": False,
+                       "check": "none: wardray ran with --gi=off (development mode)"}
+    if not ward.has_reference:
+        raise RenderFailed("this wardray has no --gi=reference with --gi-rays (see wardray --help)")
+
+    def render(rays, seed):
+        progress.show(name, f"reference {rays} rays" + (f" seed {seed}" if seed else ""), "wardray", 1, 1)
+        image, seconds, cached = cache.render(ward, text, scene_dir, size, ward.reference_args(rays, seed), work,
+                                              f"wardray reference of {name}, {rays} rays"
+                                              + (f", seed {seed}" if seed else ""))
+        progress.finish((name, "wardray", None), None if cached else seconds)
+        return image, seconds
+
+    rays, tolerance, max_rays = cfg["start_rays"], cfg["tolerance"], cfg["max_rays"]
+    while True:
+        # A pair of images whose difference measures the noise left at `rays`; the reference is the first one.
+        if ward.has_seed:
+            (ref, seconds), (other, _) = render(rays, 1), render(rays, 2)
+        else:
+            (ref, seconds), (other, _) = render(rays, None), render(rays // 2, None)
+        change = image_error(read_linear_rgb(other), read_linear_rgb(ref))["rrmse"]
+        how = (f"a second seed changes rRMSE by {100 * change:.2f} % at {rays} rays" if ward.has_seed else
+               f"no seed option: {rays // 2} instead of {rays} rays changes rRMSE by {100 * change:.2f} %")
+        converged = bool(change < tolerance)
+        if converged or rays >= max_rays:
+            return ref, {"rays": rays, "seconds": seconds, "converged": converged, "check": how}
+        rays = next_rays(rays, change, tolerance, max_rays)
+        progress.add([(name, "wardray", None)] * 2)
+
+
+def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
+    """References, then the ladder with interleaved runs; returns the scene's results as plain data."""
+    name = scene_name(path)
+    scene_dir = path.parent
+    text = path.read_text(errors="replace")
+    result = {"scene": name, "path": str(path.relative_to(ROOT) if path.is_relative_to(ROOT) else path),
+              "references": {}, "points": [], "failures": []}
+    with tempfile.TemporaryDirectory(prefix=f"compare-{name}-") as tmp:
+        work = pathlib.Path(tmp)
+        ref_text, _ = rewrite_radiosity(text, cfg["povray_reference"])
+        refs = {}
+        for r in renderers:
+            try:
+                if r.name == "povray":
+                    progress.show(name, "reference", r.label, 1, 1)
+                    image, seconds, cached = cache.render(r, ref_text, scene_dir, size, [], work,
+                                                          f"POV-Ray reference of {name}")
+                    progress.finish((name, r.name, None), None if cached else seconds)
+                    info = {"settings": cfg["povray_reference"], "seconds": seconds, "converged": True}
+                else:
+                    image, info = wardray_reference(r, ref_text, scene_dir, size, work, cache,
+                                                    cfg["wardray_reference"], progress, name)
+                refs[r.name] = read_linear_rgb(image)
+                result["references"][r.name] = info
+            except RenderFailed as e:
+                result["failures"].append(f"{r.label} reference: {e}")
+                progress.note(f"compare: {name}: {r.label} reference failed: {str(e).splitlines()[0]}")
+        if "povray" in refs and "wardray" in refs:
+            result["reference_mismatch"] = image_error(refs["wardray"], refs["povray"])
+        active = [r for r in renderers if r.name in refs]
+        for r in renderers:
+            if r not in active:
+                progress.drop(name, r.name)
+        for p_index, p in enumerate(points):
+            wrapper, _ = rewrite_radiosity(text, p["radiosity"])
+            (work / "scene.pov").write_text(wrapper)
+            rows = {r.name: {"renderer": r.name, "label": p["label"], "settings": p["radiosity"],
+                             "wardray_args": p.get("wardray_args", []), "times": [], "errors": []} for r in active}
+            failed = set()
+            for i in range(runs):
+                for r in active:  # interleaved: A B A B ...
+                    job = (name, r.name, p["label"])
+                    if r.name in failed:
+                        progress.finish(job, None)
+                        continue
+                    progress.show(name, p["label"], r.label, i + 1, runs)
+                    extra = p.get("wardray_args", []) if r.name == "wardray" else []
+                    # A fresh name per run, so an image left by an earlier run can never be read as this one's.
+                    output = work / f"{r.name}-{p_index}-{i}.hdr"
+                    try:
+                        seconds = run_timed(r.command("scene.pov", output.name, size, scene_dir, extra), work)
+                        if not output.is_file():
+                            raise RenderFailed(f"{r.label} exited without writing {output.name}")
+                    except RenderFailed as e:
+                        failed.add(r.name)
+                        result["failures"].append(f"{r.label} at {p['label']}: {e}")
+                        progress.note(f"compare: {name}: {r.label} failed at {p['label']}: {str(e).splitlines()[0]}")
+                        progress.finish(job, None)
+                        continue
+                    progress.finish(job, seconds)
+                    image = read_linear_rgb(output)
+                    output.unlink()
+                    err = image_error(image, refs[r.name])
+                    if "povray" in refs:
+                        err["rrmse_vs_povray_reference"] = image_error(image, refs["povray"])["rrmse"]
+                    rows[r.name]["times"].append(seconds)
+                    rows[r.name]["errors"].append(err)
+            for r in active:
+                row = rows[r.name]
+                if r.name in failed or not row["times"]:
+                    continue
+                row["seconds"] = statistics.median(row["times"])
+                for key in ("rrmse", "bad_fraction", "rrmse_vs_povray_reference"):
+                    values = [e[key] for e in row["errors"] if key in e]
+                    row[key] = statistics.median(values) if values else None
+                row["non_finite"] = max(e["non_finite"] for e in row["errors"])
+                result["points"].append(row)
+    return result
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--scenes", default=str(HERE / "scenes.txt"), help="scene list, one .pov per line")
+    ap.add_argument("--ladder", default=str(HERE / "ladder.json"), help="quality ladders and reference settings")
+    ap.add_argument("--size", type=parse_size, default=(96, 72),
+                    help="image size WxH (default 96x72, so that the full run stays well under an hour on 2 cores)")
+    ap.add_argument("--runs", type=int, default=3, help="timed runs per ladder point and renderer (default 3)")
+    ap.add_argument("--quick", action="store_true",
+                    help="smoke test: two ladder points and cheap, unconverged references")
+    ap.add_argument("--ladder-set", default="full", help="which ladder of --ladder to run (full, extended)")
+    ap.add_argument("--allow-unsupported", action="store_true",
+                    help="also compare scenes for which wardray --check warns of features it does not render")
+    ap.add_argument("--out", default=str(ROOT / "docs" / "reports"), help="folder for the report (docs/reports)")
+    ap.add_argument("--wardray", default="/work/main/build/wardray", help="wardray binary")
+    ap.add_argument("--povray", default="povray", help="POV-Ray binary")
+    ap.add_argument("--renderers", default="povray,wardray", help="which renderers to run (default both)")
+    ap.add_argument("--wardray-gi", choices=("cache", "off"), default="cache",
+                    help="wardray's GI mode for the ladder; 'off' only to develop this tool before the cache exists")
+    ap.add_argument("--cache", default=str(ROOT / "build" / "compare-cache"), help="folder for cached references")
+    ap.add_argument("--report-only", action="store_true",
+                    help="rewrite the report and plots from <out>/gi_comparison.json without rendering")
+    args = ap.parse_args()
+    if args.runs < 1:
+        ap.error("--runs must be at least 1")
+
+    out = pathlib.Path(args.out)
+    data_path = out / "gi_comparison.json"
+    if args.report_only:
+        report.write_all(json.loads(data_path.read_text()), out)
+        return 0
+
+    ladder = json.loads(pathlib.Path(args.ladder).read_text())
+    set_name = "quick" if args.quick else args.ladder_set
+    if set_name not in ladder or not isinstance(ladder[set_name], list):
+        ap.error(f"{args.ladder} has no ladder {set_name!r}")
+    points = ladder[set_name]
+    cfg = {"povray_reference": ladder["quick_povray_reference" if args.quick else "povray_reference"],
+           "wardray_reference": ladder["quick_wardray_reference" if args.quick else "wardray_reference"]}
+    wanted = [n.strip() for n in args.renderers.split(",") if n.strip()]
+    if not wanted or set(wanted) - {"povray", "wardray"}:
+        ap.error("--renderers takes povray, wardray or both")
+    renderers = []
+    if "povray" in wanted:
+        renderers.append(PovRay(args.povray))
+    if "wardray" in wanted:
+        renderers.append(Wardray(args.wardray, gi_mode=args.wardray_gi))
+        if not renderers[-1].has_reference and args.wardray_gi == "cache":
+            print("compare: warning: wardray --help lists no --gi=reference/--gi-rays; its reference will fail",
+                  file=sys.stderr)
+    cache = RenderCache(args.cache)
+
+    # Scenes a renderer cannot read are reported, not rendered.
+    scenes, skipped = [], []
+    for path in load_scene_list(args.scenes):
+        if not path.is_file():
+            skipped.append({"scene": str(path), "reason": "file not found"})
+            continue
+        try:
+            rewrite_radiosity(path.read_text(errors="replace"), cfg["povray_reference"])
+        except RewriteError as e:
+            skipped.append({"scene": str(path), "reason": f"radiosity block cannot be rewritten: {e}"})
+            continue
+        ward = next((r for r in renderers if r.name == "wardray"), None)
+        problem, warnings = ward.check(path, path.parent) if ward else (None, [])
+        if problem:
+            skipped.append({"scene": str(path), "reason": f"wardray --check: {problem}"})
+            continue
+        # A scene wardray renders without some of its features compares neither images nor times fairly.
+        unsupported = [w for w in warnings if "not rendered" in w or "not supported" in w]
+        if unsupported and not args.allow_unsupported:
+            skipped.append({"scene": str(path), "reason": "wardray does not render all of it (use "
+                            "--allow-unsupported to compare anyway): " + "; ".join(unsupported)})
+            continue
+        scenes.append((path, warnings))
+    for s in skipped:
+        print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
+
+    plan = []
+    for path, _ in scenes:
+        name = scene_name(path)
+        for r in renderers:
+            plan += [(name, r.name, None)] * (2 if r.name == "wardray" and r.gi_mode != "off" else 1)
+        plan += [(name, r.name, p["label"]) for p in points for _ in range(args.runs) for r in renderers]
+    progress = Progress(plan)
+    started = time.monotonic()
+    data = {
+        "command": " ".join(["tools/compare/compare_gi.py"] + sys.argv[1:]),
+        "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+        "size": list(args.size), "runs": args.runs, "quick": args.quick, "ladder_set": set_name, "threads": 2,
+        "wall_seconds": 0.0,
+        "renderers": {r.name: r.version for r in renderers},
+        "wardray_gi": args.wardray_gi if "wardray" in wanted else None,
+        "wardray_has_seed": next((r.has_seed for r in renderers if r.name == "wardray"), None),
+        "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
+    }
+    out.mkdir(parents=True, exist_ok=True)
+    for path, warnings in scenes:
+        result = measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress)
+        result["wardray_warnings"] = warnings
+        data["scenes"].append(result)
+        ward = next((r for r in renderers if r.name == "wardray"), None)
+        if ward and ward.rebuilt() and not data.get("rebuilt"):
+            data["rebuilt"] = f"wardray was rebuilt while {result['scene']} was measured"
+            progress.note(f"compare: warning: {data['rebuilt']}; later figures mix two builds")
+        data["wall_seconds"] = time.monotonic() - started
+        # Saved after every scene: an interrupted run still gives a report with --report-only.
+        data_path.write_text(json.dumps(data, indent=1))
+    progress.note(f"compare: rendering took {format_seconds(data['wall_seconds'])}")
+    data_path.write_text(json.dumps(data, indent=1))
+    report.write_all(data, out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,179 @@
+"""Runs POV-Ray and wardray on wrapper scenes, times them and caches converged references.
+
+Both renderers write linear Radiance HDR at the requested size, antialiasing off, 2 threads, and run with their
+current folder set to a scratch folder that holds the wrapper scene (POV-Ray writes only below its current
+folder); `+L<scene folder>` lets the scene's own includes resolve.
+"""
+import hashlib
+import json
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+from povrewrite import mask_comments_and_strings
+
+THREADS = 2
+
+
+class RenderFailed(RuntimeError):
+    """A renderer exited with an error; the message holds the end of its output."""
+
+
+def run_timed(cmd, cwd, timeout=None, attempts=10):
+    """Runs `cmd`, returns its whole-process wall-clock seconds; raises RenderFailed on a non-zero exit.
+
+    A binary that cannot be started (missing or being relinked: wardray is rebuilt in place) is retried a minute
+    later, up to `attempts` times."""
+    for attempt in range(1, attempts + 1):
+        start = time.perf_counter()
+        try:
+            proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                  errors="replace", timeout=timeout)
+            break
+        except subprocess.TimeoutExpired as e:
+            raise RenderFailed(f"{' '.join(cmd)} timed out after {timeout} s") from e
+        except OSError as e:
+            if attempt == attempts:
+                raise RenderFailed(f"cannot start {cmd[0]}: {e}") from e
+            print(f"\ncompare: cannot start {cmd[0]} ({e}); retrying in a minute", file=sys.stderr, flush=True)
+            time.sleep(60)
+    elapsed = time.perf_counter() - start
+    if proc.returncode != 0:
+        last = next((l.strip() for l in reversed(proc.stdout.splitlines()) if l.strip()), "no output")
+        raise RenderFailed(f"{pathlib.Path(cmd[0]).name} exited with {proc.returncode}: {last}\n"
+                           f"command: {' '.join(cmd)}\n{proc.stdout[-1500:]}")
+    return elapsed
+
+
+class PovRay:
+    name = "povray"
+    label = "POV-Ray"
+
+    def __init__(self, exe="povray"):
+        self.exe = shutil.which(exe) or exe
+        proc = subprocess.run([self.exe, "--version"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                              errors="replace")
+        # The first lines may be complaints about a missing user configuration file.
+        first = next((l for l in proc.stdout.splitlines() if l.startswith("POV-Ray")), None)
+        if first is None:
+            raise RuntimeError(f"{exe} does not look like POV-Ray: {proc.stdout[:200]!r}")
+        self.version = first.strip()
+
+    def command(self, scene_name, output, size, scene_dir, extra=()):
+        w, h = size
+        return [self.exe, f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D", "-V",
+                f"+WT{THREADS}", f"+L{scene_dir}", *extra]
+
+
+class Wardray:
+    name = "wardray"
+    label = "wardray"
+
+    def __init__(self, exe, gi_mode="cache", wait_minutes=10):
+        self.exe = pathlib.Path(exe).resolve()
+        self.gi_mode = gi_mode
+        # The binary may be missing or mid-rebuild: wait a minute at a time before giving up.
+        deadline = time.monotonic() + 60 * wait_minutes
+        while True:
+            try:
+                help_text = subprocess.run([str(self.exe), "--help"], stdout=subprocess.PIPE,
+                                           stderr=subprocess.STDOUT, text=True, errors="replace", timeout=60).stdout
+                version = subprocess.run([str(self.exe), "--version"], stdout=subprocess.PIPE,
+                                         stderr=subprocess.STDOUT, text=True, errors="replace", timeout=60).stdout
+                digest = self.digest()
+                break
+            except (OSError, subprocess.SubprocessError) as e:
+                if time.monotonic() > deadline:
+                    raise RuntimeError(f"wardray at {self.exe} is not usable ({e})") from e
+                print(f"compare: {self.exe} not usable yet ({e}); retrying in a minute", file=sys.stderr, flush=True)
+                time.sleep(60)
+        self.help_text = help_text
+        # The version string alone does not change on every rebuild; the binary's hash does.
+        self.version = f"{version.strip() or 'wardray'} (binary sha256 {digest[:12]})"
+        self.has_reference = "reference" in help_text and "--gi-rays" in help_text
+        self.has_seed = re.search(r"--seed\b", help_text) is not None
+
+    def digest(self):
+        return hashlib.sha256(self.exe.read_bytes()).hexdigest()
+
+    def rebuilt(self):
+        """True when the binary is no longer the one measured at the start (or cannot be read)."""
+        try:
+            return self.digest()[:12] not in self.version
+        except OSError:
+            return True
+
+    def command(self, scene_name, output, size, scene_dir, extra=()):
+        w, h = size
+        gi = [] if any(a.startswith("--gi=") for a in extra) else [f"--gi={self.gi_mode}"]
+        return [str(self.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A",
+                f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
+
+    def reference_args(self, rays, seed=None):
+        if self.gi_mode == "off":
+            return []  # development without wardray's GI: the "reference" is just the direct-light image
+        args = ["--gi=reference", "--gi-rays", str(rays)]
+        if seed is not None:
+            args += ["--seed", str(seed)]
+        return args
+
+    def check(self, scene_path, scene_dir):
+        """(first error line or None, warning lines) from `wardray --check` on the scene."""
+        proc = subprocess.run([str(self.exe), "--check", f"+L{scene_dir}", f"+I{scene_path}"],
+                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
+        lines = proc.stdout.splitlines()
+        # Diagnostics read "path:line:col: warning: message"; keep them without the folder.
+        warnings = [l.split("/")[-1] for l in lines if re.search(r":\d+:\d+: warning: ", l)]
+        if proc.returncode == 0:
+            return None, warnings
+        errors = [l for l in lines if "error" in l]
+        return (errors or lines or [f"exit status {proc.returncode}"])[0], warnings
+
+
+def local_includes(text, scene_dir):
+    """Contents of the files a scene includes from its own folder, so that editing them invalidates the cache."""
+    found = []
+    masked = mask_comments_and_strings(text)
+    for m in re.finditer(r"#\s*include\s*\"", masked):
+        end = text.find('"', m.end())
+        path = pathlib.Path(scene_dir) / text[m.end():end]
+        if path.is_file():
+            found.append((path.name, path.read_text(errors="replace")))
+    return found
+
+
+class RenderCache:
+    """Rendered images kept by a hash of scene text, local includes, renderer version, options and size."""
+
+    def __init__(self, folder):
+        self.folder = pathlib.Path(folder)
+        self.folder.mkdir(parents=True, exist_ok=True)
+
+    def key(self, renderer, scene_text, scene_dir, size, extra):
+        blob = json.dumps({"renderer": renderer.name, "version": renderer.version, "scene": scene_text,
+                           "includes": local_includes(scene_text, scene_dir), "size": list(size),
+                           "args": list(extra), "threads": THREADS}, sort_keys=True)
+        return hashlib.sha256(blob.encode()).hexdigest()
+
+    def render(self, renderer, scene_text, scene_dir, size, extra, work, what):
+        """The path of a cached image for this render and the seconds it took, rendering it when needed."""
+        key = self.key(renderer, scene_text, scene_dir, size, extra)
+        image, meta = self.folder / f"{key}.hdr", self.folder / f"{key}.json"
+        if image.is_file() and meta.is_file():
+            seconds = json.loads(meta.read_text())["seconds"]
+            print(f"compare: using cached {what} ({key[:12]}, rendered in {seconds:.1f} s)", file=sys.stderr,
+                  flush=True)
+            return image, seconds, True
+        (work / "scene.pov").write_text(scene_text)
+        (work / "cached.hdr").unlink(missing_ok=True)
+        cmd = renderer.command("scene.pov", "cached.hdr", size, scene_dir, extra)
+        seconds = run_timed(cmd, work)
+        if not (work / "cached.hdr").is_file():
+            raise RenderFailed(f"{' '.join(cmd)} exited without writing its image")
+        shutil.move(str(work / "cached.hdr"), image)
+        meta.write_text(json.dumps({"what": what, "seconds": seconds, "command": cmd, "version": renderer.version,
+                                    "created": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}, indent=1))
+        return image, seconds, False

@@ -1,0 +1,186 @@
+"""Self-test of the comparison tool's non-rendering parts: the radiosity-block rewriter, the image errors and the
+crossing-time interpolation. Runs in well under a second:
+
+    /usr/bin/python3 -m unittest discover -s tools/compare -p 'test_*.py'
+"""
+import math
+import pathlib
+import sys
+import unittest
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+
+import numpy as np  # noqa: E402
+
+from gimetrics import crossing_time, image_error  # noqa: E402
+from povrewrite import RewriteError, mask_comments_and_strings, rewrite_radiosity  # noqa: E402
+
+LADDER = {"count": 400, "error_bound": 0.2, "pretrace_end": 0.01}
+
+
+def settings_in(text, key):
+    """Values given for `key` outside comments, in order."""
+    masked = mask_comments_and_strings(text)
+    import re
+    return [m.group(1) for m in re.finditer(r"(?<![A-Za-z_])" + key + r"\s+([0-9.]+)", masked)]
+
+
+class RewriteTest(unittest.TestCase):
+    def test_replaces_simple_settings_and_keeps_the_others(self):
+        scene = ("global_settings {\n  assumed_gamma 1.0\n  radiosity {\n    pretrace_start 0.08\n"
+                 "    pretrace_end 0.04\n    count 35\n    nearest_count 5\n    error_bound 0.5\n"
+                 "    recursion_limit 3\n  }\n}\nsphere { 0, 1 }\n")
+        out, how = rewrite_radiosity(scene, LADDER)
+        self.assertEqual(how, "replaced")
+        self.assertEqual(settings_in(out, "count"), ["400"])
+        self.assertEqual(settings_in(out, "error_bound"), ["0.2"])
+        self.assertEqual(settings_in(out, "pretrace_end"), ["0.01"])
+        self.assertEqual(settings_in(out, "recursion_limit"), ["3"])
+        self.assertEqual(settings_in(out, "nearest_count"), ["5"])
+        self.assertTrue(out.endswith("sphere { 0, 1 }\n"))
+
+    def test_ignores_comments_strings_and_object_radiosity(self):
+        scene = ('// radiosity { count 1 }\n#declare S = "global_settings { radiosity { count 2 } }";\n'
+                 "global_settings {\n  /* radiosity { count 3 } /* nested */ still a comment } */\n"
+                 "  radiosity { count 50 // count 4\n  }\n}\n"
+                 "sphere { 0, 1 radiosity { importance 0.5 } }\n")
+        out, _ = rewrite_radiosity(scene, LADDER)
+        self.assertIn("// radiosity { count 1 }", out)
+        self.assertIn('"global_settings { radiosity { count 2 } }"', out)
+        self.assertIn("/* radiosity { count 3 } /* nested */ still a comment } */", out)
+        self.assertIn("radiosity { importance 0.5 }", out)
+        self.assertEqual(settings_in(out, "count"), ["400"])
+
+    def test_appends_after_macros_and_expressions(self):
+        # Settings from a macro or an expression cannot be removed textually; the appended ones come last and win.
+        scene = "global_settings { radiosity {\n Rad_Settings(1, off, off)\n count 35*2\n adc_bailout 0.01/2\n } }\n"
+        out, _ = rewrite_radiosity(scene, LADDER)
+        body = out[out.index("radiosity {"):]
+        self.assertIn("Rad_Settings(1, off, off)", body)
+        self.assertIn("count 35*2", body)
+        self.assertIn("adc_bailout 0.01/2", body)
+        self.assertLess(body.index("count 35*2"), body.index("count 400"))
+        self.assertEqual(out.count("{"), out.count("}"))
+
+    def test_every_branch_of_a_switch_is_overridden(self):
+        scene = ("global_settings {\n#switch (Q)\n#case (1)\n radiosity { count 50 }\n#break\n"
+                 "#case (2)\n radiosity { count 120, 1000 error_bound 0.25 }\n#break\n#end\n}\n")
+        out, _ = rewrite_radiosity(scene, LADDER)
+        self.assertEqual(settings_in(out, "count"), ["400", "400"])
+        self.assertNotIn("1000", out)
+        self.assertIn("#case (2)", out)
+
+    def test_injects_a_block_when_there_is_none(self):
+        out, how = rewrite_radiosity("global_settings { assumed_gamma 1 }\n", {"count": 20})
+        self.assertEqual(how, "injected")
+        self.assertRegex(out, r"global_settings \{\s*radiosity \{[^}]*count 20[^}]*\}\s*assumed_gamma 1 \}")
+        out, how = rewrite_radiosity("sphere { 0, 1 }\n", {"count": 20, "always_sample": False})
+        self.assertEqual(how, "appended")
+        self.assertRegex(out, r"global_settings \{\s*radiosity \{[^}]*count 20\s+always_sample off\s*\}\s*\}")
+
+    def test_refuses_unbalanced_text(self):
+        with self.assertRaises(RewriteError):
+            rewrite_radiosity("global_settings { radiosity { count 3 }\n", LADDER)
+        with self.assertRaises(RewriteError):
+            rewrite_radiosity("/* open\nglobal_settings { }\n", LADDER)
+
+
+class ErrorTest(unittest.TestCase):
+    def test_rrmse_and_bad_pixels(self):
+        ref = np.ones((4, 5, 3))
+        img = ref.copy()
+        img[0, 0] = 2.0  # one pixel off by 100 %
+        e = image_error(img, ref)
+        self.assertAlmostEqual(e["rrmse"], math.sqrt(3 / 60))
+        self.assertAlmostEqual(e["bad_fraction"], 1 / 20)
+        self.assertEqual(e["non_finite"], 0)
+
+    def test_non_finite_pixels_are_counted_apart(self):
+        ref = np.ones((2, 2, 3))
+        img = ref.copy()
+        img[1, 1, 2] = np.nan
+        e = image_error(img, ref)
+        self.assertEqual(e["non_finite"], 1)
+        self.assertEqual(e["rrmse"], 0.0)
+
+
+class ReadTest(unittest.TestCase):
+    def test_a_rewritten_file_is_read_anew(self):
+        # Reading a file rewritten under the same name once returned the old pixels (in the full tool, not here).
+        try:
+            import OpenImageIO as oiio
+        except ImportError:
+            self.skipTest("no OpenImageIO Python bindings")
+        import tempfile
+        from gimetrics import read_linear_rgb
+        with tempfile.TemporaryDirectory() as tmp:
+            path = pathlib.Path(tmp) / "out.hdr"
+            for value in (0.25, 2.0):
+                buf = oiio.ImageBuf(oiio.ImageSpec(4, 3, 3, oiio.FLOAT))
+                oiio.ImageBufAlgo.fill(buf, (value, value, value))
+                self.assertTrue(buf.write(str(path)))
+                image = read_linear_rgb(path)
+                self.assertEqual(image.shape, (3, 4, 3))
+                self.assertAlmostEqual(float(image.mean()), value, places=2)
+
+
+class CrossingTest(unittest.TestCase):
+    def test_interpolates_in_log_log_space(self):
+        # Error falls as 1/sqrt(t): from 8 % at 1 s to 2 % at 16 s; 4 % is reached at 4 s.
+        t, exact = crossing_time([(16.0, 0.02), (1.0, 0.08)], 0.04)
+        self.assertTrue(exact)
+        self.assertAlmostEqual(t, 4.0)
+
+    def test_first_crossing_of_a_noisy_curve(self):
+        t, exact = crossing_time([(1, 0.1), (2, 0.04), (4, 0.06), (8, 0.01)], 0.05)
+        self.assertTrue(exact)
+        self.assertLess(t, 2.0)
+        self.assertGreater(t, 1.0)
+
+    def test_not_reached_and_reached_at_once(self):
+        self.assertEqual(crossing_time([(1, 0.1), (2, 0.06)], 0.05), (None, False))
+        self.assertEqual(crossing_time([(3, 0.01), (5, 0.005)], 0.05), (3, False))
+        self.assertEqual(crossing_time([], 0.05), (None, False))
+
+
+class HeadlineTest(unittest.TestCase):
+    @staticmethod
+    def scene(name, pov, ward):
+        points = [{"renderer": "povray", "seconds": t, "rrmse": e, "label": f"p{i}"} for i, (t, e) in enumerate(pov)]
+        points += [{"renderer": "wardray", "seconds": t, "rrmse": e, "label": f"p{i}"} for i, (t, e) in enumerate(ward)]
+        return {"scene": name, "points": points}
+
+    def test_says_where_wardray_is_not_ahead(self):
+        import report
+        data = {"scenes": [
+            # Same curve shape, wardray four times faster: ahead at every target it reaches.
+            self.scene("fast", [(4, 0.08), (16, 0.04), (64, 0.015)], [(1, 0.08), (4, 0.04), (16, 0.015)]),
+            # wardray's curve is POV-Ray's, twice as slow.
+            self.scene("slow", [(1, 0.08), (4, 0.01)], [(2, 0.08), (8, 0.01)]),
+            # wardray never gets below 3 %.
+            self.scene("stuck", [(1, 0.08), (4, 0.01)], [(1, 0.08), (4, 0.03)]),
+        ]}
+        rows, not_ahead, measured = report.headline(data)
+        self.assertEqual(measured, 9)
+        self.assertEqual(len(rows), 9)
+        self.assertIn("| fast | 5 % |", rows[0])
+        self.assertTrue(rows[0].endswith("| 0.25 | wardray |"), rows[0])
+        self.assertEqual(not_ahead["POV-Ray is faster"],
+                         [f"slow at {t} (wardray/POV-Ray 2.00)" for t in ("5 %", "2 %", "1 %")]
+                         + ["stuck at 5 % (wardray/POV-Ray 1.42)"])
+        self.assertEqual(not_ahead["only POV-Ray reaches the target"],
+                         ["stuck at 2 % (wardray/POV-Ray > 1.59)", "stuck at 1 %"])
+        self.assertEqual(not_ahead["neither reaches the target"], ["fast at 1 %"])
+
+
+class ReferenceRaysTest(unittest.TestCase):
+    def test_aims_past_the_tolerance_in_powers_of_two(self):
+        from compare_gi import next_rays
+        self.assertEqual(next_rays(64, 0.006, 0.005, 8192), 128)    # nearly there: just double
+        self.assertEqual(next_rays(64, 0.05, 0.005, 8192), 8192)    # 100x the noise power: 7680 -> 8192
+        self.assertEqual(next_rays(64, 0.05, 0.005, 4096), 4096)    # capped
+        self.assertEqual(next_rays(64, 0.02, 0.005, 8192), 2048)    # 16 x 1.2 x 64 = 1229 -> 2048
+
+
+if __name__ == "__main__":
+    unittest.main()
