@@ -194,7 +194,7 @@ def main():
     ap.add_argument("--allow-unsupported", action="store_true",
                     help="also compare scenes for which wardray --check warns of features it does not render")
     ap.add_argument("--out", default=str(ROOT / "docs" / "reports"), help="folder for the report (docs/reports)")
-    ap.add_argument("--wardray", default="/work/main/build/wardray", help="wardray binary")
+    ap.add_argument("--wardray", default=str(ROOT / "build" / "wardray"), help="wardray binary")
     ap.add_argument("--povray", default="povray", help="POV-Ray binary")
     ap.add_argument("--renderers", default="povray,wardray", help="which renderers to run (default both)")
     ap.add_argument("--wardray-gi", choices=("cache", "off"), default="cache",
