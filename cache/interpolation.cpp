@@ -88,10 +88,7 @@ InterpolationAccumulator::InterpolationAccumulator(const Vec3& p, const Vec3& n,
 bool InterpolationAccumulator::add(const IrradianceRecord& record) {
     const double eb = m_params.error_bound;
     // Quick rejections first (most candidates fail one): facing away, or farther than ε alone allows.
-    if (!(dot(m_n, record.normal) > 0.0)) return false;
-    const Vec3 d = m_p - record.position;
-    const double reach = eb * record.radius;
-    if (!(dot(d, d) < reach * reach)) return false;
+    if (!may_accept(record.position, record.normal, record.radius)) return false;
     if (!(eb > 0.0) || !is_valid(record, m_p, m_n, eb)) return false;
     const double eps = record_error(record, m_p, m_n);
     const double fade = front_fade(front_distance(record, m_p, m_n));

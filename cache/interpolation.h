@@ -61,6 +61,14 @@ public:
     InterpolationAccumulator(const Vec3& p, const Vec3& n, const LookupParams& params);
     /// Tests `record` and adds it when valid; returns whether it was valid.
     bool add(const IrradianceRecord& record);
+    /// A quick necessary condition for add() to accept a record at `position` with `normal` and (at least) `radius`:
+    /// facing the same side and near enough for ε alone.
+    bool may_accept(const Vec3& position, const Vec3& normal, double radius) const {
+        if (!(dot(m_n, normal) > 0.0)) return false;
+        const Vec3 d = m_p - position;
+        const double reach = m_params.error_bound * radius;
+        return dot(d, d) < reach * reach;
+    }
     /// The weighted average so far.
     Interpolation result() const;
 

@@ -26,7 +26,11 @@ Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const L
     // Then this tile's own records of the same depth.
     if (depth >= 0 && depth < static_cast<int>(m_own.size())) {
         const RecordOctree& own = m_own[static_cast<std::size_t>(depth)];
-        own.visit(p, [&](std::uint32_t i) { acc.add(own.records()[i]); });
+        const auto& keys = own.keys();
+        own.visit(p, [&](std::uint32_t i) {
+            const RecordOctree::Key& k = keys[i];
+            if (acc.may_accept(k.position, k.normal, k.radius)) acc.add(own.records()[i]);
+        });
     }
     const Interpolation out = acc.result();
     ++m_lookups;
@@ -118,7 +122,11 @@ LookupParams IrradianceCache::clamp_params(int depth, const LookupParams& params
 void IrradianceCache::accumulate(InterpolationAccumulator& acc, const Vec3& p, int depth) const {
     if (depth < 0 || depth >= depth_count()) return;
     const RecordOctree& tree = m_octrees[static_cast<std::size_t>(depth)];
-    tree.visit(p, [&](std::uint32_t i) { acc.add(tree.records()[i]); });
+    const auto& keys = tree.keys();
+    tree.visit(p, [&](std::uint32_t i) {
+        const RecordOctree::Key& k = keys[i];
+        if (acc.may_accept(k.position, k.normal, k.radius)) acc.add(tree.records()[i]);
+    });
 }
 
 Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const {

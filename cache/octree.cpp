@@ -33,6 +33,7 @@ RecordOctree::RecordOctree(double reach) : m_reach(std::isfinite(reach) ? std::m
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
     const auto index = static_cast<std::uint32_t>(m_records.size());
     m_records.push_back(record);
+    m_keys.push_back({record.position, record.normal, record.radius});
     const double s = m_reach * record.radius;
     if (!is_finite(record.position) || !(s > 0.0) || !std::isfinite(s)) return index;
     const Vec3 lo = record.position - Vec3{s, s, s};
@@ -102,27 +103,6 @@ void RecordOctree::file(std::uint32_t index, std::int32_t node, const Vec3& lo, 
     for (int octant = 0; octant < 8; ++octant) {
         const Vec3 cmin = m_nodes[node].min + octant_offset(octant, half);
         if (box_overlaps_cube(lo, hi, cmin, half)) file(index, child(node, octant), lo, hi, target_size);
-    }
-}
-
-void RecordOctree::visit(const Vec3& q, const std::function<void(std::uint32_t)>& visit) const {
-    if (m_root < 0 || !is_finite(q)) return;
-    const Node& root = m_nodes[m_root];
-    for (int a = 0; a < 3; ++a) {
-        if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
-    }
-    // Multi-resolution lookup (Ward, Rubinstein & Clear 1988): the records of every node from the root down to
-    // the leaf that holds q.
-    std::int32_t node = m_root;
-    while (node >= 0) {
-        const Node& n = m_nodes[node];
-        for (const std::uint32_t index : n.records) visit(index);
-        const double half = 0.5 * n.size;
-        int octant = 0;
-        for (int a = 0; a < 3; ++a) {
-            if (q[a] >= n.min[a] + half) octant |= 1 << a;
-        }
-        node = n.children[octant];
     }
 }
 

@@ -34,7 +34,35 @@ public:
 
     /// Calls `visit(index)` for each record whose filed sphere may contain `q` (a superset of the records valid at q
     /// for any error bound ≤ reach), walking from the root to the leaf that holds q; deterministic order.
-    void visit(const Vec3& q, const std::function<void(std::uint32_t)>& visit) const;
+    template <typename Visit>
+    void visit(const Vec3& q, Visit&& visit) const {
+        if (m_root < 0 || !is_finite(q)) return;
+        const Node& root = m_nodes[static_cast<std::size_t>(m_root)];
+        for (int a = 0; a < 3; ++a) {
+            if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
+        }
+        // Multi-resolution lookup (Ward, Rubinstein & Clear 1988): the records of every node from the root down
+        // to the leaf that holds q.
+        std::int32_t node = m_root;
+        while (node >= 0) {
+            const Node& n = m_nodes[static_cast<std::size_t>(node)];
+            for (const std::uint32_t index : n.records) visit(index);
+            const double half = 0.5 * n.size;
+            int octant = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (q[a] >= n.min[a] + half) octant |= 1 << a;
+            }
+            node = n.children[static_cast<std::size_t>(octant)];
+        }
+    }
+    /// Each record's position, normal and radius at filing, packed apart from its gradients so that lookups can
+    /// reject most candidates without touching the whole record (the radius may since have shrunk, never grown).
+    struct Key {
+        Vec3 position;
+        Vec3 normal;
+        double radius = 0.0;
+    };
+    const std::vector<Key>& keys() const { return m_keys; }
     /// Calls `visit(index)` once for each record whose position lies within `radius` of `centre`.
     void for_each_within(const Vec3& centre, double radius, const std::function<void(std::uint32_t)>& visit) const;
 
@@ -53,6 +81,7 @@ private:
 
     double m_reach;
     std::vector<IrradianceRecord> m_records;
+    std::vector<Key> m_keys;
     std::vector<Node> m_nodes;
     std::int32_t m_root = -1;
 };
