@@ -13,7 +13,7 @@ namespace wardray::cache {
 
 /// Records of one bounce depth, each filed by the sphere of radius reach × R_i around its position
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
-/// are at least as wide as its sphere's diameter and that its sphere's box overlaps (at most 8), so a lookup only
+/// are at least as wide as its sphere's radius and that its sphere's box overlaps (at most 27), so a lookup only
 /// walks from the root to the leaf holding the query point and tests each record it meets at most once.
 /// Not thread-safe for writing; any number of concurrent readers while nobody writes.
 class RecordOctree {
