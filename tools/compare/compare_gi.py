@@ -185,8 +185,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenes", default=str(HERE / "scenes.txt"), help="scene list, one .pov per line")
     ap.add_argument("--ladder", default=str(HERE / "ladder.json"), help="quality ladders and reference settings")
-    ap.add_argument("--size", type=parse_size, default=(96, 72),
-                    help="image size WxH (default 96x72, so that the full run stays well under an hour on 2 cores)")
+    ap.add_argument("--size", type=parse_size, default=(64, 48),
+                    help="image size WxH (default 64x48, so that the full run stays near half an hour on 2 cores)")
     ap.add_argument("--runs", type=int, default=3, help="timed runs per ladder point and renderer (default 3)")
     ap.add_argument("--quick", action="store_true",
                     help="smoke test: two ladder points and cheap, unconverged references")
