@@ -418,13 +418,14 @@ Light Parser::parse_light_body(const Token& kw) {
         else if (w == "shadowless") light.shadowless = true;
         else if (w == "area_light") {
             light.area = true;
+            // POV-Ray compat: the commas between the four values are optional.
             light.area_axis1 = parse_vector();
-            expect(",");
+            accept(",");
             light.area_axis2 = parse_vector();
-            expect(",");
+            accept(",");
             const Token& at1 = peek();
             const double n1 = parse_float();
-            expect(",");
+            accept(",");
             const Token& at2 = peek();
             const double n2 = parse_float();
             // POV-Ray compat: sizes are truncated, and a size below 1 is an error.

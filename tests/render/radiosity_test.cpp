@@ -118,7 +118,7 @@ TEST(Radiosity, MaxSampleLimitsEveryGatherSample) {
                                      dir.string());
         ASSERT_EQ(run.exit_status, 0) << run.output;
         const render::Film film = read(dir / "out.hdr");
-        EXPECT_NEAR(film.pixel(8, 6).y, 0.5 + 0.5 * 0.2, 1e-3) << gi;
+        EXPECT_NEAR(film.pixel(8, 6).y, 0.5 + 0.5 * 0.2, 5e-3) << gi;  // Radiance HDR keeps 8 bits of mantissa
     }
 }
 
