@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 
 #include "geometry/instance.h"
 #include "geometry/polynomial.h"
@@ -12,41 +11,9 @@
 namespace wardray::geometry {
 namespace {
 
+using test::check_shape;
 using test::make_object;
 using test::Random;
-
-// Checks random rays against random objects from `make`: every crossing lies on the surface (implicit ≈ 0
-// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
-// shapes, inside just behind the normal and outside just in front of it.
-void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
-                 double surface_tolerance = 1e-9, int min_hits = 150) {
-    Random rng(seed);
-    int checked = 0;
-    int inside_failures = 0;
-    for (int trial = 0; trial < 300; ++trial) {
-        parser::Object obj = make_object(make(rng), rng.transform());
-        const auto inst = ShapeInstance::create(obj, 3);
-        ASSERT_TRUE(inst.has_value()) << "trial " << trial;
-        const double scale = test::object_scale(*inst);
-        const test::AimedRay ray = test::aim_random_ray(rng, obj, 0.8);
-        const SurfaceHits hits = inst->intersect_all(ray.origin, ray.direction, 0.0, 1e30);
-        for (std::size_t i = 0; i < hits.size(); ++i) {
-            const SurfaceHit& h = hits[i];
-            const Vec3 p = ray.origin + h.t * ray.direction;
-            SCOPED_TRACE("trial " + std::to_string(trial));
-            test::expect_valid_crossing(*inst, hits, i, ray, surface_tolerance);
-            EXPECT_EQ(h.leaf, &obj);
-            if (solid) {
-                const double eps = 1e-6 * scale;
-                // Points near edges and rims may leave the solid sideways: count, do not fail on each.
-                inside_failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
-            }
-            ++checked;
-        }
-    }
-    EXPECT_GT(checked, min_hits);
-    EXPECT_LE(inside_failures, checked / 100) << "of " << checked;
-}
 
 TEST(Primitives, Cylinder) {
     check_shape([](Random& r) {
