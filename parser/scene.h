@@ -263,6 +263,41 @@ struct Prism {
     bool open = false;
 };
 
+/// POV-Ray's `lathe { [linear_spline | quadratic_spline | cubic_spline | bezier_spline] n, <r, y>... }`: the
+/// profile curve (r: distance from the axis, y: height) turned about the y axis.
+struct Lathe {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    std::vector<Vec3> points;  ///< (r, y, 0)
+};
+
+/// POV-Ray's `sor { n, <r, y>... [open] }`: a surface of revolution whose squared radius is a cubic in y on each
+/// interval between consecutive points (the first and the last point only set the end slopes); closed by discs at
+/// its lowest and highest point unless open.
+struct Sor {
+    std::vector<Vec3> points;  ///< (r, y, 0)
+    bool open = false;
+};
+
+/// One glyph of a `text` object: the TrueType outline in em units (closed contours of quadratic B-spline points,
+/// each on or off the curve, in the font's order), placed at `offset` in the text's object space.
+struct TextGlyph {
+    struct Point {
+        double x = 0.0;
+        double y = 0.0;
+        bool on_curve = true;
+    };
+    std::vector<std::vector<Point>> contours;
+    Vec3 offset;
+};
+
+/// POV-Ray's `text { ttf "font.ttf" "string" thickness, offset }`: the glyphs laid out by the parser as POV-Ray
+/// does (advance, kerning, offset), each extruded from z = 0 to z = thickness; the union of the glyphs.
+struct Text {
+    std::vector<TextGlyph> glyphs;
+    double thickness = 1.0;
+};
+
 struct Object;
 
 /// Constructive solid geometry over child objects (each with its own transform relative to this node).
@@ -274,7 +309,7 @@ struct Csg {
 
 /// The shapes the renderer draws.
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Disc, Torus, Mesh, Polygon, Quadric, Superellipsoid,
-                           Quartic, Prism, Csg>;
+                           Quartic, Prism, Lathe, Sor, Text, Csg>;
 
 /// One object of the scene: a shape, its placement, its appearance and its flags.
 struct Object {
