@@ -31,6 +31,9 @@ std::optional<AnyShape> make_shape(const parser::Shape& shape) {
             else if constexpr (std::is_same_v<T, parser::Quadric>) return wrap<QuadricShape>(s);
             else if constexpr (std::is_same_v<T, parser::Quartic>) return wrap<QuarticShape>(s);
             else if constexpr (std::is_same_v<T, parser::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Lathe>) return wrap<LatheShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Sor>) return wrap<SorShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Text>) return wrap<TextShape>(s);
             else if constexpr (std::is_same_v<T, parser::Csg>) return wrap<CsgShape>(s);
             return std::nullopt;
         },
