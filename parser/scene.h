@@ -252,10 +252,13 @@ struct Quartic {
     std::array<double, 35> coefficients{};
 };
 
-/// POV-Ray's `prism { [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }` with a linear spline:
-/// the 2-D outline (sub-polygons close when their first point repeats; even-odd rule) in the x-z plane (u -> x,
-/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin).
+/// POV-Ray's `prism { [spline type] [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }`: the 2-D
+/// outline (sub-polygons close when their first curve point repeats; even-odd rule) in the x-z plane (u -> x,
+/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin). The spline types are those of
+/// `lathe` (quadratic and cubic sub-polygons have a control point before their first and after their last point).
 struct Prism {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
     bool conic = false;
     double height1 = 0.0;
     double height2 = 1.0;

@@ -113,15 +113,24 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         Prism p;
         while (true) {
             const Token t = peek();
-            if (is_word(t, "linear_spline") || is_word(t, "linear_sweep")) {
+            if (is_word(t, "linear_spline")) {
                 next();
+                p.spline = Prism::Spline::Linear;
+            } else if (is_word(t, "linear_sweep")) {
+                next();
+                p.conic = false;
             } else if (is_word(t, "conic_sweep")) {
                 next();
                 p.conic = true;
-            } else if (is_word(t, "quadratic_spline") || is_word(t, "cubic_spline") || is_word(t, "bezier_spline")) {
-                // Curved outlines are drawn through their control points (a polyline) until splines are modelled.
+            } else if (is_word(t, "quadratic_spline")) {
                 next();
-                warn_unsupported(t, "prism " + t.text);
+                p.spline = Prism::Spline::Quadratic;
+            } else if (is_word(t, "cubic_spline")) {
+                next();
+                p.spline = Prism::Spline::Cubic;
+            } else if (is_word(t, "bezier_spline")) {
+                next();
+                p.spline = Prism::Spline::Bezier;
             } else {
                 break;
             }
@@ -132,7 +141,21 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         accept(",");
         const Token at = peek();
         const int n = static_cast<int>(std::lround(parse_float()));
-        if (n < 3) fail(at, "a prism needs at least 3 points");
+        // POV-Ray compat: its minimum point counts per spline type.
+        switch (p.spline) {
+            case Prism::Spline::Linear:
+                if (n < 3) fail(at, "a prism with linear_spline needs at least 3 points");
+                break;
+            case Prism::Spline::Quadratic:
+                if (n < 5) fail(at, "a prism with quadratic_spline needs at least 5 points");
+                break;
+            case Prism::Spline::Cubic:
+                if (n < 6) fail(at, "a prism with cubic_spline needs at least 6 points");
+                break;
+            case Prism::Spline::Bezier:
+                if (n <= 0 || n % 4 != 0) fail(at, "a prism with bezier_spline needs 4 points per segment");
+                break;
+        }
         for (int i = 0; i < n; ++i) {
             accept(",");
             const Vec3 uv = parse_vector();

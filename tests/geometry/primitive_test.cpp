@@ -111,6 +111,49 @@ TEST(Primitives, PrismInsideFollowsTheOutline) {
     EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
 }
 
+// A round outline through (±1, 0) and (0, ±1) in each spline type (control points as POV-Ray expects them).
+parser::Prism spline_prism(parser::Prism::Spline spline, bool conic) {
+    using Spline = parser::Prism::Spline;
+    parser::Prism p;
+    p.spline = spline;
+    p.conic = conic;
+    p.height1 = conic ? 0.5 : 0.0;
+    p.height2 = 1.0;
+    if (spline == Spline::Quadratic)
+        p.points = {{0.8, -0.8, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}};
+    else if (spline == Spline::Cubic)
+        p.points = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+    else
+        p.points = {{1, 0, 0},  {1, 0.55, 0},   {0.55, 1, 0},  {0, 1, 0},  {0, 1, 0},   {-0.55, 1, 0},
+                    {-1, 0.55, 0}, {-1, 0, 0},   {-1, 0, 0},    {-1, -0.55, 0}, {-0.55, -1, 0}, {0, -1, 0},
+                    {0, -1, 0},  {0.55, -1, 0}, {1, -0.55, 0}, {1, 0, 0}};
+    return p;
+}
+
+TEST(Primitives, PrismSplinesRandomRays) {
+    using Spline = parser::Prism::Spline;
+    std::uint64_t seed = 61;
+    for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier})
+        for (const bool conic : {false, true})
+            check_shape([=](Random&) { return spline_prism(s, conic); }, true, seed++);
+}
+
+TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
+    using Spline = parser::Prism::Spline;
+    for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier}) {
+        const auto inst = ShapeInstance::create(make_object(spline_prism(s, false)), 0);
+        ASSERT_TRUE(inst);
+        // Along x at mid-height the wall is met at the curve point (-1, 0) with a normal along -x.
+        const auto hit = inst->nearest({-5, 0.5, 0}, {1, 0, 0}, 0.0, 1e30);
+        ASSERT_TRUE(hit);
+        EXPECT_NEAR(hit->position.x, -1.0, 1e-9);
+        // POV-Ray's quadratic outline has a kink at its points; the others are smooth there.
+        if (s != Spline::Quadratic) EXPECT_NEAR(hit->normal.x, -1.0, 1e-3);
+        EXPECT_TRUE(inst->inside({0, 0.5, 0}));
+        EXPECT_FALSE(inst->inside({0.8, 0.5, 0.8}));
+    }
+}
+
 TEST(Primitives, PolygonWithHoleByEvenOddRule) {
     // A 2 x 2 square with a 1 x 1 square hole: POV-Ray's sub-polygons close when their first point repeats.
     parser::Polygon poly;

@@ -1,4 +1,5 @@
-// Tests of the curved-outline shapes' statements: text (font search, POV-Ray's glyph layout), lathe and sor.
+// Tests of the curved-outline shapes' statements: text (font search, POV-Ray's glyph layout), lathe, sor and
+// spline prisms.
 #include <algorithm>
 #include <cmath>
 
@@ -88,6 +89,22 @@ TEST(Sor, PointsOpenAndChecks) {
     EXPECT_TRUE(std::get<Sor>(s.objects[1].shape).open);
     parse_fail("sor { 3, <1, 0>, <1, 1>, <1, 2> }");
     parse_fail("sor { 4, <1, 0>, <1, 1>, <1, 0.5>, <1, 2> }");  // inner heights must climb
+}
+
+TEST(Prism, SplineTypesAndCounts) {
+    const Scene s = parse_ok(R"(
+        prism { 0, 1, 3, <0, 0>, <1, 0>, <0, 1> }
+        prism { quadratic_spline conic_sweep 0.5, 1, 5, <1, 1>, <1, 0>, <0, 1>, <-1, 0>, <1, 0> }
+        prism { bezier_spline 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(std::get<Prism>(s.objects[0].shape).spline, Prism::Spline::Linear);
+    EXPECT_EQ(std::get<Prism>(s.objects[1].shape).spline, Prism::Spline::Quadratic);
+    EXPECT_TRUE(std::get<Prism>(s.objects[1].shape).conic);
+    EXPECT_EQ(std::get<Prism>(s.objects[2].shape).spline, Prism::Spline::Bezier);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front().message;
+    parse_fail("prism { cubic_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
+    parse_fail("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
 }
 
 }  // namespace
