@@ -1,6 +1,7 @@
 // Prism meshes: POV-Ray's prism (linear or conic sweep) as side walls plus triangulated caps. Linear outlines give
 // flat walls; spline outlines (quadratic, cubic, Bézier) are sampled finely and their walls carry the spline's own
 // normals at every sample, so shading follows the curve rather than the facets.
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/mesh.h"
@@ -9,8 +10,11 @@ namespace wardray::geometry {
 
 namespace {
 
-// Samples per spline piece: the chord of a quarter turn then strays less than 1/3000 of its radius.
-constexpr int kSamplesPerPiece = 48;
+// Samples per spline piece: enough that the outline turns at most half a degree between two samples (POV-Ray
+// parity needs far finer steps than the eye: the walls' interpolated normals and the caps' edges both follow them).
+constexpr double kMaxTurnPerSample = 0.5 * 3.14159265358979323846 / 180.0;
+constexpr int kMinSamples = 4;
+constexpr int kMaxSamples = 512;
 
 // One edge of the outline in (u, v, 0), with the outline's tangent at both ends (zero: a flat wall).
 struct Edge {
@@ -122,8 +126,18 @@ std::vector<std::vector<Edge>> outline_edges(const parser::Prism& prism) {
     for (const Piece& piece : spline_pieces(prism)) {
         const Vec3 start = piece.at(0.0);
         if (!current.empty() && length(current.back().b - start) > 1e-9) close();
-        for (int k = 0; k < kSamplesPerPiece; ++k) {
-            const double w0 = double(k) / kSamplesPerPiece, w1 = double(k + 1) / kSamplesPerPiece;
+        // The piece's total turn, from its tangent at 64 places.
+        double turn = 0.0;
+        Vec3 last = piece.tangent(0.0);
+        for (int k = 1; k <= 64; ++k) {
+            const Vec3 t = piece.tangent(k / 64.0);
+            if (length(t) > 0.0 && length(last) > 0.0)
+                turn += std::atan2(std::fabs(cross(last, t).z), dot(last, t));
+            if (length(t) > 0.0) last = t;
+        }
+        const int samples = std::clamp(static_cast<int>(std::ceil(turn / kMaxTurnPerSample)), kMinSamples, kMaxSamples);
+        for (int k = 0; k < samples; ++k) {
+            const double w0 = double(k) / samples, w1 = double(k + 1) / samples;
             const Edge e{piece.at(w0), piece.at(w1), piece.tangent(w0), piece.tangent(w1)};
             if (length(e.b - e.a) > 0.0) current.push_back(e);
         }

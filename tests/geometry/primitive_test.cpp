@@ -135,7 +135,7 @@ TEST(Primitives, PrismSplinesRandomRays) {
     std::uint64_t seed = 61;
     for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier})
         for (const bool conic : {false, true})
-            check_shape([=](Random&) { return spline_prism(s, conic); }, true, seed++);
+            check_shape([=](Random&) { return spline_prism(s, conic); }, true, seed++, 1e-9, 10, 80);
 }
 
 TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {

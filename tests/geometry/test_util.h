@@ -95,11 +95,11 @@ inline void expect_valid_crossing(const ShapeInstance& inst, const SurfaceHits& 
 /// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
 /// shapes, inside just behind the normal and outside just in front of it.
 inline void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
-                 double surface_tolerance = 1e-9, int min_hits = 150) {
+                 double surface_tolerance = 1e-9, int min_hits = 150, int trials = 300) {
     Random rng(seed);
     int checked = 0;
     int inside_failures = 0;
-    for (int trial = 0; trial < 300; ++trial) {
+    for (int trial = 0; trial < trials; ++trial) {
         parser::Object obj = make_object(make(rng), rng.transform());
         const auto inst = ShapeInstance::create(obj, 3);
         ASSERT_TRUE(inst.has_value()) << "trial " << trial;
