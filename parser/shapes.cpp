@@ -190,11 +190,19 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
 
 namespace {
 
-// The characters of a text string: bytes, or UTF-8 sequences under `charset utf8` (bad sequences as bytes).
-std::vector<std::uint32_t> text_characters(const std::string& s, bool utf8) {
+// The characters of a text string: ASCII, or UTF-8 sequences under `charset utf8` (bad sequences as bytes).
+// POV-Ray compat: under the default `charset ascii` every byte beyond ASCII becomes a space; `replaced` tells.
+std::vector<std::uint32_t> text_characters(const std::string& s, bool utf8, bool& replaced) {
     std::vector<std::uint32_t> out;
+    replaced = false;
     for (std::size_t i = 0; i < s.size();) {
         const auto b = static_cast<unsigned char>(s[i]);
+        if (!utf8 && b >= 0x80) {
+            out.push_back(' ');
+            replaced = true;
+            ++i;
+            continue;
+        }
         const int extra = !utf8 || b < 0xC0 ? 0 : b < 0xE0 ? 1 : b < 0xF0 ? 2 : 3;
         std::uint32_t c = extra == 0 ? b : b & (0x3F >> extra);
         bool ok = i + extra < s.size();
@@ -263,7 +271,12 @@ Text Parser::parse_text_parameters(const Token& kw) {
         break;
     }
     if (!font) fail(kind, "cannot open font file '" + name + "': " + error);
-    auto glyphs = font->layout(text_characters(str, m_charset_utf8), offset, m_charset_utf8, error);
+    bool replaced = false;
+    const auto chars = text_characters(str, m_charset_utf8, replaced);
+    if (replaced)
+        warn(kw, "non-ASCII characters in the text are replaced by spaces, as POV-Ray does under charset ascii "
+                 "(global_settings { charset utf8 } reads them as UTF-8)");
+    auto glyphs = font->layout(chars, offset, m_charset_utf8, error);
     if (!glyphs) fail(kw, "cannot read the glyphs of '" + name + "': " + error);
     text.glyphs = std::move(*glyphs);
     return text;

@@ -58,6 +58,16 @@ TEST(Text, SpaceHasNoOutlineButAdvances) {
     EXPECT_GT(x_range(t.glyphs[2]).first, x_range(t.glyphs[0]).second + 0.1);
 }
 
+TEST(Text, NonAsciiBytesAreSpacesUnlessCharsetUtf8) {
+    const Scene ascii = parse_ok("text { ttf \"timrom.ttf\" \"a\xC3\xA9\", 1, 0 }");
+    ASSERT_EQ(std::get<Text>(ascii.objects[0].shape).glyphs.size(), 3u);
+    EXPECT_TRUE(std::get<Text>(ascii.objects[0].shape).glyphs[1].contours.empty());
+    ASSERT_EQ(ascii.warnings.size(), 1u);
+    EXPECT_NE(ascii.warnings[0].message.find("replaced by spaces"), std::string::npos);
+    const Scene utf8 = parse_ok("global_settings { charset utf8 } text { ttf \"timrom.ttf\" \"a\xC3\xA9\", 1, 0 }");
+    EXPECT_EQ(std::get<Text>(utf8.objects[0].shape).glyphs.size(), 2u);
+}
+
 TEST(Text, MissingFontIsAnErrorAtTheText) {
     const ParseResult r = parse_fail("text { ttf \"no_such_font.ttf\" \"x\", 1, 0 }");
     EXPECT_NE(test::all_diagnostics(r).find("cannot open font file 'no_such_font.ttf'"), std::string::npos)
