@@ -102,6 +102,7 @@ std::optional<LatheShape> LatheShape::create(const parser::Lathe& lathe) {
         extent(piece.r, r_lo, r_hi);
         extent(piece.y, piece.y_min, piece.y_max);
         piece.r_max = std::fmax(std::fabs(r_lo), std::fabs(r_hi));
+        piece.r_min = r_lo <= 0.0 && r_hi >= 0.0 ? 0.0 : std::fmin(std::fabs(r_lo), std::fabs(r_hi));
         if (k == 0) {
             shape.m_r_min = r_lo;
             shape.m_r_max = r_hi;
@@ -171,6 +172,14 @@ SurfaceHits LatheShape::intersect_all(const LocalRay& ray, double t_min, double 
         double p0, p1;
         const Vec3 reach{piece.r_max, 0.0, piece.r_max};
         if (!slab(Vec3{-reach.x, piece.y_min, -reach.z}, Vec3{reach.x, piece.y_max, reach.z}, o, u, p0, p1)) continue;
+        // The ray's squared distance from the axis over that stretch must reach the piece's ring of radii.
+        {
+            auto rho2_at = [&](double s) { return rho2 + 2.0 * m * s + rr * s * s; };
+            const double s_near = rr > 0.0 ? std::clamp(-m / rr, p0, p1) : p0;
+            const double lo = rho2_at(s_near), hi = std::fmax(rho2_at(p0), rho2_at(p1));
+            const double tol = 1e-9 * (scale * scale + hi);
+            if (lo > piece.r_max * piece.r_max + tol || hi < piece.r_min * piece.r_min - tol) continue;
+        }
         // Hits as (w, s) pairs: the piece parameter and the distance along the unit ray.
         double ws[12], ss[12];
         int nh = 0;

@@ -34,6 +34,7 @@ public:
         std::array<double, 4> r{};
         std::array<double, 4> y{};
         double r_max = 0.0;  ///< largest |r|
+        double r_min = 0.0;  ///< smallest |r| (0 where r changes sign)
         double y_min = 0.0;
         double y_max = 0.0;
     };
