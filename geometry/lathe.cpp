@@ -103,16 +103,26 @@ std::optional<LatheShape> LatheShape::create(const parser::Lathe& lathe) {
         extent(piece.y, piece.y_min, piece.y_max);
         piece.r_max = std::fmax(std::fabs(r_lo), std::fabs(r_hi));
         piece.r_min = r_lo <= 0.0 && r_hi >= 0.0 ? 0.0 : std::fmin(std::fabs(r_lo), std::fabs(r_hi));
+        // The ranges the inside test checks first. POV-Ray compat: a Bézier piece counts with its control
+        // points (Compute_Lathe), which reach beyond the curve.
+        double in_r_lo = r_lo, in_r_hi = r_hi, in_y_lo = piece.y_min, in_y_hi = piece.y_max;
+        if (lathe.spline == Spline::Bezier)
+            for (int j = 4 * k; j < 4 * k + 4; ++j) {
+                in_r_lo = std::fmin(in_r_lo, P[j].x);
+                in_r_hi = std::fmax(in_r_hi, P[j].x);
+                in_y_lo = std::fmin(in_y_lo, P[j].y);
+                in_y_hi = std::fmax(in_y_hi, P[j].y);
+            }
         if (k == 0) {
-            shape.m_r_min = r_lo;
-            shape.m_r_max = r_hi;
-            shape.m_y_min = piece.y_min;
-            shape.m_y_max = piece.y_max;
+            shape.m_r_min = in_r_lo;
+            shape.m_r_max = in_r_hi;
+            shape.m_y_min = in_y_lo;
+            shape.m_y_max = in_y_hi;
         }
-        shape.m_r_min = std::fmin(shape.m_r_min, r_lo);
-        shape.m_r_max = std::fmax(shape.m_r_max, r_hi);
-        shape.m_y_min = std::fmin(shape.m_y_min, piece.y_min);
-        shape.m_y_max = std::fmax(shape.m_y_max, piece.y_max);
+        shape.m_r_min = std::fmin(shape.m_r_min, in_r_lo);
+        shape.m_r_max = std::fmax(shape.m_r_max, in_r_hi);
+        shape.m_y_min = std::fmin(shape.m_y_min, in_y_lo);
+        shape.m_y_max = std::fmax(shape.m_y_max, in_y_hi);
         pieces->push_back(piece);
     }
     double reach = 0.0;
