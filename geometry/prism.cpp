@@ -14,7 +14,7 @@ namespace {
 // parity needs far finer steps than the eye: the walls' interpolated normals and the caps' edges both follow them).
 constexpr double kMaxTurnPerSample = 0.5 * 3.14159265358979323846 / 180.0;
 constexpr int kMinSamples = 4;
-constexpr int kMaxSamples = 512;
+constexpr int kMaxSamples = 128;
 
 // One edge of the outline in (u, v, 0), with the outline's tangent at both ends (zero: a flat wall).
 struct Edge {
@@ -175,15 +175,28 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
         if (!prism.conic) return Vec3{t.y, 0.0, -t.x};
         return Vec3{-t.y, t.y * uv.x - t.x * uv.y, t.x};
     };
-    auto inside = [&](const Vec3& p) {
-        if (!(p.y > h1 && p.y < h2)) return false;
-        const double s = prism.conic ? p.y : 1.0;
-        return inside_outline(loops, p.x / s, p.z / s);
-    };
+
+    // Which side of each loop is inside, from one test beside its longest edge: every edge of the loop faces the
+    // same way (a per-triangle test would cost the outline's size for each of its triangles).
+    std::vector<double> loop_sign(edge_loops.size(), 1.0);
+    for (std::size_t l = 0; l < edge_loops.size(); ++l) {
+        const Edge* longest = nullptr;
+        for (const Edge& e : edge_loops[l])
+            if (longest == nullptr || length(e.b - e.a) > length(longest->b - longest->a)) longest = &e;
+        if (longest == nullptr) continue;
+        const Vec3 d = longest->b - longest->a;
+        const double len = length(d);
+        const Vec3 mid = 0.5 * (longest->a + longest->b);
+        const double eps = 1e-7 * (max_abs_component(mid) + len);
+        if (inside_outline(loops, mid.x + eps * d.y / len, mid.y - eps * d.x / len)) loop_sign[l] = -1.0;
+    }
+    // A conic sweep below its apex turns the outline half round.
+    const double sweep_sign = prism.conic && h1 + h2 < 0.0 ? -1.0 : 1.0;
 
     parser::Mesh mesh;
-    // A triangle turned outward (just in front of its centre is outside), with vertex normals when given.
-    auto add_triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3* normals = nullptr) {
+    // A triangle turned to face `outward`, with vertex normals when given.
+    auto add_triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& outward,
+                            const Vec3* normals = nullptr) {
         const int base = static_cast<int>(mesh.vertices.size());
         mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
         parser::Mesh::Face f;
@@ -193,32 +206,29 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
             mesh.normals.insert(mesh.normals.end(), {normals[0], normals[1], normals[2]});
             f.n = {nb, nb + 1, nb + 2};
         }
-        const Vec3 n = cross(b - a, c - a);
-        const double len = length(n);
-        if (len > 0.0) {
-            const Vec3 centre = (a + b + c) / 3.0;
-            const double eps = 1e-7 * (1.0 + max_abs_component(centre) + std::sqrt(len));
-            if (inside(centre + eps * (n / len))) {
-                std::swap(f.v[1], f.v[2]);
-                std::swap(f.n[1], f.n[2]);
-            }
+        if (dot(cross(b - a, c - a), outward) < 0.0) {
+            std::swap(f.v[1], f.v[2]);
+            std::swap(f.n[1], f.n[2]);
         }
         mesh.faces.push_back(f);
     };
-    for (const auto& edges : edge_loops)
-        for (const Edge& e : edges) {
+    for (std::size_t l = 0; l < edge_loops.size(); ++l)
+        for (const Edge& e : edge_loops[l]) {
             const Vec3 a1 = place(e.a, h1), b1 = place(e.b, h1), a2 = place(e.a, h2), b2 = place(e.b, h2);
+            // The edge's outward side in the outline's plane, placed in x-z.
+            const double k = loop_sign[l] * sweep_sign;
+            const Vec3 outward{k * (e.b.y - e.a.y), 0.0, -k * (e.b.x - e.a.x)};
             if (e.ta == Vec3{} || e.tb == Vec3{}) {
-                add_triangle(a1, b1, b2);
-                add_triangle(a1, b2, a2);
+                add_triangle(a1, b1, b2, outward);
+                add_triangle(a1, b2, a2, outward);
                 continue;
             }
             // Smooth walls: the mesh keeps interpolated normals on the geometric side, so their sign is free.
             const Vec3 na = wall_normal(e.a, e.ta), nb = wall_normal(e.b, e.tb);
             const Vec3 n1[3] = {na, nb, nb};
             const Vec3 n2[3] = {na, nb, na};
-            add_triangle(a1, b1, b2, n1);
-            add_triangle(a1, b2, a2, n2);
+            add_triangle(a1, b1, b2, outward, n1);
+            add_triangle(a1, b2, a2, outward, n2);
         }
     if (!prism.open) {
         for (double h : {h1, h2}) {
@@ -229,8 +239,9 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
             }
             const auto caps = create(cap);
             if (!caps) continue;
+            const Vec3 outward{0.0, h == h1 ? -1.0 : 1.0, 0.0};
             for (const Face& f : caps->faces())
-                add_triangle(caps->vertices()[f.v[0]], caps->vertices()[f.v[1]], caps->vertices()[f.v[2]]);
+                add_triangle(caps->vertices()[f.v[0]], caps->vertices()[f.v[1]], caps->vertices()[f.v[2]], outward);
         }
     }
     // Crossings along a direction in no special position decide the inside, as for a closed mesh.
