@@ -175,8 +175,9 @@ SurfaceHits LatheShape::intersect_all(const LocalRay& ray, double t_min, double 
     const double m = o.x * u.x + o.z * u.z;
     const double rr = u.x * u.x + u.z * u.z;
     const double scale = std::fmax(max_abs_component(m_bounds.lower), max_abs_component(m_bounds.upper));
-    // POV-Ray compat: a ray this close to horizontal is solved at its constant height.
-    const bool level = std::fabs(u.y) <= 1e-10;
+    // A ray this close to horizontal makes the polynomial's roots pair up too closely to separate: it is solved
+    // at its height at s = 0, then polished for its tilt (POV-Ray switches at 1e-10 and misses such hits).
+    const bool level = std::fabs(u.y) <= 1e-6;
     for (std::size_t k = 0; k < m_pieces->size(); ++k) {
         const Piece& piece = (*m_pieces)[k];
         double p0, p1;
@@ -219,8 +220,28 @@ SurfaceHits LatheShape::intersect_all(const LocalRay& ray, double t_min, double 
                 const double disc = m * m - rr * (rho2 - r * r);
                 if (disc < 0.0 || rr == 0.0) continue;
                 const double q = -(m + std::copysign(std::sqrt(disc), m));
-                for (const double s : {q / rr, q != 0.0 ? (rho2 - r * r) / q : q / rr}) {
-                    ws[nh] = w[i];
+                for (double s : {q / rr, q != 0.0 ? (rho2 - r * r) / q : q / rr}) {
+                    // Newton on y(w) = oy + s uy and r(w)² = rho² + 2 m s + rr s² from the level solution.
+                    double wk = w[i];
+                    bool ok = true;
+                    for (int iter = 0; iter < 8 && u.y != 0.0; ++iter) {
+                        const double rk = poly(piece.r, wk);
+                        const double f1 = poly(piece.y, wk) - o.y - s * u.y;
+                        const double f2 = rk * rk - (rho2 + 2.0 * m * s + rr * s * s);
+                        const double a = dpoly(piece.y, wk), b = -u.y;
+                        const double c = 2.0 * rk * dpoly(piece.r, wk), d = -2.0 * (m + rr * s);
+                        const double det = a * d - b * c;
+                        if (det == 0.0 || !std::isfinite(det)) {
+                            ok = false;
+                            break;
+                        }
+                        const double dw = (f1 * d - b * f2) / det, ds = (a * f2 - c * f1) / det;
+                        wk -= dw;
+                        s -= ds;
+                        if (std::fabs(dw) <= 1e-15 && std::fabs(ds) <= 1e-15 * (1.0 + std::fabs(s))) break;
+                    }
+                    if (!ok || !(wk >= -1e-9 && wk <= 1.0 + 1e-9)) continue;
+                    ws[nh] = std::clamp(wk, 0.0, 1.0);
                     ss[nh++] = s;
                 }
             }

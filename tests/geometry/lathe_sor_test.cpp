@@ -71,6 +71,22 @@ TEST(Lathe, LinearProfileOfACylinder) {
     EXPECT_FALSE(inst->inside({1.1, 1, 0}));
 }
 
+TEST(Lathe, NearlyLevelRaysHitTheWallWhereLevelOnesDo) {
+    // A Catmull-Rom profile: the wall's radius at height 0.7 is found by a level ray; rays tilted by tiny
+    // amounts must agree, whether solved as a sextic or at their constant height.
+    const auto inst = ShapeInstance::create(make_object(lathe_of(
+        Spline::Cubic, {{-0.5, -0.2, 0}, {0, 0, 0}, {1, 0.1, 0}, {0.7, 0.8, 0}, {0.5, 1.5, 0}, {0, 1.5, 0}, {-0.5, 1.7, 0}})), 0);
+    ASSERT_TRUE(inst);
+    const auto level = inst->nearest({-5, 0.7, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_TRUE(level);
+    for (const double tilt : {1e-12, 1e-9, 1e-7, 2e-6, 1e-5, 1e-3}) {
+        const auto hit = inst->nearest({-5, 0.7, 0}, {1, tilt, 0}, 0.0, 1e30);
+        ASSERT_TRUE(hit) << "tilt " << tilt;
+        EXPECT_NEAR(hit->position.x, level->position.x, 1e-6 + 10 * tilt) << "tilt " << tilt;
+        EXPECT_NEAR(hit->normal.x, level->normal.x, 1e-6 + 10 * tilt) << "tilt " << tilt;
+    }
+}
+
 TEST(Lathe, BezierQuarterCircleBulge) {
     // A Bézier segment from (1,0) to (1,2) bulging to r = 1.75 at mid-height, closed along the axis.
     const auto inst = ShapeInstance::create(make_object(lathe_of(
@@ -127,6 +143,19 @@ TEST(Sor, CurveRunsThroughTheInnerPoints) {
         const auto hit = inst->nearest({-5, y_ray, 0}, {1, 0, 0}, 0.0, 1e30);
         ASSERT_TRUE(hit);
         EXPECT_NEAR(hit->position.x, -r, 1e-6) << "y " << y;
+    }
+}
+
+TEST(Sor, NearlyLevelRaysAgreeWithLevelOnes) {
+    const auto inst = ShapeInstance::create(
+        make_object(sor_of({{0.5, -0.5, 0}, {0.8, 0, 0}, {1.2, 0.7, 0}, {0.6, 1.5, 0}, {0.9, 2.0, 0}})), 0);
+    ASSERT_TRUE(inst);
+    const auto level = inst->nearest({-5, 0.9, 0.2}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_TRUE(level);
+    for (const double tilt : {1e-12, 1e-9, 1e-7, 1e-5, 1e-3}) {
+        const auto hit = inst->nearest({-5, 0.9, 0.2}, {1, tilt, 0}, 0.0, 1e30);
+        ASSERT_TRUE(hit) << "tilt " << tilt;
+        EXPECT_NEAR(hit->position.x, level->position.x, 1e-6 + 10 * tilt) << "tilt " << tilt;
     }
 }
 
