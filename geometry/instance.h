@@ -19,6 +19,7 @@
 #include "geometry/scene_geometry.h"
 #include "geometry/sor.h"
 #include "geometry/sphere.h"
+#include "geometry/spline_prism.h"
 #include "geometry/superellipsoid.h"
 #include "geometry/text.h"
 #include "geometry/torus.h"
@@ -28,8 +29,8 @@ namespace wardray::geometry {
 
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, MeshShape,
-                              QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, TextShape,
-                              CsgShape>;
+                              QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
+                              TextShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The parser::Object must outlive the instance (hits point at it).

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/mesh.h"
+#include "geometry/prism_outline.h"
 
 namespace wardray::geometry {
 
@@ -34,78 +35,6 @@ bool inside_outline(const std::vector<std::vector<Vec3>>& loops, double u, doubl
     return in;
 }
 
-// A spline piece: u(w) = Σ cu[i] wⁱ, v(w) = Σ cv[i] wⁱ for w in [0, 1].
-struct Piece {
-    double cu[4];
-    double cv[4];
-    Vec3 at(double w) const {
-        return {((cu[3] * w + cu[2]) * w + cu[1]) * w + cu[0], ((cv[3] * w + cv[2]) * w + cv[1]) * w + cv[0], 0.0};
-    }
-    Vec3 tangent(double w) const {
-        return {(3.0 * cu[3] * w + 2.0 * cu[2]) * w + cu[1], (3.0 * cv[3] * w + 2.0 * cv[2]) * w + cv[1], 0.0};
-    }
-};
-
-// POV-Ray's pieces of a spline outline (Compute_Prism): quadratic and cubic sub-polygons run from their second
-// point and close when a point two ahead repeats that first curve point; Bézier pieces take four points each.
-std::vector<Piece> spline_pieces(const parser::Prism& prism) {
-    using Spline = parser::Prism::Spline;
-    const auto& P = prism.points;
-    const int n = static_cast<int>(P.size());
-    std::vector<Piece> pieces;
-    Vec3 first = P.size() > 1 ? P[1] : Vec3{};
-    auto same = [](const Vec3& a, const Vec3& b) { return std::fabs(a.x - b.x) < 1e-10 && std::fabs(a.y - b.y) < 1e-10; };
-    for (int i = 0; i < n - 1; ++i) {
-        Piece piece{};
-        for (int axis = 0; axis < 2; ++axis) {
-            double* c = axis == 0 ? piece.cu : piece.cv;
-            auto p = [&](int k) { return axis == 0 ? P[k].x : P[k].y; };
-            switch (prism.spline) {
-                case Spline::Quadratic:
-                    if (i + 2 >= n) return pieces;
-                    c[0] = p(i + 1);
-                    c[1] = -0.5 * p(i) + 0.5 * p(i + 2);
-                    c[2] = 0.5 * p(i) - p(i + 1) + 0.5 * p(i + 2);
-                    c[3] = 0.0;
-                    break;
-                case Spline::Cubic:
-                    if (i + 3 >= n) return pieces;
-                    c[0] = p(i + 1);
-                    c[1] = -0.5 * p(i) + 0.5 * p(i + 2);
-                    c[2] = p(i) - 2.5 * p(i + 1) + 2.0 * p(i + 2) - 0.5 * p(i + 3);
-                    c[3] = -0.5 * p(i) + 1.5 * p(i + 1) - 1.5 * p(i + 2) + 0.5 * p(i + 3);
-                    break;
-                default:  // Bézier
-                    if (i + 3 >= n) return pieces;
-                    c[0] = p(i);
-                    c[1] = 3.0 * (p(i + 1) - p(i));
-                    c[2] = 3.0 * p(i + 2) - 6.0 * p(i + 1) + 3.0 * p(i);
-                    c[3] = p(i + 3) - 3.0 * p(i + 2) + 3.0 * p(i + 1) - p(i);
-                    break;
-            }
-        }
-        pieces.push_back(piece);
-        switch (prism.spline) {
-            case Spline::Quadratic:
-                if (same(P[i + 2], first)) {
-                    i += 2;
-                    if (i + 2 < n) first = P[i + 2];
-                }
-                break;
-            case Spline::Cubic:
-                if (same(P[i + 2], first)) {
-                    i += 3;
-                    if (i + 2 < n) first = P[i + 2];
-                }
-                break;
-            default:
-                i += 3;
-                break;
-        }
-    }
-    return pieces;
-}
-
 // The outline as loops of edges: the sub-polygons of a linear outline, or the sampled spline pieces chained into
 // loops wherever one piece starts where the last one ended.
 std::vector<std::vector<Edge>> outline_edges(const parser::Prism& prism) {
@@ -123,7 +52,7 @@ std::vector<std::vector<Edge>> outline_edges(const parser::Prism& prism) {
         if (current.size() >= 2) loops.push_back(std::move(current));
         current.clear();
     };
-    for (const Piece& piece : spline_pieces(prism)) {
+    for (const PrismPiece& piece : prism_spline_pieces(prism)) {
         const Vec3 start = piece.at(0.0);
         if (!current.empty() && length(current.back().b - start) > 1e-9) close();
         // The piece's total turn, from its tangent at 64 places.
@@ -247,6 +176,64 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
     // Crossings along a direction in no special position decide the inside, as for a closed mesh.
     mesh.inside_vector = prism.open ? Vec3{1.0, 0.0123, 0.0371} : Vec3{0.0123, 1.0, 0.0371};
     return create(mesh);
+}
+
+std::vector<PrismPiece> prism_spline_pieces(const parser::Prism& prism) {
+    using Spline = parser::Prism::Spline;
+    const auto& P = prism.points;
+    const int n = static_cast<int>(P.size());
+    std::vector<PrismPiece> pieces;
+    Vec3 first = P.size() > 1 ? P[1] : Vec3{};
+    auto same = [](const Vec3& a, const Vec3& b) { return std::fabs(a.x - b.x) < 1e-10 && std::fabs(a.y - b.y) < 1e-10; };
+    for (int i = 0; i < n - 1; ++i) {
+        PrismPiece piece;
+        for (int axis = 0; axis < 2; ++axis) {
+            double* c = axis == 0 ? piece.cu : piece.cv;
+            auto p = [&](int k) { return axis == 0 ? P[k].x : P[k].y; };
+            switch (prism.spline) {
+                case Spline::Quadratic:
+                    if (i + 2 >= n) return pieces;
+                    c[0] = p(i + 1);
+                    c[1] = -0.5 * p(i) + 0.5 * p(i + 2);
+                    c[2] = 0.5 * p(i) - p(i + 1) + 0.5 * p(i + 2);
+                    c[3] = 0.0;
+                    break;
+                case Spline::Cubic:
+                    if (i + 3 >= n) return pieces;
+                    c[0] = p(i + 1);
+                    c[1] = -0.5 * p(i) + 0.5 * p(i + 2);
+                    c[2] = p(i) - 2.5 * p(i + 1) + 2.0 * p(i + 2) - 0.5 * p(i + 3);
+                    c[3] = -0.5 * p(i) + 1.5 * p(i + 1) - 1.5 * p(i + 2) + 0.5 * p(i + 3);
+                    break;
+                default:  // Bézier
+                    if (i + 3 >= n) return pieces;
+                    c[0] = p(i);
+                    c[1] = 3.0 * (p(i + 1) - p(i));
+                    c[2] = 3.0 * p(i + 2) - 6.0 * p(i + 1) + 3.0 * p(i);
+                    c[3] = p(i + 3) - 3.0 * p(i + 2) + 3.0 * p(i + 1) - p(i);
+                    break;
+            }
+        }
+        pieces.push_back(piece);
+        switch (prism.spline) {
+            case Spline::Quadratic:
+                if (same(P[i + 2], first)) {
+                    i += 2;
+                    if (i + 2 < n) first = P[i + 2];
+                }
+                break;
+            case Spline::Cubic:
+                if (same(P[i + 2], first)) {
+                    i += 3;
+                    if (i + 2 < n) first = P[i + 2];
+                }
+                break;
+            default:
+                i += 3;
+                break;
+        }
+    }
+    return pieces;
 }
 
 }  // namespace wardray::geometry
