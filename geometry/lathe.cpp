@@ -98,6 +98,9 @@ std::optional<LatheShape> LatheShape::create(const parser::Lathe& lathe) {
                 }
             }
         }
+        const int last = lathe.spline == Spline::Linear ? k + 1 : lathe.spline == Spline::Bezier ? 4 * k + 3 : k + 2;
+        piece.r_end = P[last].x;
+        piece.y_end = P[last].y;
         double r_lo, r_hi;
         extent(piece.r, r_lo, r_hi);
         extent(piece.y, piece.y_min, piece.y_max);
@@ -148,15 +151,18 @@ bool LatheShape::inside_profile(double radius, double height) const {
         for (int i = 0; i < nr; ++i)
             if (roots[i] > 0.0 && roots[i] < 1.0) cuts[n_cuts++] = roots[i];
         cuts[n_cuts++] = 1.0;
+        // Ends exactly as given, so the piece before and the piece after agree about them.
+        auto y_at = [&](double w) { return w == 1.0 ? piece.y_end : poly(piece.y, w); };
+        auto r_at = [&](double w) { return w == 1.0 ? piece.r_end : poly(piece.r, w); };
         for (int k = 0; k + 1 < n_cuts; ++k) {
-            const double ya = poly(piece.y, cuts[k]), yb = poly(piece.y, cuts[k + 1]);
+            const double ya = y_at(cuts[k]), yb = y_at(cuts[k + 1]);
             if ((ya > height) == (yb > height)) continue;
             std::array<double, 4> c = piece.y;
             c[0] -= height;
             double w[3];
             const int nw = polynomial_roots(c.data(), 3, cuts[k], cuts[k + 1], w);
             const double wk = nw > 0 ? w[0] : (std::fabs(ya - height) < std::fabs(yb - height) ? cuts[k] : cuts[k + 1]);
-            crossings += poly(piece.r, wk) >= radius;
+            crossings += r_at(wk) >= radius;
         }
     }
     return (crossings & 1) != 0;

@@ -33,6 +33,8 @@ public:
     struct Piece {
         std::array<double, 4> r{};
         std::array<double, 4> y{};
+        double r_end = 0.0;  ///< the profile point the piece ends on, exactly (the polynomials at 1 may round)
+        double y_end = 0.0;
         double r_max = 0.0;  ///< largest |r|
         double r_min = 0.0;  ///< smallest |r| (0 where r changes sign)
         double y_min = 0.0;

@@ -1,6 +1,6 @@
-// Prism meshes: POV-Ray's prism (linear or conic sweep) as side walls plus triangulated caps. Linear outlines give
-// flat walls; spline outlines (quadratic, cubic, Bézier) are sampled finely and their walls carry the spline's own
-// normals at every sample, so shading follows the curve rather than the facets.
+// Prism meshes: POV-Ray's prism as side walls plus triangulated caps, for linear outlines (flat walls) and for
+// conic sweeps of spline outlines, which are sampled finely with the spline's own normals at every sample so
+// shading follows the curve rather than the facets (linear sweeps of splines are SplinePrismShape).
 #include <algorithm>
 #include <cmath>
 
@@ -214,6 +214,8 @@ std::vector<PrismPiece> prism_spline_pieces(const parser::Prism& prism) {
                     break;
             }
         }
+        piece.end = prism.spline == Spline::Bezier ? P[i + 3] : P[i + 2];
+        piece.end.z = 0.0;
         pieces.push_back(piece);
         switch (prism.spline) {
             case Spline::Quadratic:

@@ -12,8 +12,10 @@ namespace wardray::geometry {
 struct PrismPiece {
     double cu[4] = {};
     double cv[4] = {};
+    Vec3 end;  ///< the point the piece ends on, exactly (the polynomial at 1 may round differently)
 
     Vec3 at(double w) const {
+        if (w == 1.0) return end;
         return {((cu[3] * w + cu[2]) * w + cu[1]) * w + cu[0], ((cv[3] * w + cv[2]) * w + cv[1]) * w + cv[0], 0.0};
     }
     Vec3 tangent(double w) const {

@@ -87,6 +87,17 @@ TEST(Lathe, NearlyLevelRaysHitTheWallWhereLevelOnesDo) {
     }
 }
 
+TEST(Lathe, InsideAtTheHeightOfAProfilePoint) {
+    // Heights where two pieces meet count one crossing, whatever rounding does to the pieces' ends.
+    for (const Spline s : {Spline::Linear, Spline::Cubic}) {
+        const auto inst = ShapeInstance::create(make_object(lathe_of(
+            s, {{0, -0.1, 0}, {0, 0, 0}, {1, 0, 0}, {0.7, 0.3, 0}, {1.1, 0.7, 0}, {0.9, 1.3, 0}, {0, 1.3, 0}, {0, 1.4, 0}})), 0);
+        ASSERT_TRUE(inst);
+        for (const double y : {0.3, 0.7})
+            EXPECT_TRUE(inst->inside({0.2, y, 0.1})) << "spline " << static_cast<int>(s) << " height " << y;
+    }
+}
+
 TEST(Lathe, BezierQuarterCircleBulge) {
     // A Bézier segment from (1,0) to (1,2) bulging to r = 1.75 at mid-height, closed along the axis.
     const auto inst = ShapeInstance::create(make_object(lathe_of(

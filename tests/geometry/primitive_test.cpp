@@ -138,6 +138,33 @@ TEST(Primitives, PrismSplinesRandomRays) {
             check_shape([=](Random&) { return spline_prism(s, conic); }, true, seed++, 1e-9, 10, 80);
 }
 
+TEST(Primitives, PrismSplineSubPolygonCutsAHole) {
+    // A cubic outline of radius 1 with a second cubic sub-polygon of radius 0.3 inside it: the even-odd rule
+    // makes the inner one a hole through both caps.
+    parser::Prism p;
+    p.spline = parser::Prism::Spline::Cubic;
+    p.height1 = 0;
+    p.height2 = 0.5;
+    // Each sub-polygon: a control point, the curve points back to the first, a control point.
+    p.points = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0},
+                {0, -0.3, 0}, {0.3, 0, 0}, {0, 0.3, 0}, {-0.3, 0, 0}, {0, -0.3, 0}, {0.3, 0, 0}, {0, 0.3, 0}};
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    EXPECT_FALSE(inst->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30));  // down the hole
+    const auto cap = inst->nearest({0.6, 5, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(cap);
+    EXPECT_NEAR(cap->t, 4.5, 1e-12);
+    EXPECT_NEAR(cap->normal.y, 1.0, 1e-12);
+    // Along x at mid-height: outer wall, hole wall, hole wall, outer wall.
+    const SurfaceHits hits = inst->intersect_all({-5, 0.25, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 4u);
+    EXPECT_NEAR(hits[1].t, 5 - 0.3, 1e-9);
+    EXPECT_FALSE(hits[1].entering);
+    EXPECT_NEAR(hits[1].normal.x, 1.0, 1e-9);  // out of the solid, into the hole
+    EXPECT_FALSE(inst->inside({0, 0.25, 0}));
+    EXPECT_TRUE(inst->inside({0.6, 0.25, 0}));
+}
+
 TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
     using Spline = parser::Prism::Spline;
     for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier}) {
