@@ -25,12 +25,18 @@ std::optional<AnyShape> make_shape(const parser::Shape& shape) {
                 return wrap<ConeShape>(s);
             else if constexpr (std::is_same_v<T, parser::Disc>) return wrap<DiscShape>(s);
             else if constexpr (std::is_same_v<T, parser::Torus>) return wrap<TorusShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Mesh> || std::is_same_v<T, parser::Polygon> ||
-                               std::is_same_v<T, parser::Prism>)
+            else if constexpr (std::is_same_v<T, parser::Prism>) {
+                // Spline outlines swept straight are solved exactly; linear outlines and conic sweeps are meshes.
+                if (s.spline != parser::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
+                return wrap<MeshShape>(s);
+            } else if constexpr (std::is_same_v<T, parser::Mesh> || std::is_same_v<T, parser::Polygon>)
                 return wrap<MeshShape>(s);
             else if constexpr (std::is_same_v<T, parser::Quadric>) return wrap<QuadricShape>(s);
             else if constexpr (std::is_same_v<T, parser::Quartic>) return wrap<QuarticShape>(s);
             else if constexpr (std::is_same_v<T, parser::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Lathe>) return wrap<LatheShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Sor>) return wrap<SorShape>(s);
+            else if constexpr (std::is_same_v<T, parser::Text>) return wrap<TextShape>(s);
             else if constexpr (std::is_same_v<T, parser::Csg>) return wrap<CsgShape>(s);
             return std::nullopt;
         },

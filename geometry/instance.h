@@ -11,13 +11,17 @@
 #include "geometry/cone.h"
 #include "geometry/csg.h"
 #include "geometry/disc.h"
+#include "geometry/lathe.h"
 #include "geometry/mesh.h"
 #include "geometry/plane.h"
 #include "geometry/quadric.h"
 #include "geometry/quartic.h"
 #include "geometry/scene_geometry.h"
+#include "geometry/sor.h"
 #include "geometry/sphere.h"
+#include "geometry/spline_prism.h"
 #include "geometry/superellipsoid.h"
+#include "geometry/text.h"
 #include "geometry/torus.h"
 #include "parser/scene.h"
 
@@ -25,7 +29,8 @@ namespace wardray::geometry {
 
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, MeshShape,
-                              QuadricShape, QuarticShape, SuperellipsoidShape, CsgShape>;
+                              QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
+                              TextShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The parser::Object must outlive the instance (hits point at it).

@@ -7,6 +7,8 @@ namespace wardray::geometry {
 
 namespace {
 
+constexpr int kMaxDegree = 6;
+
 double evaluate(const double* c, int degree, double x) {
     double v = c[degree];
     for (int i = degree - 1; i >= 0; --i) v = v * x + c[i];
@@ -38,7 +40,7 @@ double refine(const double* c, const double* dc, int degree, double a, double b,
 int polynomial_roots(const double* c, int degree, double lo, double hi, double* roots) {
     // Drop vanishing leading coefficients so the degree is the true one.
     while (degree > 0 && c[degree] == 0.0) --degree;
-    if (degree <= 0 || !(lo <= hi)) return 0;
+    if (degree <= 0 || degree > kMaxDegree || !(lo <= hi)) return 0;
     if (degree == 1) {
         const double x = -c[0] / c[1];
         if (x >= lo && x <= hi) {
@@ -47,12 +49,12 @@ int polynomial_roots(const double* c, int degree, double lo, double hi, double* 
         }
         return 0;
     }
-    double dc[4];
+    double dc[kMaxDegree];
     for (int i = 1; i <= degree; ++i) dc[i - 1] = i * c[i];
-    double critical[4];
+    double critical[kMaxDegree];
     const int n_crit = polynomial_roots(dc, degree - 1, lo, hi, critical);
     // Monotone pieces between lo, the critical points and hi: each holds at most one root.
-    double edges[6];
+    double edges[kMaxDegree + 2];
     int n_edges = 0;
     edges[n_edges++] = lo;
     for (int i = 0; i < n_crit; ++i) edges[n_edges++] = critical[i];

@@ -1,9 +1,9 @@
-// Real roots of polynomials of degree up to 4 on an interval, isolated by the roots of the derivative.
+// Real roots of polynomials of degree up to 6 on an interval, isolated by the roots of the derivative.
 #pragma once
 
 namespace wardray::geometry {
 
-/// Finds the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi] (degree 1..4), sorted
+/// Finds the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi] (degree 1..6), sorted
 /// ascending, into roots (room for `degree` values); returns their count. Each sign change between consecutive
 /// critical points is bracketed and refined by safeguarded Newton steps, so no root is lost to cancellation as
 /// in closed-form quartic formulas; double roots without a sign change (grazing rays) may be missed.

@@ -332,7 +332,8 @@ std::optional<Numeric> Parser::builtin_constant(const Token& t) {
         return r;
     }
     if (w == "clock") return Numeric::scalar(m_options.clock);
-    if (w == "clock_delta") return Numeric::scalar(1.0);
+    // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
+    if (w == "clock_delta") return Numeric::scalar(0.0);
     if (w == "clock_on" || w == "frame_number" || w == "initial_frame" || w == "final_frame")
         return Numeric::scalar(0.0);
     if (w == "initial_clock" || w == "final_clock") return Numeric::scalar(m_options.clock);

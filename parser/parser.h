@@ -17,6 +17,8 @@
 
 namespace wardray::parser {
 
+class TrueTypeFont;
+
 /// One source file read by the parse, with its tokens (kept alive so macros and loops can re-read them).
 struct SourceFile {
     std::string path;  ///< as shown in diagnostics
@@ -243,6 +245,10 @@ private:
     /// Reads a primitive's parameters after its '{' (the modifiers follow).
     Shape parse_shape_parameters(const Token& kw);
     void parse_triangle(Mesh& mesh, bool smooth);
+    /// Reads `ttf "font" "string" thickness, offset` and lays the glyphs out (the font through the library path).
+    Text parse_text_parameters(const Token& kw);
+    Lathe parse_lathe_parameters(const Token& kw);
+    Sor parse_sor_parameters(const Token& kw);
     Mesh parse_mesh_body(const Token& kw);
     Mesh parse_mesh2_body(const Token& kw);
     template <typename F>
@@ -286,6 +292,9 @@ private:
     std::uint64_t m_loop_iterations = 0;
     std::vector<std::uint32_t> m_rand_streams;  ///< states of the streams seed() created
     double m_version = 3.7;
+    bool m_charset_utf8 = false;  ///< global_settings { charset utf8 }: text strings are decoded as UTF-8
+    /// Fonts read so far, by resolved path; POV-Ray keeps each font's glyph cache for the whole scene.
+    std::map<std::string, std::shared_ptr<TrueTypeFont>> m_fonts;
     Pigment m_default_pigment;
     Finish m_default_finish;
     /// A texture made of the current #default pigment and finish.

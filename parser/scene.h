@@ -252,15 +252,53 @@ struct Quartic {
     std::array<double, 35> coefficients{};
 };
 
-/// POV-Ray's `prism { [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }` with a linear spline:
-/// the 2-D outline (sub-polygons close when their first point repeats; even-odd rule) in the x-z plane (u -> x,
-/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin).
+/// POV-Ray's `prism { [spline type] [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }`: the 2-D
+/// outline (sub-polygons close when their first curve point repeats; even-odd rule) in the x-z plane (u -> x,
+/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin). The spline types are those of
+/// `lathe` (quadratic and cubic sub-polygons have a control point before their first and after their last point).
 struct Prism {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
     bool conic = false;
     double height1 = 0.0;
     double height2 = 1.0;
     std::vector<Vec3> points;  ///< (u, v, 0)
     bool open = false;
+};
+
+/// POV-Ray's `lathe { [linear_spline | quadratic_spline | cubic_spline | bezier_spline] n, <r, y>... }`: the
+/// profile curve (r: distance from the axis, y: height) turned about the y axis.
+struct Lathe {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    std::vector<Vec3> points;  ///< (r, y, 0)
+};
+
+/// POV-Ray's `sor { n, <r, y>... [open] }`: a surface of revolution whose squared radius is a cubic in y on each
+/// interval between consecutive points (the first and the last point only set the end slopes); closed by discs at
+/// its lowest and highest point unless open.
+struct Sor {
+    std::vector<Vec3> points;  ///< (r, y, 0)
+    bool open = false;
+};
+
+/// One glyph of a `text` object: the TrueType outline in em units (closed contours of quadratic B-spline points,
+/// each on or off the curve, in the font's order), placed at `offset` in the text's object space.
+struct TextGlyph {
+    struct Point {
+        double x = 0.0;
+        double y = 0.0;
+        bool on_curve = true;
+    };
+    std::vector<std::vector<Point>> contours;
+    Vec3 offset;
+};
+
+/// POV-Ray's `text { ttf "font.ttf" "string" thickness, offset }`: the glyphs laid out by the parser as POV-Ray
+/// does (advance, kerning, offset), each extruded from z = 0 to z = thickness; the union of the glyphs.
+struct Text {
+    std::vector<TextGlyph> glyphs;
+    double thickness = 1.0;
 };
 
 struct Object;
@@ -274,7 +312,7 @@ struct Csg {
 
 /// The shapes the renderer draws.
 using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Disc, Torus, Mesh, Polygon, Quadric, Superellipsoid,
-                           Quartic, Prism, Csg>;
+                           Quartic, Prism, Lathe, Sor, Text, Csg>;
 
 /// One object of the scene: a shape, its placement, its appearance and its flags.
 struct Object {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "parser/parser.h"
+#include "parser/truetype.h"
 
 namespace wardray::parser {
 
@@ -10,7 +11,7 @@ bool is_shape_keyword(std::string_view w) {
     return w == "sphere" || w == "box" || w == "plane" || w == "cylinder" || w == "cone" || w == "disc" ||
            w == "torus" || w == "triangle" || w == "smooth_triangle" || w == "mesh" || w == "mesh2" ||
            w == "polygon" || w == "quadric" || w == "superellipsoid" || w == "quartic" ||
-           w == "prism";
+           w == "prism" || w == "lathe" || w == "sor" || w == "text";
 }
 
 Shape Parser::parse_shape_parameters(const Token& kw) {
@@ -112,15 +113,24 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         Prism p;
         while (true) {
             const Token t = peek();
-            if (is_word(t, "linear_spline") || is_word(t, "linear_sweep")) {
+            if (is_word(t, "linear_spline")) {
                 next();
+                p.spline = Prism::Spline::Linear;
+            } else if (is_word(t, "linear_sweep")) {
+                next();
+                p.conic = false;
             } else if (is_word(t, "conic_sweep")) {
                 next();
                 p.conic = true;
-            } else if (is_word(t, "quadratic_spline") || is_word(t, "cubic_spline") || is_word(t, "bezier_spline")) {
-                // Curved outlines are drawn through their control points (a polyline) until splines are modelled.
+            } else if (is_word(t, "quadratic_spline")) {
                 next();
-                warn_unsupported(t, "prism " + t.text);
+                p.spline = Prism::Spline::Quadratic;
+            } else if (is_word(t, "cubic_spline")) {
+                next();
+                p.spline = Prism::Spline::Cubic;
+            } else if (is_word(t, "bezier_spline")) {
+                next();
+                p.spline = Prism::Spline::Bezier;
             } else {
                 break;
             }
@@ -131,7 +141,21 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         accept(",");
         const Token at = peek();
         const int n = static_cast<int>(std::lround(parse_float()));
-        if (n < 3) fail(at, "a prism needs at least 3 points");
+        // POV-Ray compat: its minimum point counts per spline type.
+        switch (p.spline) {
+            case Prism::Spline::Linear:
+                if (n < 3) fail(at, "a prism with linear_spline needs at least 3 points");
+                break;
+            case Prism::Spline::Quadratic:
+                if (n < 5) fail(at, "a prism with quadratic_spline needs at least 5 points");
+                break;
+            case Prism::Spline::Cubic:
+                if (n < 6) fail(at, "a prism with cubic_spline needs at least 6 points");
+                break;
+            case Prism::Spline::Bezier:
+                if (n <= 0 || n % 4 != 0) fail(at, "a prism with bezier_spline needs 4 points per segment");
+                break;
+        }
         for (int i = 0; i < n; ++i) {
             accept(",");
             const Vec3 uv = parse_vector();
@@ -139,6 +163,9 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         }
         return p;
     }
+    if (w == "text") return parse_text_parameters(kw);
+    if (w == "lathe") return parse_lathe_parameters(kw);
+    if (w == "sor") return parse_sor_parameters(kw);
     if (w == "quartic") {
         // Thirty-five coefficients in one vector: read them one by one so no 5-component limit applies.
         Quartic q;
@@ -159,6 +186,163 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
     s.e = en.x;
     s.n = en.y;
     return s;
+}
+
+namespace {
+
+// The characters of a text string: ASCII, or UTF-8 sequences under `charset utf8` (bad sequences as bytes).
+// POV-Ray compat: under the default `charset ascii` every byte beyond ASCII becomes a space; `replaced` tells.
+std::vector<std::uint32_t> text_characters(const std::string& s, bool utf8, bool& replaced) {
+    std::vector<std::uint32_t> out;
+    replaced = false;
+    for (std::size_t i = 0; i < s.size();) {
+        const auto b = static_cast<unsigned char>(s[i]);
+        if (!utf8 && b >= 0x80) {
+            out.push_back(' ');
+            replaced = true;
+            ++i;
+            continue;
+        }
+        const int extra = !utf8 || b < 0xC0 ? 0 : b < 0xE0 ? 1 : b < 0xF0 ? 2 : 3;
+        std::uint32_t c = extra == 0 ? b : b & (0x3F >> extra);
+        bool ok = i + extra < s.size();
+        for (int k = 1; ok && k <= extra; ++k) {
+            const auto cont = static_cast<unsigned char>(s[i + k]);
+            ok = (cont & 0xC0) == 0x80;
+            c = (c << 6) | (cont & 0x3F);
+        }
+        if (!ok) c = b;
+        out.push_back(c);
+        i += ok ? extra + 1 : 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+Text Parser::parse_text_parameters(const Token& kw) {
+    const Token kind = next();
+    std::string name;
+    if (is_word(kind, "ttf")) {
+        name = parse_string();
+    } else if (is_word(kind, "internal")) {
+        // POV-Ray 3.7's built-in fonts are the fonts Debian installs in its include folder.
+        const int id = static_cast<int>(parse_float());
+        name = id == 1 ? "timrom.ttf" : id == 2 ? "cyrvetic.ttf" : id == 3 ? "crystal.ttf" : "povlogo.ttf";
+    } else {
+        fail(kind, "expected 'ttf' or 'internal' in text but found " + describe_token(kind));
+    }
+    accept(",");
+    const std::string str = parse_string();
+    accept(",");
+    Text text;
+    text.thickness = parse_float();
+    accept(",");
+    const Vec3 offset = parse_vector();
+
+    // POV-Ray compat: fonts are searched like include files, and ".ttf" is tried for a name without extension.
+    std::vector<std::filesystem::path> candidates;
+    const std::filesystem::path requested(name);
+    if (requested.is_absolute()) {
+        candidates.push_back(requested);
+    } else {
+        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
+        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
+    }
+    if (!requested.has_extension()) {
+        const std::size_t n = candidates.size();
+        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + ".ttf");
+    }
+    std::shared_ptr<TrueTypeFont> font;
+    std::string error = "No such file or directory";
+    for (const auto& c : candidates) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(c, ec)) continue;
+        const std::string key = std::filesystem::weakly_canonical(c, ec).string();
+        if (auto it = m_fonts.find(key); it != m_fonts.end()) {
+            font = it->second;
+            break;
+        }
+        std::string load_error;
+        auto loaded = TrueTypeFont::load(c, load_error);
+        if (!loaded) fail(kind, "cannot read font file '" + c.string() + "': " + load_error);
+        font = std::make_shared<TrueTypeFont>(std::move(*loaded));
+        m_fonts.emplace(key, font);
+        break;
+    }
+    if (!font) fail(kind, "cannot open font file '" + name + "': " + error);
+    bool replaced = false;
+    const auto chars = text_characters(str, m_charset_utf8, replaced);
+    if (replaced)
+        warn(kw, "non-ASCII characters in the text are replaced by spaces, as POV-Ray does under charset ascii "
+                 "(global_settings { charset utf8 } reads them as UTF-8)");
+    auto glyphs = font->layout(chars, offset, m_charset_utf8, error);
+    if (!glyphs) fail(kw, "cannot read the glyphs of '" + name + "': " + error);
+    text.glyphs = std::move(*glyphs);
+    return text;
+}
+
+Lathe Parser::parse_lathe_parameters(const Token& kw) {
+    Lathe lathe;
+    while (true) {
+        const Token& t = peek();
+        if (is_word(t, "linear_spline")) lathe.spline = Lathe::Spline::Linear;
+        else if (is_word(t, "quadratic_spline")) lathe.spline = Lathe::Spline::Quadratic;
+        else if (is_word(t, "cubic_spline")) lathe.spline = Lathe::Spline::Cubic;
+        else if (is_word(t, "bezier_spline")) lathe.spline = Lathe::Spline::Bezier;
+        else break;
+        next();
+    }
+    const Token at = peek();
+    const int n = static_cast<int>(parse_float());
+    switch (lathe.spline) {
+        case Lathe::Spline::Linear:
+            if (n < 2) fail(at, "a lathe with linear_spline needs at least 2 points");
+            break;
+        case Lathe::Spline::Quadratic:
+            if (n < 3) fail(at, "a lathe with quadratic_spline needs at least 3 points");
+            break;
+        case Lathe::Spline::Cubic:
+            if (n < 4) fail(at, "a lathe with cubic_spline needs at least 4 points");
+            break;
+        case Lathe::Spline::Bezier:
+            if (n <= 0 || n % 4 != 0) fail(at, "a lathe with bezier_spline needs 4 points per segment");
+            break;
+    }
+    for (int i = 0; i < n; ++i) {
+        accept(",");
+        const Token pt = peek();
+        const Vec3 uv = parse_vector();
+        // POV-Ray compat: only the first and the last point may lie left of the axis.
+        if (i > 0 && i < n - 1 && uv.x < 0.0) fail(pt, "incorrect point in lathe: negative radius");
+        lathe.points.push_back({uv.x, uv.y, 0.0});
+    }
+    return lathe;
+}
+
+Sor Parser::parse_sor_parameters(const Token& kw) {
+    Sor sor;
+    const Token at = peek();
+    const int n = static_cast<int>(parse_float());
+    if (n < 4) fail(at, "a surface of revolution needs at least 4 points");
+    for (int i = 0; i < n; ++i) {
+        accept(",");
+        const Token pt = peek();
+        const Vec3 uv = parse_vector();
+        // POV-Ray compat: radii are not negative and the inner points climb strictly.
+        if (uv.x < 0.0 || (i > 1 && i < n - 1 && uv.y <= sor.points.back().y))
+            fail(pt, "incorrect point in surface of revolution");
+        sor.points.push_back({uv.x, uv.y, 0.0});
+    }
+    for (int i = 0; i + 3 < n; ++i)
+        if (std::fabs(sor.points[i + 2].y - sor.points[i].y) < 1e-10 ||
+            std::fabs(sor.points[i + 3].y - sor.points[i + 1].y) < 1e-10)
+            fail(kw, "incorrect point in surface of revolution: two heights too close");
+    if (is_word(peek(), "open")) {
+        next();
+        sor.open = true;
+    }
+    return sor;
 }
 
 void Parser::parse_triangle(Mesh& mesh, bool smooth) {

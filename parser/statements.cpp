@@ -111,6 +111,8 @@ ObjectValue Parser::parse_object(const Token& kw) {
     };
     if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
+        // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
+        if (w == "text") ov.parts.back().object.transform = Transform::rotation({0.001, 0.001, 0.001});
     } else if (w == "object") {
         expand_macros();
         std::optional<Value> element;
@@ -269,6 +271,7 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
                 if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
                 if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
                 if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
+                if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
             }
         } else if (w == "hollow") {
             parse_bool_optional();
@@ -608,7 +611,7 @@ void Parser::parse_global_settings(const Token& kw) {
         } else if (w == "hf_gray_16") {
             parse_bool_optional();
         } else if (w == "charset") {
-            expect_identifier();
+            m_charset_utf8 = expect_identifier().text == "utf8";
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a global setting but found '" + w + "'");

@@ -66,7 +66,7 @@ const char* gi_name(lighting::GiMode mode) {
 const char* shape_name(const parser::Shape& shape) {
     static constexpr const char* names[] = {"sphere", "box",   "plane", "cylinder", "cone",           "disc",
                                             "torus",  "mesh",  "polygon", "quadric", "superellipsoid", "quartic",
-                                            "prism",  "csg"};
+                                            "prism",  "lathe", "sor", "text", "csg"};
     static_assert(std::variant_size_v<parser::Shape> == std::size(names));
     if (const auto* mesh = std::get_if<parser::Mesh>(&shape)) {
         switch (mesh->kind) {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 
 #include "geometry/instance.h"
 #include "geometry/polynomial.h"
@@ -12,41 +11,9 @@
 namespace wardray::geometry {
 namespace {
 
+using test::check_shape;
 using test::make_object;
 using test::Random;
-
-// Checks random rays against random objects from `make`: every crossing lies on the surface (implicit ≈ 0
-// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
-// shapes, inside just behind the normal and outside just in front of it.
-void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
-                 double surface_tolerance = 1e-9, int min_hits = 150) {
-    Random rng(seed);
-    int checked = 0;
-    int inside_failures = 0;
-    for (int trial = 0; trial < 300; ++trial) {
-        parser::Object obj = make_object(make(rng), rng.transform());
-        const auto inst = ShapeInstance::create(obj, 3);
-        ASSERT_TRUE(inst.has_value()) << "trial " << trial;
-        const double scale = test::object_scale(*inst);
-        const test::AimedRay ray = test::aim_random_ray(rng, obj, 0.8);
-        const SurfaceHits hits = inst->intersect_all(ray.origin, ray.direction, 0.0, 1e30);
-        for (std::size_t i = 0; i < hits.size(); ++i) {
-            const SurfaceHit& h = hits[i];
-            const Vec3 p = ray.origin + h.t * ray.direction;
-            SCOPED_TRACE("trial " + std::to_string(trial));
-            test::expect_valid_crossing(*inst, hits, i, ray, surface_tolerance);
-            EXPECT_EQ(h.leaf, &obj);
-            if (solid) {
-                const double eps = 1e-6 * scale;
-                // Points near edges and rims may leave the solid sideways: count, do not fail on each.
-                inside_failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
-            }
-            ++checked;
-        }
-    }
-    EXPECT_GT(checked, min_hits);
-    EXPECT_LE(inside_failures, checked / 100) << "of " << checked;
-}
 
 TEST(Primitives, Cylinder) {
     check_shape([](Random& r) {
@@ -142,6 +109,76 @@ TEST(Primitives, PrismInsideFollowsTheOutline) {
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->t, 4.0, 1e-12);
     EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
+}
+
+// A round outline through (±1, 0) and (0, ±1) in each spline type (control points as POV-Ray expects them).
+parser::Prism spline_prism(parser::Prism::Spline spline, bool conic) {
+    using Spline = parser::Prism::Spline;
+    parser::Prism p;
+    p.spline = spline;
+    p.conic = conic;
+    p.height1 = conic ? 0.5 : 0.0;
+    p.height2 = 1.0;
+    if (spline == Spline::Quadratic)
+        p.points = {{0.8, -0.8, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}};
+    else if (spline == Spline::Cubic)
+        p.points = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}};
+    else
+        p.points = {{1, 0, 0},  {1, 0.55, 0},   {0.55, 1, 0},  {0, 1, 0},  {0, 1, 0},   {-0.55, 1, 0},
+                    {-1, 0.55, 0}, {-1, 0, 0},   {-1, 0, 0},    {-1, -0.55, 0}, {-0.55, -1, 0}, {0, -1, 0},
+                    {0, -1, 0},  {0.55, -1, 0}, {1, -0.55, 0}, {1, 0, 0}};
+    return p;
+}
+
+TEST(Primitives, PrismSplinesRandomRays) {
+    using Spline = parser::Prism::Spline;
+    std::uint64_t seed = 61;
+    for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier})
+        for (const bool conic : {false, true})
+            check_shape([=](Random&) { return spline_prism(s, conic); }, true, seed++, 1e-9, 10, 80);
+}
+
+TEST(Primitives, PrismSplineSubPolygonCutsAHole) {
+    // A cubic outline of radius 1 with a second cubic sub-polygon of radius 0.3 inside it: the even-odd rule
+    // makes the inner one a hole through both caps.
+    parser::Prism p;
+    p.spline = parser::Prism::Spline::Cubic;
+    p.height1 = 0;
+    p.height2 = 0.5;
+    // Each sub-polygon: a control point, the curve points back to the first, a control point.
+    p.points = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0},
+                {0, -0.3, 0}, {0.3, 0, 0}, {0, 0.3, 0}, {-0.3, 0, 0}, {0, -0.3, 0}, {0.3, 0, 0}, {0, 0.3, 0}};
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    EXPECT_FALSE(inst->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30));  // down the hole
+    const auto cap = inst->nearest({0.6, 5, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(cap);
+    EXPECT_NEAR(cap->t, 4.5, 1e-12);
+    EXPECT_NEAR(cap->normal.y, 1.0, 1e-12);
+    // Along x at mid-height: outer wall, hole wall, hole wall, outer wall.
+    const SurfaceHits hits = inst->intersect_all({-5, 0.25, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 4u);
+    EXPECT_NEAR(hits[1].t, 5 - 0.3, 1e-9);
+    EXPECT_FALSE(hits[1].entering);
+    EXPECT_NEAR(hits[1].normal.x, 1.0, 1e-9);  // out of the solid, into the hole
+    EXPECT_FALSE(inst->inside({0, 0.25, 0}));
+    EXPECT_TRUE(inst->inside({0.6, 0.25, 0}));
+}
+
+TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
+    using Spline = parser::Prism::Spline;
+    for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier}) {
+        const auto inst = ShapeInstance::create(make_object(spline_prism(s, false)), 0);
+        ASSERT_TRUE(inst);
+        // Along x at mid-height the wall is met at the curve point (-1, 0) with a normal along -x.
+        const auto hit = inst->nearest({-5, 0.5, 0}, {1, 0, 0}, 0.0, 1e30);
+        ASSERT_TRUE(hit);
+        EXPECT_NEAR(hit->position.x, -1.0, 1e-9);
+        // POV-Ray's quadratic outline has a kink at its points; the others are smooth there.
+        if (s != Spline::Quadratic) EXPECT_NEAR(hit->normal.x, -1.0, 1e-3);
+        EXPECT_TRUE(inst->inside({0, 0.5, 0}));
+        EXPECT_FALSE(inst->inside({0.8, 0.5, 0.8}));
+    }
 }
 
 TEST(Primitives, PolygonWithHoleByEvenOddRule) {

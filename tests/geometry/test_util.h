@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 
 #include "geometry/instance.h"
@@ -88,6 +89,39 @@ inline void expect_valid_crossing(const ShapeInstance& inst, const SurfaceHits& 
     if (i > 0) {
         EXPECT_GE(h.t, hits[i - 1].t);
     }
+}
+
+/// Checks random rays against random objects from `make`: every crossing lies on the surface (implicit ≈ 0
+/// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
+/// shapes, inside just behind the normal and outside just in front of it.
+inline void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
+                 double surface_tolerance = 1e-9, int min_hits = 150, int trials = 300) {
+    Random rng(seed);
+    int checked = 0;
+    int inside_failures = 0;
+    for (int trial = 0; trial < trials; ++trial) {
+        parser::Object obj = make_object(make(rng), rng.transform());
+        const auto inst = ShapeInstance::create(obj, 3);
+        ASSERT_TRUE(inst.has_value()) << "trial " << trial;
+        const double scale = test::object_scale(*inst);
+        const test::AimedRay ray = test::aim_random_ray(rng, obj, 0.8);
+        const SurfaceHits hits = inst->intersect_all(ray.origin, ray.direction, 0.0, 1e30);
+        for (std::size_t i = 0; i < hits.size(); ++i) {
+            const SurfaceHit& h = hits[i];
+            const Vec3 p = ray.origin + h.t * ray.direction;
+            SCOPED_TRACE("trial " + std::to_string(trial));
+            test::expect_valid_crossing(*inst, hits, i, ray, surface_tolerance);
+            EXPECT_EQ(h.leaf, &obj);
+            if (solid) {
+                const double eps = 1e-6 * scale;
+                // Points near edges and rims may leave the solid sideways: count, do not fail on each.
+                inside_failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
+            }
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, min_hits);
+    EXPECT_LE(inside_failures, checked / 100) << "of " << checked;
 }
 
 }  // namespace wardray::geometry::test

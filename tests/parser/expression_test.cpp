@@ -120,6 +120,7 @@ TEST(Expression, Constants) {
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center, (Vec3{640, 480, 0.25}));
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 3.7);
+    EXPECT_DOUBLE_EQ(eval_float("clock_delta"), 0.0);
 }
 
 TEST(Expression, Strings) {

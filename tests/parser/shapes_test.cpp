@@ -1,0 +1,121 @@
+// Tests of the curved-outline shapes' statements: text (font search, POV-Ray's glyph layout), lathe, sor and
+// spline prisms.
+#include <algorithm>
+#include <cmath>
+
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+using test::parse_fail;
+using test::parse_ok;
+
+// Smallest and largest x of a glyph's outline points in text space.
+std::pair<double, double> x_range(const TextGlyph& g) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& contour : g.contours)
+        for (const auto& p : contour) {
+            lo = std::min(lo, p.x + g.offset.x);
+            hi = std::max(hi, p.x + g.offset.x);
+        }
+    return {lo, hi};
+}
+
+TEST(Text, GlyphsFromTheLibraryFontLaidOutLikePovRay) {
+    const Scene s = parse_ok(R"(
+        text { ttf "timrom.ttf" "HIH", 0.5, 0 }
+        text { ttf "timrom" "HIH" 0.5 <0.25, 0.1, 3> }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Text& plain = std::get<Text>(s.objects[0].shape);
+    const Text& spaced = std::get<Text>(s.objects[1].shape);
+    ASSERT_EQ(plain.glyphs.size(), 3u);
+    EXPECT_DOUBLE_EQ(plain.thickness, 0.5);
+    // The first glyph's left edge is at the origin; glyphs follow left to right without overlapping much.
+    EXPECT_NEAR(x_range(plain.glyphs[0]).first, 0.0, 1e-12);
+    EXPECT_GT(x_range(plain.glyphs[1]).first, x_range(plain.glyphs[0]).second);
+    EXPECT_FALSE(plain.glyphs[0].contours.empty());
+    // The same glyph (H) at both ends: the same outline, moved.
+    EXPECT_EQ(plain.glyphs[0].contours.size(), plain.glyphs[2].contours.size());
+    // POV-Ray compat: each character adds the offset to the pen after it; z is never applied.
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(spaced.glyphs[i].offset.x - plain.glyphs[i].offset.x, 0.25 * i, 1e-12);
+        EXPECT_NEAR(spaced.glyphs[i].offset.y - plain.glyphs[i].offset.y, 0.1 * i, 1e-12);
+        EXPECT_DOUBLE_EQ(spaced.glyphs[i].offset.z, 0.0);
+    }
+    // POV-Ray compat: text is turned by 0.001° about each axis before its own transforms.
+    const Vec3 p = s.objects[0].transform.point({1, 0, 0});
+    EXPECT_NEAR(p.x, 1.0, 1e-9);
+    EXPECT_GT(std::fabs(p.y) + std::fabs(p.z), 1e-6);
+}
+
+TEST(Text, SpaceHasNoOutlineButAdvances) {
+    const Scene s = parse_ok(R"(text { ttf "cyrvetic.ttf" "A A", 1, 0 })");
+    const Text& t = std::get<Text>(s.objects[0].shape);
+    ASSERT_EQ(t.glyphs.size(), 3u);
+    EXPECT_TRUE(t.glyphs[1].contours.empty());
+    EXPECT_GT(x_range(t.glyphs[2]).first, x_range(t.glyphs[0]).second + 0.1);
+}
+
+TEST(Text, NonAsciiBytesAreSpacesUnlessCharsetUtf8) {
+    const Scene ascii = parse_ok("text { ttf \"timrom.ttf\" \"a\xC3\xA9\", 1, 0 }");
+    ASSERT_EQ(std::get<Text>(ascii.objects[0].shape).glyphs.size(), 3u);
+    EXPECT_TRUE(std::get<Text>(ascii.objects[0].shape).glyphs[1].contours.empty());
+    ASSERT_EQ(ascii.warnings.size(), 1u);
+    EXPECT_NE(ascii.warnings[0].message.find("replaced by spaces"), std::string::npos);
+    const Scene utf8 = parse_ok("global_settings { charset utf8 } text { ttf \"timrom.ttf\" \"a\xC3\xA9\", 1, 0 }");
+    EXPECT_EQ(std::get<Text>(utf8.objects[0].shape).glyphs.size(), 2u);
+}
+
+TEST(Text, MissingFontIsAnErrorAtTheText) {
+    const ParseResult r = parse_fail("text { ttf \"no_such_font.ttf\" \"x\", 1, 0 }");
+    EXPECT_NE(test::all_diagnostics(r).find("cannot open font file 'no_such_font.ttf'"), std::string::npos)
+        << test::all_diagnostics(r);
+}
+
+TEST(Lathe, SplineTypesAndPointChecks) {
+    const Scene s = parse_ok(R"(
+        lathe { 3, <0, 0>, <1, 0.5>, <0, 1> }
+        lathe { bezier_spline 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> sturm }
+        lathe { cubic_spline 5 <-1, 0> <0, 0> <1, 1> <0, 2> <-1, 2> }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(std::get<Lathe>(s.objects[0].shape).spline, Lathe::Spline::Linear);
+    EXPECT_EQ(std::get<Lathe>(s.objects[1].shape).spline, Lathe::Spline::Bezier);
+    EXPECT_EQ(std::get<Lathe>(s.objects[2].shape).points.size(), 5u);
+    EXPECT_DOUBLE_EQ(std::get<Lathe>(s.objects[2].shape).points[0].x, -1.0);  // the ends may be left of the axis
+    parse_fail("lathe { bezier_spline 3, <0, 0>, <1, 0>, <1, 1> }");
+    parse_fail("lathe { 3, <0, 0>, <-1, 0.5>, <0, 1> }");
+}
+
+TEST(Sor, PointsOpenAndChecks) {
+    const Scene s = parse_ok(R"(
+        sor { 4, <1, -1>, <1, 0>, <1, 1>, <1, 2> }
+        sor { 5, <0, 0>, <1, 0.1>, <0.5, 1>, <0.7, 1.5>, <1, 2> open sturm }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_FALSE(std::get<Sor>(s.objects[0].shape).open);
+    EXPECT_TRUE(std::get<Sor>(s.objects[1].shape).open);
+    parse_fail("sor { 3, <1, 0>, <1, 1>, <1, 2> }");
+    parse_fail("sor { 4, <1, 0>, <1, 1>, <1, 0.5>, <1, 2> }");  // inner heights must climb
+}
+
+TEST(Prism, SplineTypesAndCounts) {
+    const Scene s = parse_ok(R"(
+        prism { 0, 1, 3, <0, 0>, <1, 0>, <0, 1> }
+        prism { quadratic_spline conic_sweep 0.5, 1, 5, <1, 1>, <1, 0>, <0, 1>, <-1, 0>, <1, 0> }
+        prism { bezier_spline 0, 1, 4, <0, 0>, <1, 0>, <1, 1>, <0, 0> }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(std::get<Prism>(s.objects[0].shape).spline, Prism::Spline::Linear);
+    EXPECT_EQ(std::get<Prism>(s.objects[1].shape).spline, Prism::Spline::Quadratic);
+    EXPECT_TRUE(std::get<Prism>(s.objects[1].shape).conic);
+    EXPECT_EQ(std::get<Prism>(s.objects[2].shape).spline, Prism::Spline::Bezier);
+    EXPECT_TRUE(s.warnings.empty()) << s.warnings.front().message;
+    parse_fail("prism { cubic_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
+    parse_fail("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
+}
+
+}  // namespace
+}  // namespace wardray::parser
