@@ -175,7 +175,9 @@ TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
         ASSERT_TRUE(hit);
         EXPECT_NEAR(hit->position.x, -1.0, 1e-9);
         // POV-Ray's quadratic outline has a kink at its points; the others are smooth there.
-        if (s != Spline::Quadratic) EXPECT_NEAR(hit->normal.x, -1.0, 1e-3);
+        if (s != Spline::Quadratic) {
+            EXPECT_NEAR(hit->normal.x, -1.0, 1e-3);
+        }
         EXPECT_TRUE(inst->inside({0, 0.5, 0}));
         EXPECT_FALSE(inst->inside({0.8, 0.5, 0.8}));
     }
