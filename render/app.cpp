@@ -155,6 +155,24 @@ private:
     Clock::time_point m_last{};
 };
 
+// Refuses an image whose pixels alone would not fit in this machine's memory, before anything is parsed or
+// allocated (a film of floats, the antialiasing buffers and the writer's copy: about 32 bytes a pixel).
+std::optional<std::string> image_too_large(int width, int height) {
+    constexpr double k_bytes_per_pixel = 32.0;
+    const double needed = static_cast<double>(width) * height * k_bytes_per_pixel;
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page_size <= 0) return std::nullopt;
+    const double memory = static_cast<double>(pages) * static_cast<double>(page_size);
+    if (needed <= memory) return std::nullopt;
+    constexpr double k_gib = 1024.0 * 1024.0 * 1024.0;
+    std::ostringstream s;
+    s.precision(3);
+    s << "a " << width << "x" << height << " image needs about " << needed / k_gib
+      << " GiB for its pixels, more than this machine's " << memory / k_gib << " GiB of memory";
+    return s.str();
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, const std::string& argv0) {
@@ -201,6 +219,13 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     if (options.threads > 0)
         thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                              static_cast<std::size_t>(options.threads));
+
+    if (!options.check_only) {
+        if (const auto error = image_too_large(options.width, options.height)) {
+            std::cerr << "wardray: error: " << *error << "\n";
+            return kExitScene;
+        }
+    }
 
     remove_partial_output_on_signal();
 
