@@ -1,0 +1,10001 @@
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+sphere { 0, 1 }
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
