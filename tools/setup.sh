@@ -11,6 +11,7 @@ packages=(
   libcgal-dev libboost-dev                 # mesh geometry, the Spirit X3 parser
   libgtest-dev nlohmann-json3-dev          # tests, --stats JSON
   povray povray-includes povray-examples fonts-povray  # the reference renderer, its includes and scenes
+  clang libclang-rt-14-dev                 # tools/fuzz.sh: libFuzzer and the sanitizer runtimes (CI does not fuzz)
 )
 
 missing=()
