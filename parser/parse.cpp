@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 #include "parser/keywords.h"
@@ -193,6 +194,12 @@ ParseResult Parser::run(std::string text, const std::string& path) {
                 report(std::move(d));
             }
         } catch (const FatalError&) {
+        } catch (const std::bad_alloc&) {
+            // A scene that builds more than memory holds (an endless loop of objects): blame where it stopped.
+            m_diagnostics.push_back(make_diagnostic(
+                Severity::Error, m_file < m_files.size() && m_pos < m_files[m_file]->tokens.size() ? raw() : Token{},
+                "out of memory: the scene holds more than this machine can (an endless loop?)"));
+            ++m_errors;
         }
     } catch (const std::exception& e) {
         Diagnostic d;
