@@ -1,9 +1,11 @@
 // The wardray command: parse, build, render, write, with POV-Ray's exit conventions and a progress line.
 #include "render/app.h"
 
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -173,6 +175,19 @@ std::optional<std::string> image_too_large(int width, int height) {
     return s.str();
 }
 
+// Bounds the heap by the machine's memory, so a scene that grows without end (a loop of objects) fails with
+// bad_alloc, reported at its location, instead of waking the kernel's OOM killer, which may pick another process.
+void limit_heap_to_machine_memory() {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGESIZE);
+    rlimit limit{};
+    if (pages <= 0 || page_size <= 0 || getrlimit(RLIMIT_DATA, &limit) != 0) return;
+    const auto memory = static_cast<rlim_t>(pages) * static_cast<rlim_t>(page_size);
+    if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= memory) return;
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? memory : std::min(memory, limit.rlim_max);
+    setrlimit(RLIMIT_DATA, &limit);
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, const std::string& argv0) {
@@ -228,6 +243,7 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     }
 
     remove_partial_output_on_signal();
+    limit_heap_to_machine_memory();
 
     // Parse.
     parser::ParseOptions parse_options;
