@@ -29,7 +29,6 @@ std::string SourceFile::line_text(std::uint32_t line) const {
 }
 
 Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at) : m_parser(parser) {
-    constexpr std::size_t k_max_nesting = 400;
     if (++m_parser.m_nesting <= k_max_nesting) return;
     --m_parser.m_nesting;
     m_parser.report(m_parser.make_diagnostic(
@@ -152,6 +151,14 @@ void Parser::recover_after_error(std::size_t depth) {
         try {
             if (next().kind == TokenKind::EndOfFile) break;
         } catch (const StatementError&) {
+        }
+        // A loop around unclosed blocks opens more on every pass: stop as the descent's own nesting limit does,
+        // before the open braces fill memory.
+        if (m_brace_depth > depth + k_max_nesting) {
+            report(make_diagnostic(Severity::Error, m_open_braces.back(),
+                                   "nesting deeper than " + std::to_string(k_max_nesting) +
+                                       " levels while skipping a failed statement; stopping"));
+            throw FatalError{};
         }
     }
     m_brace_depth = depth;

@@ -248,6 +248,8 @@ private:
     template <typename F>
     void parse_counted_list(const Token& kw, F read_item);
 
+    /// The deepest nesting of blocks and expressions the descent follows.
+    static constexpr std::size_t k_max_nesting = 400;
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
     class NestingGuard {
     public:
