@@ -27,6 +27,15 @@
 #define WARDRAY_SOURCE_DIR ""
 #endif
 
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define WARDRAY_HAS_ASAN 1
+#endif
+#endif
+#ifndef WARDRAY_HAS_ASAN
+#define WARDRAY_HAS_ASAN 0
+#endif
+
 namespace wardray::render {
 
 namespace {
@@ -178,6 +187,10 @@ std::optional<std::string> image_too_large(int width, int height) {
 // Bounds the heap by the machine's memory, so a scene that grows without end (a loop of objects) fails with
 // bad_alloc, reported at its location, instead of waking the kernel's OOM killer, which may pick another process.
 void limit_heap_to_machine_memory() {
+#if defined(__SANITIZE_ADDRESS__) || WARDRAY_HAS_ASAN
+    // AddressSanitizer's shadow memory counts as data: under any such limit every later allocation fails.
+    return;
+#endif
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long page_size = sysconf(_SC_PAGESIZE);
     rlimit limit{};
