@@ -81,12 +81,15 @@ def main():
 
     renderers = [("wardray", render_wardray)] + ([] if args.no_povray else [("POV-Ray", render_povray)])
     images = {}
+    notes = []
     for name, render in renderers:
         for s in [1.0] + [s for s in args.scales if s != 1.0]:
             out = work / ("%s_%s.hdr" % ("wardray" if name == "wardray" else "povray", scale_name(s)))
             ok, output = render(args, scene, out, s, work)
             if not ok:
                 print("%s at scale %s failed:\n%s" % (name, scale_name(s), output[-2000:]), file=sys.stderr)
+                reason = [line.strip() for line in output.splitlines() if "rror" in line][:1]
+                notes.append("- %s at scale %s failed: %s" % (name, scale_name(s), reason[0] if reason else "?"))
             images[name, s] = out if ok else None
 
     def compare(name, s):
@@ -114,6 +117,8 @@ def main():
             row += " %s | %s | %s |" % (cell(v, "rrmse", True), cell(v, "bad_pixel_fraction", True),
                                         cell(both, "rrmse", True))
         print(row)
+    if notes:
+        print("\n" + "\n".join(notes))
 
     if args.keep:
         args.keep.mkdir(parents=True, exist_ok=True)
