@@ -28,9 +28,10 @@ std::string SourceFile::line_text(std::uint32_t line) const {
     return text.substr(start, end - start);
 }
 
-Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at) : m_parser(parser) {
-    if (++m_parser.m_nesting <= k_max_nesting) return;
-    --m_parser.m_nesting;
+Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at, std::size_t& depth)
+    : m_parser(parser), m_depth(depth) {
+    if (++m_depth <= k_max_nesting) return;
+    --m_depth;
     m_parser.report(m_parser.make_diagnostic(
         Severity::Error, at, "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
     throw FatalError{};
