@@ -35,16 +35,19 @@ dict="$build/pov.dict"
 
 before=$(find "$findings" -type f | wc -l)
 log="$build/fuzz.log"
+started=$SECONDS
 set +e
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   "$build/tests/fuzz/parser_fuzz" "$corpus" -dict="$dict" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
   -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1
 status=$?
 set -e
+elapsed=$((SECONDS - started))
 
 executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
 after=$(find "$findings" -type f | wc -l)
-echo "fuzz: ${seconds} s, ${executions} executions, libFuzzer exit status ${status}"
+# libFuzzer stops at its first crash, hang or leak: then it ran for less than the time asked.
+echo "fuzz: ${elapsed} s of ${seconds} s asked, ${executions} executions, libFuzzer exit status ${status}"
 echo "fuzz: corpus $(find "$corpus" -type f | wc -l) inputs; findings: $((after - before)) new, ${after} in $findings"
 find "$findings" -type f -newer "$dict" -printf '  %f\n'
 grep -m3 -E 'ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)|runtime error|SUMMARY' "$log" || true
