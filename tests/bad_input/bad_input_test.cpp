@@ -145,7 +145,8 @@ TEST(BadInputCorpus, KeepsThePreviousImage) {
     ASSERT_EQ(run_wardray("../good.pov +W32 +H24 -A -o out.png", dir).exit_status, 0) << read_file(dir / "stderr.txt");
     const std::string before = read_file(dir / "run" / "out.png");
     ASSERT_FALSE(before.empty());
-    for (const char* scene : {"infinite_while.pov", "binary_garbage.pov", "unclosed_block.pov", "image_size_array.pov"}) {
+    for (const char* scene :
+         {"infinite_while.pov", "binary_garbage.pov", "unclosed_block.pov", "image_size_array.pov"}) {
         const RunResult r = run_wardray(shell_quote((kCorpus / scene).string()) + " " + kRenderArgs + " " +
                                       extra_args(scene) + " -o out.png",
                                   dir);
