@@ -43,6 +43,10 @@ Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, co
 
 void Parser::process_directive() {
     const Token tok = raw();
+    // Directives read their operands through peek(), which runs the directives it meets: a loop that jumps
+    // back while a directive waits for its operand (`#while (1) #declare S #end`) nests one call deeper on
+    // every pass, so bound it like the descent (with its own count: recursive macros nest both).
+    const NestingGuard guard(*this, tok, m_directive_nesting);
     ++m_pos;
     const std::string& name = tok.text;
     if (name == "declare" || name == "local") {

@@ -166,7 +166,14 @@ bool Parser::parse_bool_optional() {
 Numeric Parser::parse_conditional(bool allow_less) {
     const Token at = peek();
     Numeric c = parse_logical(allow_less);
-    if (!is_punct(peek_expr(), "?")) return c;
+    if (!is_punct(peek_expr(), "?")) {
+        // Every expression ends here: an infinity or NaN (1e999, pow(10, 400), 0 * 1e999) stops at its source
+        // instead of reaching the renderer as a silently skipped object or a NaN pixel.
+        for (int i = 0; i < c.n; ++i)
+            if (!std::isfinite(c.v[i]))
+                fail(at, "this expression's value is not a finite number (it overflows or has no value)");
+        return c;
+    }
     next();
     if (c.n != 1) fail(at, "the condition of '?:' must be a float");
     Numeric a = parse_conditional(allow_less);

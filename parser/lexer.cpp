@@ -2,6 +2,8 @@
 #include "parser/lexer.h"
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 
 #include <boost/spirit/home/x3.hpp>
 
@@ -193,10 +195,16 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                    (c == '.' && std::isdigit(static_cast<unsigned char>(cur.peek(1))))) {
             double value = 0.0;
-            x3::parse(it, end, pov_real, value);
+            const bool parsed = x3::parse(it, end, pov_real, value);
             tok.kind = TokenKind::Number;
-            tok.number = value;
             tok.text.assign(begin, it);
+            // X3 fails on an exponent beyond double's range (1e999, 1e-999) yet consumes it: take strtod's
+            // reading, which underflows to 0 and overflows to infinity.
+            if (!parsed) value = std::strtod(tok.text.c_str(), nullptr);
+            if (!std::isfinite(value))
+                error_at(tok.line, tok.column, static_cast<std::uint32_t>(tok.text.size()),
+                         "number '" + tok.text + "' is too large for a double");
+            tok.number = std::isfinite(value) ? value : 0.0;
         } else {
             std::string punct;
             if (!x3::parse(it, end, two_char_punct, punct)) {

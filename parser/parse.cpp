@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 #include "parser/keywords.h"
@@ -27,10 +28,10 @@ std::string SourceFile::line_text(std::uint32_t line) const {
     return text.substr(start, end - start);
 }
 
-Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at) : m_parser(parser) {
-    constexpr std::size_t k_max_nesting = 400;
-    if (++m_parser.m_nesting <= k_max_nesting) return;
-    --m_parser.m_nesting;
+Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at, std::size_t& depth)
+    : m_parser(parser), m_depth(depth) {
+    if (++m_depth <= k_max_nesting) return;
+    --m_depth;
     m_parser.report(m_parser.make_diagnostic(
         Severity::Error, at, "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
     throw FatalError{};
@@ -152,6 +153,14 @@ void Parser::recover_after_error(std::size_t depth) {
             if (next().kind == TokenKind::EndOfFile) break;
         } catch (const StatementError&) {
         }
+        // A loop around unclosed blocks opens more on every pass: stop as the descent's own nesting limit does,
+        // before the open braces fill memory.
+        if (m_brace_depth > depth + k_max_nesting) {
+            report(make_diagnostic(Severity::Error, m_open_braces.back(),
+                                   "nesting deeper than " + std::to_string(k_max_nesting) +
+                                       " levels while skipping a failed statement; stopping"));
+            throw FatalError{};
+        }
     }
     m_brace_depth = depth;
     if (m_open_braces.size() > depth) m_open_braces.resize(depth);
@@ -193,6 +202,12 @@ ParseResult Parser::run(std::string text, const std::string& path) {
                 report(std::move(d));
             }
         } catch (const FatalError&) {
+        } catch (const std::bad_alloc&) {
+            // A scene that builds more than memory holds (an endless loop of objects): blame where it stopped.
+            m_diagnostics.push_back(make_diagnostic(
+                Severity::Error, m_file < m_files.size() && m_pos < m_files[m_file]->tokens.size() ? raw() : Token{},
+                "out of memory: the scene holds more than this machine can (an endless loop?)"));
+            ++m_errors;
         }
     } catch (const std::exception& e) {
         Diagnostic d;

@@ -254,19 +254,25 @@ private:
     template <typename F>
     void parse_counted_list(const Token& kw, F read_item);
 
+    /// The deepest nesting of blocks and expressions the descent follows.
+    static constexpr std::size_t k_max_nesting = 400;
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
     class NestingGuard {
     public:
-        NestingGuard(Parser& parser, const Token& at);
-        ~NestingGuard() { --m_parser.m_nesting; }
+        NestingGuard(Parser& parser, const Token& at) : NestingGuard(parser, at, parser.m_nesting) {}
+        /// Counts in `depth` instead of the descent's own counter.
+        NestingGuard(Parser& parser, const Token& at, std::size_t& depth);
+        ~NestingGuard() { --m_depth; }
         NestingGuard(const NestingGuard&) = delete;
         NestingGuard& operator=(const NestingGuard&) = delete;
 
     private:
         Parser& m_parser;
+        std::size_t& m_depth;
     };
     friend class NestingGuard;
     std::size_t m_nesting = 0;
+    std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
 
     const ParseOptions& m_options;
     std::vector<std::unique_ptr<SourceFile>> m_files;

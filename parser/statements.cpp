@@ -334,9 +334,16 @@ bool Parser::parse_transform_item(const Token& t, Transform& out) {
             m[i] = c.v[0];
         }
         expect(">");
+        for (int col = 0; col < 3; ++col) {
+            if (m[col] != 0.0 || m[3 + col] != 0.0 || m[6 + col] != 0.0) continue;
+            // POV-Ray compat: a zero column scales by 0; like `scale 0`, it becomes 1 with a warning.
+            warn(t, "matrix column " + std::to_string(col + 1) + " is zero (a scale by 0); changed to 1");
+            m[4 * col] = 1.0;
+        }
         const auto tr = Transform::from_pov_matrix(m);
-        if (!tr || !tr->is_invertible()) warn(t, "matrix is singular");
-        out = out.then(tr.value_or(Transform{}));
+        // POV-Ray compat: POV-Ray stops with "Singular matrix" here too; it cannot place the object.
+        if (!tr || !tr->is_invertible()) fail(t, "matrix is singular: it flattens space, so the object has no inverse");
+        out = out.then(*tr);
     } else if (w == "transform") {
         next();
         if (is_punct(peek(), "{")) {

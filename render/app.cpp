@@ -1,9 +1,11 @@
 // The wardray command: parse, build, render, write, with POV-Ray's exit conventions and a progress line.
 #include "render/app.h"
 
+#include <sys/resource.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +28,15 @@
 
 #ifndef WARDRAY_SOURCE_DIR
 #define WARDRAY_SOURCE_DIR ""
+#endif
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define WARDRAY_HAS_ASAN 1
+#endif
+#endif
+#ifndef WARDRAY_HAS_ASAN
+#define WARDRAY_HAS_ASAN 0
 #endif
 
 namespace wardray::render {
@@ -158,6 +169,41 @@ private:
     Clock::time_point m_last{};
 };
 
+// Refuses an image whose pixels alone would not fit in this machine's memory, before anything is parsed or
+// allocated (a film of floats, the antialiasing buffers and the writer's copy: about 32 bytes a pixel).
+std::optional<std::string> image_too_large(int width, int height) {
+    constexpr double k_bytes_per_pixel = 32.0;
+    const double needed = static_cast<double>(width) * height * k_bytes_per_pixel;
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page_size <= 0) return std::nullopt;
+    const double memory = static_cast<double>(pages) * static_cast<double>(page_size);
+    if (needed <= memory) return std::nullopt;
+    constexpr double k_gib = 1024.0 * 1024.0 * 1024.0;
+    std::ostringstream s;
+    s.precision(3);
+    s << "a " << width << "x" << height << " image needs about " << needed / k_gib
+      << " GiB for its pixels, more than this machine's " << memory / k_gib << " GiB of memory";
+    return s.str();
+}
+
+// Bounds the heap by the machine's memory, so a scene that grows without end (a loop of objects) fails with
+// bad_alloc, reported at its location, instead of waking the kernel's OOM killer, which may pick another process.
+void limit_heap_to_machine_memory() {
+#if defined(__SANITIZE_ADDRESS__) || WARDRAY_HAS_ASAN
+    // AddressSanitizer's shadow memory counts as data: under any such limit every later allocation fails.
+    return;
+#endif
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGESIZE);
+    rlimit limit{};
+    if (pages <= 0 || page_size <= 0 || getrlimit(RLIMIT_DATA, &limit) != 0) return;
+    const auto memory = static_cast<rlim_t>(pages) * static_cast<rlim_t>(page_size);
+    if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur <= memory) return;
+    limit.rlim_cur = limit.rlim_max == RLIM_INFINITY ? memory : std::min(memory, limit.rlim_max);
+    setrlimit(RLIMIT_DATA, &limit);
+}
+
 }  // namespace
 
 int run(const std::vector<std::string>& args, const std::string& argv0) {
@@ -205,7 +251,15 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
         thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                              static_cast<std::size_t>(options.threads));
 
+    if (!options.check_only) {
+        if (const auto error = image_too_large(options.width, options.height)) {
+            std::cerr << "wardray: error: " << *error << "\n";
+            return kExitScene;
+        }
+    }
+
     remove_partial_output_on_signal();
+    limit_heap_to_machine_memory();
 
     // Parse.
     parser::ParseOptions parse_options;

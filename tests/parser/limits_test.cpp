@@ -64,5 +64,46 @@ TEST(Limits, StringLength) {
     EXPECT_EQ(first_error(r), "string longer than the limit of 100 characters; raise it with --max-string-length");
 }
 
+TEST(Limits, MemoryFileWrittenWhileWritesAreOff) {
+    ParseOptions o = test::default_options();
+    o.max_string_length = 1000;
+    const ParseResult r = test::parse_fail(
+        "#fopen F \"log.txt\" write\n#while (1)\n  #write (F, \"0123456789\")\n#end\n", o);
+    EXPECT_NE(first_error(r).find("raise it with --max-string-length"), std::string::npos) << first_error(r);
+    EXPECT_EQ(test::count_errors(r), 1u);
+}
+
+TEST(Limits, RecoveryInALoopOfUnclosedBlocks) {
+    const ParseResult r =
+        test::parse_fail("#declare I = 0;\n#while (1)\n  #declare I = I + 1;\n  union { union { x ^\n#end\n");
+    EXPECT_NE(test::all_diagnostics(r).find("while skipping a failed statement"), std::string::npos)
+        << test::all_diagnostics(r);
+}
+
+// Values that are not finite stop at the expression or literal that made them.
+TEST(Limits, NonFiniteValuesAreErrorsAtTheirSource) {
+    for (const char* text : {"#declare X = pow(10, 400);\n", "#declare X = 0 * 1e999;\n",
+                             "sphere { 0, 1e308 * 10 }\n", "#declare V = <1e308, 0, 0> * 10;\n"}) {
+        const ParseResult r = test::parse_fail(text);
+        ASSERT_FALSE(r.diagnostics.empty()) << text;
+        EXPECT_EQ(r.diagnostics[0].loc.line, 1u) << text;
+        EXPECT_GT(r.diagnostics[0].loc.column, 1u) << text;
+    }
+    test::parse_ok("#declare Tiny = 1e-999;\n#declare Big = 1e308;\n");
+}
+
+// POV-Ray compat: an all-zero matrix column is a scale by 0 changed to 1 (a warning); a singular matrix is an
+// error.
+TEST(Limits, SingularMatricesAsPovRayTreatsThem) {
+    const Scene s = test::parse_ok("sphere { 0, 1 matrix <1, 0, 0,  0, 0, 0,  0, 0, 1,  0, 0, 0> }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_TRUE(s.objects[0].transform.is_invertible());
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].message.find("matrix column 2 is zero"), std::string::npos);
+    const ParseResult r = test::parse_fail("sphere { 0, 1 matrix <1, 1, 0,  1, 1, 0,  0, 0, 1,  0, 0, 0> }\n");
+    EXPECT_EQ(first_error(r), "matrix is singular: it flattens space, so the object has no inverse");
+    EXPECT_EQ(r.diagnostics[0].loc.column, 15u);
+}
+
 }  // namespace
 }  // namespace wardray::parser

@@ -1,0 +1,1 @@
+#declare A = acos(2);

@@ -1,0 +1,1 @@
+#declare A = array[2] {1, 2, 3};

@@ -1,0 +1,2001 @@
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+union {
+sphere { 0, 1 }
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}
+}

@@ -1,0 +1,3 @@
+#declare Zero = 0;
+#declare X = 1 / Zero;
+sphere { 0, X }

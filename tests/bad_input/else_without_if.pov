@@ -1,0 +1,2 @@
+sphere { 0, 1 }
+#else

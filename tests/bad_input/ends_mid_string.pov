@@ -1,0 +1,1 @@
+#declare S = "this string never ends

@@ -1,0 +1,2 @@
+#fopen In "/etc/passwd" read
+#read (In, Line)

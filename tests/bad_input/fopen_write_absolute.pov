@@ -1,0 +1,3 @@
+#fopen Out "/tmp/wardray_escape_abs.txt" write
+#write (Out, "escaped\n")
+#fclose Out

@@ -1,0 +1,2 @@
+#declare Ã©tÃ© = 1;
+sphere { 0, ÿş }

@@ -1,0 +1,2 @@
+#include "inc/broken.inc"
+sphere { 0, 1 }

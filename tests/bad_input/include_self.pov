@@ -1,0 +1,2 @@
+// Includes itself forever.
+#include "include_self.pov"

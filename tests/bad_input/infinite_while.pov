@@ -1,0 +1,3 @@
+// An empty loop whose condition never changes.
+#while (1)
+#end

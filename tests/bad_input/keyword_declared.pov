@@ -1,0 +1,1 @@
+#declare sphere = 1;

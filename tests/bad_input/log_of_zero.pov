@@ -1,0 +1,2 @@
+#declare X = ln(0);
+sphere { 0, X }

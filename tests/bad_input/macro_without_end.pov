@@ -1,0 +1,2 @@
+#macro M()
+  sphere { 0, 1 }

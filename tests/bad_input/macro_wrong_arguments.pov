@@ -1,0 +1,2 @@
+#macro Two(A, B) sphere { A, B } #end
+Two(<0, 0, 0>)

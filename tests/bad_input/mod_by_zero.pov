@@ -1,0 +1,1 @@
+#declare X = mod(5, 0);

@@ -1,0 +1,1 @@
+#declare A = array[-1];

@@ -1,0 +1,1 @@
+sphere { 0, 1e999 pigment { rgb 1 } }

@@ -1,0 +1,2 @@
+#declare P = pigment { rgb 1 }
+sphere { 0, P }

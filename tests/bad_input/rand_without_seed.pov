@@ -1,0 +1,1 @@
+#declare X = rand(3);

@@ -1,0 +1,4 @@
+#macro Grow(N)
+  Grow(N + 1)
+#end
+Grow(0)

@@ -1,0 +1,1 @@
+sphere { 0, sqrt(-1) pigment { rgb 1 } }

@@ -1,0 +1,2 @@
+sphere { 0, 1 pigment { rgb 1 } }
+}

@@ -1,0 +1,1 @@
+#declare S = substr("abc", 5, 10);

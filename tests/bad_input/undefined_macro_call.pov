@@ -1,0 +1,1 @@
+#declare R = Make_Radius(2);

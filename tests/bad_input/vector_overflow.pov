@@ -1,0 +1,2 @@
+#declare V = <1e308, 0, 0> * 10;
+sphere { V, 1 }
