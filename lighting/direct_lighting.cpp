@@ -89,12 +89,6 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
     m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
     m_noise_generator = scene.global.noise_generator;
     m_gi_enabled = scene.global.radiosity.has_value() && options.gi != GiMode::Off;
-    for (const parser::Light& light : scene.lights) {
-        if (light.type == parser::Light::Type::Cylinder) {
-            m_limitations.push_back("cylinder light sources are not rendered yet");
-            break;
-        }
-    }
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
     // crossings along one ray from the camera.
@@ -269,6 +263,19 @@ Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const
         if (cos_alpha <= cos_falloff) return {};
         if (light.tightness > 0.0) attenuation *= std::pow(cos_alpha, light.tightness);
         if (cos_alpha < cos_radius) attenuation *= smooth_ramp(cos_falloff, cos_radius, cos_alpha);
+    } else if (light.type == Type::Cylinder) {
+        // POV-Ray's cylinder light: only points ahead of the light and within `falloff` of its axis are lit,
+        // (1 − d/falloff)^tightness, with the same cubic ramp between radius and falloff (d: distance from the axis).
+        const Vec3 axis = normalize(light.point_at - light.position);
+        const Vec3 v = p - light.position;
+        const double k = dot(v, axis);
+        if (k <= 0.0) return {};
+        const double d = length(v - axis * k);
+        if (!(d < light.falloff)) return {};
+        const double closeness = 1.0 - d / light.falloff;
+        attenuation *= std::pow(closeness, light.tightness);
+        if (light.radius > 0.0 && d > light.radius)
+            attenuation *= smooth_ramp(0.0, 1.0 - light.radius / light.falloff, closeness);
     }
     if (light.fade_distance > 0.0 && light.fade_power > 0.0) {
         // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); no inverse-square law otherwise.

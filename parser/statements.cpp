@@ -416,8 +416,19 @@ Light Parser::parse_light_body(const Token& kw) {
         if (is_punct(t, "}")) return light;
         const std::string& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
-        if (w == "spotlight") light.type = Light::Type::Spot;
-        else if (w == "cylinder") light.type = Light::Type::Cylinder;
+        // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own defaults
+        // (degrees for a spotlight, distances from the axis for a cylinder light).
+        if (w == "spotlight") {
+            light.type = Light::Type::Spot;
+            light.radius = 30.0;
+            light.falloff = 45.0;
+            light.tightness = 0.0;
+        } else if (w == "cylinder") {
+            light.type = Light::Type::Cylinder;
+            light.radius = 0.75;
+            light.falloff = 1.0;
+            light.tightness = 0.0;
+        }
         else if (w == "parallel") light.type = Light::Type::Parallel;
         else if (w == "point_at") light.point_at = parse_vector();
         else if (w == "radius") light.radius = parse_float();
