@@ -57,6 +57,10 @@ struct TraceContext {
     RayCounters rays;
     cache::TileCache* cache = nullptr;  ///< the tile's view of the irradiance cache (cache mode only)
     bool final_pass = true;             ///< false in POV-Ray's pretrace passes
+    /// The next cache gather's seed: set per tile and pass by the renderer and stepped by each gather, so a record's
+    /// samples depend on the order the tile makes records in (fixed), not on its position: a scene scaled by any
+    /// factor then draws the same samples.
+    std::uint64_t gather_seed = 0;
     /// --aov irradiance: the indirect irradiance first computed on the current camera path lands here.
     bool capture_irradiance = false;
     bool captured = false;

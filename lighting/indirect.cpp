@@ -84,14 +84,15 @@ Vec3 Integrator::cached_irradiance(const Vec3& p, const Vec3& n, double weight, 
     // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
     ++ctx.rays.gathers;
     const cache::Strata strata = cache::strata_for_count(rays_at_depth(rs, depth));
-    const cache::GatherResult gathered = cache::gather(
+    cache::SplitMix64 seeds(ctx.gather_seed++);
+    const cache::GatherResult gathered = cache::gather_seeded(
         p, n, strata,
         [&](const Vec3& dir) {
             cache::RadianceSample sample;
             sample.radiance = gather_radiance(p, dir, state, 0, ctx, sample.distance);
             return sample;
         },
-        static_cast<std::uint64_t>(depth));
+        seeds.next() ^ static_cast<std::uint64_t>(depth));
     if (ctx.cache) {
         const cache::RadiusLimits limits = cache::radius_limits(rs, depth, length(p - m_scene.camera.location),
                                                                 m_options.footprint * length(p - m_scene.camera.location));

@@ -240,13 +240,16 @@ RenderResult render_image(const parser::Scene& scene, const lighting::Integrator
         progress(done / total_work);
     };
     // One pass over the image in waves, `body` rendering one tile with its trace context.
+    int pass_number = 0;
     auto run_pass = [&](bool final_pass, const auto& body) {
         if (cached) cache->begin_pass(tile_count);
+        const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
         for (const std::vector<int>& wave : waves) {
             for_each_tile(settings, wave, [&](int tile, int x0, int y0, int x1, int y1) {
                 lighting::TraceContext& ctx = tile_counters[tile].trace;
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
+                ctx.gather_seed = pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1));
                 body(tile, x0, y0, x1, y1, ctx);
                 ctx.cache = nullptr;
             }, tile_done);

@@ -6,11 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "cache/irradiance_cache.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
 #include "parser/parse.h"
@@ -31,9 +33,10 @@ struct Rendered {
     std::uint64_t non_finite = 0;
 };
 
-// Parses `text` with `declares`, builds it and renders it with direct light only; fails the test on a
-// scene error.
-Rendered render_text(const std::string& text, const std::vector<std::pair<std::string, double>>& declares = {}) {
+// Parses `text` with `declares`, builds it and renders it (with direct light only unless `radiosity`, then through
+// the irradiance cache with its pretrace); fails the test on a scene error.
+Rendered render_text(const std::string& text, const std::vector<std::pair<std::string, double>>& declares = {},
+                     bool radiosity = false) {
     parser::ParseOptions options;
     options.declares = declares;
     options.image_width = kWidth;
@@ -45,12 +48,15 @@ Rendered render_text(const std::string& text, const std::vector<std::pair<std::s
     if (!parsed.ok()) return {Film(kWidth, kHeight), 0};
     const geometry::SceneGeometry geometry(*parsed.scene);
     lighting::IntegratorOptions integrator_options;
-    integrator_options.gi = lighting::GiMode::Off;
+    integrator_options.gi = radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off;
     const lighting::Integrator integrator(*parsed.scene, geometry, integrator_options);
     RenderSettings settings;
     settings.width = kWidth;
     settings.height = kHeight;
-    RenderResult result = render_image(*parsed.scene, integrator, settings, nullptr);
+    std::optional<cache::IrradianceCache> irradiance_cache;
+    if (radiosity && parsed.scene->global.radiosity) irradiance_cache.emplace(*parsed.scene->global.radiosity);
+    RenderResult result =
+        render_image(*parsed.scene, integrator, settings, nullptr, irradiance_cache ? &*irradiance_cache : nullptr);
     return {std::move(result.film), result.non_finite_pixels};
 }
 
@@ -79,9 +85,9 @@ double max_channel(const Film& f) {
 
 
 
-// The scaled scene of scenes/stiff/scaled.pov, shared with tools/scale_report.py.
-std::string scaled_scene() {
-    std::ifstream f(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "stiff" / "scaled.pov");
+// The scaled scene of scenes/stiff/`name`, shared with tools/scale_report.py.
+std::string scaled_scene(const char* name = "scaled.pov") {
+    std::ifstream f(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "stiff" / name);
     std::stringstream s;
     s << f.rdbuf();
     return s.str();
@@ -98,6 +104,20 @@ TEST_P(ScaleInvariance, MatchesScaleOne) {
     EXPECT_EQ(scaled.non_finite, 0u);
     std::ostringstream name;
     name << "scale_" << s;
+    EXPECT_LE(rrmse(name.str(), scaled.film, reference.film, 0.01), 0.01) << "S = " << s;
+}
+
+// The same with indirect light from the cache: record radii, the behind test, neighbour clamping and gather seeds
+// must all be free of absolute lengths.
+TEST_P(ScaleInvariance, RadiosityMatchesScaleOne) {
+    static const Rendered reference = render_text(scaled_scene("scaled_radiosity.pov"), {{"S", 1.0}}, true);
+    ASSERT_EQ(reference.non_finite, 0u);
+    ASSERT_GT(max_channel(reference.film), 0.1);
+    const double s = GetParam();
+    const Rendered scaled = render_text(scaled_scene("scaled_radiosity.pov"), {{"S", s}}, true);
+    EXPECT_EQ(scaled.non_finite, 0u);
+    std::ostringstream name;
+    name << "radiosity_scale_" << s;
     EXPECT_LE(rrmse(name.str(), scaled.film, reference.film, 0.01), 0.01) << "S = " << s;
 }
 
