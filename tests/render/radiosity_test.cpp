@@ -2,6 +2,7 @@
 // and against POV-Ray's converged render; repeatability for any thread count; nothing paid without a radiosity block.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -119,6 +120,31 @@ TEST(Radiosity, MaxSampleLimitsEveryGatherSample) {
         ASSERT_EQ(run.exit_status, 0) << run.output;
         const render::Film film = read(dir / "out.hdr");
         EXPECT_NEAR(film.pixel(8, 6).y, 0.5 + 0.5 * 0.2, 5e-3) << gi;  // Radiance HDR keeps 8 bits of mantissa
+    }
+}
+
+TEST(Radiosity, ThinWallLetsNoLightThrough) {
+    // Two closed rooms sharing a wall 1e-4 thick (1/20000 of the room); a light a thousand times brighter than
+    // usual in one, the camera in the other. No shadow or gather ray may slip through the wall, whatever the
+    // offsets: the dark room stays exactly black, in both modes.
+    const fs::path dir = fresh_dir("thin_wall");
+    std::ofstream(dir / "rooms.pov") << "#version 3.7;\n"
+        "global_settings { assumed_gamma 1 radiosity { count 100 recursion_limit 2 } }\n"
+        "camera { location <1, 1, -0.8> look_at <0.2, 0.6, 0.5> angle 100 }\n"
+        "light_source { <-1, 1.8, 0> color rgb 1000 }\n"
+        "#declare Matte = finish { diffuse 0.8 ambient 0 }\n"
+        "box { <-2, 0, -1>, <2, 2, 1> inverse pigment { rgb 0.8 } finish { Matte } }\n"
+        "box { <0, 0, -1>, <0.0001, 2, 1> pigment { rgb 0.8 } finish { Matte } }\n"
+        "sphere { <0.3, 0.3, 0>, 0.3 pigment { rgb 0.8 } finish { Matte } }\n";
+    for (const char* gi : {"cache", "reference"}) {
+        const auto run = run_command(wardray() + " +Irooms.pov +Oout.hdr +W48 +H36 -A --gi-rays 64 --gi=" + gi,
+                                     dir.string());
+        ASSERT_EQ(run.exit_status, 0) << run.output;
+        const render::Film film = read(dir / "out.hdr");
+        double brightest = 0.0;
+        for (int y = 0; y < film.height(); ++y)
+            for (int x = 0; x < film.width(); ++x) brightest = std::max(brightest, max_abs_component(film.pixel(x, y)));
+        EXPECT_EQ(brightest, 0.0) << gi << ": light leaked through the wall";
     }
 }
 
