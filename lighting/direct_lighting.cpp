@@ -2,10 +2,10 @@
 #include "lighting/direct_lighting.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <numbers>
 
+#include "cache/hemisphere_sampler.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/noise.h"
 #include "lighting/pattern.h"
@@ -316,16 +316,8 @@ Vec3 Integrator::area_light_shadow(const parser::Light& light, const Vec3& colou
         axis2 = normalize(cross(d, axis1)) * len;
     }
     // Jitter is random in POV-Ray; here it is a fixed function of the point, so renders repeat exactly.
-    std::uint64_t state = std::bit_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ULL ^
-                          std::bit_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4FULL ^
-                          std::bit_cast<std::uint64_t>(p.z) * 0x165667B19E3779F9ULL;
-    auto uniform = [&state]() {
-        state += 0x9E3779B97F4A7C15ULL;
-        std::uint64_t z = state;
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    };
+    cache::SplitMix64 rng(cache::seed_from(p, light.position));
+    auto uniform = [&rng]() { return rng.uniform(); };
     std::vector<Vec3> grid(static_cast<std::size_t>(n1) * n2);
     std::vector<char> known(grid.size(), 0);
     // The light arriving from grid point (u, v): the colour taken at the centre, times the shadow towards it.
