@@ -23,7 +23,13 @@ std::string format_diagnostic(const Diagnostic& d) {
     std::string out;
     if (!d.loc.path.empty()) {
         out += d.loc.path;
-        if (d.loc.line > 0) out += ":" + std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column);
+        if (d.loc.line > 0) {
+            // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about `":" + std::string`.
+            out += ':';
+            out += std::to_string(d.loc.line);
+            out += ':';
+            out += std::to_string(d.loc.column);
+        }
         out += ": ";
     }
     out += severity_name(d.severity);
