@@ -12,7 +12,8 @@
 
 namespace wardray::parser {
 
-Parser::Parser(const ParseOptions& options) : m_options(options) {}
+Parser::Parser(const ParseOptions& options)
+    : m_stack_base(static_cast<const char*>(__builtin_frame_address(0))), m_options(options) {}
 
 std::string SourceFile::line_text(std::uint32_t line) const {
     // Diagnostics and entity locations ask for lines often: index the line starts once per file.
@@ -30,10 +31,15 @@ std::string SourceFile::line_text(std::uint32_t line) const {
 
 Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at, std::size_t& depth)
     : m_parser(parser), m_depth(depth) {
-    if (++m_depth <= k_max_nesting) return;
+    // The stack grows down on every platform we build for: the distance from where the parser began is its use.
+    const char* here = static_cast<const char*>(__builtin_frame_address(0));
+    const bool stack_full = m_parser.m_stack_base - here > k_max_stack_bytes;
+    if (++m_depth <= k_max_nesting && !stack_full) return;
     --m_depth;
     m_parser.report(m_parser.make_diagnostic(
-        Severity::Error, at, "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
+        Severity::Error, at,
+        stack_full ? "nesting too deep for the stack (" + std::to_string(m_depth) + " levels); stopping"
+                   : "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
     throw FatalError{};
 }
 

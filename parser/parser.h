@@ -1,6 +1,7 @@
 // Parser: the recursive-descent reader of POV-Ray SDL over a re-readable token stream with a directive layer.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -256,6 +257,9 @@ private:
 
     /// The deepest nesting of blocks and expressions the descent follows.
     static constexpr std::size_t k_max_nesting = 400;
+    /// The most stack the descent may use: frames are larger in sanitizer and debug builds, where 400 levels
+    /// can exceed the default 8 MiB stack, so the guard also measures the stack itself.
+    static constexpr std::ptrdiff_t k_max_stack_bytes = std::ptrdiff_t{4} << 20;
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
     class NestingGuard {
     public:
@@ -273,6 +277,7 @@ private:
     friend class NestingGuard;
     std::size_t m_nesting = 0;
     std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
+    const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
 
     const ParseOptions& m_options;
     std::vector<std::unique_ptr<SourceFile>> m_files;
