@@ -39,23 +39,6 @@ void extent(const std::array<double, 4>& c, double& lo, double& hi) {
     }
 }
 
-// Entry and exit parameters of the line o + s u through a box.
-bool slab(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& u, double& s0, double& s1) {
-    s0 = -inf;
-    s1 = inf;
-    for (int k = 0; k < 3; ++k) {
-        if (u[k] == 0.0) {
-            if (o[k] < lo[k] || o[k] > hi[k]) return false;
-            continue;
-        }
-        double a = (lo[k] - o[k]) / u[k], b = (hi[k] - o[k]) / u[k];
-        if (a > b) std::swap(a, b);
-        s0 = std::fmax(s0, a);
-        s1 = std::fmin(s1, b);
-    }
-    return s0 <= s1;
-}
-
 }  // namespace
 
 std::optional<LatheShape> LatheShape::create(const parser::Lathe& lathe) {
@@ -176,7 +159,7 @@ SurfaceHits LatheShape::intersect_all(const LocalRay& ray, double t_min, double 
     if (!line) return hits;
     const auto& [u, o, s0, len] = *line;
     double b0, b1;
-    if (!slab(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
+    if (!slab_interval(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
     const double rho2 = o.x * o.x + o.z * o.z;  // squared distance from the axis at s = 0
     const double m = o.x * u.x + o.z * u.z;
     const double rr = u.x * u.x + u.z * u.z;
@@ -188,7 +171,7 @@ SurfaceHits LatheShape::intersect_all(const LocalRay& ray, double t_min, double 
         const Piece& piece = (*m_pieces)[k];
         double p0, p1;
         const Vec3 reach{piece.r_max, 0.0, piece.r_max};
-        if (!slab(Vec3{-reach.x, piece.y_min, -reach.z}, Vec3{reach.x, piece.y_max, reach.z}, o, u, p0, p1)) continue;
+        if (!slab_interval(Vec3{-reach.x, piece.y_min, -reach.z}, Vec3{reach.x, piece.y_max, reach.z}, o, u, p0, p1)) continue;
         // The ray's squared distance from the axis over that stretch must reach the piece's ring of radii.
         {
             auto rho2_at = [&](double s) { return rho2 + 2.0 * m * s + rr * s * s; };
@@ -284,21 +267,7 @@ double LatheShape::implicit(const Vec3& p) const {
             const double dr = std::fabs(poly(piece.r, w)) - radius, dy = poly(piece.y, w) - p.y;
             return dr * dr + dy * dy;
         };
-        double w = 0.0, d = dist2(0.0);
-        for (int k = 1; k <= 32; ++k)
-            if (const double dk = dist2(k / 32.0); dk < d) {
-                d = dk;
-                w = k / 32.0;
-            }
-        // Golden-section refinement around the best sample.
-        double a = std::fmax(0.0, w - 1.0 / 32.0), b = std::fmin(1.0, w + 1.0 / 32.0);
-        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-        for (int iter = 0; iter < 80; ++iter) {
-            const double c1 = b - g * (b - a), c2 = a + g * (b - a);
-            if (dist2(c1) < dist2(c2)) b = c2;
-            else a = c1;
-        }
-        best = std::fmin(best, std::fmin(d, dist2(0.5 * (a + b))));
+        best = std::fmin(best, minimum_on_unit_interval(dist2));
     }
     const double dist = std::sqrt(best);
     return inside(p) ? -dist : dist;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "parser/vec3.h"
@@ -97,6 +98,57 @@ private:
     std::vector<SurfaceHit> m_heap;
     std::size_t m_count = 0;
 };
+
+/// The parameters s0 ≤ s1 where the line o + s·u enters and leaves the box [lo, hi]; false when it misses.
+inline bool slab_interval(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& u, double& s0, double& s1) {
+    s0 = -INFINITY;
+    s1 = INFINITY;
+    for (int k = 0; k < 3; ++k) {
+        if (u[k] == 0.0) {
+            if (o[k] < lo[k] || o[k] > hi[k]) return false;
+            continue;
+        }
+        double a = (lo[k] - o[k]) / u[k], b = (hi[k] - o[k]) / u[k];
+        if (a > b) std::swap(a, b);
+        s0 = std::fmax(s0, a);
+        s1 = std::fmin(s1, b);
+    }
+    return s0 <= s1;
+}
+
+/// Sorted crossings without repeats: a ray through the point where two pieces of an outline meet finds it on both,
+/// and the second (same direction, same t to rounding) is dropped.
+inline SurfaceHits without_repeated_crossings(const SurfaceHits& hits) {
+    SurfaceHits unique;
+    for (const SurfaceHit& h : hits) {
+        if (!unique.empty()) {
+            const SurfaceHit& last = unique[unique.size() - 1];
+            if (last.entering == h.entering && h.t - last.t <= 1e-12 * (std::fabs(h.t) + std::fabs(last.t))) continue;
+        }
+        unique.push(h);
+    }
+    return unique;
+}
+
+/// The least value of `f` on [0, 1] (a squared distance along a curve piece): 33 samples, then a golden-section
+/// search around the best of them.
+template <typename F>
+double minimum_on_unit_interval(const F& f) {
+    double w = 0.0, d = f(0.0);
+    for (int k = 1; k <= 32; ++k)
+        if (const double dk = f(k / 32.0); dk < d) {
+            d = dk;
+            w = k / 32.0;
+        }
+    double a = std::fmax(0.0, w - 1.0 / 32.0), b = std::fmin(1.0, w + 1.0 / 32.0);
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    for (int iter = 0; iter < 80; ++iter) {
+        const double c1 = b - g * (b - a), c2 = a + g * (b - a);
+        if (f(c1) < f(c2)) b = c2;
+        else a = c1;
+    }
+    return std::fmin(d, f(0.5 * (a + b)));
+}
 
 /// An axis-aligned box [lower, upper].
 struct Bounds {

@@ -44,22 +44,6 @@ bool solve4(double m[4][4], double b[4], double x[4]) {
     return true;
 }
 
-bool slab(const Vec3& lo, const Vec3& hi, const Vec3& o, const Vec3& u, double& s0, double& s1) {
-    s0 = -inf;
-    s1 = inf;
-    for (int k = 0; k < 3; ++k) {
-        if (u[k] == 0.0) {
-            if (o[k] < lo[k] || o[k] > hi[k]) return false;
-            continue;
-        }
-        double a = (lo[k] - o[k]) / u[k], b = (hi[k] - o[k]) / u[k];
-        if (a > b) std::swap(a, b);
-        s0 = std::fmax(s0, a);
-        s1 = std::fmin(s1, b);
-    }
-    return s0 <= s1;
-}
-
 // POV-Ray compat: Compute_Sor bounds a piece by the radii at its ends and at the extremes of f, as sqrt(f); where
 // f dips below zero that is NaN, and when the NaN lands where std::min and std::max keep it, the piece's bounding
 // cylinder rejects every ray, so POV-Ray never draws the piece. This repeats its root order and min/max order.
@@ -159,7 +143,7 @@ SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_
     if (!line) return hits;
     const auto& [u, o, s0, len] = *line;
     double b0, b1;
-    if (!slab(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
+    if (!slab_interval(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
     auto push = [&](double s, const Vec3& normal) {
         const double t = (s0 + s) / len;
         if (t > t_min && t < t_max) hits.push({t, normal, dot(normal, ray.direction) < 0.0});
@@ -180,7 +164,7 @@ SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_
         if (piece.hidden) continue;
         double p0, p1;
         const Vec3 lo{-piece.r_max, piece.y_min, -piece.r_max}, hi{piece.r_max, piece.y_max, piece.r_max};
-        if (!slab(lo, hi, o, u, p0, p1)) continue;
+        if (!slab_interval(lo, hi, o, u, p0, p1)) continue;
         const double pad = 1e-9 * (1.0 + std::fabs(p0) + std::fabs(p1));
         // f(oy + s uy) - (rho² + 2 m s + rr s²), expanded about oy.
         const auto& c = piece.c;

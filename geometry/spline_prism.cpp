@@ -166,16 +166,7 @@ SurfaceHits SplinePrismShape::intersect_all(const LocalRay& ray, double t_min, d
         }
     }
     hits.sort_by_t();
-    // A ray through the point where two pieces meet finds it on both: keep one crossing.
-    SurfaceHits unique;
-    for (const SurfaceHit& h : hits) {
-        if (!unique.empty()) {
-            const SurfaceHit& last = unique[unique.size() - 1];
-            if (last.entering == h.entering && h.t - last.t <= 1e-12 * (std::fabs(h.t) + std::fabs(last.t))) continue;
-        }
-        unique.push(h);
-    }
-    return unique;
+    return without_repeated_crossings(hits);
 }
 
 double SplinePrismShape::outline_distance(double u, double v) const {
@@ -185,21 +176,7 @@ double SplinePrismShape::outline_distance(double u, double v) const {
             const Vec3 q = p.at(w);
             return (q.x - u) * (q.x - u) + (q.y - v) * (q.y - v);
         };
-        double w = 0.0, d = dist2(0.0);
-        for (int k = 1; k <= 32; ++k)
-            if (const double dk = dist2(k / 32.0); dk < d) {
-                d = dk;
-                w = k / 32.0;
-            }
-        // Golden-section refinement around the best sample.
-        double a = std::fmax(0.0, w - 1.0 / 32.0), b = std::fmin(1.0, w + 1.0 / 32.0);
-        const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-        for (int iter = 0; iter < 80; ++iter) {
-            const double c1 = b - g * (b - a), c2 = a + g * (b - a);
-            if (dist2(c1) < dist2(c2)) b = c2;
-            else a = c1;
-        }
-        best = std::fmin(best, std::fmin(d, dist2(0.5 * (a + b))));
+        best = std::fmin(best, minimum_on_unit_interval(dist2));
     }
     return std::sqrt(best);
 }

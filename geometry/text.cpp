@@ -297,16 +297,7 @@ SurfaceHits TextShape::intersect_all(const LocalRay& ray, double t_min, double t
         }
     }
     hits.sort_by_t();
-    // A ray through the point where two pieces meet finds it on both: keep one crossing.
-    SurfaceHits unique;
-    for (const SurfaceHit& h : hits) {
-        if (!unique.empty()) {
-            const SurfaceHit& last = unique[unique.size() - 1];
-            if (last.entering == h.entering && h.t - last.t <= 1e-12 * (std::fabs(h.t) + std::fabs(last.t))) continue;
-        }
-        unique.push(h);
-    }
-    return unique;
+    return without_repeated_crossings(hits);
 }
 
 bool TextShape::inside(const Vec3& p) const {
