@@ -3,7 +3,7 @@
 
 For each scene (POV-Ray's cornell.pov and the project's scenes/radiosity/*.pov):
   1. references: POV-Ray's converged render (the scene's radiosity block with count 1600, error_bound 0.1,
-     pretrace_end 0.01, nearest_count 20 appended, as ../shared/docs/METRICS.md says) and wardray's reference
+     pretrace_end 0.01, nearest_count 20 set, as ../shared/docs/METRICS.md says) and wardray's reference
      mode (--gi=reference) at N and 2N paths per pixel, whose difference shows how converged it is;
      both are cached by the scene's text, the settings and the size, and the report says when a cache was used;
   2. parity: rRMSE and bad pixels of wardray's reference (2N) against POV-Ray's converged render;
@@ -27,33 +27,17 @@ import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-CONVERGED = "count 1600 error_bound 0.1 pretrace_end 0.01 nearest_count 20"
+# The comparison tool's radiosity-block rewriter, which knows about comments, strings and nested blocks.
+sys.path.insert(0, str(ROOT / "tools" / "compare"))
+from povrewrite import rewrite_radiosity  # noqa: E402
+CONVERGED_SETTINGS = {"count": 1600, "error_bound": 0.1, "pretrace_end": 0.01, "nearest_count": 20}
+CONVERGED = " ".join(f"{k} {v}" for k, v in CONVERGED_SETTINGS.items())
 
 
 def default_scenes():
     scenes = [pathlib.Path("/usr/share/povray-3.7/scenes/radiosity/cornell.pov")]
     scenes += sorted((ROOT / "scenes" / "radiosity").glob("*.pov"))
     return scenes
-
-
-def with_block_appended(text, extra):
-    """The scene text with `extra` appended inside its radiosity block (later keywords win in POV-Ray)."""
-    start = text.find("radiosity")
-    while start >= 0:
-        brace = start + len("radiosity")
-        while brace < len(text) and text[brace] in " \t\r\n":
-            brace += 1
-        if brace < len(text) and text[brace] == "{":
-            depth = 0
-            for i in range(brace, len(text)):
-                if text[i] == "{":
-                    depth += 1
-                elif text[i] == "}":
-                    depth -= 1
-                    if depth == 0:
-                        return text[:i] + " " + extra + " " + text[i:]
-        start = text.find("radiosity", start + 1)
-    raise ValueError("the scene has no radiosity block")
 
 
 def run(cmd, cwd):
@@ -98,7 +82,7 @@ def measure(scene, args, refs, wardray_version):
         work = pathlib.Path(tmp)
         # POV-Ray writes only below its current folder and finds includes beside the scene.
         (work / scene.name).write_text(text)
-        (work / "converged.pov").write_text(with_block_appended(text, CONVERGED))
+        (work / "converged.pov").write_text(rewrite_radiosity(text, CONVERGED_SETTINGS)[0])
         lib = [f"+L{scene.parent}"]
 
         def povray_converged(out):
@@ -159,7 +143,7 @@ def write_report(rows, args, out):
         "",
         "## Converged against converged",
         "",
-        "POV-Ray's converged render is the scene with `" + CONVERGED + "` appended to its radiosity block; "
+        "POV-Ray's converged render is the scene with `" + CONVERGED + "` set in its radiosity block; "
         f"wardray's is `--gi=reference --gi-rays {2 * args.paths}`. *Reference noise* is the rRMSE between "
         f"wardray's references at {args.paths} and {2 * args.paths} paths.",
         "",
