@@ -8,15 +8,13 @@
 #include "cache/irradiance_record.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
+#include "lighting/pigment.h"
 
 namespace wardray::lighting {
 
 namespace {
 
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
-
-// POV-Ray's greyscale weights.
-double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
 
 /// POV-Ray compat (GetRecursionSettings): rays per gather halve with each bounce, at least 5.
 int rays_at_depth(const parser::RadiositySettings& rs, int depth) {

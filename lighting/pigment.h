@@ -6,6 +6,9 @@
 
 namespace wardray::lighting {
 
+/// POV-Ray's greyscale of a colour (its GREY_SCALE weights 0.297, 0.589, 0.114).
+inline double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
+
 /// The five-component colour of `pigment` at `p` (in the pigment's enclosing space: world space for an object's
 /// pigment). Solid pigments return their colour without evaluating anything.
 inline parser::Color evaluate_pigment(const parser::Pigment& pigment, const Vec3& p, int noise_generator);

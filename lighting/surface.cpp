@@ -17,8 +17,6 @@ namespace {
 
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 
-// POV-Ray's greyscale weights.
-double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
 double max3(const Vec3& c) { return std::max(c.x, std::max(c.y, c.z)); }
 
 // One layer's reflection, gathered while the layers are shaded and traced afterwards.
