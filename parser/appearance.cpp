@@ -176,14 +176,14 @@ Finish Parser::parse_finish_body(const Token& kw) {
     if (is_array_element_next()) {
         const Token at = peek();
         const Value element = *take_array_element();
-        if (const auto* ef = std::get_if<Finish>(&element)) f = *ef;
+        if (const auto* ef = std::get_if<Boxed<Finish>>(&element)) f = **ef;
         else fail(at, "this array element is not a finish");
     }
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<Finish>(*v)) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Boxed<Finish>>(*v)) {
             next();
-            f = std::get<Finish>(*v);
+            f = *std::get<Boxed<Finish>>(*v);
         }
     }
     while (true) {
@@ -219,14 +219,14 @@ void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close
     if (is_array_element_next()) {
         const Token at = peek();
         const Value element = *take_array_element();
-        if (const auto* et = std::get_if<Texture>(&element)) tx = *et;
+        if (const auto* et = std::get_if<Boxed<Texture>>(&element)) tx = **et;
         else fail(at, "this array element is not a texture");
     }
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<Texture>(*v)) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Boxed<Texture>>(*v)) {
             next();
-            tx = std::get<Texture>(*v);
+            tx = *std::get<Boxed<Texture>>(*v);
         }
     }
     while (true) {

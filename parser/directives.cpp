@@ -53,6 +53,7 @@ void Parser::process_directive() {
         directive_declare(tok, name == "local");
     } else if (name == "undef") {
         const Token id = expect_identifier();
+        before_rebinding(id.text);
         bool erased = false;
         for (auto it = m_scopes.rbegin(); it != m_scopes.rend() && !erased; ++it) erased = it->erase(id.text) > 0;
         if (!erased) m_macros.erase(id.text);
@@ -139,6 +140,7 @@ void Parser::directive_declare(const Token& tok, bool local) {
         return;
     }
     expect("=");
+    if (try_defer_declaration(id, local)) return;
     m_declaring.emplace_back();
     Value v;
     try {
@@ -167,6 +169,8 @@ void Parser::directive_declare(const Token& tok, bool local) {
         if (const auto ref = frame.references.find(id.text); ref != frame.references.end()) {
             // A by-reference parameter: update the caller's identifier and the parameter itself.
             const auto& [scope, name] = ref->second;
+            before_rebinding(name);
+            before_rebinding(id.text);
             if (scope < m_scopes.size()) m_scopes[scope][name] = v;
             m_scopes[frame.scope_index][id.text] = std::move(v);
             if (numeric) accept_semicolon_after_declare(Numeric{}, id);
@@ -381,10 +385,14 @@ void Parser::directive_include(const Token& tok) {
     }
     std::optional<std::uint32_t> index;
     std::string error = "No such file or directory";
-    for (const auto& c : candidates) {
+    const std::size_t per_name = requested.has_extension() ? candidates.size() : candidates.size() / 2;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(c, ec)) continue;
-        index = load_file(c, error);
+        if (!std::filesystem::is_regular_file(candidates[i], ec)) continue;
+        // A library file is one found through the library paths, or beside the library file including it.
+        const bool own_folder = !requested.is_absolute() && i % per_name == 0;
+        const bool library = own_folder ? m_files[m_file]->library : !requested.is_absolute();
+        index = load_file(candidates[i], library, error);
         if (index) break;
     }
     if (!index) {
@@ -435,6 +443,7 @@ void Parser::directive_macro(const Token& tok) {
     }
     macro.file = m_file;
     macro.body = m_pos;
+    m_files[m_file]->has_macros = true;
     const Token stop = skip_until(0, {"end"}, tok);
     if (stop.kind == TokenKind::EndOfFile) return;
     macro.end = m_pos - 1;
@@ -442,6 +451,8 @@ void Parser::directive_macro(const Token& tok) {
 }
 
 void Parser::directive_default(const Token& tok) {
+    // Deferred declarations were written against the defaults in force where they stand.
+    evaluate_all_deferred();
     expect("{");
     while (true) {
         const Token t = next();

@@ -312,8 +312,9 @@ Numeric Parser::parse_geometry_query(const Token& name) {
     expect("(");
     const Token obj_at = peek();
     const Value obj = parse_rvalue();
-    const auto* ov = std::get_if<ObjectValue>(&obj);
-    if (ov == nullptr) fail(obj_at, "the first argument of '" + f + "' must be an object");
+    const auto* boxed = std::get_if<Boxed<ObjectValue>>(&obj);
+    if (boxed == nullptr) fail(obj_at, "the first argument of '" + f + "' must be an object");
+    const ObjectValue* ov = &**boxed;
     std::optional<Vec3> origin;
     std::optional<Vec3> direction;
     std::optional<Token> normal_var;

@@ -1,6 +1,7 @@
 // Lexer: Spirit X3 token rules over a hand-written loop that skips whitespace and (nested) comments.
 #include "parser/lexer.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -30,7 +31,8 @@ const auto one_char_punct = x3::char_("{}()[]<>,;+*/=!&|?:.%^@$'`~\\-");
 // Tracks line and column while the scanner moves forward byte by byte.
 class Cursor {
 public:
-    explicit Cursor(std::string_view text) : m_text(text) {}
+    Cursor(std::string_view text, LexStart start)
+        : m_text(text), m_pos(start.offset), m_line(start.line), m_column(start.column) {}
     bool done() const { return m_pos >= m_text.size(); }
     char peek(std::size_t ahead = 0) const {
         return m_pos + ahead < m_text.size() ? m_text[m_pos + ahead] : '\0';
@@ -87,17 +89,24 @@ std::string source_line(std::string_view text, std::uint32_t line) {
 
 std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::string& path,
                        std::vector<Diagnostic>& errors) {
+    return lex(text, LexStart{}, text.size(), file, path, errors);
+}
+
+std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_offset, std::uint32_t file,
+                       const std::string& path, std::vector<Diagnostic>& errors) {
+    // The scan sees the text up to `end_offset` only; diagnostics quote lines of the whole text.
+    const std::string_view text = whole.substr(0, std::min(end_offset, whole.size()));
     std::vector<Token> tokens;
     // Scene files average about five bytes per token: reserving up front avoids re-copying the vector as it grows
     // (untouched reserved memory costs nothing).
-    tokens.reserve(text.size() / 3 + 16);
-    Cursor cur(text);
+    tokens.reserve((text.size() - std::min(start.offset, text.size())) / 3 + 16);
+    Cursor cur(text, start);
     auto error_at = [&](std::uint32_t line, std::uint32_t column, std::uint32_t span, std::string message) {
         Diagnostic d;
         d.severity = Severity::Error;
         d.loc = SourceLoc{path, line, column};
         d.message = std::move(message);
-        d.source_line = source_line(text, line);
+        d.source_line = source_line(whole, line);
         d.span = span;
         errors.push_back(std::move(d));
     };
@@ -139,6 +148,7 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
         tok.file = file;
         tok.line = cur.line();
         tok.column = cur.column();
+        tok.offset = static_cast<std::uint32_t>(cur.pos());
         const char* const begin = text.data() + cur.pos();
         const char* const end = text.data() + text.size();
         const char* it = begin;
@@ -182,7 +192,7 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
                 d.severity = Severity::Warning;
                 d.loc = SourceLoc{path, tok.line, tok.column};
                 d.message = "'#' without a directive name is ignored";
-                d.source_line = source_line(text, tok.line);
+                d.source_line = source_line(whole, tok.line);
                 errors.push_back(std::move(d));
                 cur.advance(1);
                 continue;
@@ -237,6 +247,7 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
     eof.file = file;
     eof.line = cur.line();
     eof.column = cur.column();
+    eof.offset = static_cast<std::uint32_t>(cur.pos());
     tokens.push_back(std::move(eof));
     return tokens;
 }

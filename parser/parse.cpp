@@ -3,9 +3,7 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <new>
-#include <sstream>
 
 #include "parser/keywords.h"
 #include "parser/parser.h"
@@ -255,13 +253,8 @@ ParseResult parse_file(const std::filesystem::path& path, const ParseOptions& op
     if (std::filesystem::is_directory(path, ec)) {
         reason = std::strerror(EISDIR);
     } else {
-        std::ifstream in(path, std::ios::binary);
-        if (in) {
-            std::ostringstream ss;
-            ss << in.rdbuf();
-            if (!in.bad()) return parse_string(ss.str(), name, options);
-        }
-        reason = std::strerror(errno != 0 ? errno : ENOENT);
+        std::string text;
+        if (read_text_file(path, text, reason)) return parse_string(text, name, options);
     }
     ParseResult r;
     Diagnostic d;

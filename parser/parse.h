@@ -53,6 +53,11 @@ struct ParseOptions {
     /// Characters of one string value (--max-string-length).
     std::size_t max_string_length = 10'000'000;
 
+    /// Pay for what is used: a `#declare` of a pigment, finish, texture or colour map in a file found through
+    /// `library_paths` is read when the scene first uses the identifier, not where it stands. Off, every
+    /// declaration is evaluated in place (so `--check` reports mistakes in declarations nothing uses).
+    bool defer_library_declarations = true;
+
     /// The geometry layer, for trace(), inside(), min_extent() and max_extent() at parse time; when null those
     /// functions are an error. Not owned.
     const SceneQuery* query = nullptr;

@@ -26,11 +26,16 @@ struct SourceFile {
     std::string text;
     std::vector<Token> tokens;
     bool truncated = false;  ///< the lexer gave up early (unterminated string): errors at its end are noise
+    bool library = false;    ///< found through the library paths: its declarations may be deferred
+    bool has_macros = false; ///< defines a macro, whose body is read from `tokens` at every call
     mutable std::vector<std::size_t> line_starts;  ///< offset of each line, built on the first diagnostic
 
     /// The text of line `line` (from 1) without its line ending, found through the line index.
     std::string line_text(std::uint32_t line) const;
 };
+
+/// Reads a whole file into `text` with one copy; false with the reason in `error` when it cannot be read.
+bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error);
 
 /// Thrown inside the parser to abandon the current statement after an error was reported.
 struct StatementError {};
@@ -121,7 +126,11 @@ private:
     /// (consumed) or an EndOfFile token when the file ended first.
     Token skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener);
     void handle_end_of_file();
-    std::optional<std::uint32_t> load_file(const std::filesystem::path& path, std::string& error);
+    /// Lexes a file's text into its tokens; the first time, its lexical errors are reported.
+    void lex_file(std::uint32_t index, bool first);
+    /// Reads and lexes a file once (a second #include of it reuses the tokens); `library` marks a file found
+    /// through the library paths.
+    std::optional<std::uint32_t> load_file(const std::filesystem::path& path, bool library, std::string& error);
     void invoke_macro(const Token& name_tok, const Macro& macro);
     void return_from_macro();
     /// Invokes macros standing where an item is expected, so their bodies are read in place.
@@ -130,9 +139,46 @@ private:
     bool count_loop_iteration(const Token& where);
 
     // --- symbols ---
-    /// Finds an identifier, innermost scope first; using it releases the warnings deferred at its declaration.
+    /// Finds an identifier, innermost scope first; using it releases the warnings deferred at its declaration and
+    /// evaluates a deferred declaration.
     const Value* lookup(const std::string& name);
+    /// As lookup, for a caller about to change the value in place.
     Value* lookup_mutable(const std::string& name);
+    /// The binding of an identifier as stored (a Deferred stays deferred), innermost scope first; no side effects.
+    Value* find_slot(const std::string& name);
+
+    // --- deferred declarations (deferred.cpp) ---
+    /// A library `#declare` whose value is read at the identifier's first use: where its value lies in its file,
+    /// and the #version it was declared under.
+    struct DeferredDeclaration {
+        std::string name;
+        Token where;  ///< the declared identifier
+        std::uint32_t file = 0;
+        LexStart start;
+        std::size_t end = 0;  ///< byte offset just past the value
+        double version = 3.7;
+        bool pending = true;
+    };
+    /// At a declaration's value (just after '='): when the value is a pigment, finish, texture or colour map
+    /// of a library file that reads only keywords and identifiers whose later rebinding can be detected, binds
+    /// `id` to a Deferred, moves past the value and returns true.
+    bool try_defer_declaration(const Token& id, bool local);
+    /// Evaluates the deferred declaration held in `slot` and stores its value there.
+    void evaluate_deferred(Value& slot);
+    /// Evaluates deferred declaration `index` if it is still pending and bound.
+    void evaluate_pending(std::uint32_t index);
+    /// Called before `name` is rebound, undefined or shadowed: evaluates the deferred declarations that read it,
+    /// so they see the binding they were written against.
+    void before_rebinding(const std::string& name);
+    /// Called before a scope is dropped: the deferred declarations reading its names are evaluated first.
+    void before_scope_ends(const std::unordered_map<std::string, Value>& scope);
+    /// Evaluates every pending deferred declaration (before state they depend on changes, e.g. #default).
+    void evaluate_all_deferred();
+    std::vector<DeferredDeclaration> m_deferred;
+    /// Identifier -> the pending deferred declarations whose value reads it.
+    std::unordered_map<std::string, std::vector<std::uint32_t>> m_deferred_readers;
+    /// Deferred declarations being evaluated (nested when one reads another): their stream ends at its own end.
+    std::size_t m_evaluating_deferred = 0;
     // --- arrays (arrays.cpp) ---
     Value parse_array_declaration(const Token& kw);
     void parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t offset, const Token& kw);

@@ -213,8 +213,8 @@ std::vector<ColorMapEntry> Parser::parse_color_map(const Token& kw) {
             // A declared colour map arrives as a pigment holding only its map.
             const Value* v = lookup(t.text);
             if (v == nullptr) fail_undeclared(t);
-            if (const auto* p = std::get_if<Pigment>(v); p && !p->color_map.empty()) {
-                map = p->color_map;
+            if (const auto* p = std::get_if<Boxed<Pigment>>(v); p && !(*p)->color_map.empty()) {
+                map = (*p)->color_map;
                 expect("}");
                 return map;
             }
@@ -254,17 +254,17 @@ bool Parser::parse_pigment_start(Pigment& p) {
     if (is_array_element_next()) {
         const Token at = peek();
         const Value element = *take_array_element();
-        if (const auto* ep = std::get_if<Pigment>(&element)) p = *ep;
+        if (const auto* ep = std::get_if<Boxed<Pigment>>(&element)) p = **ep;
         else if (const auto* n = std::get_if<Numeric>(&element)) p.color = n->to_color();
         else fail(at, "this array element is not a pigment or colour");
         return true;
     }
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<Pigment>(*v)) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Boxed<Pigment>>(*v)) {
             next();
             const SourceLoc loc = p.loc;
-            p = std::get<Pigment>(*v);
+            p = *std::get<Boxed<Pigment>>(*v);
             p.loc = loc;
             return true;
         }

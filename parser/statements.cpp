@@ -118,7 +118,7 @@ ObjectValue Parser::parse_object(const Token& kw) {
         std::optional<Value> element;
         const Token at = peek();
         if ((element = take_array_element())) {
-            if (const auto* o = std::get_if<ObjectValue>(&*element)) ov = *o;
+            if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) ov = **o;
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
             parse_object_modifiers(ov, ov.compound);
             return ov;
@@ -133,8 +133,8 @@ ObjectValue Parser::parse_object(const Token& kw) {
             if (v == nullptr) fail_undeclared(id);
             if (std::holds_alternative<Unsupported>(*v)) {
                 // Already warned about where it was declared; the object is left out.
-            } else if (const auto* o = std::get_if<ObjectValue>(v)) {
-                ov = *o;
+            } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
+                ov = **o;
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");
             }
@@ -352,9 +352,9 @@ bool Parser::parse_transform_item(const Token& t, Transform& out) {
             const Token id = expect_identifier();
             const Value* v = lookup(id.text);
             if (v == nullptr) fail_undeclared(id);
-            const auto* tv = std::get_if<Transform>(v);
+            const auto* tv = std::get_if<Boxed<Transform>>(v);
             if (tv == nullptr) fail(id, "'" + id.text + "' is not a transform");
-            out = out.then(*tv);
+            out = out.then(**tv);
         }
     } else {
         return false;
@@ -373,8 +373,8 @@ Transform Parser::parse_transform_body(const Token& kw) {
         if (is_word(t, "inverse")) {
             result = result.inverse();
         } else if (t.kind == TokenKind::Identifier && lookup(t.text) &&
-                   std::holds_alternative<Transform>(*lookup(t.text))) {
-            result = result.then(std::get<Transform>(*lookup(t.text)));
+                   std::holds_alternative<Boxed<Transform>>(*lookup(t.text))) {
+            result = result.then(*std::get<Boxed<Transform>>(*lookup(t.text)));
         } else {
             fail(t, "expected a transformation but found '" + t.text + "'");
         }
@@ -388,7 +388,8 @@ Light Parser::parse_light_body(const Token& kw) {
     expand_macros();
     const Token& first = peek();
     const Value* ident = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
-    const auto* ov = ident ? std::get_if<ObjectValue>(ident) : nullptr;
+    const auto* boxed = ident ? std::get_if<Boxed<ObjectValue>>(ident) : nullptr;
+    const ObjectValue* ov = boxed ? &**boxed : nullptr;
     if (ov != nullptr && ov->lights.size() == 1 && ov->parts.empty()) {
         next();
         light = ov->lights.front();
@@ -483,9 +484,9 @@ CameraSpec Parser::parse_camera_body(const Token& kw) {
     expand_macros();
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<CameraSpec>(*v)) {
+        if (const Value* v = lookup(first.text); v && std::holds_alternative<Boxed<CameraSpec>>(*v)) {
             next();
-            spec = std::get<CameraSpec>(*v);
+            spec = *std::get<Boxed<CameraSpec>>(*v);
         }
     }
     while (true) {

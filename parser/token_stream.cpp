@@ -1,8 +1,7 @@
 // Token stream: reading tokens through the directive layer, symbol scopes, and include/macro frames.
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "parser/parser.h"
 
@@ -18,7 +17,7 @@ const Token& Parser::peek() {
             process_directive();
             continue;
         }
-        if (t.kind == TokenKind::EndOfFile && !m_frames.empty()) {
+        if (t.kind == TokenKind::EndOfFile && !m_frames.empty() && m_evaluating_deferred == 0) {
             handle_end_of_file();
             continue;
         }
@@ -118,14 +117,19 @@ const Value* Parser::lookup(const std::string& name) {
                 emit_feature_warning(d);
         }
     }
-    for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
-        const auto found = it->find(name);
-        if (found != it->end()) return &found->second;
-    }
-    return nullptr;
+    Value* slot = find_slot(name);
+    if (slot != nullptr && std::holds_alternative<Deferred>(*slot)) evaluate_deferred(*slot);
+    return slot;
 }
 
 Value* Parser::lookup_mutable(const std::string& name) {
+    before_rebinding(name);
+    Value* slot = find_slot(name);
+    if (slot != nullptr && std::holds_alternative<Deferred>(*slot)) evaluate_deferred(*slot);
+    return slot;
+}
+
+Value* Parser::find_slot(const std::string& name) {
     for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
         const auto found = it->find(name);
         if (found != it->end()) return &found->second;
@@ -134,6 +138,7 @@ Value* Parser::lookup_mutable(const std::string& name) {
 }
 
 void Parser::declare(const std::string& name, Value v, bool local) {
+    before_rebinding(name);
     // POV-Ray compat: #local binds in the innermost scope (include file or macro); #declare rebinds the innermost
     // existing name, a macro's local included, and creates a global only when the name is new.
     if (!local) {
@@ -170,14 +175,23 @@ void Parser::handle_end_of_file() {
     if (frame.kind == Frame::Kind::Macro) {
         report(make_diagnostic(Severity::Error, eof, "end of file inside macro '" + frame.name + "'"));
     }
+    before_scope_ends(m_scopes.back());
     m_scopes.pop_back();
     m_frames.pop_back();
+    // Pay for what is used: once a library file without macros has been read, nothing reads its tokens again
+    // (deferred declarations lex their stretch anew), so their memory goes to the files read next.
+    SourceFile& finished = *m_files[m_file];
+    bool still_open = frame.return_file == m_file;
+    for (const Frame& f : m_frames) still_open = still_open || f.return_file == m_file;
+    if (frame.kind == Frame::Kind::Include && finished.library && !finished.has_macros && !still_open)
+        std::vector<Token>().swap(finished.tokens);
     m_file = frame.return_file;
     m_pos = frame.return_pos;
 }
 
 void Parser::return_from_macro() {
     const Frame frame = m_frames.back();
+    before_scope_ends(m_scopes.back());
     m_frames.pop_back();
     m_scopes.pop_back();
     m_file = frame.return_file;
@@ -215,6 +229,8 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
         fail(name_tok, "macro '" + name_tok.text + "' takes " + std::to_string(macro.params.size()) +
                            " parameter(s) but " + std::to_string(args.size()) + " were given");
     std::unordered_map<std::string, Value> scope;
+    // The parameters shadow outer names from here on.
+    for (const std::string& param : macro.params) before_rebinding(param);
     for (std::size_t i = 0; i < macro.params.size(); ++i) {
         if (i < args.size() && args[i]) {
             scope[macro.params[i]] = std::move(*args[i]);
@@ -265,29 +281,50 @@ bool Parser::count_loop_iteration(const Token& where) {
     throw FatalError{};
 }
 
-std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path, std::string& error) {
-    const std::string key = path.lexically_normal().string();
-    if (const auto it = m_file_index.find(key); it != m_file_index.end()) return it->second;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (f == nullptr) {
         error = std::strerror(errno);
-        return std::nullopt;
+        return false;
     }
-    std::ostringstream ss;
-    ss << in.rdbuf();
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    text.clear();
+    if (!ec) text.reserve(static_cast<std::size_t>(size));
+    char buffer[1 << 16];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, f)) text.append(buffer, n);
+    const bool failed = std::ferror(f) != 0;
+    std::fclose(f);
+    if (failed) error = std::strerror(EIO);
+    return !failed;
+}
+
+std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path, bool library, std::string& error) {
+    const std::string key = path.lexically_normal().string();
+    if (const auto it = m_file_index.find(key); it != m_file_index.end()) {
+        if (m_files[it->second]->tokens.empty()) lex_file(it->second, false);  // released after its first reading
+        return it->second;
+    }
     auto file = std::make_unique<SourceFile>();
+    if (!read_text_file(path, file->text, error)) return std::nullopt;
     file->path = key;
-    file->text = ss.str();
+    file->library = library;
     const auto index = static_cast<std::uint32_t>(m_files.size());
-    std::vector<Diagnostic> lex_errors;
-    file->tokens = lex(file->text, index, file->path, lex_errors);
     m_files.push_back(std::move(file));
     m_file_index[key] = index;
+    lex_file(index, true);
+    return index;
+}
+
+void Parser::lex_file(std::uint32_t index, bool first) {
+    SourceFile& file = *m_files[index];
+    std::vector<Diagnostic> lex_errors;
+    file.tokens = lex(file.text, index, file.path, lex_errors);
+    if (!first) return;  // its errors were reported the first time
     for (auto& d : lex_errors) {
-        m_files.back()->truncated = m_files.back()->truncated || d.message == "unterminated string";
+        file.truncated = file.truncated || d.message == "unterminated string";
         report(std::move(d));
     }
-    return index;
 }
 
 }  // namespace wardray::parser

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -117,9 +118,29 @@ struct FileHandle {
     std::shared_ptr<OpenFile> file;
 };
 
+/// A large item held in a Value: shared and immutable, so copying a Value is cheap and a declared identifier
+/// costs a few dozen bytes plus its item (a texture is nearly 2 KB; include files declare hundreds).
+template <typename T>
+class Boxed {
+public:
+    Boxed(T item) : m_item(std::make_shared<const T>(std::move(item))) {}  // NOLINT: converts like the item
+    const T& operator*() const { return *m_item; }
+    const T* operator->() const { return m_item.get(); }
+
+private:
+    std::shared_ptr<const T> m_item;
+};
+
+/// A library declaration not evaluated yet: an index into the parser's deferred declarations. Only the symbol
+/// tables hold it; looking the identifier up evaluates it first.
+struct Deferred {
+    std::uint32_t index = 0;
+};
+
 /// Anything an identifier can hold.
-using Value = std::variant<Numeric, std::string, Pigment, Finish, Texture, ObjectValue, Transform, CameraSpec,
-                           Unsupported, std::shared_ptr<ArrayValue>, std::shared_ptr<const UserFunction>, FileHandle>;
+using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
+                           Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
+                           std::shared_ptr<const UserFunction>, FileHandle, Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

@@ -1,38 +1,13 @@
 // Tests of the directive layer: #declare/#local scopes, #if, loops, #switch, #macro, #include, #version.
-#include <filesystem>
-#include <fstream>
-
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {
 namespace {
 
 using test::parse_ok;
+using test::TempDir;
 
 double radius(const Scene& s, std::size_t i) { return std::get<Sphere>(s.objects.at(i).shape).radius; }
-
-// A fresh folder for include files, removed at the end of the test.
-class TempDir {
-public:
-    TempDir() {
-        m_path = std::filesystem::temp_directory_path() /
-                 ("wardray_parser_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        std::filesystem::remove_all(m_path);
-        std::filesystem::create_directories(m_path);
-    }
-    ~TempDir() { std::filesystem::remove_all(m_path); }
-    std::filesystem::path write(const std::string& name, const std::string& text) const {
-        const auto p = m_path / name;
-        std::filesystem::create_directories(p.parent_path());
-        std::ofstream(p) << text;
-        return p;
-    }
-    const std::filesystem::path& path() const { return m_path; }
-
-private:
-    std::filesystem::path m_path;
-};
 
 TEST(Directives, DeclareAndIf) {
     const Scene s = parse_ok(R"(

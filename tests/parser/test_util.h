@@ -1,6 +1,8 @@
 // Helpers shared by the parser tests: parse a snippet and read its diagnostics.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -41,5 +43,28 @@ inline ParseResult parse_fail(const std::string& text, ParseOptions options = de
     EXPECT_FALSE(r.ok());
     return r;
 }
+
+// A fresh folder for include files, removed at the end of the test.
+class TempDir {
+public:
+    TempDir() {
+        m_path = std::filesystem::temp_directory_path() /
+                 ("wardray_parser_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(m_path);
+        std::filesystem::create_directories(m_path);
+    }
+    ~TempDir() { std::filesystem::remove_all(m_path); }
+    std::filesystem::path write(const std::string& name, const std::string& text) const {
+        const auto p = m_path / name;
+        std::filesystem::create_directories(p.parent_path());
+        std::ofstream(p) << text;
+        return p;
+    }
+    const std::filesystem::path& path() const { return m_path; }
+
+private:
+    std::filesystem::path m_path;
+};
 
 }  // namespace wardray::parser::test
