@@ -49,7 +49,7 @@ bool Parser::try_defer_declaration(const Token& id, bool local) {
     const std::vector<Token>& tokens = file.tokens;
     const std::size_t begin = m_pos;
     if (tokens[begin].kind != TokenKind::Identifier || !deferrable_item(tokens[begin].text)) return false;
-    std::vector<const std::string*> reads;
+    std::vector<std::string_view> reads;
     // Scans `keyword { ... }` from `i`, leaving `i` just past the closing brace; false when the value cannot wait.
     auto scan_block = [&](std::size_t& i) {
         ++i;
@@ -69,7 +69,7 @@ bool Parser::try_defer_declaration(const Token& id, bool local) {
                     return false;
                 if (const Value* v = find_slot(t.text)) {
                     if (!readable_when_deferred(*v)) return false;
-                    reads.push_back(&t.text);
+                    reads.push_back(t.text);
                 } else if (!is_keyword(t.text)) {
                     return false;  // undeclared: reading it now reports the mistake where it stands
                 }
@@ -92,15 +92,17 @@ bool Parser::try_defer_declaration(const Token& id, bool local) {
     d.name = id.text;
     d.where = id;
     d.file = m_file;
-    d.start = LexStart{tokens[begin].offset, tokens[begin].line, tokens[begin].column};
-    d.end = after.offset;
+    // Both ends are tokens viewing the file's own text: the keyword and the last closing brace.
+    d.start = LexStart{static_cast<std::size_t>(tokens[begin].text.data() - file.text.data()), tokens[begin].line,
+                       tokens[begin].column};
+    d.end = static_cast<std::size_t>(tokens[end - 1].text.end() - file.text.data());
     d.version = m_version;
     const auto index = static_cast<std::uint32_t>(m_deferred.size());
     m_deferred.push_back(std::move(d));
     declare(id.text, Deferred{index}, local);
     m_deferred_warnings.erase(id.text);
-    for (const std::string* name : reads) {
-        std::vector<std::uint32_t>& readers = m_deferred_readers[*name];
+    for (const std::string_view name : reads) {
+        std::vector<std::uint32_t>& readers = m_deferred_readers[std::string(name)];
         if (readers.empty() || readers.back() != index) readers.push_back(index);
     }
     m_pos = end;
@@ -120,7 +122,7 @@ void Parser::evaluate_deferred(Value& slot) {
     stream->path = source.path;
     stream->library = true;
     std::vector<Diagnostic> lex_errors;  // reported when the file was first read
-    stream->tokens = lex(source.text, d.start, d.end, d.file, source.path, lex_errors);
+    stream->tokens = lex(source.text, d.start, d.end, d.file, source.path, lex_errors, stream->decoded);
     const auto stream_index = static_cast<std::uint32_t>(m_files.size());
     m_files.push_back(std::move(stream));
 

@@ -354,7 +354,7 @@ Numeric Parser::parse_primary() {
     const Token t = peek();
     if (t.kind == TokenKind::Number) {
         next();
-        return Numeric::scalar(t.number);
+        return Numeric::scalar(t.number());
     }
     if (is_punct(t, "(")) {
         next();

@@ -13,6 +13,8 @@ namespace wardray::parser {
 struct OpenFile {
     std::string path;
     bool writing = false;
+    std::string text;  ///< a reader's whole file, which its tokens view
+    DecodedStrings decoded;
     std::vector<Token> tokens;
     std::size_t pos = 0;
     std::ofstream out;
@@ -103,7 +105,8 @@ void Parser::directive_file_io(const Token& tok) {
             if (memory != m_memory_files.end()) {
                 std::vector<Diagnostic> errors;
                 file->path = file_name;
-                file->tokens = lex(memory->second, 0, file->path, errors);
+                file->text = memory->second;
+                file->tokens = lex(file->text, 0, file->path, errors, file->decoded);
                 declare(id.text, FileHandle{std::move(file)}, false);
                 return;
             }
@@ -123,13 +126,12 @@ void Parser::directive_file_io(const Token& tok) {
                 fail(name_tok, "reading '" + resolved(*found).string() +
                                    "' is not allowed: files are read only from the scene's folder, the include "
                                    "path and the folders given as read paths");
-            std::ifstream in(*found, std::ios::binary);
-            if (!in) fail(name_tok, "cannot open '" + found->string() + "' for reading");
-            std::ostringstream ss;
-            ss << in.rdbuf();
+            std::string reason;
+            if (!read_text_file(*found, file->text, reason))
+                fail(name_tok, "cannot open '" + found->string() + "' for reading: " + reason);
             std::vector<Diagnostic> errors;
             file->path = found->string();
-            file->tokens = lex(ss.str(), 0, file->path, errors);
+            file->tokens = lex(file->text, 0, file->path, errors, file->decoded);
             for (const Diagnostic& e : errors)
                 if (e.severity == Severity::Error)
                     fail(name_tok, "'" + file->path + "' is not a valid data file: " + e.message);
@@ -262,7 +264,7 @@ void Parser::directive_file_io(const Token& tok) {
             if (at().kind != TokenKind::Number)
                 fail(target, "'" + file->path + "' line " + std::to_string(at().line) +
                                  ": expected a number, a vector or a string but found " + describe_token(at()));
-            return sign * toks[file->pos++].number;
+            return sign * toks[file->pos++].number();
         };
         Value value;
         if (at().kind == TokenKind::String) {

@@ -193,7 +193,7 @@ private:
         const Token t = m_p.peek();
         if (t.kind == TokenKind::Number) {
             m_p.next();
-            constant(t.number);
+            constant(t.number());
             return;
         }
         if (m_p.is_punct(t, "(")) {

@@ -87,13 +87,23 @@ std::string source_line(std::string_view text, std::uint32_t line) {
     return std::string(text.substr(start, end - start));
 }
 
+double Token::number() const {
+    const char* it = text.begin();
+    double value = 0.0;
+    if (x3::parse(it, text.end(), pov_real, value)) return value;
+    // X3 fails on an exponent beyond double's range (1e-999) yet the lexer takes it whole: strtod's reading
+    // underflows to 0 (an overflow is a lexical error).
+    value = std::strtod(std::string(text.view()).c_str(), nullptr);
+    return std::isfinite(value) ? value : 0.0;
+}
+
 std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::string& path,
-                       std::vector<Diagnostic>& errors) {
-    return lex(text, LexStart{}, text.size(), file, path, errors);
+                       std::vector<Diagnostic>& errors, DecodedStrings& decoded) {
+    return lex(text, LexStart{}, text.size(), file, path, errors, decoded);
 }
 
 std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_offset, std::uint32_t file,
-                       const std::string& path, std::vector<Diagnostic>& errors) {
+                       const std::string& path, std::vector<Diagnostic>& errors, DecodedStrings& decoded) {
     // The scan sees the text up to `end_offset` only; diagnostics quote lines of the whole text.
     const std::string_view text = whole.substr(0, std::min(end_offset, whole.size()));
     std::vector<Token> tokens;
@@ -148,7 +158,6 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
         tok.file = file;
         tok.line = cur.line();
         tok.column = cur.column();
-        tok.offset = static_cast<std::uint32_t>(cur.pos());
         const char* const begin = text.data() + cur.pos();
         const char* const end = text.data() + text.size();
         const char* it = begin;
@@ -156,20 +165,19 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
         if (c == '"') {
             // String literal with backslash escapes; it may not run past the end of the file.
             ++it;
-            std::string value;
+            const char* const contents = it;
+            bool escapes = false;
             bool closed = false;
             while (it != end) {
                 if (*it == '"') {
                     closed = true;
-                    ++it;
                     break;
                 }
                 if (*it == '\\' && it + 1 != end) {
-                    value += decode_escape(it[1]);
-                    it += 2;
-                    continue;
+                    escapes = true;
+                    ++it;
                 }
-                value += *it++;
+                ++it;
             }
             if (!closed) {
                 error_at(tok.line, tok.column, 1, "unterminated string");
@@ -177,15 +185,22 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
                 break;
             }
             tok.kind = TokenKind::String;
-            tok.text = std::move(value);
+            tok.text = std::string_view(contents, static_cast<std::size_t>(it - contents));
+            if (escapes) {
+                // Only a literal with escapes needs text of its own.
+                std::string& value = decoded.emplace_back();
+                for (const char* p = contents; p != it; ++p) value += (*p == '\\') ? decode_escape(*++p) : *p;
+                tok.text = std::string_view(value);
+            }
+            ++it;  // the closing quote
         } else if (c == '#') {
             // A directive: '#' then optional blanks then its name.
             ++it;
             while (it != end && (*it == ' ' || *it == '\t')) ++it;
-            std::string name;
-            if (x3::parse(it, end, identifier_rule, name)) {
+            const char* const name = it;
+            if (x3::parse(it, end, identifier_rule)) {
                 tok.kind = TokenKind::Directive;
-                tok.text = std::move(name);
+                tok.text = std::string_view(name, static_cast<std::size_t>(it - name));
             } else {
                 // POV-Ray compat: a stray '#' (language/image_size.pov has one before '}') is skipped with a warning.
                 Diagnostic d;
@@ -198,36 +213,28 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
                 continue;
             }
         } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
-            std::string name;
-            x3::parse(it, end, identifier_rule, name);
+            x3::parse(it, end, identifier_rule);
             tok.kind = TokenKind::Identifier;
-            tok.text = std::move(name);
+            tok.text = std::string_view(begin, static_cast<std::size_t>(it - begin));
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                    (c == '.' && std::isdigit(static_cast<unsigned char>(cur.peek(1))))) {
             double value = 0.0;
             const bool parsed = x3::parse(it, end, pov_real, value);
             tok.kind = TokenKind::Number;
-            tok.text.assign(begin, it);
-            // X3 fails on an exponent beyond double's range (1e999, 1e-999) yet consumes it: take strtod's
-            // reading, which underflows to 0 and overflows to infinity.
-            if (!parsed) value = std::strtod(tok.text.c_str(), nullptr);
-            if (!std::isfinite(value))
+            tok.text = std::string_view(begin, static_cast<std::size_t>(it - begin));
+            // X3 fails on an exponent beyond double's range (1e999, 1e-999) yet consumes it: strtod's reading
+            // underflows to 0 and overflows to infinity, which is an error.
+            if (!parsed && !std::isfinite(std::strtod(std::string(tok.text.view()).c_str(), nullptr)))
                 error_at(tok.line, tok.column, static_cast<std::uint32_t>(tok.text.size()),
                          "number '" + tok.text + "' is too large for a double");
-            tok.number = std::isfinite(value) ? value : 0.0;
         } else {
-            std::string punct;
-            if (!x3::parse(it, end, two_char_punct, punct)) {
-                char one = 0;
-                if (!x3::parse(it, end, one_char_punct, one)) {
-                    error_at(tok.line, tok.column, 1, std::string("unexpected character '") + c + "'");
-                    cur.advance(1);
-                    continue;
-                }
-                punct = std::string(1, one);
+            if (!x3::parse(it, end, two_char_punct) && !x3::parse(it, end, one_char_punct)) {
+                error_at(tok.line, tok.column, 1, std::string("unexpected character '") + c + "'");
+                cur.advance(1);
+                continue;
             }
             tok.kind = TokenKind::Punct;
-            tok.text = std::move(punct);
+            tok.text = std::string_view(begin, static_cast<std::size_t>(it - begin));
         }
         const auto consumed = static_cast<std::size_t>(it - begin);
         tok.length = static_cast<std::uint32_t>(consumed > 0 ? consumed : 1);
@@ -247,7 +254,7 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
     eof.file = file;
     eof.line = cur.line();
     eof.column = cur.column();
-    eof.offset = static_cast<std::uint32_t>(cur.pos());
+    eof.text = std::string_view(text.data() + cur.pos(), 0);
     tokens.push_back(std::move(eof));
     return tokens;
 }

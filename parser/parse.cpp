@@ -181,7 +181,7 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         file->path = path;
         file->text = std::move(text);
         std::vector<Diagnostic> lex_errors;
-        file->tokens = lex(file->text, 0, path, lex_errors);
+        file->tokens = lex(file->text, 0, path, lex_errors, file->decoded);
         m_files.push_back(std::move(file));
         for (auto& d : lex_errors) {
             m_files.back()->truncated = m_files.back()->truncated || d.message == "unterminated string";

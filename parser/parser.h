@@ -25,6 +25,7 @@ struct SourceFile {
     std::string path;  ///< as shown in diagnostics
     std::string text;
     std::vector<Token> tokens;
+    DecodedStrings decoded;  ///< string literals with escapes, which tokens view
     bool truncated = false;  ///< the lexer gave up early (unterminated string): errors at its end are noise
     bool library = false;    ///< found through the library paths: its declarations may be deferred
     bool has_macros = false; ///< defines a macro, whose body is read from `tokens` at every call

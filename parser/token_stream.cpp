@@ -319,7 +319,7 @@ std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path
 void Parser::lex_file(std::uint32_t index, bool first) {
     SourceFile& file = *m_files[index];
     std::vector<Diagnostic> lex_errors;
-    file.tokens = lex(file.text, index, file.path, lex_errors);
+    file.tokens = lex(file.text, index, file.path, lex_errors, file.decoded);
     if (!first) return;  // its errors were reported the first time
     for (auto& d : lex_errors) {
         file.truncated = file.truncated || d.message == "unterminated string";

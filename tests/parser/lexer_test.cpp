@@ -6,9 +6,11 @@
 namespace wardray::parser {
 namespace {
 
-std::vector<Token> lex_ok(const std::string& text) {
+// Tokens view their text: `text` is a literal, and decoded strings are kept for the whole run.
+std::vector<Token> lex_ok(std::string_view text) {
+    static DecodedStrings decoded;
     std::vector<Diagnostic> errors;
-    auto tokens = lex(text, 0, "t.pov", errors);
+    auto tokens = lex(text, 0, "t.pov", errors, decoded);
     EXPECT_TRUE(errors.empty()) << (errors.empty() ? "" : format_diagnostic(errors.front()));
     return tokens;
 }
@@ -20,10 +22,10 @@ TEST(Lexer, KindsAndText) {
     EXPECT_EQ(t[0].text, "sphere");
     EXPECT_EQ(t[1].kind, TokenKind::Punct);
     EXPECT_EQ(t[3].kind, TokenKind::Number);
-    EXPECT_DOUBLE_EQ(t[3].number, 1.0);
-    EXPECT_DOUBLE_EQ(t[5].number, 2.5);
-    EXPECT_DOUBLE_EQ(t[7].number, 0.5);
-    EXPECT_DOUBLE_EQ(t[10].number, 100.0);
+    EXPECT_DOUBLE_EQ(t[3].number(), 1.0);
+    EXPECT_DOUBLE_EQ(t[5].number(), 2.5);
+    EXPECT_DOUBLE_EQ(t[7].number(), 0.5);
+    EXPECT_DOUBLE_EQ(t[10].number(), 100.0);
     EXPECT_EQ(t[12].kind, TokenKind::Directive);
     EXPECT_EQ(t[12].text, "declare");
     EXPECT_EQ(t[13].kind, TokenKind::String);
@@ -36,10 +38,10 @@ TEST(Lexer, KindsAndText) {
 
 TEST(Lexer, NumbersLikePovRay) {
     const auto t = lex_ok("2. 3e-2 1.5E+1 007 nan");
-    EXPECT_DOUBLE_EQ(t[0].number, 2.0);
-    EXPECT_DOUBLE_EQ(t[1].number, 0.03);
-    EXPECT_DOUBLE_EQ(t[2].number, 15.0);
-    EXPECT_DOUBLE_EQ(t[3].number, 7.0);
+    EXPECT_DOUBLE_EQ(t[0].number(), 2.0);
+    EXPECT_DOUBLE_EQ(t[1].number(), 0.03);
+    EXPECT_DOUBLE_EQ(t[2].number(), 15.0);
+    EXPECT_DOUBLE_EQ(t[3].number(), 7.0);
     EXPECT_EQ(t[4].kind, TokenKind::Identifier);  // never a floating-point NaN literal
 }
 
@@ -77,7 +79,8 @@ TEST(Lexer, LocationsCountFromOne) {
 
 TEST(Lexer, UnterminatedCommentIsAnErrorAtItsStart) {
     std::vector<Diagnostic> errors;
-    const auto t = lex("a\n  /* open /* nested */ never closed", 0, "t.pov", errors);
+    DecodedStrings decoded;
+    const auto t = lex("a\n  /* open /* nested */ never closed", 0, "t.pov", errors, decoded);
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_EQ(errors[0].message, "unterminated comment");
     EXPECT_EQ(errors[0].loc.line, 2u);
@@ -87,7 +90,8 @@ TEST(Lexer, UnterminatedCommentIsAnErrorAtItsStart) {
 
 TEST(Lexer, UnterminatedStringIsAnErrorAtItsStart) {
     std::vector<Diagnostic> errors;
-    lex("#include \"colors.inc", 0, "t.pov", errors);
+    DecodedStrings decoded;
+    lex("#include \"colors.inc", 0, "t.pov", errors, decoded);
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_EQ(errors[0].message, "unterminated string");
     EXPECT_EQ(errors[0].loc.column, 10u);
@@ -95,7 +99,8 @@ TEST(Lexer, UnterminatedStringIsAnErrorAtItsStart) {
 
 TEST(Lexer, StrayCharacterIsAnError) {
     std::vector<Diagnostic> errors;
-    const auto t = lex("a \x01 b", 0, "t.pov", errors);
+    DecodedStrings decoded;
+    const auto t = lex("a \x01 b", 0, "t.pov", errors, decoded);
     EXPECT_EQ(errors.size(), 1u);
     EXPECT_EQ(t.size(), 3u);
 }
