@@ -43,7 +43,6 @@ Color Parser::parse_color() {
             const bool srgb = w[0] == 's';
             const std::string form = srgb ? w.substr(1) : w;
             const int terms = form == "rgb" ? 3 : (form == "rgbft" ? 5 : 4);
-            const Token at = peek();
             // POV-Ray compat: components beyond the keyword's count (a colour identifier after rgb) are ignored.
             const Numeric e = parse_numeric();
             // POV-Ray compat: `rgb 0.5` promotes the float to r, g and b only.
@@ -287,7 +286,7 @@ void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close
 
 void Parser::parse_reflection_block(Finish& f) {
     // reflection { [min,] max [fresnel] [falloff F] [exponent E] [metallic M] }
-    const Token kw = expect("{");
+    expect("{");
     f.reflection_min = parse_color();
     f.reflection_max = f.reflection_min;
     accept(",");

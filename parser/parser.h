@@ -127,6 +127,9 @@ private:
     /// (consumed) or an EndOfFile token when the file ended first.
     Token skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener);
     void handle_end_of_file();
+    /// Copies the bodies of the macros file `index` defines into a stream of their own, so the file's tokens can
+    /// be released.
+    void keep_macro_bodies(std::uint32_t index);
     /// Lexes a file's text into its tokens; the first time, its lexical errors are reported.
     void lex_file(std::uint32_t index, bool first);
     /// Reads and lexes a file once (a second #include of it reuses the tokens); `library` marks a file found

@@ -178,13 +178,15 @@ void Parser::handle_end_of_file() {
     before_scope_ends(m_scopes.back());
     m_scopes.pop_back();
     m_frames.pop_back();
-    // Pay for what is used: once a library file without macros has been read, nothing reads its tokens again
-    // (deferred declarations lex their stretch anew), so their memory goes to the files read next.
+    // Pay for what is used: once a library file has been read, only its macros' bodies are read again (deferred
+    // declarations lex their stretch anew), so the rest of its tokens' memory goes to the files read next.
     SourceFile& finished = *m_files[m_file];
     bool still_open = frame.return_file == m_file;
     for (const Frame& f : m_frames) still_open = still_open || f.return_file == m_file;
-    if (frame.kind == Frame::Kind::Include && finished.library && !finished.has_macros && !still_open)
+    if (frame.kind == Frame::Kind::Include && finished.library && !still_open) {
+        if (finished.has_macros) keep_macro_bodies(m_file);
         std::vector<Token>().swap(finished.tokens);
+    }
     m_file = frame.return_file;
     m_pos = frame.return_pos;
 }
@@ -314,6 +316,27 @@ std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path
     m_file_index[key] = index;
     lex_file(index, true);
     return index;
+}
+
+void Parser::keep_macro_bodies(std::uint32_t index) {
+    const SourceFile& file = *m_files[index];
+    auto bodies = std::make_unique<SourceFile>();
+    bodies->path = file.path;
+    bodies->library = file.library;
+    bodies->has_macros = true;
+    const auto bodies_index = static_cast<std::uint32_t>(m_files.size());
+    for (auto& [name, macro] : m_macros) {
+        if (macro.file != index) continue;
+        // The body and its closing #end; the tokens keep their file, lines and columns for diagnostics.
+        const std::size_t start = bodies->tokens.size();
+        bodies->tokens.insert(bodies->tokens.end(), file.tokens.begin() + static_cast<std::ptrdiff_t>(macro.body),
+                              file.tokens.begin() + static_cast<std::ptrdiff_t>(macro.end) + 1);
+        macro.file = bodies_index;
+        macro.end = start + (macro.end - macro.body);
+        macro.body = start;
+    }
+    bodies->tokens.push_back(file.tokens.back());  // the file's EndOfFile
+    m_files.push_back(std::move(bodies));
 }
 
 void Parser::lex_file(std::uint32_t index, bool first) {

@@ -106,6 +106,21 @@ TEST(DeferredDeclarations, LibraryFileIncludedTwice) {
     EXPECT_EQ(color_of(*r.scene, 0).r, 0.5);
 }
 
+TEST(DeferredDeclarations, MacrosOfAFinishedLibraryFile) {
+    // A finished library file keeps only its macros' bodies; calls still read them, and report into the file.
+    TempDir dir;
+    dir.write("lib/m.inc", "#declare Before = 1;\n#macro Twice(X) (2 * X) #end\n#declare Between = 2;\n"
+                           "#macro Broken() (1 + ) #end\n");
+    ParseResult r = parse_with_library(dir, "#include \"m.inc\"\nsphere { 0, Twice(Twice(Between)) }\n", true);
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 8.0);
+    r = parse_with_library(dir, "#include \"m.inc\"\nsphere { 0, Broken() }\n", true);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics[0].loc.path, (dir.path() / "lib/m.inc").string());
+    EXPECT_EQ(r.diagnostics[0].loc.line, 4u);
+    EXPECT_EQ(r.diagnostics[0].loc.column, 22u);
+}
+
 TEST(DeferredDeclarations, SceneFilesAreReadInPlace) {
     // Only library files defer: a mistake in the scene's own declaration is reported even when unused.
     TempDir dir;

@@ -18,15 +18,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: parse_bench FILE [RUNS]\n");
         return 2;
     }
-    if (std::getenv("PARSE_BENCH_MALLOPT")) {
-        mallopt(M_MMAP_THRESHOLD, 256 << 20);
-        mallopt(M_TRIM_THRESHOLD, 512 << 20);
-    }
+    // As the wardray command does (render/main.cpp): freed blocks stay in the heap for reuse.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 64 << 20);
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 50;
     wardray::parser::ParseOptions options;
     options.library_paths.push_back("/usr/share/povray-3.7/include");
     std::vector<double> seconds;
-    if (const char* warm = std::getenv("PARSE_BENCH_WARMUP")) (void)wardray::parser::parse_file(warm, options);
     long first_faults = 0;
     double first_cpu = 0.0;
     auto cpu_seconds = [] {
