@@ -8,6 +8,30 @@ namespace wardray::parser {
 
 namespace {
 
+// The rest of POV-Ray 3.7's reserved words (its documentation's list): directive names, file formats, spline
+// and wave types, and items parsed where they stand. Reserved, so never declared and never taken for a name.
+const std::vector<std::string_view> k_reserved = {
+    "aa_level", "aa_threshold", "absorption", "accuracy", "agate_turb", "all", "all_intersections", "alpha",
+    "altitude", "append", "arc_angle", "asc", "ascii", "autostop", "b_spline", "bezier_spline",
+    "black_hole", "bokeh", "break", "brick_size", "bump_size", "case", "caustics", "collect", "component",
+    "composite", "conic_sweep", "contained_by", "control0", "control1", "coords", "cube", "cubic_spline",
+    "cubic_wave", "debug", "df3", "dispersion", "dispersion_samples", "dist_exp", "distance", "eccentricity", "else",
+    "elseif", "end", "error", "evaluate", "expand_thresholds", "exterior", "extinction", "face_indices",
+    "fade_color", "fade_colour", "falloff_angle", "fclose", "flatness", "flip", "fog_alt", "fog_offset", "fog_type",
+    "fopen", "for", "form", "gamma", "gather", "gif", "global_lights", "gray", "hierarchy", "hypercomplex", "if",
+    "ifdef", "iff", "ifndef", "include", "input_file_name", "inside_vector", "internal", "interpolate", "intervals",
+    "ior", "jpeg", "linear_spline", "linear_sweep", "local", "macro", "major_radius", "map_type", "max_gradient",
+    "max_iteration", "max_trace", "method", "metric", "mortar", "natural_spline", "no_bump_scale", "normal_indices",
+    "normal_vectors", "offset", "once", "orientation", "pass_through", "pattern", "pgm", "png", "poly_wave", "pot",
+    "ppm", "precision", "precompute", "premultiplied", "pwr", "quadratic_spline", "quaternion", "ramp_wave", "range",
+    "ratio", "read", "reciprocal", "refraction", "render", "repeat", "samples", "scallop_wave", "scattering",
+    "sine_wave", "sint16be", "sint16le", "sint32be", "sint32le", "sint8", "size", "slice", "smooth", "solid",
+    "spacing", "sqr", "statistics", "strength", "switch", "sys", "target", "texture_list", "tga", "thickness",
+    "threshold", "tiff", "tile2", "tolerance", "toroidal", "translucency", "triangle_wave", "ttf", "turb_depth",
+    "type", "u_steps", "uint16be", "uint16le", "uint8", "undef", "use_alpha", "use_color", "use_colour", "use_index",
+    "utf8", "uv_indices", "uv_vectors", "v_steps", "vertex_vectors", "warning", "water_level", "while", "width",
+    "write"};
+
 const std::vector<std::string_view> k_unsupported_objects = {
     "cylinder", "cone", "torus", "disc", "mesh", "mesh2", "blob", "lathe", "sor", "prism", "text",
     "height_field", "isosurface", "parametric", "julia_fractal", "superellipsoid", "sphere_sweep",
@@ -64,7 +88,7 @@ std::unordered_set<std::string_view> make_set(std::initializer_list<const std::v
 
 const std::vector<std::string_view>& all_keywords() {
     static const std::vector<std::string_view> all = [] {
-        auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled});
+        auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
         std::vector<std::string_view> v(s.begin(), s.end());
         std::sort(v.begin(), v.end());
         return v;
@@ -73,7 +97,7 @@ const std::vector<std::string_view>& all_keywords() {
 }
 
 bool is_keyword(std::string_view word) {
-    static const auto set = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled});
+    static const auto set = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
     return set.count(word) > 0;
 }
 
