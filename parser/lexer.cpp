@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -14,16 +15,16 @@ namespace x3 = boost::spirit::x3;
 
 namespace {
 
-// Unsigned reals as POV-Ray writes them ("1", "1.5", ".5", "2.", "1e-3"), never "nan" or "inf".
-struct PovRealPolicies : x3::ureal_policies<double> {
-    template <typename It, typename Attr>
-    static bool parse_nan(It&, It const&, Attr&) { return false; }
-    template <typename It, typename Attr>
-    static bool parse_inf(It&, It const&, Attr&) { return false; }
-};
+// Unsigned reals as POV-Ray writes them ("1", "1.5", ".5", "2.", "1e-3"), never "nan" or "inf". The lexer only
+// finds where a number ends; Token::number() reads its value when the parser asks.
+const auto digits = +x3::char_('0', '9');
+const auto number_rule = (digits >> -('.' >> *x3::char_('0', '9')) | '.' >> digits) >>
+                         -(x3::char_("eE") >> -x3::char_("+-") >> digits);
+// ASCII letters, digits and '_', as POV-Ray reads identifiers (character sets are table lookups).
+const auto identifier_rule = x3::char_("a-zA-Z_") >> *x3::char_("a-zA-Z0-9_");
 
-const x3::real_parser<double, PovRealPolicies> pov_real{};
-const auto identifier_rule = x3::raw[(x3::alpha | x3::char_('_')) >> *(x3::alnum | x3::char_('_'))];
+bool starts_identifier(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
 const auto two_char_punct = x3::string("<=") | x3::string(">=") | x3::string("!=");
 // Single-character punctuation; '-' comes last so the character set does not read it as a range.
 const auto one_char_punct = x3::char_("{}()[]<>,;+*/=!&|?:.%^@$'`~\\-");
@@ -88,11 +89,9 @@ std::string source_line(std::string_view text, std::uint32_t line) {
 }
 
 double Token::number() const {
-    const char* it = text.begin();
     double value = 0.0;
-    if (x3::parse(it, text.end(), pov_real, value)) return value;
-    // X3 fails on an exponent beyond double's range (1e-999) yet the lexer takes it whole: strtod's reading
-    // underflows to 0 (an overflow is a lexical error).
+    if (std::from_chars(text.begin(), text.end(), value).ec == std::errc{}) return value;
+    // Out of double's range: strtod's reading underflows to 0 (an overflow is a lexical error).
     value = std::strtod(std::string(text.view()).c_str(), nullptr);
     return std::isfinite(value) ? value : 0.0;
 }
@@ -212,19 +211,19 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
                 cur.advance(1);
                 continue;
             }
-        } else if (std::isalpha(static_cast<unsigned char>(c)) || c == '_') {
+        } else if (starts_identifier(c)) {
             x3::parse(it, end, identifier_rule);
             tok.kind = TokenKind::Identifier;
             tok.text = std::string_view(begin, static_cast<std::size_t>(it - begin));
-        } else if (std::isdigit(static_cast<unsigned char>(c)) ||
-                   (c == '.' && std::isdigit(static_cast<unsigned char>(cur.peek(1))))) {
-            double value = 0.0;
-            const bool parsed = x3::parse(it, end, pov_real, value);
+        } else if (is_digit(c) || (c == '.' && is_digit(cur.peek(1)))) {
+            x3::parse(it, end, number_rule);
             tok.kind = TokenKind::Number;
             tok.text = std::string_view(begin, static_cast<std::size_t>(it - begin));
-            // X3 fails on an exponent beyond double's range (1e999, 1e-999) yet consumes it: strtod's reading
-            // underflows to 0 and overflows to infinity, which is an error.
-            if (!parsed && !std::isfinite(std::strtod(std::string(tok.text.view()).c_str(), nullptr)))
+            // Only an exponent or a few hundred digits reach beyond double's range; strtod's reading underflows
+            // to 0 and overflows to infinity, which is an error.
+            const bool may_overflow = tok.text.view().find_first_of("eE") != std::string_view::npos ||
+                                      tok.text.size() > 300;
+            if (may_overflow && !std::isfinite(std::strtod(std::string(tok.text.view()).c_str(), nullptr)))
                 error_at(tok.line, tok.column, static_cast<std::uint32_t>(tok.text.size()),
                          "number '" + tok.text + "' is too large for a double");
         } else {
