@@ -12,6 +12,8 @@ struct SourceLoc {
     std::string path;  ///< the file as the user or the #include named it
     std::uint32_t line = 0;
     std::uint32_t column = 0;
+
+    bool operator==(const SourceLoc&) const = default;
 };
 
 enum class Severity { Note, Warning, Error };

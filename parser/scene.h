@@ -22,6 +22,7 @@ struct Color {
     double transmit = 0.0;
 
     Vec3 rgb() const { return {r, g, b}; }
+    bool operator==(const Color&) const = default;
 };
 
 /// POV-Ray's wave types: how a pattern's value is shaped before the map lookup.
@@ -33,6 +34,7 @@ struct Turbulence {
     int octaves = 6;
     double omega = 0.5;
     double lambda = 2.0;
+    bool operator==(const Turbulence&) const = default;
 };
 
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
@@ -58,12 +60,14 @@ struct Pattern {
     bool crackle_solid = false;
     std::optional<Turbulence> turbulence;
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
+    bool operator==(const Pattern&) const = default;
 };
 
 /// One `[value colour]` entry of a colour map (values stored as POV-Ray's single-precision floats).
 struct ColorMapEntry {
     double value = 0.0;
     Color color;
+    bool operator==(const ColorMapEntry&) const = default;
 };
 
 struct PigmentMapEntry;
@@ -78,12 +82,14 @@ struct Pigment {
 
     /// True for a plain colour: no pattern to evaluate.
     bool is_solid() const { return pattern.type == Pattern::Type::None; }
+    bool operator==(const Pigment&) const = default;
 };
 
 /// One `[value pigment]` entry of a pigment map.
 struct PigmentMapEntry {
     double value = 0.0;
     Pigment pigment;
+    bool operator==(const PigmentMapEntry&) const = default;
 };
 
 struct NormalMapEntry;
@@ -95,12 +101,14 @@ struct Normal {
     double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
     std::vector<NormalMapEntry> normal_map;
     SourceLoc loc;
+    bool operator==(const Normal&) const = default;
 };
 
 /// One `[value normal]` entry of a normal map.
 struct NormalMapEntry {
     double value = 0.0;
     Normal normal;
+    bool operator==(const NormalMapEntry&) const = default;
 };
 
 /// Surface finish with POV-Ray 3.7's defaults.
@@ -125,6 +133,7 @@ struct Finish {
     double irid_thickness = 0.0;
     double irid_turbulence = 0.0;
     SourceLoc loc;
+    bool operator==(const Finish&) const = default;
 };
 
 /// The inside of an object: index of refraction and POV-Ray's fade of light passing through.
@@ -133,6 +142,7 @@ struct Interior {
     double fade_distance = 0.0;
     double fade_power = 0.0;
     Color fade_color;
+    bool operator==(const Interior&) const = default;
 };
 
 struct TextureMapEntry;
@@ -146,12 +156,14 @@ struct Texture {
     Pattern map_pattern;  ///< texture_map's pattern (None: a plain texture)
     std::vector<TextureMapEntry> texture_map;
     std::vector<Texture> layers;  ///< layers on top of this one, lowest first
+    bool operator==(const Texture&) const = default;
 };
 
 /// One `[value texture]` entry of a texture map.
 struct TextureMapEntry {
     double value = 0.0;
     Texture texture;
+    bool operator==(const TextureMapEntry&) const = default;
 };
 
 /// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
@@ -166,11 +178,13 @@ inline void transform_texture(Texture& t, const Transform& tr) {
 struct Sphere {
     Vec3 center;
     double radius = 1.0;
+    bool operator==(const Sphere&) const = default;
 };
 
 struct Box {
     Vec3 corner1;
     Vec3 corner2;
+    bool operator==(const Box&) const = default;
 };
 
 /// POV-Ray's `plane { normal, distance }`: the surface {p : dot(n̂, p) = distance} with n̂ the unit normal;
@@ -178,6 +192,7 @@ struct Box {
 struct Plane {
     Vec3 normal{0.0, 1.0, 0.0};
     double distance = 0.0;
+    bool operator==(const Plane&) const = default;
 };
 
 /// POV-Ray's `cylinder { base, cap, radius [open] }`.
@@ -186,6 +201,7 @@ struct Cylinder {
     Vec3 cap{0.0, 1.0, 0.0};
     double radius = 1.0;
     bool open = false;  ///< no end caps
+    bool operator==(const Cylinder&) const = default;
 };
 
 /// POV-Ray's `cone { base, base_radius, cap, cap_radius [open] }`.
@@ -195,6 +211,7 @@ struct Cone {
     Vec3 cap{0.0, 1.0, 0.0};
     double cap_radius = 0.0;
     bool open = false;
+    bool operator==(const Cone&) const = default;
 };
 
 /// POV-Ray's `disc { center, normal, radius [, hole_radius] }`.
@@ -203,12 +220,14 @@ struct Disc {
     Vec3 normal{0.0, 1.0, 0.0};
     double radius = 1.0;
     double hole_radius = 0.0;
+    bool operator==(const Disc&) const = default;
 };
 
 /// POV-Ray's `torus { major, minor }` around the y axis at the origin.
 struct Torus {
     double major = 1.0;
     double minor = 0.25;
+    bool operator==(const Torus&) const = default;
 };
 
 /// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
@@ -218,17 +237,20 @@ struct Mesh {
     struct Face {
         std::array<int, 3> v{};
         std::array<int, 3> n{-1, -1, -1};
+        bool operator==(const Face&) const = default;
     };
     Kind kind = Kind::Mesh;
     std::vector<Vec3> vertices;
     std::vector<Vec3> normals;
     std::vector<Face> faces;
     Vec3 inside_vector;  ///< zero when not given: the mesh has no inside
+    bool operator==(const Mesh&) const = default;
 };
 
 /// POV-Ray's `polygon { n, points }`: closed sub-polygons (each repeats its first point); later ones cut holes.
 struct Polygon {
     std::vector<Vec3> points;
+    bool operator==(const Polygon&) const = default;
 };
 
 /// POV-Ray's `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
@@ -238,18 +260,21 @@ struct Quadric {
     Vec3 mixed;
     Vec3 linear;
     double constant = 0.0;
+    bool operator==(const Quadric&) const = default;
 };
 
 /// POV-Ray's `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
 struct Superellipsoid {
     double e = 1.0;
     double n = 1.0;
+    bool operator==(const Superellipsoid&) const = default;
 };
 
 /// POV-Ray's `quartic { <a0, ..., a34> }`: the sum of a_i times the monomials x^i y^j z^k (i + j + k <= 4) in
 /// POV-Ray's order (x⁴, x³y, x³z, x³, x²y², ..., z, 1: descending powers of x, then y, then z); inside where negative.
 struct Quartic {
     std::array<double, 35> coefficients{};
+    bool operator==(const Quartic&) const = default;
 };
 
 /// POV-Ray's `prism { [spline type] [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }`: the 2-D
@@ -264,6 +289,7 @@ struct Prism {
     double height2 = 1.0;
     std::vector<Vec3> points;  ///< (u, v, 0)
     bool open = false;
+    bool operator==(const Prism&) const = default;
 };
 
 /// POV-Ray's `lathe { [linear_spline | quadratic_spline | cubic_spline | bezier_spline] n, <r, y>... }`: the
@@ -272,6 +298,7 @@ struct Lathe {
     enum class Spline { Linear, Quadratic, Cubic, Bezier };
     Spline spline = Spline::Linear;
     std::vector<Vec3> points;  ///< (r, y, 0)
+    bool operator==(const Lathe&) const = default;
 };
 
 /// POV-Ray's `sor { n, <r, y>... [open] }`: a surface of revolution whose squared radius is a cubic in y on each
@@ -280,6 +307,7 @@ struct Lathe {
 struct Sor {
     std::vector<Vec3> points;  ///< (r, y, 0)
     bool open = false;
+    bool operator==(const Sor&) const = default;
 };
 
 /// One glyph of a `text` object: the TrueType outline in em units (closed contours of quadratic B-spline points,
@@ -289,9 +317,11 @@ struct TextGlyph {
         double x = 0.0;
         double y = 0.0;
         bool on_curve = true;
+        bool operator==(const Point&) const = default;
     };
     std::vector<std::vector<Point>> contours;
     Vec3 offset;
+    bool operator==(const TextGlyph&) const = default;
 };
 
 /// POV-Ray's `text { ttf "font.ttf" "string" thickness, offset }`: the glyphs laid out by the parser as POV-Ray
@@ -299,6 +329,7 @@ struct TextGlyph {
 struct Text {
     std::vector<TextGlyph> glyphs;
     double thickness = 1.0;
+    bool operator==(const Text&) const = default;
 };
 
 struct Object;
@@ -308,6 +339,7 @@ struct Csg {
     enum class Op { Union, Intersection, Difference, Merge };
     Op op = Op::Union;
     std::vector<Object> children;
+    bool operator==(const Csg&) const = default;
 };
 
 /// The shapes the renderer draws.
@@ -328,6 +360,7 @@ struct Object {
     bool has_texture = false;  ///< the statement gave its own texture (else it takes its CSG parent's)
     std::vector<Object> clipped_by;  ///< clipping objects, placed relative to this object's transform
     SourceLoc loc;
+    bool operator==(const Object&) const = default;
 };
 
 /// The camera, resolved by the parser to POV-Ray's final vectors (after look_at, angle, sky and transforms).
@@ -339,6 +372,7 @@ struct Camera {
     Vec3 right{1.33, 0.0, 0.0};     ///< full width of the image plane
     Vec3 up{0.0, 1.0, 0.0};         ///< full height of the image plane
     SourceLoc loc;
+    bool operator==(const Camera&) const = default;
 };
 
 struct Light {
@@ -365,6 +399,7 @@ struct Light {
     bool circular = false;
     bool orient = false;
     SourceLoc loc;
+    bool operator==(const Light&) const = default;
 };
 
 /// The `radiosity { ... }` block of global_settings with POV-Ray 3.7's defaults.
@@ -388,6 +423,7 @@ struct RadiositySettings {
     bool normal = false;
     bool media = false;
     SourceLoc loc;
+    bool operator==(const RadiositySettings&) const = default;
 };
 
 struct GlobalSettings {
@@ -398,6 +434,7 @@ struct GlobalSettings {
     double adc_bailout = 1.0 / 255.0;
     int noise_generator = 2;  ///< POV-Ray 3.7's default: range-corrected noise
     std::optional<RadiositySettings> radiosity;
+    bool operator==(const GlobalSettings&) const = default;
 };
 
 /// `sky_sphere { pigment {...} ... }`: pigments looked up by ray direction, each later one layered over the
@@ -406,6 +443,7 @@ struct SkySphere {
     std::vector<Pigment> pigments;
     Transform transform;  ///< sky space to world (rotates the directions)
     Color emission{1.0, 1.0, 1.0};
+    bool operator==(const SkySphere&) const = default;
 };
 
 /// `fog { distance D color C }`: POV-Ray's constant fog (fog_type 1), exp(−depth/D) of the scene left.
@@ -413,6 +451,7 @@ struct Fog {
     double distance = 0.0;
     Color color;
     SourceLoc loc;
+    bool operator==(const Fog&) const = default;
 };
 
 /// Everything the renderer needs from a scene file.

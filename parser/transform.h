@@ -39,6 +39,7 @@ public:
     Vec3 inverse_vector(const Vec3& v) const;
 
     const Matrix34& matrix() const { return m_forward; }
+    bool operator==(const Transform&) const = default;
     const Matrix34& inverse_matrix() const { return m_inverse; }
 
 private:

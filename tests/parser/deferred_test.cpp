@@ -1,5 +1,8 @@
 // Tests of deferred library declarations: a library file's pigments, finishes and textures are read at their
 // first use, and must read exactly as they would have where they stand.
+#include <cstdio>
+#include <iterator>
+
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {
@@ -119,6 +122,40 @@ TEST(DeferredDeclarations, MacrosOfAFinishedLibraryFile) {
     EXPECT_EQ(r.diagnostics[0].loc.path, (dir.path() / "lib/m.inc").string());
     EXPECT_EQ(r.diagnostics[0].loc.line, 4u);
     EXPECT_EQ(r.diagnostics[0].loc.column, 22u);
+}
+
+// The example scenes that include the big texture libraries describe the same scene whether the libraries'
+// declarations are deferred or read in place.
+TEST(DeferredDeclarations, ExampleScenesDescribeTheSameScene) {
+    const std::filesystem::path root = "/usr/share/doc/povray/examples";
+    if (!std::filesystem::exists(root)) GTEST_SKIP() << "povray-examples is not installed";
+    std::size_t compared = 0;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+        if (entry.path().extension() != ".pov") continue;
+        std::ifstream in(entry.path());
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        bool uses_library = false;
+        for (const char* inc : {"textures.inc", "stones", "metals.inc", "woods.inc", "golds.inc", "glass.inc",
+                                "skies.inc"})
+            uses_library = uses_library || text.find(std::string("#include \"") + inc) != std::string::npos;
+        if (!uses_library) continue;
+        ParseOptions o = test::default_options();
+        o.defer_library_declarations = false;
+        const ParseResult in_place = parse_file(entry.path(), o);
+        if (!in_place.ok()) continue;  // scenes needing trace() or files this test does not provide
+        o.defer_library_declarations = true;
+        const ParseResult deferred = parse_file(entry.path(), o);
+        ASSERT_TRUE(deferred.ok()) << entry.path() << "\n" << test::all_diagnostics(deferred);
+        const Scene& a = *in_place.scene;
+        const Scene& b = *deferred.scene;
+        EXPECT_TRUE(a.objects == b.objects) << entry.path();
+        EXPECT_TRUE(a.lights == b.lights && a.camera == b.camera) << entry.path();
+        EXPECT_TRUE(a.global == b.global && a.background == b.background) << entry.path();
+        EXPECT_TRUE(a.sky_sphere == b.sky_sphere && a.fogs == b.fogs) << entry.path();
+        ++compared;
+    }
+    EXPECT_GE(compared, 30u);
+    std::printf("compared %zu example scenes\n", compared);
 }
 
 TEST(DeferredDeclarations, SceneFilesAreReadInPlace) {
