@@ -147,7 +147,7 @@ void Parser::parse_finish_item(Finish& f, const Token& item) {
     } else if (w == "conserve_energy") {
         f.conserve_energy = parse_bool_optional();
     } else if (w == "crand") {
-        warn(item, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
+        warn_once(item, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
         parse_float();
     } else if (w == "irid") {
         expect("{");
