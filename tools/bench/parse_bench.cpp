@@ -1,11 +1,13 @@
 // parse_bench: parses one scene file many times in one process and prints the fastest and median parse time,
 // so parser changes can be measured without process start-up in the figure.
-//   parse_bench FILE [RUNS]
+//   parse_bench [--eager] FILE [RUNS]
+// --eager reads every library declaration in place (as --check does) instead of at its first use.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <string_view>
 #include <vector>
 
 #include <malloc.h>
@@ -14,8 +16,13 @@
 #include "parser/parse.h"
 
 int main(int argc, char** argv) {
+    const bool eager = argc > 1 && std::string_view(argv[1]) == "--eager";
+    if (eager) {
+        --argc;
+        ++argv;
+    }
     if (argc < 2) {
-        std::fprintf(stderr, "usage: parse_bench FILE [RUNS]\n");
+        std::fprintf(stderr, "usage: parse_bench [--eager] FILE [RUNS]\n");
         return 2;
     }
     // As the wardray command does (render/main.cpp): freed blocks stay in the heap for reuse.
@@ -24,6 +31,7 @@ int main(int argc, char** argv) {
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 50;
     wardray::parser::ParseOptions options;
     options.library_paths.push_back("/usr/share/povray-3.7/include");
+    options.defer_library_declarations = !eager;
     std::vector<double> seconds;
     long first_faults = 0;
     double first_cpu = 0.0;
