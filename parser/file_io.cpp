@@ -229,11 +229,11 @@ void Parser::directive_file_io(const Token& tok) {
         expect(")");
         if (!file->in_memory) file->out.flush();
         // A file kept in memory while writing is off must not grow without bound (an endless #write loop).
-        if (file->in_memory && static_cast<std::size_t>(file->memory.tellp()) > m_options.max_string_length) {
+        if (file->in_memory && static_cast<std::size_t>(file->memory.tellp()) > m_options.max_memory_file_bytes) {
             report(make_diagnostic(Severity::Error, tok,
-                                   "'" + file->path + "' grew past " + std::to_string(m_options.max_string_length) +
-                                       " characters; files written while writing is off are kept in memory up "
-                                       "to that limit; raise it with --max-string-length"));
+                                   "'" + file->path + "' grew past " + std::to_string(m_options.max_memory_file_bytes) +
+                                       " bytes; files written while writing is off are kept in memory up "
+                                       "to that limit; raise it with --max-memory-file"));
             throw FatalError{};
         }
         return;

@@ -52,6 +52,9 @@ struct ParseOptions {
     std::size_t max_array_elements = 100'000'000;
     /// Characters of one string value (--max-string-length).
     std::size_t max_string_length = 10'000'000;
+    /// Bytes of a file #write keeps in memory while file writes are off (--max-memory-file); the mesh-camera
+    /// examples write about 20 MB and read it back.
+    std::size_t max_memory_file_bytes = std::size_t{64} << 20;
 
     /// Pay for what is used: a `#declare` of a pigment, finish, texture or colour map in a file found through
     /// `library_paths` is read when the scene first uses the identifier, not where it stands. Off, every

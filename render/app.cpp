@@ -276,6 +276,7 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     if (options.max_include_depth) parse_options.max_include_depth = *options.max_include_depth;
     if (options.max_array_size) parse_options.max_array_elements = *options.max_array_size;
     if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
+    if (options.max_memory_file) parse_options.max_memory_file_bytes = *options.max_memory_file;
     // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
     parse_options.defer_library_declarations = !options.check_only;
     const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing

@@ -202,6 +202,7 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
                              : name == "--max-include-depth" ? &o.max_include_depth
                              : name == "--max-array-size"    ? &o.max_array_size
                              : name == "--max-string-length" ? &o.max_string_length
+                             : name == "--max-memory-file"   ? &o.max_memory_file
                                                              : nullptr) {
         const auto v = value();
         std::uint64_t n = 0;
@@ -280,7 +281,8 @@ std::string usage_text() {
            "  --stats file.json write timings and ray counts\n"
            "  --read-path DIR, --write-path DIR, --allow-file-writes   where #fopen may read and write\n"
            "  --max-loop-iterations N, --max-macro-depth N, --max-include-depth N,\n"
-           "  --max-array-size N, --max-string-length N   raise the parser's guard rails\n"
+           "  --max-array-size N, --max-string-length N, --max-memory-file BYTES\n"
+           "                    raise the parser's guard rails\n"
            "  --help, --version\n"
            "With no scene, renders the bundled default scene.\n";
 }

@@ -50,6 +50,7 @@ struct Options {
     std::optional<std::uint64_t> max_include_depth;
     std::optional<std::uint64_t> max_array_size;
     std::optional<std::uint64_t> max_string_length;
+    std::optional<std::uint64_t> max_memory_file;
     bool check_only = false;
     bool verbose = false;
     bool show_help = false;

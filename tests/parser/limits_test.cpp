@@ -66,10 +66,11 @@ TEST(Limits, StringLength) {
 
 TEST(Limits, MemoryFileWrittenWhileWritesAreOff) {
     ParseOptions o = test::default_options();
-    o.max_string_length = 1000;
+    o.max_memory_file_bytes = 1000;
     const ParseResult r = test::parse_fail(
         "#fopen F \"log.txt\" write\n#while (1)\n  #write (F, \"0123456789\")\n#end\n", o);
-    EXPECT_NE(first_error(r).find("raise it with --max-string-length"), std::string::npos) << first_error(r);
+    EXPECT_NE(first_error(r).find("grew past 1000 bytes"), std::string::npos) << first_error(r);
+    EXPECT_NE(first_error(r).find("raise it with --max-memory-file"), std::string::npos) << first_error(r);
     EXPECT_EQ(test::count_errors(r), 1u);
 }
 
