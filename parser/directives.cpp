@@ -162,7 +162,9 @@ void Parser::directive_declare(const Token& tok, bool local) {
         *array = std::make_shared<ArrayValue>(**array);
     }
     const bool numeric = std::holds_alternative<Numeric>(v);
-    if (!local && !m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
+    // POV-Ray compat: #local on a by-reference parameter also writes through, since the parameter lives in the
+    // macro's own table (macro4.pov: `#local V = V + 1;`).
+    if (!m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
         const Frame& frame = m_frames.back();
         if (const auto ref = frame.references.find(id.text); ref != frame.references.end()) {
             // A by-reference parameter: update the caller's identifier and the parameter itself.

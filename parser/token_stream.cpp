@@ -197,7 +197,13 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
                 (is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
                 for (std::size_t s = m_scopes.size(); s > 0; --s) {
                     if (m_scopes[s - 1].count(t.text)) {
-                        references[macro.params[args.size()]] = {s - 1, t.text};
+                        // A parameter that is itself a reference passes on what it refers to.
+                        std::pair<std::size_t, std::string> target{s - 1, t.text};
+                        for (const Frame& f : m_frames)
+                            if (const auto r = f.references.find(t.text);
+                                f.kind == Frame::Kind::Macro && f.scope_index == s - 1 && r != f.references.end())
+                                target = r->second;
+                        references[macro.params[args.size()]] = std::move(target);
                         break;
                     }
                 }

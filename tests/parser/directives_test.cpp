@@ -134,6 +134,24 @@ TEST(Directives, MacroParametersByReference) {
     EXPECT_NEAR(c.x, 1.0, 1e-12);
 }
 
+// povray 3.7 on macro4.pov's pattern prints 5, 5, 6 and then 7 through a macro passing its parameter on.
+TEST(Directives, LocalOnReferenceParameterWritesCaller) {
+    const Scene s = parse_ok(R"(
+        #macro Inc(V) #local V = V + 1; #end
+        #macro IncTwice(W) Inc(W) #end
+        #declare Value = 5;
+        Inc(Value + 0) sphere { 0, Value }
+        Inc(+Value) sphere { 0, Value }
+        Inc(Value) sphere { 0, Value }
+        IncTwice(Value) sphere { 0, Value }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(radius(s, 0), 5);
+    EXPECT_EQ(radius(s, 1), 5);
+    EXPECT_EQ(radius(s, 2), 6);
+    EXPECT_EQ(radius(s, 3), 7);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");
