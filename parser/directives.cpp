@@ -49,6 +49,9 @@ void Parser::process_directive() {
     const NestingGuard guard(*this, tok, m_directive_nesting);
     ++m_pos;
     const std::string& name = tok.text;
+    // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`); a #declare's
+    // value and #default's blocks decide for themselves.
+    const ScopedFlag operands(m_value_ends_at_directive, name != "declare" && name != "local" && name != "default");
     if (name == "declare" || name == "local") {
         directive_declare(tok, name == "local");
     } else if (name == "undef") {
@@ -140,6 +143,7 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
     expect("=");
     m_declaring.emplace_back();
+    const std::size_t frames = m_frames.size();
     Value v;
     try {
         v = parse_rvalue();
@@ -149,6 +153,12 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
     std::vector<Diagnostic> deferred = std::move(m_declaring.back());
     m_declaring.pop_back();
+    // POV-Ray compat: such a value ended at a directive inside a macro it called, and cannot go on from there.
+    if (const Token& d = raw(); std::holds_alternative<Numeric>(v) && d.kind == TokenKind::Directive &&
+                                m_frames.size() > frames)
+        fail(d, "the value of '" + id.text + "' ends at '#" + d.text +
+                    "' inside the macro it called (POV-Ray reads no directive between the operands of a declared "
+                    "value); put the macro call in parentheses");
     // raw(), not peek_expr(): a macro's #end right here must not be read before the by-reference check below.
     if (const Token& op = raw(); !std::holds_alternative<Numeric>(v) && op.kind == TokenKind::Punct &&
                                        (op.text == "+" || op.text == "-" || op.text == "*" || op.text == "/"))

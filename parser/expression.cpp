@@ -69,6 +69,8 @@ bool Parser::starts_string(const Token& t) {
 }
 
 Value Parser::parse_rvalue() {
+    // Blocks (objects, pigments, ...) run directives as they come; only float, vector and colour values stop.
+    ScopedFlag value_level(m_value_ends_at_directive, false);
     const Token t = peek();
     const NestingGuard guard(*this, t);
     if (starts_string(t)) return parse_string();
@@ -105,6 +107,7 @@ Value Parser::parse_rvalue() {
         if (w == "array") return parse_array_declaration(next());
         if (is_array_element_next()) {
             Value element = *take_array_element();
+            const ScopedFlag numeric_level(m_value_ends_at_directive, true);
             if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
             return element;
         }
@@ -126,6 +129,7 @@ Value Parser::parse_rvalue() {
             }
         }
     }
+    const ScopedFlag numeric_level(m_value_ends_at_directive, true);
     return parse_numeric();
 }
 
@@ -351,6 +355,8 @@ std::optional<Numeric> Parser::builtin_constant(const Token& t) {
 }
 
 Numeric Parser::parse_primary() {
+    // Inside an operand directives run as they come (`(M(0)) + 1` with M's body in #if ... #else ... #end).
+    ScopedFlag operand(m_value_ends_at_directive, false);
     const Token t = peek();
     if (t.kind == TokenKind::Number) {
         next();
@@ -396,6 +402,7 @@ Numeric Parser::parse_primary() {
     if (const auto m = m_macros.find(t.text); m != m_macros.end()) {
         next();
         invoke_macro(t, m->second);
+        operand.restore();  // the body's first token is the operand; what follows it is at the caller's level
         return parse_unary();
     }
     if (auto element = take_array_element()) {

@@ -276,6 +276,22 @@ private:
     };
     friend class NestingGuard;
     std::size_t m_nesting = 0;
+    /// Set while reading the operators of a float, vector or colour value (parse_rvalue) outside any operand:
+    /// POV-Ray compat: a directive there ends the value; inside an operand ('(', '<', a call) directives run.
+    bool m_value_ends_at_directive = false;
+    /// Sets a flag for a scope and puts its old value back at the end, or earlier through restore().
+    class ScopedFlag {
+    public:
+        ScopedFlag(bool& flag, bool value) : m_flag(flag), m_old(flag) { flag = value; }
+        ~ScopedFlag() { restore(); }
+        ScopedFlag(const ScopedFlag&) = delete;
+        ScopedFlag& operator=(const ScopedFlag&) = delete;
+        void restore() { m_flag = m_old; }
+
+    private:
+        bool& m_flag;
+        bool m_old;
+    };
     std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
     const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
 

@@ -27,17 +27,19 @@ const Token& Parser::peek() {
 }
 
 const Token& Parser::peek_expr() {
-    // Inside an expression only a macro's closing #end is read through (so `M(1) * 2` works); any other
-    // directive ends the expression first, so `#declare A = 1 #if (A)` sees A declared.
+    // A macro's closing #end is always read through (so `M(1) * 2` works). Other directives run too, except
+    // between the operands of a declared value, which they end, so `#declare A = 1 #if (A)` sees A declared.
     while (true) {
         const Token& t = raw();
-        if (t.kind == TokenKind::Directive && t.text == "end" && !m_frames.empty() &&
-            m_frames.back().kind == Frame::Kind::Macro && m_conds.size() == m_frames.back().cond_depth) {
+        if (t.kind != TokenKind::Directive) return t;
+        if (t.text == "end" && !m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro &&
+            m_conds.size() == m_frames.back().cond_depth) {
             ++m_pos;
             return_from_macro();
             continue;
         }
-        return t;
+        if (m_value_ends_at_directive) return t;
+        process_directive();
     }
 }
 

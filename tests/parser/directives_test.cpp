@@ -152,6 +152,38 @@ TEST(Directives, LocalOnReferenceParameterWritesCaller) {
     EXPECT_EQ(radius(s, 3), 7);
 }
 
+// Values checked with povray 3.7: directives inside a macro body run when the call is an operand of an object's
+// expression or stands in parentheses; at the top level of a #declare POV-Ray stops at the directive.
+TEST(Directives, MacroBodyWithConditionalsInsideArithmetic) {
+    const Scene s = parse_ok(R"(
+        #macro M(A) #if (A) 1 #else 2 #end #end
+        #macro N(A) #if (A) 1 #elseif (A + 1) 3 #else 2 #end + 5 #end
+        #macro S(A) #switch (A) #case (0) 7 #break #else 8 #end #end
+        sphere { 0, M(0) + 10 }
+        sphere { 0, M(1) * 3 + 10 }
+        #declare V = (M(0)) + 10;
+        sphere { 0, V }
+        #declare W = <M(0), M(1) + 1, 3>;
+        sphere { W, 1 }
+        #declare P = (N(0) + 10) + (N(-1) * 2) + 100 * (S(0) + S(1) * 10);
+        sphere { 0, P }
+    )");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(radius(s, 0), 12);
+    EXPECT_EQ(radius(s, 1), 13);
+    EXPECT_EQ(radius(s, 2), 12);
+    const Vec3 w = std::get<Sphere>(s.objects[3].shape).center;
+    EXPECT_EQ(w.x, 2);
+    EXPECT_EQ(w.y, 2);
+    EXPECT_EQ(radius(s, 4), 8729);
+
+    const ParseResult r = test::parse_fail("#macro M(A) #if (A) 1 #else 2 #end #end\n#declare V = M(0) + 10;\n");
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].loc.line, 1u);
+    EXPECT_EQ(r.diagnostics[0].loc.column, 31u);  // the #end of the #if, where the value stopped
+    EXPECT_NE(r.diagnostics[0].message.find("put the macro call in parentheses"), std::string::npos);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");
