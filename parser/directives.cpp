@@ -48,10 +48,65 @@ void Parser::process_directive() {
     // every pass, so bound it like the descent (with its own count: recursive macros nest both).
     const NestingGuard guard(*this, tok, m_directive_nesting);
     ++m_pos;
-    const std::string& name = tok.text;
     // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`); a #declare's
     // value and #default's blocks decide for themselves.
-    const ScopedFlag operands(m_value_ends_at_directive, name != "declare" && name != "local" && name != "default");
+    const ScopedFlag operands(m_value_ends_at_directive,
+                              tok.text != "declare" && tok.text != "local" && tok.text != "default");
+    const std::size_t frames = m_frames.size();
+    const std::size_t conds = m_conds.size();
+    const std::size_t braces = m_brace_depth;
+    const std::size_t operands_pos = m_pos;
+    try {
+        run_directive(tok);
+    } catch (const StatementError&) {
+        if (tok.text == "declare" || tok.text == "local") {
+            // Its identifier stays undeclared: later uses of it are consequences, not new errors.
+            const auto& tokens = m_files[tok.file]->tokens;
+            if (operands_pos < tokens.size() && tokens[operands_pos].kind == TokenKind::Identifier)
+                m_failed_declarations.insert(tokens[operands_pos].text);
+        }
+        skip_failed_directive(tok, frames, conds, braces);
+        throw;
+    }
+}
+
+void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
+    // Leave the macros and includes its operands entered, and the #if/#while/... they opened.
+    while (m_frames.size() > frames) return_from_macro();
+    if (m_conds.size() > conds) m_conds.resize(conds);
+    const std::string& name = tok.text;
+    if (is_opening_directive(name) || name == "else" || name == "elseif") {
+        // A block whose header failed is skipped whole, so its #else and #end do not fail again.
+        skip_until(0, {"end"}, tok);
+        m_brace_depth = braces;
+        if (m_open_braces.size() > braces) m_open_braces.resize(braces);
+        return;
+    }
+    if (m_brace_depth > braces) {
+        // It failed inside a block of its value (`#declare O = sphere { 0, Undeclared }`): skip to its end.
+        recover_after_error(braces);
+        return;
+    }
+    // Skip the rest of its operands: through a ';', or up to the next directive, the enclosing '}' or the
+    // next statement; the token it failed at is skipped in any case unless it ends the enclosing block.
+    int depth = 0;
+    for (bool first = true;; first = false) {
+        const Token& t = raw();
+        if (t.kind == TokenKind::EndOfFile || t.kind == TokenKind::Directive) return;
+        if (depth == 0 && is_punct(t, "}")) return;
+        if (!first && depth == 0 && t.kind == TokenKind::Identifier &&
+            (is_object_keyword(t) || t.text == "camera" || t.text == "light_source" || t.text == "global_settings" ||
+             t.text == "background" || t.text == "sky_sphere" || t.text == "fog"))
+            return;
+        ++m_pos;
+        if (is_punct(t, "{")) ++depth;
+        if (is_punct(t, "}")) --depth;
+        if (depth == 0 && is_punct(t, ";")) return;
+    }
+}
+
+void Parser::run_directive(const Token& tok) {
+    const std::string& name = tok.text;
     if (name == "declare" || name == "local") {
         directive_declare(tok, name == "local");
     } else if (name == "undef") {

@@ -101,7 +101,13 @@ private:
     bool is_word(const Token& t, const char* w) const;
     void accept_semicolon_after_declare(const Value& v, const Token& where);
 
+    /// Runs the directive at the current token; when it fails, skips what is left of it (skip_failed_directive).
     void process_directive();
+    void run_directive(const Token& tok);
+    /// After a directive `tok` failed: returns to the macro/include depth, #if/#while nesting and brace depth it
+    /// started at, and skips the rest of its operands (of an #if/#while/... its whole block), so the error is
+    /// reported once and its #else/#end do not fail again.
+    void skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces);
     void directive_declare(const Token& tok, bool local);
     void directive_if(const Token& tok);
     void directive_while(const Token& tok);
@@ -310,6 +316,7 @@ private:
     std::unordered_map<std::string, Macro> m_macros;
     std::vector<Diagnostic> m_diagnostics;
     std::size_t m_errors = 0;
+    std::set<std::string> m_failed_declarations;  ///< identifiers whose #declare failed: their uses are not errors again
     std::set<std::string> m_warned_features;
     /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
     /// so unused declarations of include files cost nothing.
