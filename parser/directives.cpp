@@ -48,10 +48,9 @@ void Parser::process_directive() {
     // every pass, so bound it like the descent (with its own count: recursive macros nest both).
     const NestingGuard guard(*this, tok, m_directive_nesting);
     ++m_pos;
-    // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`); a #declare's
-    // value and #default's blocks decide for themselves.
-    const ScopedFlag operands(m_value_ends_at_directive,
-                              tok.text != "declare" && tok.text != "local" && tok.text != "default");
+    // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`, the layers of a
+    // declared texture); #default holds only blocks.
+    const ScopedFlag operands(m_value_ends_at_directive, tok.text != "default");
     const std::size_t frames = m_frames.size();
     const std::size_t conds = m_conds.size();
     const std::size_t braces = m_brace_depth;

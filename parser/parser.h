@@ -282,8 +282,9 @@ private:
     };
     friend class NestingGuard;
     std::size_t m_nesting = 0;
-    /// Set while reading the operators of a float, vector or colour value (parse_rvalue) outside any operand:
-    /// POV-Ray compat: a directive there ends the value; inside an operand ('(', '<', a call) directives run.
+    /// POV-Ray compat: set while a directive reads its operands (a #declare's value included) and while a float,
+    /// vector or colour value reads its operators: a directive met there ends what is being read. Blocks (objects,
+    /// pigments, ...) and the inside of an operand ('(', '<', a call) clear it again, and directives run there.
     bool m_value_ends_at_directive = false;
     /// Sets a flag for a scope and puts its old value back at the end, or earlier through restore().
     class ScopedFlag {

@@ -184,6 +184,19 @@ TEST(Directives, MacroBodyWithConditionalsInsideArithmetic) {
     EXPECT_NE(r.diagnostics[0].message.find("put the macro call in parentheses"), std::string::npos);
 }
 
+// woods.inc declares textures without ';' and layers later ones on earlier ones: the next #declare must not run
+// while the layers of the previous one are looked for.
+TEST(Directives, DeclaredTextureEndsAtTheNextDirective) {
+    const Scene s = parse_ok(R"(
+        #declare T1 = texture { pigment { rgb 1 } }
+        #declare T2 = texture { T1 } texture { pigment { rgbt <0, 0, 1, 0.5> } }
+        #declare T3 = texture { T2 }
+        sphere { 0, 1 texture { T3 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture.layers.size(), 1u);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");
