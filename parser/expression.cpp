@@ -51,6 +51,7 @@ const char* value_kind_name(const Value& v) {
         case 9: return "an array";
         case 10: return "a function";
         case 11: return "a file handle";
+        case 12: return "an interior";
         default: return "an unsupported item";
     }
 }
@@ -69,7 +70,7 @@ bool Parser::starts_string(const Token& t) {
 }
 
 Value Parser::parse_rvalue() {
-    // Blocks (objects, pigments, ...) run directives as they come; only float, vector and colour values stop.
+    // Blocks (objects, pigments, ...) run directives as they come; float, vector and colour values stop.
     ScopedFlag value_level(m_value_ends_at_directive, false);
     const Token t = peek();
     const NestingGuard guard(*this, t);
@@ -83,9 +84,11 @@ Value Parser::parse_rvalue() {
         }
         if (w == "pigment") return parse_pigment_body(next());
         if (w == "finish") return parse_finish_body(next());
+        if (w == "interior") return parse_interior_body(next());
         if (w == "texture") {
             Texture tx = parse_texture_body(next());
             // POV-Ray compat: further textures in one declaration are layers painted over the first.
+            const ScopedFlag layers(m_value_ends_at_directive, true);
             while (is_word(peek_expr(), "texture")) tx.layers.push_back(parse_texture_body(next()));
             return tx;
         }

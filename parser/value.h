@@ -93,7 +93,7 @@ struct CameraSpec {
 /// Returns an error message in `error` when the camera is degenerate (and leaves the vectors usable).
 Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning);
 
-/// A declared item of a kind not supported yet (normal, interior, material, function, ...), kept by name only.
+/// A declared item of a kind not supported yet (material, media, spline, ...), kept by name only.
 struct Unsupported {
     std::string what;
 };
@@ -119,7 +119,8 @@ struct FileHandle {
 
 /// Anything an identifier can hold.
 using Value = std::variant<Numeric, std::string, Pigment, Finish, Texture, ObjectValue, Transform, CameraSpec,
-                           Unsupported, std::shared_ptr<ArrayValue>, std::shared_ptr<const UserFunction>, FileHandle>;
+                           Unsupported, std::shared_ptr<ArrayValue>, std::shared_ptr<const UserFunction>, FileHandle,
+                           Interior>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

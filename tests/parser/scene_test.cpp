@@ -198,6 +198,30 @@ TEST(Objects, PigmentFinishTextureAndIdentifiers) {
     EXPECT_DOUBLE_EQ(s.objects[3].texture.finish.ambient.r, 0.1);
 }
 
+TEST(Objects, DeclaredInteriorIsCopiedAndModified) {
+    // The pattern of optics.pov, laser.pov and glass.inc: an interior identifier, alone or followed by items,
+    // also passed through a macro parameter (mediasky.pov).
+    const Scene s = parse_ok(R"(
+        #declare I_Glass = interior { ior 1.5 fade_distance 0.5 fade_power 1001 }
+        #declare I_Faded = interior { I_Glass fade_distance 2 }
+        #macro Shell(Int) sphere { 0, 1 interior { Int } } #end
+        sphere { 0, 1 interior { I_Glass } }
+        sphere { 0, 1 interior { I_Faded ior 1.33 } }
+        Shell(interior { ior 2 })
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(s.objects[0].interior.ior, 1.5);
+    EXPECT_EQ(s.objects[0].interior.fade_distance, 0.5);
+    EXPECT_EQ(s.objects[0].interior.fade_power, 1001);
+    EXPECT_EQ(s.objects[1].interior.ior, 1.33);
+    EXPECT_EQ(s.objects[1].interior.fade_distance, 2);
+    EXPECT_EQ(s.objects[1].interior.fade_power, 1001);
+    EXPECT_EQ(s.objects[2].interior.ior, 2);
+    const ParseResult r = test::parse_fail("#declare F = finish { ambient 0 }\nsphere { 0, 1 interior { F } }\n");
+    ASSERT_EQ(test::count_errors(r), 1u) << test::all_diagnostics(r);
+    EXPECT_EQ(r.diagnostics[0].message, "'F' is a finish, not an interior");
+}
+
 TEST(Objects, DefaultTextureIsBlackWithDefaultFinish) {
     const Scene s = parse_ok("sphere { 0, 1 }");
     ASSERT_EQ(s.objects.size(), 1u);
