@@ -373,14 +373,22 @@ Mesh Parser::parse_mesh_body(const Token& kw) {
             next();
             expect("{");
             parse_triangle(mesh, t.text == "smooth_triangle");
-            // Per-triangle textures: read and reported, the mesh's own texture is used.
+            // Per-triangle textures and uv coordinates: read and reported, the mesh's own texture is used.
             while (!accept("}")) {
                 const Token item = next();
                 if (is_word(item, "texture")) {
                     warn_unsupported(item, "per-triangle texture");
                     parse_texture_body(item);
+                } else if (is_word(item, "uv_vectors")) {
+                    // `uv_vectors <u,v>, <u,v>, <u,v>`: one uv pair for each corner, for uv_mapping.
+                    warn_unsupported(item, "uv_vectors");
+                    for (int k = 0; k < 3; ++k) {
+                        if (k > 0) accept(",");
+                        parse_vector();
+                    }
                 } else {
-                    fail(item, "expected 'texture' or '}' in a mesh triangle but found " + describe_token(item));
+                    fail(item, "expected 'texture', 'uv_vectors' or '}' in a mesh triangle but found " +
+                                   describe_token(item));
                 }
             }
         } else if (is_word(t, "inside_vector")) {

@@ -117,5 +117,24 @@ TEST(Prism, SplineTypesAndCounts) {
     parse_fail("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
 }
 
+// meshcam_macros.inc gives each mesh triangle uv coordinates (povray 3.7 renders its demos); they are read and
+// reported, and the triangle keeps its corners and normals.
+TEST(Mesh, TriangleUvVectorsAreReadAndReported) {
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        mesh {
+          smooth_triangle { <0, 0, 0>, z, <1, 0, 0>, z, <0, 1, 0>, z uv_vectors <0, 0>, <1, 0>, <0, 1> }
+          triangle { <1, 0, 0>, <1, 1, 0>, <0, 1, 0> uv_vectors <1, 0> <1, 1> <0, 1> texture { pigment { rgb 1 } } }
+        })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(r.scene->objects.size(), 1u);
+    const auto& mesh = std::get<Mesh>(r.scene->objects[0].shape);
+    ASSERT_EQ(mesh.faces.size(), 2u);
+    EXPECT_EQ(mesh.normals.size(), 3u);
+    EXPECT_EQ(mesh.vertices[5].y, 1);
+    EXPECT_NE(test::all_diagnostics(r).find("uv_vectors is not rendered yet"), std::string::npos);
+    parse_fail("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> uv_vectors <0, 0>, <1, 0> } }");
+}
+
 }  // namespace
 }  // namespace wardray::parser
