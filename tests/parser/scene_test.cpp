@@ -222,6 +222,23 @@ TEST(Objects, DeclaredInteriorIsCopiedAndModified) {
     EXPECT_EQ(r.diagnostics[0].message, "'F' is a finish, not an interior");
 }
 
+TEST(Objects, MetallicTakesAnOptionalAmountOrBoolean) {
+    // diffract.pov writes `metallic on`; POV-Ray reads the amount as any float, 1 when it is left out.
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 finish { metallic on reflection { 0.5 metallic off } } }
+        sphere { 0, 1 finish { metallic off } }
+        sphere { 0, 1 finish { metallic phong 1 } }
+        sphere { 0, 1 finish { metallic 0.25 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].texture.finish.metallic, 1);
+    EXPECT_EQ(s.objects[0].texture.finish.reflection_metallic, 0);
+    EXPECT_EQ(s.objects[1].texture.finish.metallic, 0);
+    EXPECT_EQ(s.objects[2].texture.finish.metallic, 1);
+    EXPECT_EQ(s.objects[2].texture.finish.phong, 1);
+    EXPECT_EQ(s.objects[3].texture.finish.metallic, 0.25);
+}
+
 TEST(Objects, DefaultTextureIsBlackWithDefaultFinish) {
     const Scene s = parse_ok("sphere { 0, 1 }");
     ASSERT_EQ(s.objects.size(), 1u);
