@@ -50,7 +50,7 @@ void Parser::process_directive() {
     ++m_pos;
     // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`, the layers of a
     // declared texture); #default holds only blocks.
-    const ScopedFlag operands(m_value_ends_at_directive, tok.text != "default");
+    const ScopedSetting operands(m_directive_ends_value_at, tok.text != "default" ? m_brace_depth : k_directives_run);
     const std::size_t frames = m_frames.size();
     const std::size_t conds = m_conds.size();
     const std::size_t braces = m_brace_depth;

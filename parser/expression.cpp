@@ -70,8 +70,6 @@ bool Parser::starts_string(const Token& t) {
 }
 
 Value Parser::parse_rvalue() {
-    // Blocks (objects, pigments, ...) run directives as they come; float, vector and colour values stop.
-    ScopedFlag value_level(m_value_ends_at_directive, false);
     const Token t = peek();
     const NestingGuard guard(*this, t);
     if (starts_string(t)) return parse_string();
@@ -88,7 +86,7 @@ Value Parser::parse_rvalue() {
         if (w == "texture") {
             Texture tx = parse_texture_body(next());
             // POV-Ray compat: further textures in one declaration are layers painted over the first.
-            const ScopedFlag layers(m_value_ends_at_directive, true);
+            const ScopedSetting layers(m_directive_ends_value_at, m_brace_depth);
             while (is_word(peek_expr(), "texture")) tx.layers.push_back(parse_texture_body(next()));
             return tx;
         }
@@ -110,7 +108,7 @@ Value Parser::parse_rvalue() {
         if (w == "array") return parse_array_declaration(next());
         if (is_array_element_next()) {
             Value element = *take_array_element();
-            const ScopedFlag numeric_level(m_value_ends_at_directive, true);
+            const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
             if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
             return element;
         }
@@ -132,7 +130,7 @@ Value Parser::parse_rvalue() {
             }
         }
     }
-    const ScopedFlag numeric_level(m_value_ends_at_directive, true);
+    const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
     return parse_numeric();
 }
 
@@ -359,7 +357,7 @@ std::optional<Numeric> Parser::builtin_constant(const Token& t) {
 
 Numeric Parser::parse_primary() {
     // Inside an operand directives run as they come (`(M(0)) + 1` with M's body in #if ... #else ... #end).
-    ScopedFlag operand(m_value_ends_at_directive, false);
+    ScopedSetting operand(m_directive_ends_value_at, k_directives_run);
     const Token t = peek();
     if (t.kind == TokenKind::Number) {
         next();

@@ -282,22 +282,26 @@ private:
     };
     friend class NestingGuard;
     std::size_t m_nesting = 0;
-    /// POV-Ray compat: set while a directive reads its operands (a #declare's value included) and while a float,
-    /// vector or colour value reads its operators: a directive met there ends what is being read. Blocks (objects,
-    /// pigments, ...) and the inside of an operand ('(', '<', a call) clear it again, and directives run there.
-    bool m_value_ends_at_directive = false;
-    /// Sets a flag for a scope and puts its old value back at the end, or earlier through restore().
-    class ScopedFlag {
+    /// POV-Ray compat: while a directive reads its operands (a #declare's value included) and while a float,
+    /// vector or colour value reads its operators, the brace depth they started at; a directive met at that depth
+    /// ends what is being read. Blocks opened inside (objects, pigments, ...) and the inside of an operand ('(',
+    /// '<', a call: k_directives_run) run directives as they come.
+    static constexpr std::size_t k_directives_run = static_cast<std::size_t>(-1);
+    std::size_t m_directive_ends_value_at = k_directives_run;
+    /// Sets a variable for a scope and puts its old value back at the end, or earlier through restore().
+    class ScopedSetting {
     public:
-        ScopedFlag(bool& flag, bool value) : m_flag(flag), m_old(flag) { flag = value; }
-        ~ScopedFlag() { restore(); }
-        ScopedFlag(const ScopedFlag&) = delete;
-        ScopedFlag& operator=(const ScopedFlag&) = delete;
-        void restore() { m_flag = m_old; }
+        ScopedSetting(std::size_t& setting, std::size_t value) : m_setting(setting), m_old(setting) {
+            setting = value;
+        }
+        ~ScopedSetting() { restore(); }
+        ScopedSetting(const ScopedSetting&) = delete;
+        ScopedSetting& operator=(const ScopedSetting&) = delete;
+        void restore() { m_setting = m_old; }
 
     private:
-        bool& m_flag;
-        bool m_old;
+        std::size_t& m_setting;
+        std::size_t m_old;
     };
     std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
     const char* m_stack_base = nullptr;   ///< the stack address where this parser was made

@@ -38,7 +38,7 @@ const Token& Parser::peek_expr() {
             return_from_macro();
             continue;
         }
-        if (m_value_ends_at_directive) return t;
+        if (m_directive_ends_value_at == m_brace_depth) return t;
         process_directive();
     }
 }

@@ -184,17 +184,21 @@ TEST(Directives, MacroBodyWithConditionalsInsideArithmetic) {
     EXPECT_NE(r.diagnostics[0].message.find("put the macro call in parentheses"), std::string::npos);
 }
 
-// woods.inc declares textures without ';' and layers later ones on earlier ones: the next #declare must not run
-// while the layers of the previous one are looked for.
-TEST(Directives, DeclaredTextureEndsAtTheNextDirective) {
+// woods.inc declares textures without ';' and layers later ones on earlier ones, array1.pov an array: the next
+// #declare must not run while the layers of the previous one, or its array sizes, are looked for.
+TEST(Directives, DeclarationEndsAtTheNextDirective) {
     const Scene s = parse_ok(R"(
         #declare T1 = texture { pigment { rgb 1 } }
         #declare T2 = texture { T1 } texture { pigment { rgbt <0, 0, 1, 0.5> } }
         #declare T3 = texture { T2 }
         sphere { 0, 1 texture { T3 } }
+        #declare A = array[2]
+        #declare A[1] = 3;
+        sphere { 0, A[1] }
     )");
-    ASSERT_EQ(s.objects.size(), 1u);
+    ASSERT_EQ(s.objects.size(), 2u);
     EXPECT_EQ(s.objects[0].texture.layers.size(), 1u);
+    EXPECT_EQ(radius(s, 1), 3);
 }
 
 TEST(Directives, LocalIsScopedToIncludeFile) {
