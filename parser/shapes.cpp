@@ -171,7 +171,8 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         Quartic q;
         expect("<");
         for (std::size_t i = 0; i < q.coefficients.size(); ++i) {
-            if (i > 0) expect(",");
+            // POV-Ray compat: the commas are optional (primitiv.pov and hyptorus.pov leave some out).
+            if (i > 0) accept(",");
             // The additive level, as in `matrix`: a '>' here closes the vector, it is no comparison.
             const Token at = peek();
             const Numeric c = parse_additive();
@@ -455,11 +456,14 @@ Mesh Parser::parse_mesh2_body(const Token& kw) {
                 Mesh::Face f;
                 read_index_triple(f.v);
                 mesh.faces.push_back(f);
-                // Optional texture indices after the triple: one or three floats.
+                // Optional texture indices after the triple: one or three floats; a vector (`F2+A` in shapes.inc's
+                // height-field macros) is the next face.
                 while (true) {
                     accept(",");
                     const Token& p = peek();
-                    if (is_punct(p, "<") || is_punct(p, "}")) break;
+                    const Value* v = p.kind == TokenKind::Identifier ? lookup(p.text) : nullptr;
+                    const auto* n = v != nullptr ? std::get_if<Numeric>(v) : nullptr;
+                    if (!(p.kind == TokenKind::Number || is_punct(p, "(") || (n != nullptr && n->n == 1))) break;
                     parse_float();
                 }
             });

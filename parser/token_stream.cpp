@@ -215,6 +215,8 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
             else
                 args.emplace_back(parse_rvalue());
             if (accept(",")) continue;
+            // POV-Ray compat: the comma between arguments may be left out (shapes.pov: `Center_Object(...) -y`).
+            if (args.size() < macro.params.size() && !is_punct(peek(), ")")) continue;
             expect(")");
             break;
         }

@@ -201,6 +201,21 @@ TEST(Directives, DeclarationEndsAtTheNextDirective) {
     EXPECT_EQ(radius(s, 1), 3);
 }
 
+// povray 3.7: `M(1 2)` passes two arguments, `M(P -1)` one (P - 1), then misses the second.
+TEST(Directives, MacroArgumentCommasAreOptional) {
+    const Scene s = parse_ok(R"(
+        #macro M(A, B) A * 10 + B #end
+        #macro Place(O, V) object { O translate V } #end
+        sphere { 0, M(1 2) }
+        Place(sphere { 0, 1 } -y)
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 12);
+    EXPECT_EQ(s.objects[1].transform.point({0, 0, 0}).y, -1);
+    const ParseResult r = test::parse_fail("#declare P = 1;\n#macro M(A, B) A #end\nsphere { 0, M(P -1) }\n");
+    EXPECT_NE(test::all_diagnostics(r).find("missing parameter 'B'"), std::string::npos) << test::all_diagnostics(r);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");

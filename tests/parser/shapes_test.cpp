@@ -136,5 +136,28 @@ TEST(Mesh, TriangleUvVectorsAreReadAndReported) {
     parse_fail("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> uv_vectors <0, 0>, <1, 0> } }");
 }
 
+// POV-Ray reads the commas between quartic coefficients as optional (primitiv.pov, hyptorus.pov), and a mesh2 face
+// is followed by texture indices only when a float comes next (shapes.inc writes `F1+A, F2+A` with vector F1, F2).
+TEST(Mesh, OptionalCommasAndFaceIndicesFromVectorIdentifiers) {
+    const Scene s = parse_ok(R"(
+        quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+                   1, 0, 0, 2, 0  1.5, 0, 0, 0, 0, 1, 0, -2.5, 0, 0.5> }
+        #declare F1 = <0, 1, 2>;
+        #declare F2 = <1, 3, 2>;
+        mesh2 {
+          vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, <1, 1, 0> }
+          face_indices { 3, F1 + 0, F2, <0, 1, 3> }
+        }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto& q = std::get<Quartic>(s.objects[0].shape);
+    EXPECT_EQ(q.coefficients[25], 1.5);
+    EXPECT_EQ(q.coefficients[34], 0.5);
+    const auto& mesh = std::get<Mesh>(s.objects[1].shape);
+    ASSERT_EQ(mesh.faces.size(), 3u);
+    EXPECT_EQ(mesh.faces[1].v[1], 3);
+    EXPECT_EQ(mesh.faces[2].v[2], 3);
+}
+
 }  // namespace
 }  // namespace wardray::parser
