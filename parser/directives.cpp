@@ -198,6 +198,7 @@ void Parser::directive_declare(const Token& tok, bool local) {
     expect("=");
     m_declaring.emplace_back();
     const std::size_t frames = m_frames.size();
+    const std::size_t local_scope = m_scopes.size() - 1;
     Value v;
     try {
         v = parse_rvalue();
@@ -227,9 +228,10 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
     const bool numeric = std::holds_alternative<Numeric>(v);
     // POV-Ray compat: #local on a by-reference parameter also writes through, since the parameter lives in the
-    // macro's own table (macro4.pov: `#local V = V + 1;`).
-    if (!m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
-        const Frame& frame = m_frames.back();
+    // macro's own table (macro4.pov: `#local V = V + 1;`). The frame is the one the #declare stands in: a value
+    // from a macro can end inside that macro's body (tracevines.pov: `Q;` in `#if ... Q; #else ... #end`).
+    if (frames > 0 && m_frames[frames - 1].kind == Frame::Kind::Macro) {
+        const Frame& frame = m_frames[frames - 1];
         if (const auto ref = frame.references.find(id.text); ref != frame.references.end()) {
             // A by-reference parameter: update the caller's identifier and the parameter itself.
             const auto& [scope, name] = ref->second;
@@ -240,7 +242,10 @@ void Parser::directive_declare(const Token& tok, bool local) {
             return;
         }
     }
-    declare(id.text, std::move(v), local);
+    if (local && m_frames.size() > frames)
+        m_scopes[local_scope][id.text] = std::move(v);
+    else
+        declare(id.text, std::move(v), local);
     if (numeric) {
         accept_semicolon_after_declare(Numeric{}, id);
     } else if (is_punct(peek_expr(), ";")) {

@@ -216,6 +216,18 @@ TEST(Directives, MacroArgumentCommasAreOptional) {
     EXPECT_NE(test::all_diagnostics(r).find("missing parameter 'B'"), std::string::npos) << test::all_diagnostics(r);
 }
 
+// tracevines.pov: a macro's value ends with ';' inside its #if, so the #local that called it completes while the
+// macro is still being read; povray 3.7 binds the name where the #local stands (prints n=1,2,3).
+TEST(Directives, LocalFromMacroValueBindsInTheCallersScope) {
+    const Scene s = parse_ok(R"(
+        #macro F(A) #local Q = A; #if (1) Q; #else <0, 0, 0>; #end #end
+        #macro G() #local N = F(<1, 2, 3>) sphere { N, 1 } #end
+        G()
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center.z, 3);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");
