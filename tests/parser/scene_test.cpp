@@ -315,6 +315,22 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     EXPECT_EQ(s.warnings[0].loc.column, 9u);
 }
 
+TEST(Unsupported, LightGroupStandsWhereObjectsDo) {
+    // abyss.pov puts light groups inside a union; POV-Ray takes them wherever an object may stand.
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        union {
+          light_group { sphere { 0, 1 } light_source { <0, 10, 0> rgb 1 } global_lights on }
+          sphere { x, 2 }
+          translate y
+        }
+        light_group { sphere { 0, 3 } })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(r.scene->objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 2);
+    EXPECT_NE(test::all_diagnostics(r).find("light_group is not rendered yet"), std::string::npos);
+}
+
 TEST(Objects, OptionalCommasAndRelationsOnlyInParentheses) {
     const Scene s = parse_ok(R"(
         box { <-1, -1, -1> <1, 1, 1> }
