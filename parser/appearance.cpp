@@ -314,6 +314,15 @@ void Parser::parse_reflection_block(Finish& f) {
 Interior Parser::parse_interior_body(const Token& /*kw*/) {
     expect("{");
     Interior in;
+    expand_macros();
+    if (const Token& first = peek(); first.kind == TokenKind::Identifier && !is_keyword(first.text) &&
+                                     lookup(first.text) != nullptr) {
+        // A declared interior, which the items after it modify.
+        const Value* v = lookup(first.text);
+        if (const auto* declared = std::get_if<Boxed<Interior>>(v)) in = **declared;
+        else fail(first, "'" + first.text + "' is " + value_kind_name(*v) + ", not an interior");
+        next();
+    }
     while (true) {
         expand_macros();
         const Token t = next();

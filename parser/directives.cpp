@@ -48,6 +48,63 @@ void Parser::process_directive() {
     // every pass, so bound it like the descent (with its own count: recursive macros nest both).
     const NestingGuard guard(*this, tok, m_directive_nesting);
     ++m_pos;
+    // POV-Ray compat: a directive's operands end at the next directive (`#switch (A) #case (0)`, the layers of a
+    // declared texture); #default holds only blocks.
+    const ScopedSetting operands(m_directive_ends_value_at, tok.text != "default" ? m_brace_depth : k_directives_run);
+    const std::size_t frames = m_frames.size();
+    const std::size_t conds = m_conds.size();
+    const std::size_t braces = m_brace_depth;
+    const std::size_t operands_pos = m_pos;
+    try {
+        run_directive(tok);
+    } catch (const StatementError&) {
+        if (tok.text == "declare" || tok.text == "local") {
+            // Its identifier stays undeclared: later uses of it are consequences, not new errors.
+            const auto& tokens = m_files[tok.file]->tokens;
+            if (operands_pos < tokens.size() && tokens[operands_pos].kind == TokenKind::Identifier)
+                m_failed_declarations.insert(tokens[operands_pos].text);
+        }
+        skip_failed_directive(tok, frames, conds, braces);
+        throw;
+    }
+}
+
+void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
+    // Leave the macros and includes its operands entered, and the #if/#while/... they opened.
+    while (m_frames.size() > frames) return_from_macro();
+    if (m_conds.size() > conds) m_conds.resize(conds);
+    const std::string& name = tok.text;
+    if (is_opening_directive(name) || name == "else" || name == "elseif") {
+        // A block whose header failed is skipped whole, so its #else and #end do not fail again.
+        skip_until(0, {"end"}, tok);
+        m_brace_depth = braces;
+        if (m_open_braces.size() > braces) m_open_braces.resize(braces);
+        return;
+    }
+    if (m_brace_depth > braces) {
+        // It failed inside a block of its value (`#declare O = sphere { 0, Undeclared }`): skip to its end.
+        recover_after_error(braces);
+        return;
+    }
+    // Skip the rest of its operands: through a ';', or up to the next directive, the enclosing '}' or the
+    // next statement; the token it failed at is skipped in any case unless it ends the enclosing block.
+    int depth = 0;
+    for (bool first = true;; first = false) {
+        const Token& t = raw();
+        if (t.kind == TokenKind::EndOfFile || t.kind == TokenKind::Directive) return;
+        if (depth == 0 && is_punct(t, "}")) return;
+        if (!first && depth == 0 && t.kind == TokenKind::Identifier &&
+            (is_object_keyword(t) || t.text == "camera" || t.text == "light_source" || t.text == "global_settings" ||
+             t.text == "background" || t.text == "sky_sphere" || t.text == "fog"))
+            return;
+        ++m_pos;
+        if (is_punct(t, "{")) ++depth;
+        if (is_punct(t, "}")) --depth;
+        if (depth == 0 && is_punct(t, ";")) return;
+    }
+}
+
+void Parser::run_directive(const Token& tok) {
     const std::string& name = tok.text;
     if (name == "declare" || name == "local") {
         directive_declare(tok, name == "local");
@@ -142,6 +199,8 @@ void Parser::directive_declare(const Token& tok, bool local) {
     expect("=");
     if (try_defer_declaration(id, local)) return;
     m_declaring.emplace_back();
+    const std::size_t frames = m_frames.size();
+    const std::size_t local_scope = m_scopes.size() - 1;
     Value v;
     try {
         v = parse_rvalue();
@@ -151,6 +210,12 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
     std::vector<Diagnostic> deferred = std::move(m_declaring.back());
     m_declaring.pop_back();
+    // POV-Ray compat: such a value ended at a directive inside a macro it called, and cannot go on from there.
+    if (const Token& d = raw(); std::holds_alternative<Numeric>(v) && d.kind == TokenKind::Directive &&
+                                m_frames.size() > frames)
+        fail(d, "the value of '" + id.text + "' ends at '#" + d.text +
+                    "' inside the macro it called (POV-Ray reads no directive between the operands of a declared "
+                    "value); put the macro call in parentheses");
     // raw(), not peek_expr(): a macro's #end right here must not be read before the by-reference check below.
     if (const Token& op = raw(); !std::holds_alternative<Numeric>(v) && op.kind == TokenKind::Punct &&
                                        (op.text == "+" || op.text == "-" || op.text == "*" || op.text == "/"))
@@ -164,8 +229,11 @@ void Parser::directive_declare(const Token& tok, bool local) {
         *array = std::make_shared<ArrayValue>(**array);
     }
     const bool numeric = std::holds_alternative<Numeric>(v);
-    if (!local && !m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
-        const Frame& frame = m_frames.back();
+    // POV-Ray compat: #local on a by-reference parameter also writes through, since the parameter lives in the
+    // macro's own table (macro4.pov: `#local V = V + 1;`). The frame is the one the #declare stands in: a value
+    // from a macro can end inside that macro's body (tracevines.pov: `Q;` in `#if ... Q; #else ... #end`).
+    if (frames > 0 && m_frames[frames - 1].kind == Frame::Kind::Macro) {
+        const Frame& frame = m_frames[frames - 1];
         if (const auto ref = frame.references.find(id.text); ref != frame.references.end()) {
             // A by-reference parameter: update the caller's identifier and the parameter itself.
             const auto& [scope, name] = ref->second;
@@ -178,7 +246,10 @@ void Parser::directive_declare(const Token& tok, bool local) {
             return;
         }
     }
-    declare(id.text, std::move(v), local);
+    if (local && m_frames.size() > frames)
+        m_scopes[local_scope][id.text] = std::move(v);
+    else
+        declare(id.text, std::move(v), local);
     if (numeric) {
         accept_semicolon_after_declare(Numeric{}, id);
     } else if (is_punct(peek_expr(), ";")) {

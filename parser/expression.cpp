@@ -51,6 +51,7 @@ const char* value_kind_name(const Value& v) {
         case 9: return "an array";
         case 10: return "a function";
         case 11: return "a file handle";
+        case 12: return "an interior";
         default: return "an unsupported item";
     }
 }
@@ -81,9 +82,11 @@ Value Parser::parse_rvalue() {
         }
         if (w == "pigment") return parse_pigment_body(next());
         if (w == "finish") return parse_finish_body(next());
+        if (w == "interior") return parse_interior_body(next());
         if (w == "texture") {
             Texture tx = parse_texture_body(next());
             // POV-Ray compat: further textures in one declaration are layers painted over the first.
+            const ScopedSetting layers(m_directive_ends_value_at, m_brace_depth);
             while (is_word(peek_expr(), "texture")) tx.layers.push_back(parse_texture_body(next()));
             return tx;
         }
@@ -105,6 +108,7 @@ Value Parser::parse_rvalue() {
         if (w == "array") return parse_array_declaration(next());
         if (is_array_element_next()) {
             Value element = *take_array_element();
+            const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
             if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
             return element;
         }
@@ -126,6 +130,7 @@ Value Parser::parse_rvalue() {
             }
         }
     }
+    const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
     return parse_numeric();
 }
 
@@ -351,6 +356,8 @@ std::optional<Numeric> Parser::builtin_constant(const Token& t) {
 }
 
 Numeric Parser::parse_primary() {
+    // Inside an operand directives run as they come (`(M(0)) + 1` with M's body in #if ... #else ... #end).
+    ScopedSetting operand(m_directive_ends_value_at, k_directives_run);
     const Token t = peek();
     if (t.kind == TokenKind::Number) {
         next();
@@ -396,6 +403,7 @@ Numeric Parser::parse_primary() {
     if (const auto m = m_macros.find(t.text); m != m_macros.end()) {
         next();
         invoke_macro(t, m->second);
+        operand.restore();  // the body's first token is the operand; what follows it is at the caller's level
         return parse_unary();
     }
     if (auto element = take_array_element()) {

@@ -300,7 +300,17 @@ Numeric Parser::parse_function(const Token& name) {
         return Numeric::scalar(static_cast<double>((state >> 16) & 0x7FFFu) / 32767.0);
     }
     if (f == "trace" || f == "inside" || f == "min_extent" || f == "max_extent") return parse_geometry_query(name);
-    static const char* const unsupported[] = {"vturbulence", "eval_pigment", "bitwise_and",
+    if (f == "vturbulence") {
+        // vturbulence(Lambda, Omega, Octaves, V): the vector fBm that displaces points in `turbulence`.
+        const auto args = arg_list(4, 4);
+        if (!m_options.vector_turbulence)
+            fail(name, "vturbulence() needs the lighting layer, which this program did not provide");
+        // POV-Ray compat: the octaves are truncated and kept within 1..10.
+        const int octaves = std::clamp(static_cast<int>(scalar_arg(args[2])), 1, 10);
+        return Numeric::vector3(
+            m_options.vector_turbulence(vector_arg(args[3]), octaves, scalar_arg(args[1]), scalar_arg(args[0])));
+    }
+    static const char* const unsupported[] = {"eval_pigment", "bitwise_and",
                                               "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");

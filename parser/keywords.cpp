@@ -36,10 +36,10 @@ const std::vector<std::string_view> k_unsupported_objects = {
     "cylinder", "cone", "torus", "disc", "mesh", "mesh2", "blob", "lathe", "sor", "prism", "text",
     "height_field", "isosurface", "parametric", "julia_fractal", "superellipsoid", "sphere_sweep",
     "bicubic_patch", "polygon", "triangle", "smooth_triangle", "quadric", "cubic", "quartic", "poly",
-    "polynomial", "ovus", "lemon", "intersection", "difference", "merge"};
+    "polynomial", "ovus", "lemon", "intersection", "difference", "merge", "light_group"};
 
 const std::vector<std::string_view> k_unsupported_blocks = {
-    "fog", "sky_sphere", "rainbow", "media", "light_group", "normal", "interior", "material",
+    "fog", "sky_sphere", "rainbow", "media", "normal", "interior", "material",
     "interior_texture", "photons", "color_map", "colour_map", "pigment_map", "normal_map", "texture_map",
     "slope_map", "density", "density_map", "function", "spline", "looks_like", "projected_through",
     "clipped_by", "bounded_by", "irid", "subsurface", "warp", "image_map", "bump_map", "material_map"};

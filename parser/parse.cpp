@@ -122,6 +122,7 @@ void Parser::emit_feature_warning(Diagnostic d) {
 }
 
 void Parser::fail_undeclared(const Token& at) {
+    if (m_failed_declarations.count(at.text) > 0) throw StatementError{};  // its #declare was reported
     Diagnostic d = make_diagnostic(Severity::Error, at, "undeclared identifier '" + at.text + "'");
     // Suggest the closest declared name (preferred) or keyword within edit distance 2.
     std::string best;

@@ -64,6 +64,9 @@ struct ParseOptions {
     /// The geometry layer, for trace(), inside(), min_extent() and max_extent() at parse time; when null those
     /// functions are an error. Not owned.
     const SceneQuery* query = nullptr;
+    /// The lighting layer's vector turbulence (POV-Ray's DTurbulence) of point p with octaves, omega and lambda,
+    /// for vturbulence(); when empty that function is an error.
+    std::function<Vec3(const Vec3& p, int octaves, double omega, double lambda)> vector_turbulence;
 };
 
 /// The outcome of a parse: a scene when there was no error, and every diagnostic in source order.

@@ -107,7 +107,13 @@ private:
     bool is_word(const Token& t, const char* w) const;
     void accept_semicolon_after_declare(const Value& v, const Token& where);
 
+    /// Runs the directive at the current token; when it fails, skips what is left of it (skip_failed_directive).
     void process_directive();
+    void run_directive(const Token& tok);
+    /// After a directive `tok` failed: returns to the macro/include depth, #if/#while nesting and brace depth it
+    /// started at, and skips the rest of its operands (of an #if/#while/... its whole block), so the error is
+    /// reported once and its #else/#end do not fail again.
+    void skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces);
     void directive_declare(const Token& tok, bool local);
     void directive_if(const Token& tok);
     void directive_while(const Token& tok);
@@ -326,6 +332,27 @@ private:
     };
     friend class NestingGuard;
     std::size_t m_nesting = 0;
+    /// POV-Ray compat: while a directive reads its operands (a #declare's value included) and while a float,
+    /// vector or colour value reads its operators, the brace depth they started at; a directive met at that depth
+    /// ends what is being read. Blocks opened inside (objects, pigments, ...) and the inside of an operand ('(',
+    /// '<', a call: k_directives_run) run directives as they come.
+    static constexpr std::size_t k_directives_run = static_cast<std::size_t>(-1);
+    std::size_t m_directive_ends_value_at = k_directives_run;
+    /// Sets a variable for a scope and puts its old value back at the end, or earlier through restore().
+    class ScopedSetting {
+    public:
+        ScopedSetting(std::size_t& setting, std::size_t value) : m_setting(setting), m_old(setting) {
+            setting = value;
+        }
+        ~ScopedSetting() { restore(); }
+        ScopedSetting(const ScopedSetting&) = delete;
+        ScopedSetting& operator=(const ScopedSetting&) = delete;
+        void restore() { m_setting = m_old; }
+
+    private:
+        std::size_t& m_setting;
+        std::size_t m_old;
+    };
     std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
     const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
 
@@ -344,6 +371,7 @@ private:
     std::unordered_map<std::string, Macro> m_macros;
     std::vector<Diagnostic> m_diagnostics;
     std::size_t m_errors = 0;
+    std::set<std::string> m_failed_declarations;  ///< identifiers whose #declare failed: their uses are not errors again
     std::set<std::string> m_warned_features;
     /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
     /// so unused declarations of include files cost nothing.

@@ -61,6 +61,10 @@ bool Parser::starts_value(const Token& t) {
     if (is_punct(t, "<") || is_punct(t, "(") || is_punct(t, "-") || is_punct(t, "+")) return true;
     if (t.kind != TokenKind::Identifier) return false;
     if (is_color_keyword(t)) return true;
+    // The float constants (`metallic on` in diffract.pov); x, y, z, u, v and t would be read as keywords here.
+    static const char* const constants[] = {"on", "off", "true", "false", "yes", "no", "pi"};
+    for (const char* c : constants)
+        if (t.text == c) return true;
     const Value* v = lookup(t.text);
     return v != nullptr && std::holds_alternative<Numeric>(*v);
 }

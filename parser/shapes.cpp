@@ -171,7 +171,8 @@ Shape Parser::parse_shape_parameters(const Token& kw) {
         Quartic q;
         expect("<");
         for (std::size_t i = 0; i < q.coefficients.size(); ++i) {
-            if (i > 0) expect(",");
+            // POV-Ray compat: the commas are optional (primitiv.pov and hyptorus.pov leave some out).
+            if (i > 0) accept(",");
             // The additive level, as in `matrix`: a '>' here closes the vector, it is no comparison.
             const Token at = peek();
             const Numeric c = parse_additive();
@@ -373,14 +374,22 @@ Mesh Parser::parse_mesh_body(const Token& kw) {
             next();
             expect("{");
             parse_triangle(mesh, t.text == "smooth_triangle");
-            // Per-triangle textures: read and reported, the mesh's own texture is used.
+            // Per-triangle textures and uv coordinates: read and reported, the mesh's own texture is used.
             while (!accept("}")) {
                 const Token item = next();
                 if (is_word(item, "texture")) {
                     warn_unsupported(item, "per-triangle texture");
                     parse_texture_body(item);
+                } else if (is_word(item, "uv_vectors")) {
+                    // `uv_vectors <u,v>, <u,v>, <u,v>`: one uv pair for each corner, for uv_mapping.
+                    warn_unsupported(item, "uv_vectors");
+                    for (int k = 0; k < 3; ++k) {
+                        if (k > 0) accept(",");
+                        parse_vector();
+                    }
                 } else {
-                    fail(item, "expected 'texture' or '}' in a mesh triangle but found " + describe_token(item));
+                    fail(item, "expected 'texture', 'uv_vectors' or '}' in a mesh triangle but found " +
+                                   describe_token(item));
                 }
             }
         } else if (is_word(t, "inside_vector")) {
@@ -447,11 +456,14 @@ Mesh Parser::parse_mesh2_body(const Token& kw) {
                 Mesh::Face f;
                 read_index_triple(f.v);
                 mesh.faces.push_back(f);
-                // Optional texture indices after the triple: one or three floats.
+                // Optional texture indices after the triple: one or three floats; a vector (`F2+A` in shapes.inc's
+                // height-field macros) is the next face.
                 while (true) {
                     accept(",");
                     const Token& p = peek();
-                    if (is_punct(p, "<") || is_punct(p, "}")) break;
+                    const Value* v = p.kind == TokenKind::Identifier ? lookup(p.text) : nullptr;
+                    const auto* n = v != nullptr ? std::get_if<Numeric>(v) : nullptr;
+                    if (!(p.kind == TokenKind::Number || is_punct(p, "(") || (n != nullptr && n->n == 1))) break;
                     parse_float();
                 }
             });

@@ -26,17 +26,19 @@ const Token& Parser::peek() {
 }
 
 const Token& Parser::peek_expr() {
-    // Inside an expression only a macro's closing #end is read through (so `M(1) * 2` works); any other
-    // directive ends the expression first, so `#declare A = 1 #if (A)` sees A declared.
+    // A macro's closing #end is always read through (so `M(1) * 2` works). Other directives run too, except
+    // between the operands of a declared value, which they end, so `#declare A = 1 #if (A)` sees A declared.
     while (true) {
         const Token& t = raw();
-        if (t.kind == TokenKind::Directive && t.text == "end" && !m_frames.empty() &&
-            m_frames.back().kind == Frame::Kind::Macro && m_conds.size() == m_frames.back().cond_depth) {
+        if (t.kind != TokenKind::Directive) return t;
+        if (t.text == "end" && !m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro &&
+            m_conds.size() == m_frames.back().cond_depth) {
             ++m_pos;
             return_from_macro();
             continue;
         }
-        return t;
+        if (m_directive_ends_value_at == m_brace_depth) return t;
+        process_directive();
     }
 }
 
@@ -213,7 +215,13 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
                 (is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
                 for (std::size_t s = m_scopes.size(); s > 0; --s) {
                     if (m_scopes[s - 1].count(t.text)) {
-                        references[macro.params[args.size()]] = {s - 1, t.text};
+                        // A parameter that is itself a reference passes on what it refers to.
+                        std::pair<std::size_t, std::string> target{s - 1, t.text};
+                        for (const Frame& f : m_frames)
+                            if (const auto r = f.references.find(t.text);
+                                f.kind == Frame::Kind::Macro && f.scope_index == s - 1 && r != f.references.end())
+                                target = r->second;
+                        references[macro.params[args.size()]] = std::move(target);
                         break;
                     }
                 }
@@ -223,6 +231,8 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
             else
                 args.emplace_back(parse_rvalue());
             if (accept(",")) continue;
+            // POV-Ray compat: the comma between arguments may be left out (shapes.pov: `Center_Object(...) -y`).
+            if (args.size() < macro.params.size() && !is_punct(peek(), ")")) continue;
             expect(")");
             break;
         }

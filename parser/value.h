@@ -94,7 +94,7 @@ struct CameraSpec {
 /// Returns an error message in `error` when the camera is degenerate (and leaves the vectors usable).
 Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning);
 
-/// A declared item of a kind not supported yet (normal, interior, material, function, ...), kept by name only.
+/// A declared item of a kind not supported yet (material, media, spline, ...), kept by name only.
 struct Unsupported {
     std::string what;
 };
@@ -140,7 +140,7 @@ struct Deferred {
 /// Anything an identifier can hold.
 using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
                            Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
-                           std::shared_ptr<const UserFunction>, FileHandle, Deferred>;
+                           std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

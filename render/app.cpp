@@ -20,6 +20,7 @@
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
+#include "lighting/noise.h"
 #include "parser/parse.h"
 #include "render/camera.h"
 #include "render/diff_command.h"
@@ -281,6 +282,9 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     parse_options.defer_library_declarations = !options.check_only;
     const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing
     parse_options.query = &object_query;
+    parse_options.vector_turbulence = [](const Vec3& p, int octaves, double omega, double lambda) {
+        return lighting::dturbulence(p, lighting::TurbulenceParams{octaves, omega, lambda});
+    };
     parse_options.debug_output = [](const std::string& text) { std::cerr << text << std::flush; };
     auto phase_start = Clock::now();
     parser::ParseResult parse = parser::parse_file(options.scene, parse_options);

@@ -43,6 +43,32 @@ TEST(Noise, MatchesPovRaysNoiseFunction) {
     for (const Sample& s : samples) EXPECT_NEAR(noise(s.p, 2), s.expected, 1e-11) << s.p.x;
 }
 
+TEST(Noise, VturbulenceMatchesPovRay) {
+    // POV-Ray 3.7.0.10: #debug vstr(3, vturbulence(Lambda, Omega, Octaves, V), ",", 0, 12), through the parser
+    // with the lighting layer's turbulence plugged in as the CLI does (octaves 2.7 truncate to 2, 20 clamp to 10).
+    parser::ParseOptions options;
+    options.vector_turbulence = [](const Vec3& p, int octaves, double omega, double lambda) {
+        return dturbulence(p, TurbulenceParams{octaves, omega, lambda});
+    };
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\n"
+        "sphere { vturbulence(2, 0.5, 6, <0.3, 0.7, 1.1>), 1 }\n"
+        "sphere { vturbulence(3, 0.25, 2.7, <-1.25, 2.5, 0.125>), 1 }\n"
+        "sphere { vturbulence(2, 0.5, 20, <10.5, -3.25, 7>), 1 }\n",
+        "test.pov", options);
+    ASSERT_TRUE(r.ok());
+    const Vec3 expected[] = {{0.344564479963, -0.261186792178, -0.078804351206},
+                             {0.174196423096, -0.134849620652, 0.177083016186},
+                             {0.104562092773, -0.022230415234, -0.312172768945}};
+    ASSERT_EQ(r.scene->objects.size(), 3u);
+    for (int i = 0; i < 3; ++i) {
+        const Vec3 c = std::get<parser::Sphere>(r.scene->objects[i].shape).center;
+        EXPECT_NEAR(c.x, expected[i].x, 1e-11) << i;
+        EXPECT_NEAR(c.y, expected[i].y, 1e-11) << i;
+        EXPECT_NEAR(c.z, expected[i].z, 1e-11) << i;
+    }
+}
+
 TEST(Patterns, MatchPovRaysEvalPigment) {
     // POV-Ray 3.7.0.10: eval_pigment(pigment { P color_map { [0 rgb 0] [1 rgb 1] } }, point).red (float colours).
     using T = parser::Pattern::Type;

@@ -59,6 +59,32 @@ TEST(Diagnostics, StopsAtErrorLimit) {
     EXPECT_EQ(test::count_errors(r), 5u);
 }
 
+TEST(Diagnostics, ErrorInDirectiveOperandsIsTheOnlyOne) {
+    // Each snippet has one mistake; the rest of the directive (and of an #if/#while/... its block, with its
+    // #else and #end) must not report again, nor the statements after it, nor uses of what it failed to declare.
+    const char* const snippets[] = {
+        "#if (Undeclared) sphere { 0, 1 } #else sphere { 0, 2 } #end\nsphere { 0, 3 }\n",
+        "#if (1 +) sphere { 0, 1 } #end\n",
+        "#while (Foo < 3) #end\n",
+        "#for (I, 0, Q) sphere { 0, I } #end\n",
+        "#switch (Q) #case (1) sphere { 0, 1 } #break #end\n",
+        "#switch (1) #case (Q) #break #end\nsphere { 0, 1 }\n",
+        "#if (0) #elseif (Q) #end\n",
+        "#ifdef (1) #end\n",
+        "#declare X = 1 + Q * 2;\nsphere { 0, X }\nsphere { 0, 1 }\n",
+        "#declare X = sphere { 0, Q };\nobject { X }\n",
+        "#version Q;\nsphere { 0, 1 }\n",
+        "#debug concat(\"a\", Q)\nsphere { 0, 1 }\n",
+        "#macro M(A) #local B = Q; 1 #end\n#if (M(1)) #end\nsphere { 0, 1 }\n",
+        "sphere { 0, 1 #if (Q) #end pigment { rgb 1 } }\nsphere { 0, 1 }\n",
+        "#else sphere { 0, 1 } #end\n",
+    };
+    for (const char* text : snippets) {
+        const ParseResult r = test::parse_fail(text);
+        EXPECT_EQ(test::count_errors(r), 1u) << text << "\n" << test::all_diagnostics(r);
+    }
+}
+
 TEST(Diagnostics, MissingEndAndStrayEnd) {
     ParseResult r = test::parse_fail("#if (1)\nsphere { 0, 1 }\n");
     EXPECT_NE(test::all_diagnostics(r).find("test.pov:1:1: error: '#if' has no matching #end"), std::string::npos)

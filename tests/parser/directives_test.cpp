@@ -109,6 +109,100 @@ TEST(Directives, MacroParametersByReference) {
     EXPECT_NEAR(c.x, 1.0, 1e-12);
 }
 
+// povray 3.7 on macro4.pov's pattern prints 5, 5, 6 and then 7 through a macro passing its parameter on.
+TEST(Directives, LocalOnReferenceParameterWritesCaller) {
+    const Scene s = parse_ok(R"(
+        #macro Inc(V) #local V = V + 1; #end
+        #macro IncTwice(W) Inc(W) #end
+        #declare Value = 5;
+        Inc(Value + 0) sphere { 0, Value }
+        Inc(+Value) sphere { 0, Value }
+        Inc(Value) sphere { 0, Value }
+        IncTwice(Value) sphere { 0, Value }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(radius(s, 0), 5);
+    EXPECT_EQ(radius(s, 1), 5);
+    EXPECT_EQ(radius(s, 2), 6);
+    EXPECT_EQ(radius(s, 3), 7);
+}
+
+// Values checked with povray 3.7: directives inside a macro body run when the call is an operand of an object's
+// expression or stands in parentheses; at the top level of a #declare POV-Ray stops at the directive.
+TEST(Directives, MacroBodyWithConditionalsInsideArithmetic) {
+    const Scene s = parse_ok(R"(
+        #macro M(A) #if (A) 1 #else 2 #end #end
+        #macro N(A) #if (A) 1 #elseif (A + 1) 3 #else 2 #end + 5 #end
+        #macro S(A) #switch (A) #case (0) 7 #break #else 8 #end #end
+        sphere { 0, M(0) + 10 }
+        sphere { 0, M(1) * 3 + 10 }
+        #declare V = (M(0)) + 10;
+        sphere { 0, V }
+        #declare W = <M(0), M(1) + 1, 3>;
+        sphere { W, 1 }
+        #declare P = (N(0) + 10) + (N(-1) * 2) + 100 * (S(0) + S(1) * 10);
+        sphere { 0, P }
+    )");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_EQ(radius(s, 0), 12);
+    EXPECT_EQ(radius(s, 1), 13);
+    EXPECT_EQ(radius(s, 2), 12);
+    const Vec3 w = std::get<Sphere>(s.objects[3].shape).center;
+    EXPECT_EQ(w.x, 2);
+    EXPECT_EQ(w.y, 2);
+    EXPECT_EQ(radius(s, 4), 8729);
+
+    const ParseResult r = test::parse_fail("#macro M(A) #if (A) 1 #else 2 #end #end\n#declare V = M(0) + 10;\n");
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].loc.line, 1u);
+    EXPECT_EQ(r.diagnostics[0].loc.column, 31u);  // the #end of the #if, where the value stopped
+    EXPECT_NE(r.diagnostics[0].message.find("put the macro call in parentheses"), std::string::npos);
+}
+
+// woods.inc declares textures without ';' and layers later ones on earlier ones, array1.pov an array: the next
+// #declare must not run while the layers of the previous one, or its array sizes, are looked for.
+TEST(Directives, DeclarationEndsAtTheNextDirective) {
+    const Scene s = parse_ok(R"(
+        #declare T1 = texture { pigment { rgb 1 } }
+        #declare T2 = texture { T1 } texture { pigment { rgbt <0, 0, 1, 0.5> } }
+        #declare T3 = texture { T2 }
+        sphere { 0, 1 texture { T3 } }
+        #declare A = array[2]
+        #declare A[1] = 3;
+        sphere { 0, A[1] }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(s.objects[0].texture.layers.size(), 1u);
+    EXPECT_EQ(radius(s, 1), 3);
+}
+
+// povray 3.7: `M(1 2)` passes two arguments, `M(P -1)` one (P - 1), then misses the second.
+TEST(Directives, MacroArgumentCommasAreOptional) {
+    const Scene s = parse_ok(R"(
+        #macro M(A, B) A * 10 + B #end
+        #macro Place(O, V) object { O translate V } #end
+        sphere { 0, M(1 2) }
+        Place(sphere { 0, 1 } -y)
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(radius(s, 0), 12);
+    EXPECT_EQ(s.objects[1].transform.point({0, 0, 0}).y, -1);
+    const ParseResult r = test::parse_fail("#declare P = 1;\n#macro M(A, B) A #end\nsphere { 0, M(P -1) }\n");
+    EXPECT_NE(test::all_diagnostics(r).find("missing parameter 'B'"), std::string::npos) << test::all_diagnostics(r);
+}
+
+// tracevines.pov: a macro's value ends with ';' inside its #if, so the #local that called it completes while the
+// macro is still being read; povray 3.7 binds the name where the #local stands (prints n=1,2,3).
+TEST(Directives, LocalFromMacroValueBindsInTheCallersScope) {
+    const Scene s = parse_ok(R"(
+        #macro F(A) #local Q = A; #if (1) Q; #else <0, 0, 0>; #end #end
+        #macro G() #local N = F(<1, 2, 3>) sphere { N, 1 } #end
+        G()
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center.z, 3);
+}
+
 TEST(Directives, LocalIsScopedToIncludeFile) {
     TempDir dir;
     dir.write("inc.inc", "#local L = 5;\n#declare G = L + 1;\n#declare A = 10;\n");

@@ -185,6 +185,28 @@ TEST(Color, IdentifiersCarryFiveComponents) {
     expect_color(eval_background("G", "#declare G = color 0.25;"), 0.25, 0.25, 0.25, 0.25, 0.25);
 }
 
+TEST(Expression, VturbulenceHandsItsArgumentsToTheLightingLayer) {
+    // vturbulence(Lambda, Omega, Octaves, V); POV-Ray truncates the octaves and keeps them within 1..10. (The values
+    // themselves are checked against POV-Ray in tests/lighting, where the turbulence lives.)
+    ParseOptions o = test::default_options();
+    std::vector<std::string> calls;
+    o.vector_turbulence = [&](const Vec3& p, int octaves, double omega, double lambda) {
+        calls.push_back(std::to_string(octaves) + " " + std::to_string(omega) + " " + std::to_string(lambda));
+        return Vec3{p.x + 1, p.y, p.z};
+    };
+    const Scene s = parse_ok("sphere { vturbulence(3, 0.25, 2.7, <1, 2, 3>), 1 }\n"
+                             "#declare V = vturbulence(2, 0.5, 0, x) + vturbulence(2, 0.5, 20, y);\n",
+                             o);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center.x, 2);
+    ASSERT_EQ(calls.size(), 3u);
+    EXPECT_EQ(calls[0], "2 0.250000 3.000000");
+    EXPECT_EQ(calls[1], "1 0.500000 2.000000");
+    EXPECT_EQ(calls[2], "10 0.500000 2.000000");
+    const ParseResult r = test::parse_fail("#declare V = vturbulence(2, 0.5, 6, x);\n");
+    EXPECT_NE(test::all_diagnostics(r).find("needs the lighting layer"), std::string::npos) << test::all_diagnostics(r);
+}
+
 TEST(Expression, ErrorsAreReportedNotThrown) {
     test::parse_fail("sphere { 0, 1 / 0 }");
     test::parse_fail("sphere { 0, sqrt(-1) }");

@@ -198,6 +198,47 @@ TEST(Objects, PigmentFinishTextureAndIdentifiers) {
     EXPECT_DOUBLE_EQ(s.objects[3].texture.finish.ambient.r, 0.1);
 }
 
+TEST(Objects, DeclaredInteriorIsCopiedAndModified) {
+    // The pattern of optics.pov, laser.pov and glass.inc: an interior identifier, alone or followed by items,
+    // also passed through a macro parameter (mediasky.pov).
+    const Scene s = parse_ok(R"(
+        #declare I_Glass = interior { ior 1.5 fade_distance 0.5 fade_power 1001 }
+        #declare I_Faded = interior { I_Glass fade_distance 2 }
+        #macro Shell(Int) sphere { 0, 1 interior { Int } } #end
+        sphere { 0, 1 interior { I_Glass } }
+        sphere { 0, 1 interior { I_Faded ior 1.33 } }
+        Shell(interior { ior 2 })
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_EQ(s.objects[0].interior.ior, 1.5);
+    EXPECT_EQ(s.objects[0].interior.fade_distance, 0.5);
+    EXPECT_EQ(s.objects[0].interior.fade_power, 1001);
+    EXPECT_EQ(s.objects[1].interior.ior, 1.33);
+    EXPECT_EQ(s.objects[1].interior.fade_distance, 2);
+    EXPECT_EQ(s.objects[1].interior.fade_power, 1001);
+    EXPECT_EQ(s.objects[2].interior.ior, 2);
+    const ParseResult r = test::parse_fail("#declare F = finish { ambient 0 }\nsphere { 0, 1 interior { F } }\n");
+    ASSERT_EQ(test::count_errors(r), 1u) << test::all_diagnostics(r);
+    EXPECT_EQ(r.diagnostics[0].message, "'F' is a finish, not an interior");
+}
+
+TEST(Objects, MetallicTakesAnOptionalAmountOrBoolean) {
+    // diffract.pov writes `metallic on`; POV-Ray reads the amount as any float, 1 when it is left out.
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 finish { metallic on reflection { 0.5 metallic off } } }
+        sphere { 0, 1 finish { metallic off } }
+        sphere { 0, 1 finish { metallic phong 1 } }
+        sphere { 0, 1 finish { metallic 0.25 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].texture.finish.metallic, 1);
+    EXPECT_EQ(s.objects[0].texture.finish.reflection_metallic, 0);
+    EXPECT_EQ(s.objects[1].texture.finish.metallic, 0);
+    EXPECT_EQ(s.objects[2].texture.finish.metallic, 1);
+    EXPECT_EQ(s.objects[2].texture.finish.phong, 1);
+    EXPECT_EQ(s.objects[3].texture.finish.metallic, 0.25);
+}
+
 TEST(Objects, DefaultTextureIsBlackWithDefaultFinish) {
     const Scene s = parse_ok("sphere { 0, 1 }");
     ASSERT_EQ(s.objects.size(), 1u);
@@ -272,6 +313,22 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
     EXPECT_EQ(s.warnings[0].loc.column, 9u);
+}
+
+TEST(Unsupported, LightGroupStandsWhereObjectsDo) {
+    // abyss.pov puts light groups inside a union; POV-Ray takes them wherever an object may stand.
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        union {
+          light_group { sphere { 0, 1 } light_source { <0, 10, 0> rgb 1 } global_lights on }
+          sphere { x, 2 }
+          translate y
+        }
+        light_group { sphere { 0, 3 } })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(r.scene->objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 2);
+    EXPECT_NE(test::all_diagnostics(r).find("light_group is not rendered yet"), std::string::npos);
 }
 
 TEST(Objects, OptionalCommasAndRelationsOnlyInParentheses) {

@@ -117,5 +117,47 @@ TEST(Prism, SplineTypesAndCounts) {
     parse_fail("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
 }
 
+// meshcam_macros.inc gives each mesh triangle uv coordinates (povray 3.7 renders its demos); they are read and
+// reported, and the triangle keeps its corners and normals.
+TEST(Mesh, TriangleUvVectorsAreReadAndReported) {
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        mesh {
+          smooth_triangle { <0, 0, 0>, z, <1, 0, 0>, z, <0, 1, 0>, z uv_vectors <0, 0>, <1, 0>, <0, 1> }
+          triangle { <1, 0, 0>, <1, 1, 0>, <0, 1, 0> uv_vectors <1, 0> <1, 1> <0, 1> texture { pigment { rgb 1 } } }
+        })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(r.scene->objects.size(), 1u);
+    const auto& mesh = std::get<Mesh>(r.scene->objects[0].shape);
+    ASSERT_EQ(mesh.faces.size(), 2u);
+    EXPECT_EQ(mesh.normals.size(), 3u);
+    EXPECT_EQ(mesh.vertices[5].y, 1);
+    EXPECT_NE(test::all_diagnostics(r).find("uv_vectors is not rendered yet"), std::string::npos);
+    parse_fail("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> uv_vectors <0, 0>, <1, 0> } }");
+}
+
+// POV-Ray reads the commas between quartic coefficients as optional (primitiv.pov, hyptorus.pov), and a mesh2 face
+// is followed by texture indices only when a float comes next (shapes.inc writes `F1+A, F2+A` with vector F1, F2).
+TEST(Mesh, OptionalCommasAndFaceIndicesFromVectorIdentifiers) {
+    const Scene s = parse_ok(R"(
+        quartic { <1, 0, 0, 0, 2, 0, 0, 2, 0, -2.5, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+                   1, 0, 0, 2, 0  1.5, 0, 0, 0, 0, 1, 0, -2.5, 0, 0.5> }
+        #declare F1 = <0, 1, 2>;
+        #declare F2 = <1, 3, 2>;
+        mesh2 {
+          vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, <1, 1, 0> }
+          face_indices { 3, F1 + 0, F2, <0, 1, 3> }
+        }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const auto& q = std::get<Quartic>(s.objects[0].shape);
+    EXPECT_EQ(q.coefficients[25], 1.5);
+    EXPECT_EQ(q.coefficients[34], 0.5);
+    const auto& mesh = std::get<Mesh>(s.objects[1].shape);
+    ASSERT_EQ(mesh.faces.size(), 3u);
+    EXPECT_EQ(mesh.faces[1].v[1], 3);
+    EXPECT_EQ(mesh.faces[2].v[2], 3);
+}
+
 }  // namespace
 }  // namespace wardray::parser
