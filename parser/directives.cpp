@@ -246,9 +246,10 @@ void Parser::directive_declare(const Token& tok, bool local) {
             return;
         }
     }
-    if (local && m_frames.size() > frames)
+    if (local && m_frames.size() > frames) {
+        before_rebinding(id.text);
         m_scopes[local_scope][id.text] = std::move(v);
-    else
+    } else
         declare(id.text, std::move(v), local);
     if (numeric) {
         accept_semicolon_after_declare(Numeric{}, id);
