@@ -31,7 +31,10 @@ public:
     const char* begin() const { return m_data; }
     const char* end() const { return m_data + m_size; }
 
-    friend bool operator==(const TokenText& a, std::string_view b) { return a.view() == b; }
+    // The first characters decide most comparisons of a word with a keyword: check them before memcmp.
+    friend bool operator==(const TokenText& a, std::string_view b) {
+        return a.m_size == b.size() && (b.empty() || (a.m_data[0] == b[0] && a.view() == b));
+    }
     friend std::string operator+(std::string a, const TokenText& b) { return a.append(b.view()); }
     friend std::string operator+(const char* a, const TokenText& b) { return std::string(a).append(b.view()); }
     friend std::string operator+(const TokenText& a, const char* b) { return std::string(a.view()).append(b); }

@@ -99,12 +99,13 @@ private:
     const Token& peek();
     const Token& peek_expr();
     Token next();
-    bool accept(const char* punct);
-    bool accept_keyword(const char* word);
-    Token expect(const char* punct);
+    bool accept(std::string_view punct);
+    bool accept_keyword(std::string_view word);
+    Token expect(std::string_view punct);
     Token expect_identifier();
-    bool is_punct(const Token& t, const char* p) const;
-    bool is_word(const Token& t, const char* w) const;
+    // Inline, taking views: most callers pass literals, whose length is then known where they are compared.
+    bool is_punct(const Token& t, std::string_view p) const { return t.kind == TokenKind::Punct && t.text == p; }
+    bool is_word(const Token& t, std::string_view w) const { return t.kind == TokenKind::Identifier && t.text == w; }
     void accept_semicolon_after_declare(const Value& v, const Token& where);
 
     /// Runs the directive at the current token; when it fails, skips what is left of it (skip_failed_directive).

@@ -58,31 +58,25 @@ Token Parser::next() {
     return t;
 }
 
-bool Parser::is_punct(const Token& t, const char* p) const {
-    return t.kind == TokenKind::Punct && t.text == p;
-}
-
-bool Parser::is_word(const Token& t, const char* w) const {
-    return t.kind == TokenKind::Identifier && t.text == w;
-}
-
-bool Parser::accept(const char* punct) {
+bool Parser::accept(std::string_view punct) {
     if (!is_punct(peek(), punct)) return false;
     next();
     return true;
 }
 
-bool Parser::accept_keyword(const char* word) {
+bool Parser::accept_keyword(std::string_view word) {
     if (!is_word(peek(), word)) return false;
     next();
     return true;
 }
 
-Token Parser::expect(const char* punct) {
+Token Parser::expect(std::string_view punct) {
     const Token& t = peek();
     if (!is_punct(t, punct)) {
         const std::string found = t.kind == TokenKind::EndOfFile ? "end of file" : "'" + t.text + "'";
-        fail(t, std::string("expected '") + punct + "' but found " + found);
+        std::string message = "expected '";
+        message += punct;
+        fail(t, message + "' but found " + found);
     }
     return next();
 }
