@@ -109,7 +109,21 @@ ObjectValue Parser::parse_object(const Token& kw) {
         part.object.loc = loc;
         ov.parts.push_back(std::move(part));
     };
-    if (is_shape_keyword(w)) {
+    const Value* copied = nullptr;
+    if (w == "mesh" || w == "mesh2") {
+        // POV-Ray compat: `mesh { Declared_Mesh modifiers }` copies the declared mesh (the mesh-camera examples
+        // place one mesh several times this way).
+        const Token& first = peek();
+        const Value* v = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
+        const auto* declared = v ? std::get_if<Boxed<ObjectValue>>(v) : nullptr;
+        if (declared && (*declared)->parts.size() == 1 && (*declared)->lights.empty() &&
+            std::holds_alternative<Mesh>((*declared)->parts.front().object.shape))
+            copied = v;
+    }
+    if (copied != nullptr) {
+        next();
+        ov = *std::get<Boxed<ObjectValue>>(*copied);
+    } else if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
         // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
         if (w == "text") ov.parts.back().object.transform = Transform::rotation({0.001, 0.001, 0.001});
@@ -366,6 +380,7 @@ Transform Parser::parse_transform_body(const Token& kw) {
     expect("{");
     Transform result;
     while (true) {
+        expand_macros();  // transforms.inc's macros stand where a transform item is expected
         const Token t = peek();
         if (parse_transform_item(t, result)) continue;
         next();

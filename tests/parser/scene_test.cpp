@@ -443,5 +443,23 @@ TEST(Scene, IgnoredCrandIsSaidOncePerScene) {
     EXPECT_EQ(s.warnings[0].loc.line, 2u);  // after the assumed_gamma line parse_ok adds
 }
 
+TEST(Objects, MeshBlockCopiesADeclaredMesh) {
+    // meshcam_persp_demo.pov: `mesh { camera_mesh translate ... }` places a declared mesh again.
+    const Scene s = test::parse_ok("#declare M = mesh { triangle { 0, x, y } triangle { 0, y, z } }\n"
+                                   "mesh { M translate 2 * x }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    ASSERT_TRUE(std::holds_alternative<Mesh>(s.objects[0].shape));
+    EXPECT_EQ(std::get<Mesh>(s.objects[0].shape).faces.size(), 2u);
+    EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vec3{2, 0, 0}));
+}
+
+TEST(Objects, MacroInsideATransformBlock) {
+    // transforms.inc's macros return `transform { ... }` and stand inside transform blocks (meshcam_macros.inc).
+    const Scene s = test::parse_ok("#macro Shift(V) transform { translate V } #end\n"
+                                   "sphere { 0, 1 transform { Shift(<1, 2, 3>) scale 2 } }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vec3{2, 4, 6}));
+}
+
 }  // namespace
 }  // namespace wardray::parser
