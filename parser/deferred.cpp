@@ -19,7 +19,8 @@ namespace {
 
 /// Value keywords whose declarations may be deferred.
 bool deferrable_item(std::string_view w) {
-    return w == "texture" || w == "pigment" || w == "finish" || w == "color_map" || w == "colour_map";
+    return w == "texture" || w == "pigment" || w == "finish" || w == "normal" || w == "color_map" ||
+           w == "colour_map";
 }
 
 /// Words whose value depends on when they are read (a random stream's state, files, the objects so far).
@@ -33,7 +34,7 @@ bool readable_when_deferred(const Value& v) {
     return std::holds_alternative<Numeric>(v) || std::holds_alternative<std::string>(v) ||
            std::holds_alternative<Boxed<Pigment>>(v) || std::holds_alternative<Boxed<Finish>>(v) ||
            std::holds_alternative<Boxed<Texture>>(v) || std::holds_alternative<Boxed<Transform>>(v) ||
-           std::holds_alternative<Unsupported>(v) || std::holds_alternative<Boxed<Interior>>(v) ||
+           std::holds_alternative<Unsupported>(v) || std::holds_alternative<Boxed<Interior>>(v) || std::holds_alternative<Boxed<Normal>>(v) ||
            std::holds_alternative<Deferred>(v);
 }
 

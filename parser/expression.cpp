@@ -52,6 +52,7 @@ const char* value_kind_name(const Value& v) {
         case 10: return "a function";
         case 11: return "a file handle";
         case 12: return "an interior";
+        case 13: return "a normal";
         default: return "an unsupported item";
     }
 }
@@ -82,6 +83,7 @@ Value Parser::parse_rvalue() {
         }
         if (w == "pigment") return parse_pigment_body(next());
         if (w == "finish") return parse_finish_body(next());
+        if (w == "normal") return parse_normal_body(next());
         if (w == "interior") return parse_interior_body(next());
         if (w == "texture") {
             Texture tx = parse_texture_body(next());

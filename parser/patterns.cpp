@@ -389,10 +389,22 @@ Normal Parser::parse_normal_body(const Token& kw) {
     expand_macros();
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<Unsupported>(*v)) {
-            // A declared normal: identifiers of this kind are not stored yet (warned where declared).
-            skip_to_close(kw, "}", m_brace_depth);
-            return n;
+        // A declared normal, or an element of an array of them (allnormals.pov), then modifiers.
+        const Token at = first;
+        std::optional<Value> declared;
+        if (is_array_element_next()) {
+            declared = take_array_element();
+            if (!declared) fail(at, "this array element is empty");
+        } else if (const Value* v = lookup(at.text); v && std::holds_alternative<Boxed<Normal>>(*v)) {
+            declared = *v;
+            next();
+        }
+        if (declared) {
+            const auto* normal = std::get_if<Boxed<Normal>>(&*declared);
+            if (normal == nullptr) fail(at, "expected a normal but found " + std::string(value_kind_name(*declared)));
+            const SourceLoc loc = n.loc;
+            n = **normal;
+            n.loc = loc;
         }
     }
     parse_normal_items(n, kw, "}");

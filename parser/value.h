@@ -140,7 +140,8 @@ struct Deferred {
 /// Anything an identifier can hold.
 using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
                            Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
-                           std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Deferred>;
+                           std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Boxed<Normal>,
+                           Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

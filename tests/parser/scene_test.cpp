@@ -461,5 +461,28 @@ TEST(Objects, MacroInsideATransformBlock) {
     EXPECT_EQ(s.objects[0].transform.point({0, 0, 0}), (Vec3{2, 4, 6}));
 }
 
+TEST(Objects, DeclaredNormalsReadAsWrittenInPlace) {
+    const Scene s = test::parse_ok("#declare N = normal { bumps 0.5 scale 0.2 }\n"
+                                   "#declare A = array[2] { normal { dents 0.3 }, N }\n"
+                                   "sphere { 0, 1 normal { bumps 0.5 scale 0.2 } }\n"
+                                   "sphere { 0, 1 normal { N } }\n"
+                                   "sphere { 0, 1 normal { A[1] } }\n"
+                                   "sphere { 0, 1 texture { normal { A[0] } } }\n");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_TRUE(s.warnings.empty()) << format_diagnostic(s.warnings.front());
+    auto normal = [&](std::size_t i) {
+        Normal n = s.objects[i].texture.normal;
+        n.loc = {};
+        return n;
+    };
+    EXPECT_EQ(normal(0).pattern.type, Pattern::Type::Bumps);
+    EXPECT_TRUE(normal(1) == normal(0));
+    EXPECT_TRUE(normal(2) == normal(0));
+    EXPECT_EQ(normal(3).pattern.type, Pattern::Type::Dents);
+    const ParseResult r = test::parse_fail("#declare A = array[1] { 1 }\nsphere { 0, 1 normal { A[0] } }\n");
+    EXPECT_NE(test::all_diagnostics(r).find("expected a normal but found a number"), std::string::npos)
+        << test::all_diagnostics(r);
+}
+
 }  // namespace
 }  // namespace wardray::parser
