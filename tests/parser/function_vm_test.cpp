@@ -56,6 +56,71 @@ TEST(FunctionVm, UnsupportedCalleeIsReportedAndGivesZero) {
     EXPECT_EQ(p.evaluate(args), 1.0);
 }
 
+/// Appends `for local 0 = first while <= last: acc op= body()` as sum()/prod() compile it; `body` emits one value.
+template <class Body>
+void emit_loop(FunctionProgram& p, double first, double last, Instruction::Op combine, double neutral, Body body) {
+    p.require_locals(2);
+    p.emit(ins(Instruction::Op::Const, 0, first));
+    p.emit(ins(Instruction::Op::StoreLocal, 0));
+    p.emit(ins(Instruction::Op::Const, 0, last));
+    p.emit(ins(Instruction::Op::StoreLocal, 1));
+    p.emit(ins(Instruction::Op::Const, 0, neutral));
+    Instruction test = ins(Instruction::Op::LoopTest);
+    test.b = 0;
+    const std::size_t skip = p.emit(test);
+    Instruction next = ins(Instruction::Op::LoopNext, static_cast<std::uint32_t>(p.size()));
+    next.b = 0;
+    body();
+    p.emit(ins(combine));
+    p.emit(next);
+    p.patch_jump(skip, p.size());
+}
+
+TEST(FunctionVm, LoopOverLocalSlot) {
+    // sum(i, 1, 4, i * x) = 10 x
+    FunctionProgram p({"x"});
+    emit_loop(p, 1.0, 4.0, Instruction::Op::Add, 0.0, [&] {
+        p.emit(ins(Instruction::Op::Local, 0));
+        p.emit(ins(Instruction::Op::Arg, 0));
+        p.emit(ins(Instruction::Op::Mul));
+    });
+    EXPECT_EQ(p.locals(), 2u);
+    const double args[] = {2.0};
+    EXPECT_EQ(p.evaluate(args), 20.0);
+    // Evaluating again starts from fresh slots.
+    EXPECT_EQ(p.evaluate(args), 20.0);
+}
+
+TEST(FunctionVm, LoopBoundsDecideTheCount) {
+    const auto count = [](double first, double last) {
+        FunctionProgram p({});
+        emit_loop(p, first, last, Instruction::Op::Add, 0.0, [&] { p.emit(ins(Instruction::Op::Const, 0, 1.0)); });
+        return p.evaluate({});
+    };
+    EXPECT_EQ(count(1.0, 4.0), 4.0);
+    EXPECT_EQ(count(1.0, 4.999), 4.0);
+    EXPECT_EQ(count(3.0, 3.0), 1.0);
+    EXPECT_EQ(count(3.0, 2.999), 0.0);
+    EXPECT_EQ(count(1.0, std::nan("")), 0.0);
+    // A counter beyond 2^53 cannot step: POV-Ray loops forever there, the VM stops after one pass.
+    EXPECT_EQ(count(1e17, 1e17 + 4096), 1.0);
+}
+
+TEST(FunctionVm, CalleeLocalsDoNotClobberTheCaller) {
+    // G(a) = prod(j, 1, 3, a), F(x) = sum(i, 1, 2, G(x) + i): both use local slot 0.
+    auto g = std::make_shared<FunctionProgram>(std::vector<std::string>{"a"});
+    emit_loop(*g, 1.0, 3.0, Instruction::Op::Mul, 1.0, [&] { g->emit(ins(Instruction::Op::Arg, 0)); });
+    FunctionProgram f({"x"});
+    emit_loop(f, 1.0, 2.0, Instruction::Op::Add, 0.0, [&] {
+        f.emit(ins(Instruction::Op::Arg, 0));
+        f.emit_call(g, 1);
+        f.emit(ins(Instruction::Op::Local, 0));
+        f.emit(ins(Instruction::Op::Add));
+    });
+    const double args[] = {2.0};
+    EXPECT_EQ(f.evaluate(args), 8.0 + 1.0 + 8.0 + 2.0);
+}
+
 /// Compiles `body` as `function(params) { body }` in a scene and evaluates it at `args`.
 double eval(const std::string& declaration, const std::string& call) {
     const Scene s = test::parse_ok(declaration + "\n#declare R = " + call + ";\nsphere { 0, 1 translate <R, 0, 0> }\n");
