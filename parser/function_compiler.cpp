@@ -1,6 +1,9 @@
 // User functions: compiling `function { ... }` bodies to FunctionProgram and calling them at parse time.
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "parser/keywords.h"
 #include "parser/parser.h"
@@ -205,7 +208,13 @@ private:
         if (t.kind != TokenKind::Identifier)
             m_p.fail(t, "expected a float expression in the function body but found " + describe_token(t));
         const std::string& w = t.text;
-        // Parameters shadow everything else.
+        // Loop variables of sum() and prod(), innermost first, then parameters, shadow everything else.
+        for (auto it = m_loop_vars.rbegin(); it != m_loop_vars.rend(); ++it) {
+            if (it->name != w) continue;
+            m_p.next();
+            m_prog.emit(op(Instruction::Op::Local, it->slot));
+            return;
+        }
         const auto& params = m_prog.params();
         for (std::size_t i = 0; i < params.size(); ++i) {
             if (params[i] != w) continue;
@@ -238,6 +247,11 @@ private:
                 return;
             }
             m_p.fail(t, "'" + w + "' is " + value_kind_name(*v) + "; a function body needs a float here");
+        }
+        if (w == "sum" || w == "prod") {
+            m_p.next();
+            sequence(t);
+            return;
         }
         for (const auto& [name, fn] : k_math1) {
             if (w != name) continue;
@@ -285,8 +299,98 @@ private:
         m_p.fail_undeclared(t);
     }
 
+    /// `sum(I, A, B, E)` or `prod(I, A, B, E)` after its name: E added (multiplied) up for I = A, A + 1, ...
+    /// while I <= B, starting from 0 (1). The counter and the limit live in two local slots.
+    void sequence(const Token& name) {
+        using Op = Instruction::Op;
+        m_p.expect("(");
+        if (m_p.is_punct(m_p.peek(), ")")) expect_count(name, 0, 4, 4);
+        const Token var = loop_variable(name);
+        const std::uint32_t slot = m_slots_in_use;
+        m_slots_in_use += 2;
+        m_prog.require_locals(m_slots_in_use);
+        // POV-Ray compat: the last value already sees the variable, holding the first value. The first value
+        // does not see it here (POV-Ray reads an unset slot there).
+        sequence_comma(name, 1);
+        expression();
+        m_prog.emit(op(Op::StoreLocal, slot));
+        sequence_comma(name, 2);
+        // POV-Ray compat: x, y, z, u and v always read the function's arguments, so such a loop variable is
+        // never seen.
+        const bool visible = !is_argument_register(var.text);
+        if (visible) m_loop_vars.push_back({var.text, slot});
+        expression();
+        m_prog.emit(op(Op::StoreLocal, slot + 1));
+        sequence_comma(name, 3);
+        // The running result stays on the operand stack; each pass combines E's value into it.
+        constant(name.text == "sum" ? 0.0 : 1.0);
+        Instruction test = op(Op::LoopTest);
+        test.b = slot;
+        const std::size_t skip = m_prog.emit(test);
+        Instruction next = op(Op::LoopNext, static_cast<std::uint32_t>(m_prog.size()));
+        next.b = slot;
+        expression();
+        m_prog.emit(op(name.text == "sum" ? Op::Add : Op::Mul));
+        m_prog.emit(next);
+        m_prog.patch_jump(skip, m_prog.size());
+        if (m_p.is_punct(m_p.peek(), ",")) {
+            // Count the extra arguments, so the message says how many there were.
+            std::uint32_t got = 4;
+            while (m_p.accept(",")) {
+                expression();
+                ++got;
+            }
+            m_p.expect(")");
+            expect_count(name, got, 4, 4);
+        }
+        m_p.expect(")");
+        if (visible) m_loop_vars.pop_back();
+        m_slots_in_use -= 2;
+    }
+
+    /// The `,` after argument `got` of sum()/prod(); a `)` there is a wrong argument count.
+    void sequence_comma(const Token& name, std::uint32_t got) {
+        if (m_p.is_punct(m_p.peek(), ")")) expect_count(name, got, 4, 4);
+        m_p.expect(",");
+    }
+
+    static bool is_argument_register(std::string_view w) {
+        return w == "x" || w == "y" || w == "z" || w == "u" || w == "v";
+    }
+
+    /// Reads the loop variable of sum()/prod(): a name that is new, a parameter or an enclosing loop variable.
+    Token loop_variable(const Token& name) {
+        const Token var = m_p.peek();
+        const std::string what = "the loop variable of '" + std::string(name.text) + "'";
+        if (var.kind != TokenKind::Identifier)
+            m_p.fail(var, what + " must be a name, but found " + describe_token(var));
+        const std::string w = var.text;
+        m_p.next();
+        if (is_argument_register(w)) {
+            m_p.warn(var, "'" + w + "' inside '" + std::string(name.text) + "' still reads the function's " + w +
+                              " argument (as in POV-Ray), so " + what + " is never read; choose another name");
+            return var;
+        }
+        const auto& params = m_prog.params();
+        const bool shadows = std::find(params.begin(), params.end(), w) != params.end() ||
+                             std::any_of(m_loop_vars.begin(), m_loop_vars.end(),
+                                         [&](const LoopVariable& l) { return l.name == w; });
+        if (shadows) return var;
+        if (is_keyword(w)) m_p.fail(var, "'" + w + "' is a reserved word; " + what + " needs a new name");
+        if (m_p.find_slot(w) != nullptr || m_p.m_macros.count(w) > 0)
+            m_p.fail(var, "'" + w + "' is already declared; " + what + " needs a new name");
+        return var;
+    }
+
+    struct LoopVariable {
+        std::string name;
+        std::uint32_t slot = 0;  ///< the counter's local slot; the limit is in the next one
+    };
+
     Parser& m_p;
     FunctionProgram& m_prog;
+    std::vector<LoopVariable> m_loop_vars;  ///< loop variables in scope, innermost last
+    std::uint32_t m_slots_in_use = 0;      ///< local slots taken by the enclosing sum()/prod() calls
 };
 
 std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw) {

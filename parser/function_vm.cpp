@@ -59,16 +59,19 @@ int stack_effect(const Instruction& ins) {
     using Op = Instruction::Op;
     switch (ins.op) {
         case Op::Const:
-        case Op::Arg: return 1;
+        case Op::Arg:
+        case Op::Local: return 1;
         case Op::Neg:
         case Op::Not:
         case Op::Call1:
-        case Op::Jump: return 0;
+        case Op::Jump:
+        case Op::LoopTest:
+        case Op::LoopNext: return 0;
         case Op::Select3: return -2;
         case Op::Select4: return -3;
         case Op::Call:
         case Op::Unsupported: return 1 - static_cast<int>(ins.b);
-        default: return -1;  // binary operators, Call2, JumpIfZero
+        default: return -1;  // binary operators, Call2, JumpIfZero, StoreLocal
     }
 }
 
@@ -86,8 +89,8 @@ std::size_t FunctionProgram::emit(Instruction ins) {
 
 void FunctionProgram::emit_call(std::shared_ptr<const FunctionProgram> callee, std::uint32_t nargs) {
     if (m_unsupported.empty()) m_unsupported = callee->unsupported();
-    // The callee runs on its own stack above ours: reserve its depth too.
-    m_max_depth = std::max(m_max_depth, m_depth + callee->m_max_depth + 1);
+    // The callee runs on its own stack above ours: reserve its locals and depth too.
+    m_max_depth = std::max(m_max_depth, m_depth + static_cast<int>(callee->frame_size()));
     Instruction ins;
     ins.op = Instruction::Op::Call;
     ins.a = static_cast<std::uint32_t>(m_callees.size());
@@ -114,20 +117,23 @@ double FunctionProgram::evaluate(std::span<const double> args) const {
     } else if (args.size() < m_params.size()) {
         std::vector<double> big(m_params.size(), 0.0);
         std::copy(args.begin(), args.end(), big.begin());
-        std::vector<double> stack(static_cast<std::size_t>(m_max_depth) + 1);
+        std::vector<double> stack(frame_size());
         return run(big.data(), big.size(), stack.data());
     }
-    if (m_max_depth < k_local_stack) {
+    if (frame_size() <= k_local_stack) {
         std::array<double, k_local_stack> stack;
         return run(a, m_params.size(), stack.data());
     }
-    std::vector<double> stack(static_cast<std::size_t>(m_max_depth) + 1);
+    std::vector<double> stack(frame_size());
     return run(a, m_params.size(), stack.data());
 }
 
 double FunctionProgram::run(const double* args, std::size_t nargs, double* stack) const {
     using Op = Instruction::Op;
-    std::size_t sp = 0;  // number of values on the stack
+    // The local slots sit below the operand stack; they start at 0 so every run is deterministic.
+    double* const locals = stack;
+    std::fill_n(locals, m_locals, 0.0);
+    std::size_t sp = m_locals;  // index just past the top of the operand stack
     const std::size_t n = m_code.size();
     for (std::size_t pc = 0; pc < n; ++pc) {
         const Instruction& ins = m_code[pc];
@@ -188,9 +194,22 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
                 sp -= ins.b;
                 stack[sp++] = 0.0;
                 break;
+            case Op::Local: stack[sp++] = locals[ins.a]; break;
+            case Op::StoreLocal: locals[ins.a] = stack[--sp]; break;
+            case Op::LoopTest:
+                // POV-Ray compat: the loop runs while counter <= limit, compared exactly; a NaN bound skips it.
+                if (!(locals[ins.b] <= locals[ins.b + 1])) pc = static_cast<std::size_t>(ins.a) - 1;
+                break;
+            case Op::LoopNext: {
+                const double next = locals[ins.b] + 1.0;
+                // A counter so large that +1 leaves it unchanged would loop forever (POV-Ray hangs): stop.
+                if (next != locals[ins.b] && next <= locals[ins.b + 1]) pc = static_cast<std::size_t>(ins.a) - 1;
+                locals[ins.b] = next;
+                break;
+            }
         }
     }
-    return sp > 0 ? stack[sp - 1] : 0.0;
+    return sp > m_locals ? stack[sp - 1] : 0.0;
 }
 
 }  // namespace wardray::parser

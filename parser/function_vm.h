@@ -1,6 +1,7 @@
 // User functions compiled to a small stack machine, so isosurfaces and patterns evaluate them without re-parsing.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -17,7 +18,8 @@ enum class MathFn1 : std::uint8_t {
 /// The built-in two-argument math functions a program can call.
 enum class MathFn2 : std::uint8_t { Atan2, Pow, Mod, Div, Min, Max };
 
-/// One stack-machine instruction; `a` is an argument index, a count, a jump target or a table index.
+/// One stack-machine instruction; `a` is an argument index, a local slot, a count, a jump target or a table index;
+/// `b` is a count or, for the loop instructions, a local slot.
 struct Instruction {
     enum class Op : std::uint8_t {
         Const,       ///< push `value`
@@ -32,7 +34,11 @@ struct Instruction {
         JumpIfZero,  ///< pop; jump to `a` when zero
         Jump,        ///< jump to `a`
         Call,        ///< call callee `a` with `b` arguments from the top of the stack
-        Unsupported  ///< an internal or pattern function: pops `b` arguments, pushes 0
+        Unsupported, ///< an internal or pattern function: pops `b` arguments, pushes 0
+        Local,       ///< push local slot `a`
+        StoreLocal,  ///< pop into local slot `a`
+        LoopTest,    ///< unless local `b` <= local `b + 1` (counter, limit), jump to `a`
+        LoopNext     ///< add 1 to local `b`; while it stays <= local `b + 1`, jump back to `a`
     };
     Op op = Op::Const;
     std::uint32_t a = 0;
@@ -66,6 +72,10 @@ public:
     void emit_call(std::shared_ptr<const FunctionProgram> callee, std::uint32_t nargs);
     /// Appends a call of an unsupported function (internal(n), a pattern), recording `reason`.
     void emit_unsupported(std::uint32_t nargs, const std::string& reason);
+    /// Makes sure local slots 0 .. n-1 exist (loop counters and limits of sum() and prod()).
+    void require_locals(std::uint32_t n) { m_locals = std::max(m_locals, n); }
+    /// How many local slots evaluate() sets aside.
+    std::uint32_t locals() const { return m_locals; }
     /// Index the next instruction will have (a jump target).
     std::size_t size() const { return m_code.size(); }
     /// Sets the target of the jump at `index`.
@@ -77,6 +87,8 @@ public:
 
 private:
     double run(const double* args, std::size_t nargs, double* stack) const;
+    /// Values a run needs in its stack buffer: the local slots, then the operand stack.
+    std::size_t frame_size() const { return m_locals + static_cast<std::size_t>(m_max_depth) + 1; }
 
     std::vector<std::string> m_params;
     std::vector<Instruction> m_code;
@@ -84,6 +96,7 @@ private:
     std::string m_unsupported;
     int m_depth = 0;      ///< stack depth after the last instruction (straight-line estimate)
     int m_max_depth = 0;  ///< the deepest the stack gets
+    std::uint32_t m_locals = 0;  ///< local slots, kept at the bottom of the stack buffer
 };
 
 }  // namespace wardray::parser

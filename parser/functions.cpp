@@ -310,8 +310,11 @@ Numeric Parser::parse_function(const Token& name) {
         return Numeric::vector3(
             m_options.vector_turbulence(vector_arg(args[3]), octaves, scalar_arg(args[1]), scalar_arg(args[0])));
     }
-    static const char* const unsupported[] = {"eval_pigment", "bitwise_and",
-                                              "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now"};
+    // POV-Ray compat: sum() and prod() exist only in the function language.
+    if (f == "sum" || f == "prod")
+        fail(name, "'" + f + "' can only be used inside a function body, e.g. function(n) { " + f + "(i, 1, n, i) }");
+    static const char* const unsupported[] = {"eval_pigment", "bitwise_and", "bitwise_or", "bitwise_xor",
+                                              "datetime", "now"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");
