@@ -240,6 +240,14 @@ private:
     friend class FunctionCompiler;
     bool starts_string(const Token& t);
 
+    // --- splines (splines.cpp) ---
+    /// Reads `{ [S] [type] T, value ... }` after the keyword `spline`.
+    Spline parse_spline_body(const Token& kw);
+    /// Reads `(t [, type])` after a spline identifier and evaluates the spline.
+    Numeric call_spline(const Token& name, const Spline& spline);
+    /// Warns (once per message) when `type` has too few of the spline's points to interpolate as its name says.
+    void warn_few_spline_points(const Token& at, const Spline& spline, Spline::Type type);
+
     // --- appearance (appearance.cpp) ---
     Color parse_color();
     bool is_color_keyword(const Token& t) const;
