@@ -233,10 +233,11 @@ Numeric Parser::parse_relational(bool allow_less) {
         const double y = b.v[0];
         bool r = false;
         if (s == "<") r = x < y;
-        else if (s == "<=") r = x <= y;
+        // POV-Ray compat: '<=' and '>=' are also true within the tolerance of '='.
+        else if (s == "<=") r = x <= y || std::fabs(x - y) < k_epsilon;
         else if (s == "=") r = std::fabs(x - y) < k_epsilon;
         else if (s == "!=") r = std::fabs(x - y) >= k_epsilon;
-        else if (s == ">=") r = x >= y;
+        else if (s == ">=") r = x >= y || std::fabs(x - y) < k_epsilon;
         else r = x > y;
         a = Numeric::scalar(r ? 1.0 : 0.0);
     }

@@ -59,6 +59,10 @@ TEST(Expression, RelationalLogicalConditional) {
 
 TEST(Expression, EqualityUsesPovRayEpsilon) {
     EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 = 0.3) + 1"), 2.0);
+    // '<=' and '>=' also hold within the tolerance (twenty steps of 1/20 sum to 1 + 2e-16: meshmaker.inc's
+    // `#while (J <= 1)` loops rely on it); '<' and '>' are exact.
+    EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 <= 0.3) + (0.3 >= 0.1 + 0.2) + 1"), 3.0);
+    EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 > 0.3) + (0.3 < 0.1 + 0.2) + 1"), 3.0);
 }
 
 TEST(Expression, VectorsAndPromotion) {
