@@ -47,6 +47,9 @@ struct FatalError {};
 std::string describe_token(const Token& t);
 /// True for the primitive shape keywords the renderer draws (sphere ... superellipsoid).
 bool is_shape_keyword(std::string_view word);
+/// A spline's value at `t` interpolated with `type`, with as many components as the spline's values have (at
+/// least two), as a call `S(t)` returns it.
+Numeric spline_value(const Spline& spline, Spline::Type type, double t);
 /// "a pigment", "an object", ... for messages about identifiers of the wrong kind.
 const char* value_kind_name(const Value& v);
 

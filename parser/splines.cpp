@@ -178,6 +178,14 @@ Components evaluate_spline(const Spline& spline, Spline::Type type, double t) {
     }
 }
 
+Numeric spline_value(const Spline& spline, Spline::Type type, double t) {
+    const Components v = evaluate_spline(spline, type, t);
+    Numeric r;
+    r.n = spline.terms;
+    for (int k = 0; k < 5; ++k) r.v[k] = k < r.n ? v[k] : 0.0;
+    return r;
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Parsing
 
@@ -278,11 +286,7 @@ Numeric Parser::call_spline(const Token& name, const Spline& spline) {
         if (type != spline.type) warn_few_spline_points(kw, spline, type);
     }
     expect(")");
-    const Components v = evaluate_spline(spline, type, t.v[0]);
-    Numeric r;
-    r.n = spline.terms;
-    for (int k = 0; k < 5; ++k) r.v[k] = k < r.n ? v[k] : 0.0;
-    return r;
+    return spline_value(spline, type, t.v[0]);
 }
 
 }  // namespace wardray::parser

@@ -103,12 +103,14 @@ struct Unsupported {
 struct ArrayValue;
 
 /// A declared `function { ... }`: a compiled float function, a transform function (returns a vector), or a kind
-/// that is parsed but not evaluated yet (pattern, pigment, spline), which evaluates to zero with a warning.
+/// a spline function (its spline's value at the first argument), or a kind that is parsed but not evaluated yet
+/// (pattern, pigment), which evaluates to zero with a warning.
 struct UserFunction {
     enum class Kind { Float, Transform, Pattern, Pigment, Spline };
     Kind kind = Kind::Float;
     std::shared_ptr<const FunctionProgram> program;  ///< Float: the compiled body
     Transform transform;                             ///< Transform: maps the point (x, y, z)
+    std::shared_ptr<const Spline> spline;            ///< Spline: the spline
     SourceLoc loc;
 };
 

@@ -148,6 +148,17 @@ TEST(Spline, PointsFromLoopsAndSplinesPassedToMacros) {
     expect5(eval5("At(W, 1.5)", w), {2.5, 1, 0, 0, 0});
 }
 
+TEST(Spline, SplineFunctionsEvaluateTheirSpline) {
+    // povray: F(0.5) printed 2.468750,3.562500,4.562500 and G(0.5) 2,2 with two components (G(0.5).z is an error).
+    const std::string f = "#declare F = function { spline { natural_spline 0, <1,2,3> 1, <3,4,5> 2, <0,0,1> } }\n"
+                          "#declare G = function { spline { 0, 1 1, 3 } }";
+    expect5(eval5("F(0.5)", f), {2.46875, 3.5625, 4.5625, 0, 0});
+    expect5(eval5("G(0.5)", f), {2, 2, 0, 0, 0});
+    const ParseResult r = parse_fail(f + "\n#declare W = G(0.5);\nsphere { 0, W.z }");
+    EXPECT_NE(all_diagnostics(r).find("'.z' needs a vector with 3 components but this one has 2"), std::string::npos)
+        << all_diagnostics(r);
+}
+
 // Each bad input stops at its own token with a message that says what was expected.
 void expect_error(const std::string& scene, const std::string& message) {
     const ParseResult r = parse_fail(scene);
