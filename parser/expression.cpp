@@ -39,6 +39,8 @@ std::string describe_token(const Token& t) {
 }
 
 const char* value_kind_name(const Value& v) {
+    // By position in Value: a new alternative must be named here (Deferred, last, is never shown).
+    static_assert(std::variant_size_v<Value> == 16);
     switch (v.index()) {
         case 0: return "a number";
         case 1: return "a string";
@@ -53,6 +55,7 @@ const char* value_kind_name(const Value& v) {
         case 11: return "a file handle";
         case 12: return "an interior";
         case 13: return "a normal";
+        case 14: return "a spline";
         default: return "an unsupported item";
     }
 }
@@ -115,6 +118,7 @@ Value Parser::parse_rvalue() {
             return element;
         }
         if (w == "function") return parse_user_function(next());
+        if (w == "spline") return parse_spline_body(next());
         if (is_unsupported_block(w)) {
             const Token kw = next();
             warn_unsupported(kw, w);
@@ -122,10 +126,11 @@ Value Parser::parse_rvalue() {
             return Unsupported{w};
         }
         if (const Value* v = lookup(w); v != nullptr && !std::holds_alternative<Numeric>(*v)) {
-            // A function followed by '(' is a call, read as an expression.
+            // A function or spline followed by '(' is a call, read as an expression.
             const auto& tokens = m_files[m_file]->tokens;
-            const bool call = std::holds_alternative<std::shared_ptr<const UserFunction>>(*v) &&
-                              m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "(");
+            const bool callable = std::holds_alternative<std::shared_ptr<const UserFunction>>(*v) ||
+                                  std::holds_alternative<Boxed<Spline>>(*v);
+            const bool call = callable && m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "(");
             if (!call) {
                 next();
                 return *v;
@@ -232,10 +237,11 @@ Numeric Parser::parse_relational(bool allow_less) {
         const double y = b.v[0];
         bool r = false;
         if (s == "<") r = x < y;
-        else if (s == "<=") r = x <= y;
+        // POV-Ray compat: '<=' and '>=' are also true within the tolerance of '='.
+        else if (s == "<=") r = x <= y || std::fabs(x - y) < k_epsilon;
         else if (s == "=") r = std::fabs(x - y) < k_epsilon;
         else if (s == "!=") r = std::fabs(x - y) >= k_epsilon;
-        else if (s == ">=") r = x >= y;
+        else if (s == ">=") r = x >= y || std::fabs(x - y) < k_epsilon;
         else r = x > y;
         a = Numeric::scalar(r ? 1.0 : 0.0);
     }
@@ -418,6 +424,10 @@ Numeric Parser::parse_primary() {
         if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(v)) {
             const std::shared_ptr<const UserFunction> keep = *f;
             return call_user_function(t, *keep);
+        }
+        if (const auto* s = std::get_if<Boxed<Spline>>(v)) {
+            const Boxed<Spline> keep = *s;  // the call's arguments may end the scope that holds it
+            return call_spline(t, *keep);
         }
         if (const auto* u = std::get_if<Unsupported>(v))
             fail(t, "'" + t.text + "' is a " + u->what + ", which is not supported yet");

@@ -423,11 +423,15 @@ std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw)
         f->program = std::move(program);
         return f;
     }
-    if (is_word(first, "pattern") || is_word(first, "pigment") || is_word(first, "spline")) {
+    if (is_word(first, "spline")) {
+        f->kind = UserFunction::Kind::Spline;
+        f->spline = std::make_shared<const Spline>(parse_spline_body(next()));
+        expect("}");
+        return f;
+    }
+    if (is_word(first, "pattern") || is_word(first, "pigment")) {
         const Token block = next();
-        f->kind = first.text == "pattern" ? UserFunction::Kind::Pattern
-                  : first.text == "pigment" ? UserFunction::Kind::Pigment
-                                            : UserFunction::Kind::Spline;
+        f->kind = first.text == "pattern" ? UserFunction::Kind::Pattern : UserFunction::Kind::Pigment;
         skip_block(block);
         expect("}");
         return f;
@@ -487,8 +491,8 @@ Numeric Parser::call_user_function(const Token& name, const UserFunction& f) {
             warn_once(name, "pigment function is not rendered yet (" + what + " evaluates to black)");
             return Numeric::color(Color{});
         case UserFunction::Kind::Spline:
-            warn_once(name, "spline function is not rendered yet (" + what + " evaluates to <0,0,0>)");
-            return Numeric::vector3({0, 0, 0});
+            if (args.size() != 1) fail(name, what + " is a spline function: it takes 1 argument");
+            return spline_value(*f.spline, f.spline->type, args[0]);
     }
     return Numeric::scalar(0.0);
 }

@@ -150,11 +150,13 @@ Numeric Parser::parse_function(const Token& name) {
     auto vector_arg = [&](const Numeric& a) { return a.vec3(); };
 
     // String-taking functions first.
-    if (f == "strlen" || f == "val" || f == "file_exists") {
+    if (f == "strlen" || f == "val" || f == "file_exists" || f == "asc") {
         expect("(");
         const std::string s = parse_string();
         expect(")");
         if (f == "strlen") return Numeric::scalar(static_cast<double>(s.size()));
+        // The code of the first character (0 for an empty string).
+        if (f == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
         if (f == "val") return Numeric::scalar(std::atof(s.c_str()));
         std::error_code ec;
         bool found = std::filesystem::exists(std::filesystem::path(m_files[m_file]->path).parent_path() / s, ec);

@@ -41,7 +41,7 @@ const std::vector<std::string_view> k_unsupported_objects = {
 const std::vector<std::string_view> k_unsupported_blocks = {
     "fog", "sky_sphere", "rainbow", "media", "normal", "interior", "material",
     "interior_texture", "photons", "color_map", "colour_map", "pigment_map", "normal_map", "texture_map",
-    "slope_map", "density", "density_map", "function", "spline", "looks_like", "projected_through",
+    "slope_map", "density", "density_map", "function", "looks_like", "projected_through",
     "clipped_by", "bounded_by", "irid", "subsurface", "warp", "image_map", "bump_map", "material_map"};
 
 const std::vector<std::string_view> k_patterns = {
@@ -76,7 +76,7 @@ const std::vector<std::string_view> k_handled = {
     "strcmp", "strlen", "strlwr", "strupr", "sturm", "substr", "tan", "tanh", "texture", "tightness",
     "transform", "translate", "transmit", "true", "ultra_wide_angle", "union", "up", "val", "variance",
     "vaxis_rotate", "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "x", "y", "yes", "z",
-    "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr", "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions", "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default", "mesh_camera"};
+    "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr", "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions", "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default", "mesh_camera", "spline"};
 
 std::unordered_set<std::string_view> make_set(std::initializer_list<const std::vector<std::string_view>*> lists) {
     std::unordered_set<std::string_view> s;

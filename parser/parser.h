@@ -47,6 +47,9 @@ struct FatalError {};
 std::string describe_token(const Token& t);
 /// True for the primitive shape keywords the renderer draws (sphere ... superellipsoid).
 bool is_shape_keyword(std::string_view word);
+/// A spline's value at `t` interpolated with `type`, with as many components as the spline's values have (at
+/// least two), as a call `S(t)` returns it.
+Numeric spline_value(const Spline& spline, Spline::Type type, double t);
 /// "a pigment", "an object", ... for messages about identifiers of the wrong kind.
 const char* value_kind_name(const Value& v);
 
@@ -240,6 +243,14 @@ private:
     Numeric call_user_function(const Token& name, const UserFunction& f);
     friend class FunctionCompiler;
     bool starts_string(const Token& t);
+
+    // --- splines (splines.cpp) ---
+    /// Reads `{ [S] [type] T, value ... }` after the keyword `spline`.
+    Spline parse_spline_body(const Token& kw);
+    /// Reads `(t [, type])` after a spline identifier and evaluates the spline.
+    Numeric call_spline(const Token& name, const Spline& spline);
+    /// Warns (once per message) when `type` has too few of the spline's points to interpolate as its name says.
+    void warn_few_spline_points(const Token& at, const Spline& spline, Spline::Type type);
 
     // --- appearance (appearance.cpp) ---
     Color parse_color();

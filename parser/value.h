@@ -11,6 +11,7 @@
 
 #include "parser/function_vm.h"
 #include "parser/scene.h"
+#include "parser/splines.h"
 
 namespace wardray::parser {
 
@@ -94,7 +95,7 @@ struct CameraSpec {
 /// Returns an error message in `error` when the camera is degenerate (and leaves the vectors usable).
 Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning);
 
-/// A declared item of a kind not supported yet (material, media, spline, ...), kept by name only.
+/// A declared item of a kind not supported yet (material, media, ...), kept by name only.
 struct Unsupported {
     std::string what;
 };
@@ -102,12 +103,14 @@ struct Unsupported {
 struct ArrayValue;
 
 /// A declared `function { ... }`: a compiled float function, a transform function (returns a vector), or a kind
-/// that is parsed but not evaluated yet (pattern, pigment, spline), which evaluates to zero with a warning.
+/// a spline function (its spline's value at the first argument), or a kind that is parsed but not evaluated yet
+/// (pattern, pigment), which evaluates to zero with a warning.
 struct UserFunction {
     enum class Kind { Float, Transform, Pattern, Pigment, Spline };
     Kind kind = Kind::Float;
     std::shared_ptr<const FunctionProgram> program;  ///< Float: the compiled body
     Transform transform;                             ///< Transform: maps the point (x, y, z)
+    std::shared_ptr<const Spline> spline;            ///< Spline: the spline
     SourceLoc loc;
 };
 
@@ -137,11 +140,11 @@ struct Deferred {
     std::uint32_t index = 0;
 };
 
-/// Anything an identifier can hold.
+/// Anything an identifier can hold. Deferred stays last (value_kind_name names the others by index).
 using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
                            Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
                            std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Boxed<Normal>,
-                           Deferred>;
+                           Boxed<Spline>, Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

@@ -57,8 +57,18 @@ TEST(Expression, RelationalLogicalConditional) {
     EXPECT_DOUBLE_EQ(eval_float("(1 + 2 * 3 > 6)"), 1.0);
 }
 
+TEST(Expression, AscGivesTheFirstCharacterCode) {
+    EXPECT_DOUBLE_EQ(eval_float("asc(\"A\")"), 65.0);
+    EXPECT_DOUBLE_EQ(eval_float("asc(strupr(\"cubic\")) - 60"), 7.0);  // meshmaker.inc's BuildSpline
+    EXPECT_DOUBLE_EQ(eval_float("asc(\"\") + 1"), 1.0);
+}
+
 TEST(Expression, EqualityUsesPovRayEpsilon) {
     EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 = 0.3) + 1"), 2.0);
+    // '<=' and '>=' also hold within the tolerance (twenty steps of 1/20 sum to 1 + 2e-16: meshmaker.inc's
+    // `#while (J <= 1)` loops rely on it); '<' and '>' are exact.
+    EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 <= 0.3) + (0.3 >= 0.1 + 0.2) + 1"), 3.0);
+    EXPECT_DOUBLE_EQ(eval_float("(0.1 + 0.2 > 0.3) + (0.3 < 0.1 + 0.2) + 1"), 3.0);
 }
 
 TEST(Expression, VectorsAndPromotion) {
