@@ -148,7 +148,8 @@ void Parser::evaluate_deferred(Value& slot) {
     m_version = d.version;
     try {
         Value v = parse_rvalue();
-        if (peek().kind != TokenKind::EndOfFile) fail(peek(), "unexpected " + describe_token(peek()) + " in a declaration");
+        if (peek().kind != TokenKind::EndOfFile)
+            fail(peek(), "unexpected " + describe_token(peek()) + " in a declaration");
         restore();
         slot = std::move(v);
     } catch (...) {

@@ -76,7 +76,8 @@ const std::vector<std::string_view> k_handled = {
     "strcmp", "strlen", "strlwr", "strupr", "sturm", "substr", "tan", "tanh", "texture", "tightness",
     "transform", "translate", "transmit", "true", "ultra_wide_angle", "union", "up", "val", "variance",
     "vaxis_rotate", "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "x", "y", "yes", "z",
-    "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr", "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions", "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default", "mesh_camera", "spline"};
+    "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr",
+    "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions", "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default", "mesh_camera", "spline"};
 
 std::unordered_set<std::string_view> make_set(std::initializer_list<const std::vector<std::string_view>*> lists) {
     std::unordered_set<std::string_view> s;
@@ -88,7 +89,8 @@ std::unordered_set<std::string_view> make_set(std::initializer_list<const std::v
 
 const std::vector<std::string_view>& all_keywords() {
     static const std::vector<std::string_view> all = [] {
-        auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
+        auto s = make_set(
+        {&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
         std::vector<std::string_view> v(s.begin(), s.end());
         std::sort(v.begin(), v.end());
         return v;
@@ -97,7 +99,8 @@ const std::vector<std::string_view>& all_keywords() {
 }
 
 bool is_keyword(std::string_view word) {
-    static const auto set = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
+    static const auto set = make_set(
+        {&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
     return set.count(word) > 0;
 }
 

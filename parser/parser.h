@@ -383,7 +383,8 @@ private:
     std::unordered_map<std::string, Macro> m_macros;
     std::vector<Diagnostic> m_diagnostics;
     std::size_t m_errors = 0;
-    std::set<std::string> m_failed_declarations;  ///< identifiers whose #declare failed: their uses are not errors again
+    /// Identifiers whose #declare failed: their uses are not errors again.
+    std::set<std::string> m_failed_declarations;
     std::set<std::string> m_warned_features;
     /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
     /// so unused declarations of include files cost nothing.
