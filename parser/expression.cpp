@@ -328,12 +328,14 @@ Numeric Parser::parse_postfix(std::optional<Numeric> first) {
 
 std::optional<Numeric> Parser::builtin_constant(const Token& t) {
     static const std::unordered_set<std::string_view> constants = {
-        "pi", "true", "yes", "on", "false", "no", "off", "x", "y", "z", "t", "u", "v", "clock", "clock_delta",
+        "pi", "tau", "true", "yes", "on", "false", "no", "off", "x", "y", "z", "t", "u", "v", "clock", "clock_delta",
         "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock", "final_clock", "image_width",
         "image_height", "version"};
     if (constants.count(t.text) == 0) return std::nullopt;
     const std::string& w = t.text;
     if (w == "pi") return Numeric::scalar(std::numbers::pi);
+    // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
+    if (w == "tau") return Numeric::scalar(2.0 * std::numbers::pi);
     if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1.0);
     if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0.0);
     if (w == "x") return Numeric::vector3({1, 0, 0});

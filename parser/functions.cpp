@@ -296,10 +296,11 @@ Numeric Parser::parse_function(const Token& name) {
         const double stream = scalar_arg(args[0]);
         if (stream < 0 || stream >= static_cast<double>(m_rand_streams.size()))
             fail(name, "rand needs a stream made by seed()");
-        // POV-Ray compat: a linear congruential generator returning 15 bits per call.
+        // POV-Ray 3.7 compat: a 32-bit linear congruential generator whose whole state, over 2^32 - 1, is the
+        // value (3.7 returns all 32 bits; older versions returned 15).
         std::uint32_t& state = m_rand_streams[static_cast<std::size_t>(stream)];
         state = state * 1812433253u + 12345u;
-        return Numeric::scalar(static_cast<double>((state >> 16) & 0x7FFFu) / 32767.0);
+        return Numeric::scalar(static_cast<double>(state) / 4294967295.0);
     }
     if (f == "trace" || f == "inside" || f == "min_extent" || f == "max_extent") return parse_geometry_query(name);
     if (f == "vturbulence") {

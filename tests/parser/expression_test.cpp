@@ -57,6 +57,12 @@ TEST(Expression, RelationalLogicalConditional) {
     EXPECT_DOUBLE_EQ(eval_float("(1 + 2 * 3 > 6)"), 1.0);
 }
 
+TEST(Expression, TauIsTwoPiUnlessTheSceneDeclaresIt) {
+    EXPECT_DOUBLE_EQ(eval_float("tau"), 2.0 * std::numbers::pi);
+    // POV-Ray 3.7 does not reserve tau: a scene of its own may declare it.
+    EXPECT_DOUBLE_EQ(eval_float("tau", "#declare tau = 0.25;"), 0.25);
+}
+
 TEST(Expression, AscGivesTheFirstCharacterCode) {
     EXPECT_DOUBLE_EQ(eval_float("asc(\"A\")"), 65.0);
     EXPECT_DOUBLE_EQ(eval_float("asc(strupr(\"cubic\")) - 60"), 7.0);  // meshmaker.inc's BuildSpline
