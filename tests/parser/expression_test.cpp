@@ -1,7 +1,6 @@
 // Tests of expressions: precedence, vectors, functions, constants, dot items and colour promotion.
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 #include "tests/parser/test_util.h"
 
@@ -56,27 +55,6 @@ TEST(Expression, RelationalLogicalConditional) {
     EXPECT_DOUBLE_EQ(eval_float("(0 ? 1 : 0 ? 2 : 3)"), 3.0);
     EXPECT_DOUBLE_EQ(eval_float("(!0) + (!3) + 1"), 2.0);
     EXPECT_DOUBLE_EQ(eval_float("(1 + 2 * 3 > 6)"), 1.0);
-}
-
-TEST(Expression, BuiltinsPrintAsPovRayPrintsThem) {
-    // 88 functions, constants, operators and str()/vstr() formats, against POV-Ray 3.7's own #debug output.
-    const std::filesystem::path data = std::filesystem::path(WARDRAY_SOURCE_DIR) / "tests/parser/data";
-    ParseOptions o = test::default_options();
-    std::string printed;
-    o.debug_output = [&](const std::string& text) { printed += text; };
-    const ParseResult r = parse_file(data / "builtins.pov", o);
-    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
-    std::ifstream expected(data / "builtins_povray37.txt");
-    std::istringstream got(printed);
-    std::string want;
-    std::string line;
-    std::size_t compared = 0;
-    while (std::getline(expected, want)) {
-        ASSERT_TRUE(std::getline(got, line)) << "wardray printed nothing for: " << want;
-        EXPECT_EQ(line, want);
-        ++compared;
-    }
-    EXPECT_EQ(compared, 88u);
 }
 
 TEST(Expression, TauIsTwoPiUnlessTheSceneDeclaresIt) {

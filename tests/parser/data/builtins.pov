@@ -1,6 +1,6 @@
 // Built-in functions, constants and string formatting, printed with #debug. builtins_povray37.txt is what
 // POV-Ray 3.7.0.10 prints for this file: povray +W16 +H12 -D -A +Oo.png builtins.pov 2>&1 | grep -E '^[ES][0-9]'
-// (tests/parser/expression_test.cpp compares wardray's output with it line by line; vturbulence, which needs the
+// (tests/parser/povray_output_test.cpp compares wardray's output with it line by line; vturbulence, which needs the
 // lighting layer, is compared in tests/lighting).
 #debug concat("E0 ", str(abs(-1.5), 0, 9), "\n")
 #debug concat("E1 ", str(acos(0.3), 0, 9), "\n")
