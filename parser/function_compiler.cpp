@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "parser/internal_functions.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -413,13 +414,28 @@ std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw)
         // POV-Ray compat: the built-in functions of functions.inc; accepted, evaluated only when implemented.
         next();
         expect("(");
+        const Token number = peek();
         const double n = parse_float();
         expect(")");
         expect("}");
+        const int index = static_cast<int>(n);
+        const std::size_t arity = internal_function_arity(index);
+        if (arity == 0 || index != n) fail(number, "there is no internal function " + number.text);
+        // x, y, z and the function's own parameters, as POV-Ray counts them.
+        params = {"x", "y", "z"};
+        for (std::size_t i = 3; i < arity; ++i) {
+            std::string name = "P";
+            name += std::to_string(i - 3);
+            params.push_back(std::move(name));
+        }
         auto program = std::make_shared<FunctionProgram>(params);
-        program->emit_unsupported(static_cast<std::uint32_t>(params.size()),
-                                  "internal function " + std::to_string(static_cast<long long>(n)) +
-                                      " is not supported yet");
+        for (std::uint32_t i = 0; i < arity; ++i) program->emit({Instruction::Op::Arg, i, 0, 0.0});
+        if (internal_function(index) != nullptr)
+            program->emit({Instruction::Op::Internal, static_cast<std::uint32_t>(index),
+                           static_cast<std::uint32_t>(arity), 0.0});
+        else
+            program->emit_unsupported(static_cast<std::uint32_t>(arity),
+                                      "internal function " + std::to_string(index) + " is not supported yet");
         f->program = std::move(program);
         return f;
     }

@@ -1,6 +1,8 @@
 // The user-function stack machine: building programs and evaluating them.
 #include "parser/function_vm.h"
 
+#include "parser/internal_functions.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -70,6 +72,7 @@ int stack_effect(const Instruction& ins) {
         case Op::Select3: return -2;
         case Op::Select4: return -3;
         case Op::Call:
+        case Op::Internal:
         case Op::Unsupported: return 1 - static_cast<int>(ins.b);
         default: return -1;  // binary operators, Call2, JumpIfZero, StoreLocal
     }
@@ -193,6 +196,11 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
             case Op::Unsupported:
                 sp -= ins.b;
                 stack[sp++] = 0.0;
+                break;
+            case Op::Internal:
+                sp -= ins.b;
+                stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp);
+                ++sp;
                 break;
             case Op::Local: stack[sp++] = locals[ins.a]; break;
             case Op::StoreLocal: locals[ins.a] = stack[--sp]; break;

@@ -35,6 +35,7 @@ struct Instruction {
         Jump,        ///< jump to `a`
         Call,        ///< call callee `a` with `b` arguments from the top of the stack
         Unsupported, ///< an internal or pattern function: pops `b` arguments, pushes 0
+        Internal,    ///< internal function `a` (functions.inc's numbering) of the top `b` values
         Local,       ///< push local slot `a`
         StoreLocal,  ///< pop into local slot `a`
         LoopTest,    ///< unless local `b` <= local `b + 1` (counter, limit), jump to `a`

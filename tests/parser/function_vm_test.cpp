@@ -177,10 +177,16 @@ TEST(UserFunctions, TransformFunctionsFromTransformsInc) {
     ASSERT_EQ(s.objects.size(), 1u);
 }
 
-TEST(UserFunctions, InternalFunctionIsAnErrorOnlyWhenCalled) {
-    test::parse_ok("#include \"functions.inc\"\n#declare G = function { f_sphere(x, y, z, 1) }\nsphere { 0, 1 }\n");
-    const ParseResult r = test::parse_fail("#include \"functions.inc\"\n#declare A = f_sphere(1, 2, 3, 1);\n");
-    EXPECT_NE(test::all_diagnostics(r).find("test.pov:2:14: error: internal function 61 is not supported yet (called through 'f_sphere')"),
+TEST(UserFunctions, UnevaluatedInternalFunctionIsAnErrorOnlyWhenCalled) {
+    // f_noise3d (internal 76) needs the renderer's noise, which the parser does not evaluate yet.
+    test::parse_ok("#include \"functions.inc\"\n#declare G = function { f_noise3d(x, y, z) }\nsphere { 0, 1 }\n");
+    ParseResult r = test::parse_fail("#include \"functions.inc\"\n#declare A = f_noise3d(1, 2, 3);\n");
+    EXPECT_NE(test::all_diagnostics(r).find(
+                  "test.pov:2:14: error: internal function 76 is not supported yet (called through 'f_noise3d')"),
+              std::string::npos)
+        << test::all_diagnostics(r);
+    r = test::parse_fail("#declare F = function { internal(79) }\n");
+    EXPECT_NE(test::all_diagnostics(r).find("test.pov:1:34: error: there is no internal function 79"),
               std::string::npos)
         << test::all_diagnostics(r);
 }

@@ -42,5 +42,11 @@ TEST(PovRayOutput, DirectivesMacrosColoursAndIncludeMacros) {
     EXPECT_EQ(compare_with_povray("directives"), 22u);
 }
 
+TEST(PovRayOutput, InternalFunctionsOfFunctionsInc) {
+    // sphere, torus, torus2, ellipsoid, paraboloid, r, th, ph, rounded_box and superellipsoid, also inside a
+    // user function.
+    EXPECT_EQ(compare_with_povray("internal"), 12u);
+}
+
 }  // namespace
 }  // namespace wardray::parser
