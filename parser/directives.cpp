@@ -429,6 +429,24 @@ void Parser::directive_break(const Token& tok) {
     skip_until(open_ifs, {"end"}, opener);
 }
 
+std::vector<std::filesystem::path> Parser::search_candidates(const std::filesystem::path& requested,
+                                                            const char* extension) const {
+    // Search order: the reading file's folder, then the library paths in order.
+    std::vector<std::filesystem::path> candidates;
+    if (requested.is_absolute()) {
+        candidates.push_back(requested);
+    } else {
+        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
+        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
+    }
+    if (!requested.has_extension()) {
+        // POV-Ray compat: a name without extension is also tried with the usual one.
+        const std::size_t n = candidates.size();
+        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + extension);
+    }
+    return candidates;
+}
+
 void Parser::directive_include(const Token& tok) {
     const Token name_tok = peek();
     const std::string name = parse_string();
@@ -441,20 +459,8 @@ void Parser::directive_include(const Token& tok) {
                                    " (recursive #include?); raise it with --max-include-depth"));
         throw FatalError{};
     }
-    // Search order: the including file's folder, then the library paths in order.
-    std::vector<std::filesystem::path> candidates;
     const std::filesystem::path requested(name);
-    if (requested.is_absolute()) {
-        candidates.push_back(requested);
-    } else {
-        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
-        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
-    }
-    if (!requested.has_extension()) {
-        // POV-Ray compat: a name without extension is also tried with ".inc".
-        const std::size_t n = candidates.size();
-        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + ".inc");
-    }
+    const std::vector<std::filesystem::path> candidates = search_candidates(requested, ".inc");
     std::optional<std::uint32_t> index;
     std::string error = "No such file or directory";
     const std::size_t per_name = requested.has_extension() ? candidates.size() : candidates.size() / 2;

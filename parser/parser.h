@@ -127,6 +127,10 @@ private:
     void directive_switch(const Token& tok);
     void directive_break(const Token& tok);
     void directive_include(const Token& tok);
+    /// Where a file named in the scene is looked for, in order: the reading file's folder, then the library paths;
+    /// a name without extension is then tried with `extension` in the same places.
+    std::vector<std::filesystem::path> search_candidates(const std::filesystem::path& requested,
+                                                         const char* extension) const;
     void directive_macro(const Token& tok);
     void directive_default(const Token& tok);
     /// #fopen, #read, #write, #fclose (file_io.cpp), confined to the folders ParseOptions allows.

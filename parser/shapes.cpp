@@ -242,18 +242,8 @@ Text Parser::parse_text_parameters(const Token& kw) {
     const Vec3 offset = parse_vector();
 
     // POV-Ray compat: fonts are searched like include files, and ".ttf" is tried for a name without extension.
-    std::vector<std::filesystem::path> candidates;
     const std::filesystem::path requested(name);
-    if (requested.is_absolute()) {
-        candidates.push_back(requested);
-    } else {
-        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
-        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
-    }
-    if (!requested.has_extension()) {
-        const std::size_t n = candidates.size();
-        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + ".ttf");
-    }
+    const std::vector<std::filesystem::path> candidates = search_candidates(requested, ".ttf");
     std::shared_ptr<TrueTypeFont> font;
     std::string error = "No such file or directory";
     for (const auto& c : candidates) {
