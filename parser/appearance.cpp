@@ -28,7 +28,7 @@ Color Parser::parse_color() {
     bool any = false;
     while (true) {
         const Token t = any ? peek_expr() : peek();
-        const std::string& w = t.text;
+        const std::string_view w = t.text;
         if (t.kind == TokenKind::Identifier && (w == "color" || w == "colour")) {
             // A second `color` keyword starts the next colour (old-style colour map entries).
             if (any) break;
@@ -41,7 +41,7 @@ Color Parser::parse_color() {
             if (any) break;
             next();
             const bool srgb = w[0] == 's';
-            const std::string form = srgb ? w.substr(1) : w;
+            const std::string_view form = srgb ? w.substr(1) : w;
             const int terms = form == "rgb" ? 3 : (form == "rgbft" ? 5 : 4);
             // POV-Ray compat: components beyond the keyword's count (a colour identifier after rgb) are ignored.
             const Numeric e = parse_numeric();
@@ -103,7 +103,7 @@ void Parser::skip_optional_block(const Token& kw) {
 }
 
 void Parser::parse_finish_item(Finish& f, const Token& item) {
-    const std::string& w = item.text;
+    const TokenText& w = item.text;
     // `albedo` rescales the value when the finish block ends (see parse_finish_body).
     auto scalar_with_albedo = [&]() {
         if (accept_keyword("albedo")) m_finish_albedo |= w == "diffuse" ? 1u : (w == "phong" ? 2u : 4u);

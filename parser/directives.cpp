@@ -73,7 +73,7 @@ void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::si
     // Leave the macros and includes its operands entered, and the #if/#while/... they opened.
     while (m_frames.size() > frames) return_from_macro();
     if (m_conds.size() > conds) m_conds.resize(conds);
-    const std::string& name = tok.text;
+    const TokenText& name = tok.text;
     if (is_opening_directive(name) || name == "else" || name == "elseif") {
         // A block whose header failed is skipped whole, so its #else and #end do not fail again.
         skip_until(0, {"end"}, tok);
@@ -105,7 +105,7 @@ void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::si
 }
 
 void Parser::run_directive(const Token& tok) {
-    const std::string& name = tok.text;
+    const TokenText& name = tok.text;
     if (name == "declare" || name == "local") {
         directive_declare(tok, name == "local");
     } else if (name == "undef") {

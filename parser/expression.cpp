@@ -78,7 +78,7 @@ Value Parser::parse_rvalue() {
     const NestingGuard guard(*this, t);
     if (starts_string(t)) return parse_string();
     if (t.kind == TokenKind::Identifier) {
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (const auto m = m_macros.find(w); m != m_macros.end()) {
             next();
             invoke_macro(t, m->second);
@@ -213,7 +213,7 @@ Numeric Parser::parse_relational(bool allow_less) {
         // Strings compare with the same operators, lexicographically.
         const std::string x = parse_string();
         const Token o = next();
-        const std::string& s = o.text;
+        const TokenText& s = o.text;
         if (o.kind != TokenKind::Punct || (s != "<" && s != "<=" && s != "=" && s != "!=" && s != ">=" && s != ">"))
             fail(o, "expected a comparison after a string but found " + describe_token(o));
         const int c = x.compare(parse_string());
@@ -225,7 +225,7 @@ Numeric Parser::parse_relational(bool allow_less) {
     while (true) {
         const Token& op = peek_expr();
         if (op.kind != TokenKind::Punct) return a;
-        const std::string& s = op.text;
+        const TokenText& s = op.text;
         // Relational operators are '<' '<=' '=' '!=' '>=' '>': tell them by their characters, not by compares.
         const char c0 = s[0];
         if (!((c0 == '<' || c0 == '>' || c0 == '=') && (s.size() == 1 || s[1] == '=')) && s != "!=") return a;
@@ -306,7 +306,7 @@ Numeric Parser::parse_postfix(std::optional<Numeric> first) {
         next();
         const Token item = expect_identifier();
         int index = -1;
-        const std::string& w = item.text;
+        const TokenText& w = item.text;
         if (w == "x" || w == "u" || w == "red") index = 0;
         else if (w == "y" || w == "v" || w == "green") index = 1;
         else if (w == "z" || w == "blue") index = 2;
@@ -332,7 +332,7 @@ std::optional<Numeric> Parser::builtin_constant(const Token& t) {
         "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock", "final_clock", "image_width",
         "image_height", "version"};
     if (constants.count(t.text) == 0) return std::nullopt;
-    const std::string& w = t.text;
+    const TokenText& w = t.text;
     if (w == "pi") return Numeric::scalar(std::numbers::pi);
     // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
     if (w == "tau") return Numeric::scalar(2.0 * std::numbers::pi);

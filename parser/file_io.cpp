@@ -81,7 +81,7 @@ void Parser::assign_existing_or_global(const std::string& name, Value v) {
 }
 
 void Parser::directive_file_io(const Token& tok) {
-    const std::string& name = tok.text;
+    const TokenText& name = tok.text;
     const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
     if (name == "fopen") {
         const Token id = expect_identifier();

@@ -208,7 +208,7 @@ private:
         }
         if (t.kind != TokenKind::Identifier)
             m_p.fail(t, "expected a float expression in the function body but found " + describe_token(t));
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         // Loop variables of sum() and prod(), innermost first, then parameters, shadow everything else.
         for (auto it = m_loop_vars.rbegin(); it != m_loop_vars.rend(); ++it) {
             if (it->name != w) continue;

@@ -40,7 +40,7 @@ std::string Parser::parse_string() {
     const Token t = next();
     if (t.kind == TokenKind::String) return t.text;
     if (t.kind != TokenKind::Identifier) fail(t, "expected a string but found " + describe_token(t));
-    const std::string& w = t.text;
+    const TokenText& w = t.text;
     if (w == "concat") {
         expect("(");
         std::string s = parse_string();
@@ -125,7 +125,7 @@ std::string Parser::parse_string() {
 }
 
 Numeric Parser::parse_function(const Token& name) {
-    const std::string& f = name.text;
+    const TokenText& f = name.text;
     auto arg_list = [&](std::size_t min_args, std::size_t max_args) {
         expect("(");
         std::vector<Numeric> args;
@@ -324,7 +324,7 @@ Numeric Parser::parse_function(const Token& name) {
 }
 
 Numeric Parser::parse_geometry_query(const Token& name) {
-    const std::string& f = name.text;
+    const TokenText& f = name.text;
     expect("(");
     const Token obj_at = peek();
     const Value obj = parse_rvalue();

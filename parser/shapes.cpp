@@ -15,7 +15,7 @@ bool is_shape_keyword(std::string_view w) {
 }
 
 Shape Parser::parse_shape_parameters(const Token& kw) {
-    const std::string& w = kw.text;
+    const TokenText& w = kw.text;
     if (w == "sphere") {
         Sphere s;
         s.center = parse_vector();

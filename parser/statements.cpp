@@ -13,7 +13,7 @@ void Parser::parse_statement() {
         fail(t, t.kind == TokenKind::EndOfFile ? "unexpected end of file"
                                                : "expected a statement but found '" + t.text + "'");
     }
-    const std::string& w = t.text;
+    const TokenText& w = t.text;
     if (const auto m = m_macros.find(w); m != m_macros.end()) {
         invoke_macro(t, m->second);
         return;
@@ -57,7 +57,7 @@ void Parser::parse_statement() {
 
 bool Parser::is_object_keyword(const Token& t) const {
     if (t.kind != TokenKind::Identifier) return false;
-    const std::string& w = t.text;
+    const TokenText& w = t.text;
     return is_shape_keyword(w) || w == "object" || w == "union" || w == "intersection" || w == "difference" ||
            w == "merge" || is_unsupported_object(w);
 }
@@ -94,7 +94,7 @@ void Parser::place_object(ObjectValue ov) {
 
 ObjectValue Parser::parse_object(const Token& kw) {
     const NestingGuard guard(*this, kw);
-    const std::string& w = kw.text;
+    const TokenText& w = kw.text;
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
         warn_unsupported(kw, w);
         skip_block(kw);
@@ -243,7 +243,7 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
         next();
         if (is_punct(t, "}")) return;
         if (t.kind != TokenKind::Identifier) fail(t, "expected an object modifier or '}' but found '" + t.text + "'");
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (w == "pigment") {
             texture_to_modify(ov).pigment = parse_pigment_body(t);
         } else if (w == "finish") {
@@ -318,7 +318,7 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
 
 bool Parser::parse_transform_item(const Token& t, Transform& out) {
     if (t.kind != TokenKind::Identifier) return false;
-    const std::string& w = t.text;
+    const TokenText& w = t.text;
     if (w == "translate") {
         next();
         out = out.then(Transform::translation(parse_vector()));
@@ -430,7 +430,7 @@ Light Parser::parse_light_body(const Token& kw) {
         }
         next();
         if (is_punct(t, "}")) return light;
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
         // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own defaults
         // (degrees for a spotlight, distances from the axis for a cylinder light).
@@ -514,7 +514,7 @@ CameraSpec Parser::parse_camera_body(const Token& kw) {
         }
         next();
         if (is_punct(t, "}")) return spec;
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a camera item but found '" + w + "'");
         if (w == "perspective") spec.type = Camera::Type::Perspective;
         else if (w == "orthographic") spec.type = Camera::Type::Orthographic;
@@ -571,7 +571,7 @@ void Parser::parse_radiosity(const Token& kw, RadiositySettings& rad) {
         expand_macros();
         const Token t = next();
         if (is_punct(t, "}")) return;
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a radiosity item but found '" + w + "'");
         if (w == "count") {
             rad.count = as_int(parse_float());
@@ -612,7 +612,7 @@ void Parser::parse_global_settings(const Token& kw) {
     while (true) {
         const Token t = next();
         if (is_punct(t, "}")) return;
-        const std::string& w = t.text;
+        const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a global setting but found '" + w + "'");
         if (w == "assumed_gamma") {
             if (accept_keyword("srgb")) {
