@@ -6,7 +6,7 @@
 #include <functional>
 
 #include "cache/hemisphere_sampler.h"
-#include "parser/vec3.h"
+#include "core/vec3.h"
 
 namespace wardray::cache {
 

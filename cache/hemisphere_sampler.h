@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "parser/vec3.h"
+#include "core/vec3.h"
 
 namespace wardray::cache {
 

@@ -29,7 +29,7 @@ double front_fade(double front) {
 
 }  // namespace
 
-LookupParams lookup_params(const parser::RadiositySettings& settings, int depth, bool final_pass, double ray_weight) {
+LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, bool final_pass, double ray_weight) {
     LookupParams params;
     // POV-Ray compat (radiosity.cpp, RadiosityFunction and ComputeAmbient): pretrace passes use
     // error_bound × low_error_factor; rays of weight below 0.25 get a looser bound; each bounce doubles it.

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "cache/irradiance_record.h"
-#include "parser/scene.h"
-#include "parser/vec3.h"
+#include "scene/scene.h"
+#include "core/vec3.h"
 
 namespace wardray::cache {
 
@@ -26,7 +26,7 @@ struct LookupParams {
 
 /// The lookup parameters POV-Ray 3.7 uses at `depth` in a final (`final_pass`) or pretrace pass, for a ray of
 /// importance `ray_weight` (POV-Ray's weight of the ray that asks; 1 for camera rays).
-LookupParams lookup_params(const parser::RadiositySettings& settings, int depth, bool final_pass,
+LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, bool final_pass,
                            double ray_weight = 1.0);
 
 /// Ward, Rubinstein & Clear 1988's error term with POV-Ray's doubled rotational part (see LookupParams):

@@ -9,7 +9,7 @@ namespace {
 
 /// The largest error bound lookup_params() gives at depth 0: the final pass's or the pretrace's, plus POV-Ray's
 /// widening for low-weight rays (at most 0.25).
-double largest_error_bound(const parser::RadiositySettings& settings) {
+double largest_error_bound(const scene::RadiositySettings& settings) {
     return settings.error_bound * std::max(1.0, settings.low_error_factor) + 0.25;
 }
 
@@ -56,7 +56,7 @@ void TileCache::add(IrradianceRecord record) {
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
-IrradianceCache::IrradianceCache(const parser::RadiositySettings& settings)
+IrradianceCache::IrradianceCache(const scene::RadiositySettings& settings)
     : IrradianceCache(std::max(settings.recursion_limit, 1), largest_error_bound(settings)) {}
 
 IrradianceCache::IrradianceCache(int depths, double reach) {

@@ -12,7 +12,7 @@
 #include "cache/interpolation.h"
 #include "cache/irradiance_record.h"
 #include "cache/octree.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::cache {
 
@@ -72,7 +72,7 @@ private:
 class IrradianceCache {
 public:
     /// One depth per `recursion_limit` bounce; octrees filed for the largest error bound lookup_params() can give.
-    explicit IrradianceCache(const parser::RadiositySettings& settings);
+    explicit IrradianceCache(const scene::RadiositySettings& settings);
     /// `depths` octrees whose filing reach at depth d is reach × 2^d.
     IrradianceCache(int depths, double reach);
 

@@ -12,7 +12,7 @@ double finite_positive_or(double v, double fallback) { return std::isfinite(v) &
 
 }  // namespace
 
-RadiusLimits radius_limits(const parser::RadiositySettings& settings, int depth, double distance_to_camera,
+RadiusLimits radius_limits(const scene::RadiositySettings& settings, int depth, double distance_to_camera,
                            double footprint_min, double footprint_max) {
     // POV-Ray compat: minimum_reuse and maximum_reuse are fractions of the distance to the camera, doubled per
     // bounce (radiosity.cpp, GetRecursionSettings and GatherLight).

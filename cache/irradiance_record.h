@@ -4,8 +4,8 @@
 #include <cstdint>
 
 #include "cache/gather.h"
-#include "parser/scene.h"
-#include "parser/vec3.h"
+#include "scene/scene.h"
+#include "core/vec3.h"
 
 namespace wardray::cache {
 
@@ -31,7 +31,7 @@ struct RadiusLimits {
 /// [minimum_reuse, maximum_reuse] × distance × 2^depth, intersected with the caller's pixel-footprint range
 /// [footprint_min, footprint_max] (pass 0 and +infinity to leave that out). When the two ranges do not overlap the
 /// lower bound wins, so records never get denser than the footprint allows.
-RadiusLimits radius_limits(const parser::RadiositySettings& settings, int depth, double distance_to_camera,
+RadiusLimits radius_limits(const scene::RadiositySettings& settings, int depth, double distance_to_camera,
                            double footprint_min = 0.0, double footprint_max = 1e300);
 
 /// Switches for the improvements over POV-Ray, so that each can be measured on and off.

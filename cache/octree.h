@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cache/irradiance_record.h"
-#include "parser/vec3.h"
+#include "core/vec3.h"
 
 namespace wardray::cache {
 

@@ -7,7 +7,7 @@
 
 namespace wardray::geometry {
 
-std::optional<BoxShape> BoxShape::create(const parser::Box& box) {
+std::optional<BoxShape> BoxShape::create(const scene::Box& box) {
     if (!is_finite(box.corner1) || !is_finite(box.corner2)) return std::nullopt;
     // POV-Ray compat: the two corners may be any opposite pair; the box spans their component-wise min and max.
     return BoxShape(min(box.corner1, box.corner2), max(box.corner1, box.corner2));

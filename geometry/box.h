@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class BoxShape {
 public:
     /// Returns nothing when a corner is not finite. The corners may be given in any order.
-    static std::optional<BoxShape> create(const parser::Box& box);
+    static std::optional<BoxShape> create(const scene::Box& box);
 
     /// Surface crossings with t in (t_min, t_max): the entering face, then the leaving face.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

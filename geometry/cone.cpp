@@ -14,7 +14,7 @@ ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bo
     m_slope = (r1 - r0) / m_height;
 }
 
-std::optional<ConeShape> ConeShape::create(const parser::Cone& c) {
+std::optional<ConeShape> ConeShape::create(const scene::Cone& c) {
     if (!is_finite(c.base) || !is_finite(c.cap) || !std::isfinite(c.base_radius) || !std::isfinite(c.cap_radius))
         return std::nullopt;
     const double h = length(c.cap - c.base);
@@ -26,9 +26,9 @@ std::optional<ConeShape> ConeShape::create(const parser::Cone& c) {
     return ConeShape(c.base, c.cap, r0, r1, c.open);
 }
 
-std::optional<ConeShape> ConeShape::create(const parser::Cylinder& c) {
+std::optional<ConeShape> ConeShape::create(const scene::Cylinder& c) {
     if (c.radius == 0.0) return std::nullopt;
-    return create(parser::Cone{c.base, c.radius, c.cap, c.radius, c.open});
+    return create(scene::Cone{c.base, c.radius, c.cap, c.radius, c.open});
 }
 
 SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,9 +12,9 @@ namespace wardray::geometry {
 class ConeShape {
 public:
     /// Returns nothing for coincident end points or non-finite numbers.
-    static std::optional<ConeShape> create(const parser::Cone& cone);
+    static std::optional<ConeShape> create(const scene::Cone& cone);
     /// The cylinder as a cone with equal radii.
-    static std::optional<ConeShape> create(const parser::Cylinder& cylinder);
+    static std::optional<ConeShape> create(const scene::Cylinder& cylinder);
 
     /// Surface crossings (side and caps) with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -19,7 +19,7 @@ class ShapeInstance;
 class CsgShape {
 public:
     /// Returns nothing when a child cannot be built (the whole node is then skipped and reported).
-    static std::optional<CsgShape> create(const parser::Csg& csg);
+    static std::optional<CsgShape> create(const scene::Csg& csg);
 
     /// Crossings with t in (t_min, t_max), sorted, each naming the leaf primitive hit.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -5,7 +5,7 @@
 
 namespace wardray::geometry {
 
-std::optional<DiscShape> DiscShape::create(const parser::Disc& d) {
+std::optional<DiscShape> DiscShape::create(const scene::Disc& d) {
     if (!is_finite(d.center) || !is_finite(d.normal) || !std::isfinite(d.radius) || !std::isfinite(d.hole_radius))
         return std::nullopt;
     const double len = length(d.normal);

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class DiscShape {
 public:
     /// Returns nothing for a zero normal, a zero radius or non-finite numbers.
-    static std::optional<DiscShape> create(const parser::Disc& disc);
+    static std::optional<DiscShape> create(const scene::Disc& disc);
 
     /// The single crossing with t in (t_min, t_max), if the ray passes through the annulus.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -14,30 +14,30 @@ std::optional<AnyShape> wrap(const Description& d) {
     return std::nullopt;
 }
 
-std::optional<AnyShape> make_shape(const parser::Shape& shape) {
+std::optional<AnyShape> make_shape(const scene::Shape& shape) {
     return std::visit(
         [](const auto& s) -> std::optional<AnyShape> {
             using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, parser::Sphere>) return wrap<SphereShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Box>) return wrap<BoxShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Plane>) return wrap<PlaneShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Cylinder> || std::is_same_v<T, parser::Cone>)
+            if constexpr (std::is_same_v<T, scene::Sphere>) return wrap<SphereShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Box>) return wrap<BoxShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Plane>) return wrap<PlaneShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Cylinder> || std::is_same_v<T, scene::Cone>)
                 return wrap<ConeShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Disc>) return wrap<DiscShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Torus>) return wrap<TorusShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Prism>) {
+            else if constexpr (std::is_same_v<T, scene::Disc>) return wrap<DiscShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Torus>) return wrap<TorusShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Prism>) {
                 // Spline outlines swept straight are solved exactly; linear outlines and conic sweeps are meshes.
-                if (s.spline != parser::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
+                if (s.spline != scene::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
                 return wrap<MeshShape>(s);
-            } else if constexpr (std::is_same_v<T, parser::Mesh> || std::is_same_v<T, parser::Polygon>)
+            } else if constexpr (std::is_same_v<T, scene::Mesh> || std::is_same_v<T, scene::Polygon>)
                 return wrap<MeshShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Quadric>) return wrap<QuadricShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Quartic>) return wrap<QuarticShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Lathe>) return wrap<LatheShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Sor>) return wrap<SorShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Text>) return wrap<TextShape>(s);
-            else if constexpr (std::is_same_v<T, parser::Csg>) return wrap<CsgShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Quadric>) return wrap<QuadricShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Quartic>) return wrap<QuarticShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Lathe>) return wrap<LatheShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Sor>) return wrap<SorShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Text>) return wrap<TextShape>(s);
+            else if constexpr (std::is_same_v<T, scene::Csg>) return wrap<CsgShape>(s);
             return std::nullopt;
         },
         shape);
@@ -83,7 +83,7 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
 
 }  // namespace
 
-ShapeInstance::ShapeInstance(const AnyShape& shape, const parser::Object& object, std::uint32_t index)
+ShapeInstance::ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index)
     : m_shape(shape),
       m_transform(object.transform),
       m_object(&object),
@@ -94,7 +94,7 @@ ShapeInstance::ShapeInstance(const AnyShape& shape, const parser::Object& object
       m_no_reflection(object.no_reflection),
       m_no_radiosity(object.no_radiosity) {}
 
-std::optional<ShapeInstance> ShapeInstance::create(const parser::Object& object, std::uint32_t index,
+std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
                                                    bool flip_inverse) {
     // Degenerate objects are skipped here and reported by the parser; they must never reach Embree.
     const Transform& xf = object.transform;
@@ -109,7 +109,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const parser::Object& object,
     if (!object.clipped_by.empty()) {
         // Only the parts of the surface inside every clipping object remain.
         auto clips = std::make_shared<std::vector<ShapeInstance>>();
-        for (const parser::Object& c : object.clipped_by) {
+        for (const scene::Object& c : object.clipped_by) {
             auto ci = create(c, index);
             if (!ci) return std::nullopt;
             local = intersect_bounds(local, ci->region_bounds());

@@ -23,7 +23,7 @@
 #include "geometry/superellipsoid.h"
 #include "geometry/text.h"
 #include "geometry/torus.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -33,13 +33,13 @@ using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, Disc
                               TextShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
-/// precision on the parent-space ray. The parser::Object must outlive the instance (hits point at it).
+/// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).
 class ShapeInstance {
 public:
     /// Returns nothing for objects that cannot be drawn without NaN: singular transforms, degenerate shapes,
-    /// non-finite parameters or bounds. `index` is the object's position in parser::Scene::objects;
+    /// non-finite parameters or bounds. `index` is the object's position in scene::Scene::objects;
     /// `flip_inverse` inverts the object once more (the subtracted children of a difference).
-    static std::optional<ShapeInstance> create(const parser::Object& object, std::uint32_t index,
+    static std::optional<ShapeInstance> create(const scene::Object& object, std::uint32_t index,
                                                bool flip_inverse = false);
 
     /// Surface crossings of the ray with t in (t_min, t_max); normals are unit, in the parent's space, pointing
@@ -61,7 +61,7 @@ public:
     /// Signed implicit function in object space at the world point (0 on the surface, negative inside the
     /// shape before `inverse`); for tests and diagnostics.
     double object_implicit(const Vec3& p_world) const;
-    /// The object's index in parser::Scene::objects and its object-to-world transform.
+    /// The object's index in scene::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
     const Transform& transform() const { return m_transform; }
     /// The shape in object space.
@@ -70,14 +70,14 @@ public:
     bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips; }
 
 private:
-    ShapeInstance(const AnyShape& shape, const parser::Object& object, std::uint32_t index);
+    ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index);
 
     AnyShape m_shape;
     Transform m_transform;
     std::optional<Bounds> m_world_bounds;
     std::optional<Bounds> m_region_bounds;
     std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point
-    const parser::Object* m_object = nullptr;
+    const scene::Object* m_object = nullptr;
     std::uint32_t m_index = 0;
     bool m_inverse = false;
     bool m_no_shadow = false;

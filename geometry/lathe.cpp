@@ -41,8 +41,8 @@ void extent(const std::array<double, 4>& c, double& lo, double& hi) {
 
 }  // namespace
 
-std::optional<LatheShape> LatheShape::create(const parser::Lathe& lathe) {
-    using Spline = parser::Lathe::Spline;
+std::optional<LatheShape> LatheShape::create(const scene::Lathe& lathe) {
+    using Spline = scene::Lathe::Spline;
     const auto& P = lathe.points;
     const int n = static_cast<int>(P.size());
     for (const Vec3& p : P)

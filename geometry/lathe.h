@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -18,7 +18,7 @@ namespace wardray::geometry {
 class LatheShape {
 public:
     /// Returns nothing for too few points or non-finite numbers.
-    static std::optional<LatheShape> create(const parser::Lathe& lathe);
+    static std::optional<LatheShape> create(const scene::Lathe& lathe);
 
     /// Crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -33,7 +33,7 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
 
 }  // namespace
 
-std::optional<MeshShape> MeshShape::create(const parser::Mesh& mesh) {
+std::optional<MeshShape> MeshShape::create(const scene::Mesh& mesh) {
     MeshShape m;
     for (const Vec3& v : mesh.vertices)
         if (!is_finite(v)) return std::nullopt;
@@ -41,7 +41,7 @@ std::optional<MeshShape> MeshShape::create(const parser::Mesh& mesh) {
     m.m_normals = mesh.normals;
     const int nv = static_cast<int>(mesh.vertices.size());
     const int nn = static_cast<int>(mesh.normals.size());
-    for (const parser::Mesh::Face& f : mesh.faces) {
+    for (const scene::Mesh::Face& f : mesh.faces) {
         Face face;
         bool ok = true;
         for (int k = 0; k < 3; ++k) {

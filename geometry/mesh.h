@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -21,11 +21,11 @@ public:
     };
 
     /// Drops degenerate faces (zero area, bad indices); returns nothing when no face is left.
-    static std::optional<MeshShape> create(const parser::Mesh& mesh);
+    static std::optional<MeshShape> create(const scene::Mesh& mesh);
     /// The polygon triangulated with POV-Ray's even-odd rule for holes (polygon.cpp).
-    static std::optional<MeshShape> create(const parser::Polygon& polygon);
+    static std::optional<MeshShape> create(const scene::Polygon& polygon);
     /// A linear-spline prism: side walls and triangulated caps, faces turned outward (prism.cpp).
-    static std::optional<MeshShape> create(const parser::Prism& prism);
+    static std::optional<MeshShape> create(const scene::Prism& prism);
 
     /// All crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -7,21 +7,21 @@
 
 namespace wardray::geometry {
 
-std::optional<parser::QueryHit> ObjectQuery::trace(const parser::Object& object, const Vec3& origin,
+std::optional<scene::QueryHit> ObjectQuery::trace(const scene::Object& object, const Vec3& origin,
                                                    const Vec3& direction) const {
     const auto instance = ShapeInstance::create(object, 0);
     if (!instance || !is_finite(origin) || !is_finite(direction) || direction == Vec3{}) return std::nullopt;
     const auto hit = instance->nearest(origin, direction, 0.0, std::numeric_limits<double>::infinity());
     if (!hit) return std::nullopt;
-    return parser::QueryHit{hit->position, hit->normal};
+    return scene::QueryHit{hit->position, hit->normal};
 }
 
-bool ObjectQuery::inside(const parser::Object& object, const Vec3& point) const {
+bool ObjectQuery::inside(const scene::Object& object, const Vec3& point) const {
     const auto instance = ShapeInstance::create(object, 0);
     return instance && is_finite(point) && instance->inside(point);
 }
 
-std::optional<std::pair<Vec3, Vec3>> ObjectQuery::extent(const parser::Object& object) const {
+std::optional<std::pair<Vec3, Vec3>> ObjectQuery::extent(const scene::Object& object) const {
     const auto instance = ShapeInstance::create(object, 0);
     if (!instance || !instance->world_bounds()) return std::nullopt;
     return std::pair{instance->world_bounds()->lower, instance->world_bounds()->upper};

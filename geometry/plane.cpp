@@ -5,7 +5,7 @@
 
 namespace wardray::geometry {
 
-std::optional<PlaneShape> PlaneShape::create(const parser::Plane& plane) {
+std::optional<PlaneShape> PlaneShape::create(const scene::Plane& plane) {
     if (!is_finite(plane.normal) || !std::isfinite(plane.distance)) return std::nullopt;
     const double len = length(plane.normal);
     if (!(len > 0.0) || !std::isfinite(len)) return std::nullopt;

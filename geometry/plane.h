@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class PlaneShape {
 public:
     /// Returns nothing for a zero or non-finite normal or a non-finite distance.
-    static std::optional<PlaneShape> create(const parser::Plane& plane);
+    static std::optional<PlaneShape> create(const scene::Plane& plane);
 
     /// The single crossing with t in (t_min, t_max), if the ray is not parallel to the plane.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -67,7 +67,7 @@ std::vector<std::vector<Vec3>> polygon_loops(const std::vector<Vec3>& points) {
     return loops;
 }
 
-std::optional<MeshShape> MeshShape::create(const parser::Polygon& polygon) {
+std::optional<MeshShape> MeshShape::create(const scene::Polygon& polygon) {
     for (const Vec3& p : polygon.points)
         if (!is_finite(p)) return std::nullopt;
     const auto loops = polygon_loops(polygon.points);
@@ -99,7 +99,7 @@ std::optional<MeshShape> MeshShape::create(const parser::Polygon& polygon) {
     }
     mark_levels(cdt);
 
-    parser::Mesh mesh;
+    scene::Mesh mesh;
     std::map<Cdt::Vertex_handle, int> index;
     auto vertex = [&](Cdt::Vertex_handle v) {
         auto [it, fresh] = index.try_emplace(v, static_cast<int>(mesh.vertices.size()));
@@ -109,7 +109,7 @@ std::optional<MeshShape> MeshShape::create(const parser::Polygon& polygon) {
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
         // POV-Ray compat: a point inside an odd number of sub-polygons is inside the polygon.
         if (f->info() % 2 != 1) continue;
-        parser::Mesh::Face face;
+        scene::Mesh::Face face;
         for (int k = 0; k < 3; ++k) face.v[k] = vertex(f->vertex(k));
         mesh.faces.push_back(face);
     }

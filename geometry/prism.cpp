@@ -37,9 +37,9 @@ bool inside_outline(const std::vector<std::vector<Vec3>>& loops, double u, doubl
 
 // The outline as loops of edges: the sub-polygons of a linear outline, or the sampled spline pieces chained into
 // loops wherever one piece starts where the last one ended.
-std::vector<std::vector<Edge>> outline_edges(const parser::Prism& prism) {
+std::vector<std::vector<Edge>> outline_edges(const scene::Prism& prism) {
     std::vector<std::vector<Edge>> loops;
-    if (prism.spline == parser::Prism::Spline::Linear) {
+    if (prism.spline == scene::Prism::Spline::Linear) {
         for (const auto& loop : polygon_loops(prism.points)) {
             std::vector<Edge> edges;
             for (std::size_t i = 0; i < loop.size(); ++i) edges.push_back({loop[i], loop[(i + 1) % loop.size()], {}, {}});
@@ -77,7 +77,7 @@ std::vector<std::vector<Edge>> outline_edges(const parser::Prism& prism) {
 
 }  // namespace
 
-std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
+std::optional<MeshShape> MeshShape::create(const scene::Prism& prism) {
     for (const Vec3& p : prism.points)
         if (!is_finite(p)) return std::nullopt;
     if (!std::isfinite(prism.height1) || !std::isfinite(prism.height2) || prism.height1 == prism.height2)
@@ -122,13 +122,13 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
     // A conic sweep below its apex turns the outline half round.
     const double sweep_sign = prism.conic && h1 + h2 < 0.0 ? -1.0 : 1.0;
 
-    parser::Mesh mesh;
+    scene::Mesh mesh;
     // A triangle turned to face `outward`, with vertex normals when given.
     auto add_triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& outward,
                             const Vec3* normals = nullptr) {
         const int base = static_cast<int>(mesh.vertices.size());
         mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
-        parser::Mesh::Face f;
+        scene::Mesh::Face f;
         f.v = {base, base + 1, base + 2};
         if (normals != nullptr) {
             const int nb = static_cast<int>(mesh.normals.size());
@@ -161,7 +161,7 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
         }
     if (!prism.open) {
         for (double h : {h1, h2}) {
-            parser::Polygon cap;
+            scene::Polygon cap;
             for (const auto& loop : loops) {
                 for (const Vec3& p : loop) cap.points.push_back(place(p, h));
                 cap.points.push_back(place(loop.front(), h));
@@ -178,8 +178,8 @@ std::optional<MeshShape> MeshShape::create(const parser::Prism& prism) {
     return create(mesh);
 }
 
-std::vector<PrismPiece> prism_spline_pieces(const parser::Prism& prism) {
-    using Spline = parser::Prism::Spline;
+std::vector<PrismPiece> prism_spline_pieces(const scene::Prism& prism) {
+    using Spline = scene::Prism::Spline;
     const auto& P = prism.points;
     const int n = static_cast<int>(P.size());
     std::vector<PrismPiece> pieces;

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "parser/scene.h"
-#include "parser/vec3.h"
+#include "scene/scene.h"
+#include "core/vec3.h"
 
 namespace wardray::geometry {
 
@@ -26,6 +26,6 @@ struct PrismPiece {
 /// POV-Ray's pieces of a quadratic, cubic or Bézier outline, in order: quadratic and cubic sub-polygons run from
 /// their second point and close when a point two ahead repeats that first curve point; Bézier pieces take four
 /// points each.
-std::vector<PrismPiece> prism_spline_pieces(const parser::Prism& prism);
+std::vector<PrismPiece> prism_spline_pieces(const scene::Prism& prism);
 
 }  // namespace wardray::geometry

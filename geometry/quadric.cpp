@@ -6,7 +6,7 @@
 
 namespace wardray::geometry {
 
-std::optional<QuadricShape> QuadricShape::create(const parser::Quadric& q) {
+std::optional<QuadricShape> QuadricShape::create(const scene::Quadric& q) {
     if (!is_finite(q.squares) || !is_finite(q.mixed) || !is_finite(q.linear) || !std::isfinite(q.constant))
         return std::nullopt;
     if (q.squares == Vec3{} && q.mixed == Vec3{} && q.linear == Vec3{}) return std::nullopt;

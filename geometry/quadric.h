@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class QuadricShape {
 public:
     /// Returns nothing when a coefficient is not finite or all second- and first-degree ones vanish.
-    static std::optional<QuadricShape> create(const parser::Quadric& quadric);
+    static std::optional<QuadricShape> create(const scene::Quadric& quadric);
 
     /// Up to two crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
@@ -24,10 +24,10 @@ public:
     double implicit(const Vec3& p) const;
 
 private:
-    explicit QuadricShape(const parser::Quadric& q) : m_q(q) {}
+    explicit QuadricShape(const scene::Quadric& q) : m_q(q) {}
     Vec3 gradient(const Vec3& p) const;
 
-    parser::Quadric m_q;
+    scene::Quadric m_q;
 };
 
 }  // namespace wardray::geometry

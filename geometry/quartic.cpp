@@ -26,7 +26,7 @@ void linear_powers(double o, double d, double out[5][5]) {
 
 }  // namespace
 
-std::optional<QuarticShape> QuarticShape::create(const parser::Quartic& q) {
+std::optional<QuarticShape> QuarticShape::create(const scene::Quartic& q) {
     QuarticShape shape;
     int index = 0;
     bool any = false;

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -14,7 +14,7 @@ namespace wardray::geometry {
 class QuarticShape {
 public:
     /// Returns nothing when a coefficient is not finite or all but the constant vanish.
-    static std::optional<QuarticShape> create(const parser::Quartic& quartic);
+    static std::optional<QuarticShape> create(const scene::Quartic& quartic);
 
     /// Up to four crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -294,7 +294,7 @@ namespace {
 void attach_user_geometry(GeometryData& impl);
 }  // namespace
 
-SceneGeometry::SceneGeometry(const parser::Scene& scene) : m_impl(std::make_unique<Impl>()) {
+SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()) {
     Impl& impl = *m_impl;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         auto inst = ShapeInstance::create(scene.objects[i], i);

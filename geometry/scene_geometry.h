@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
-#include "parser/vec3.h"
+#include "scene/scene.h"
+#include "core/vec3.h"
 
 namespace wardray::geometry {
 
@@ -29,16 +29,16 @@ struct Hit {
     double t = 0.0;
     Vec3 position;        ///< world space
     Vec3 normal;          ///< unit geometric normal in world space, pointing out of the shape (inverse flips it)
-    std::uint32_t object = 0;  ///< index into parser::Scene::objects (the top-level object)
+    std::uint32_t object = 0;  ///< index into scene::Scene::objects (the top-level object)
     /// The primitive whose surface was hit (a CSG leaf, or the object itself): its texture applies.
-    const parser::Object* leaf = nullptr;
+    const scene::Object* leaf = nullptr;
 };
 
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.
 class SceneGeometry {
 public:
     /// Builds the acceleration structure for every object of `scene` (the scene must outlive this object).
-    explicit SceneGeometry(const parser::Scene& scene);
+    explicit SceneGeometry(const scene::Scene& scene);
     ~SceneGeometry();
     SceneGeometry(const SceneGeometry&) = delete;
     SceneGeometry& operator=(const SceneGeometry&) = delete;

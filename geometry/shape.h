@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "parser/vec3.h"
+#include "core/vec3.h"
 
-namespace wardray::parser {
+namespace wardray::scene {
 struct Object;
 }
 
@@ -47,7 +47,7 @@ struct SurfaceHit {
     double t = 0.0;
     Vec3 normal;           ///< object-space normal pointing out of the shape, not necessarily unit length
     bool entering = true;  ///< the ray passes from outside to inside here
-    const parser::Object* leaf = nullptr;  ///< the primitive whose surface this is (set by ShapeInstance)
+    const scene::Object* leaf = nullptr;  ///< the primitive whose surface this is (set by ShapeInstance)
 };
 
 /// The surface crossings of a ray with one shape inside (t_min, t_max), sorted by t.

@@ -74,7 +74,7 @@ bool pov_bound_is_nan(const std::array<double, 4>& c, double y0, double y1, doub
 
 }  // namespace
 
-std::optional<SorShape> SorShape::create(const parser::Sor& sor) {
+std::optional<SorShape> SorShape::create(const scene::Sor& sor) {
     const auto& P = sor.points;
     const int n = static_cast<int>(P.size());
     if (n < 4) return std::nullopt;

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -18,7 +18,7 @@ namespace wardray::geometry {
 class SorShape {
 public:
     /// Returns nothing for fewer than four points, heights too close or non-finite numbers.
-    static std::optional<SorShape> create(const parser::Sor& sor);
+    static std::optional<SorShape> create(const scene::Sor& sor);
 
     /// Crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

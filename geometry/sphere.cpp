@@ -18,7 +18,7 @@ double smallest_root(double a, double b, double c) {
 
 }  // namespace
 
-std::optional<SphereShape> SphereShape::create(const parser::Sphere& sphere) {
+std::optional<SphereShape> SphereShape::create(const scene::Sphere& sphere) {
     // POV-Ray compat: a negative radius renders like its absolute value (checked with povray 3.7).
     const double r = std::fabs(sphere.radius);
     if (!is_finite(sphere.center) || !std::isfinite(r) || r == 0.0) return std::nullopt;

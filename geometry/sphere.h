@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class SphereShape {
 public:
     /// Returns nothing when the sphere is degenerate (zero or non-finite radius, non-finite centre).
-    static std::optional<SphereShape> create(const parser::Sphere& sphere);
+    static std::optional<SphereShape> create(const scene::Sphere& sphere);
 
     /// Surface crossings with t in (t_min, t_max), entering first.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

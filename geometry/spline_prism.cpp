@@ -33,8 +33,8 @@ int monotone_cuts(const PrismPiece& p, double cuts[4]) {
 
 }  // namespace
 
-std::optional<SplinePrismShape> SplinePrismShape::create(const parser::Prism& prism) {
-    if (prism.spline == parser::Prism::Spline::Linear || prism.conic) return std::nullopt;
+std::optional<SplinePrismShape> SplinePrismShape::create(const scene::Prism& prism) {
+    if (prism.spline == scene::Prism::Spline::Linear || prism.conic) return std::nullopt;
     for (const Vec3& p : prism.points)
         if (!is_finite(p)) return std::nullopt;
     if (!std::isfinite(prism.height1) || !std::isfinite(prism.height2) || prism.height1 == prism.height2)

@@ -8,7 +8,7 @@
 
 #include "geometry/prism_outline.h"
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -18,7 +18,7 @@ namespace wardray::geometry {
 class SplinePrismShape {
 public:
     /// Returns nothing for a linear outline, a conic sweep, equal heights or non-finite numbers.
-    static std::optional<SplinePrismShape> create(const parser::Prism& prism);
+    static std::optional<SplinePrismShape> create(const scene::Prism& prism);
 
     /// Crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

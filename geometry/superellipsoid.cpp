@@ -7,7 +7,7 @@
 
 namespace wardray::geometry {
 
-std::optional<SuperellipsoidShape> SuperellipsoidShape::create(const parser::Superellipsoid& s) {
+std::optional<SuperellipsoidShape> SuperellipsoidShape::create(const scene::Superellipsoid& s) {
     if (!(s.e > 0.0) || !(s.n > 0.0) || !std::isfinite(s.e) || !std::isfinite(s.n)) return std::nullopt;
     return SuperellipsoidShape(s.e, s.n);
 }

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -13,7 +13,7 @@ namespace wardray::geometry {
 class SuperellipsoidShape {
 public:
     /// Returns nothing for non-positive or non-finite exponents.
-    static std::optional<SuperellipsoidShape> create(const parser::Superellipsoid& s);
+    static std::optional<SuperellipsoidShape> create(const scene::Superellipsoid& s);
 
     /// Crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

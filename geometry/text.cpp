@@ -110,19 +110,19 @@ double segment_distance(const Segment& g, double x, double y) {
 
 }  // namespace
 
-std::optional<TextShape> TextShape::create(const parser::Text& text) {
+std::optional<TextShape> TextShape::create(const scene::Text& text) {
     if (!std::isfinite(text.thickness)) return std::nullopt;
     TextShape shape;
     shape.m_z_low = std::fmin(0.0, text.thickness);
     shape.m_z_high = std::fmax(0.0, text.thickness);
     auto glyphs = std::make_shared<std::vector<Glyph>>();
     Bounds all{{inf, inf, shape.m_z_low}, {-inf, -inf, shape.m_z_high}};
-    for (const parser::TextGlyph& tg : text.glyphs) {
+    for (const scene::TextGlyph& tg : text.glyphs) {
         Glyph glyph{{}, inf, inf, -inf, -inf};
         for (const auto& contour : tg.contours) {
             const std::size_t n = contour.size();
             if (n == 0) continue;
-            auto at = [&](std::size_t k) -> const parser::TextGlyph::Point& { return contour[k % n]; };
+            auto at = [&](std::size_t k) -> const scene::TextGlyph::Point& { return contour[k % n]; };
             auto add = [&](Segment s) {
                 for (double v : {s.x0, s.y0, s.x1, s.y1, s.x2, s.y2})
                     if (!std::isfinite(v)) return;

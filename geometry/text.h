@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -17,7 +17,7 @@ namespace wardray::geometry {
 class TextShape {
 public:
     /// Returns nothing for a text without any outline or with non-finite numbers.
-    static std::optional<TextShape> create(const parser::Text& text);
+    static std::optional<TextShape> create(const scene::Text& text);
 
     /// Crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

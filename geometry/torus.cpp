@@ -7,7 +7,7 @@
 
 namespace wardray::geometry {
 
-std::optional<TorusShape> TorusShape::create(const parser::Torus& t) {
+std::optional<TorusShape> TorusShape::create(const scene::Torus& t) {
     // POV-Ray compat: both radii are used by absolute value.
     const double major = std::fabs(t.major);
     const double minor = std::fabs(t.minor);

@@ -4,7 +4,7 @@
 #include <optional>
 
 #include "geometry/shape.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry {
 
@@ -12,7 +12,7 @@ namespace wardray::geometry {
 class TorusShape {
 public:
     /// Returns nothing for non-finite or zero radii.
-    static std::optional<TorusShape> create(const parser::Torus& torus);
+    static std::optional<TorusShape> create(const scene::Torus& torus);
 
     /// Up to four crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

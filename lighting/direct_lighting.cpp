@@ -7,9 +7,9 @@
 
 #include "cache/hemisphere_sampler.h"
 #include "geometry/scene_geometry.h"
-#include "lighting/noise.h"
-#include "lighting/pattern.h"
-#include "lighting/pigment.h"
+#include "texture/noise.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
 
 namespace wardray::lighting {
 
@@ -27,9 +27,9 @@ double smooth_ramp(double low, double high, double x) {
 }
 
 // POV-Ray's filter colour of a pigment: what passes through it, rgb·filter + transmit.
-Vec3 transmittance(const parser::Color& c) { return c.rgb() * c.filter + Vec3{c.transmit, c.transmit, c.transmit}; }
+Vec3 transmittance(const Color& c) { return c.rgb() * c.filter + Vec3{c.transmit, c.transmit, c.transmit}; }
 
-bool pigment_opaque(const parser::Pigment& p) {
+bool pigment_opaque(const scene::Pigment& p) {
     if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
     for (const auto& e : p.color_map)
         if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
@@ -38,7 +38,7 @@ bool pigment_opaque(const parser::Pigment& p) {
     return true;
 }
 
-bool texture_opaque(const parser::Texture& t) {
+bool texture_opaque(const scene::Texture& t) {
     if (!t.texture_map.empty()) {
         for (const auto& e : t.texture_map)
             if (!texture_opaque(e.texture)) return false;
@@ -51,10 +51,10 @@ bool texture_opaque(const parser::Texture& t) {
     return true;
 }
 
-bool object_opaque(const parser::Object& o) {
+bool object_opaque(const scene::Object& o) {
     if (!texture_opaque(o.texture)) return false;
-    if (const auto* csg = std::get_if<parser::Csg>(&o.shape))
-        for (const parser::Object& child : csg->children)
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const scene::Object& child : csg->children)
             if (!object_opaque(child)) return false;
     return true;
 }
@@ -81,7 +81,7 @@ bool InteriorStack::remove(std::uint32_t o) {
     return false;
 }
 
-Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry& geometry,
+Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
                        IntegratorOptions options)
     : m_scene(scene), m_geometry(geometry), m_options(options) {
     // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
@@ -109,7 +109,7 @@ Integrator::Integrator(const parser::Scene& scene, const geometry::SceneGeometry
     }
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
-    for (const parser::Object& o : scene.objects) {
+    for (const scene::Object& o : scene.objects) {
         const bool opaque = object_opaque(o);
         m_opaque.push_back(opaque ? 1 : 0);
         m_any_transparent = m_any_transparent || !opaque;
@@ -153,10 +153,10 @@ Vec3 Integrator::sky(const Vec3& direction) const {
     Vec3 filter{1.0, 1.0, 1.0};
     if (m_scene.sky_sphere) {
         // POV-Ray 3.7's ComputeSky: pigments from the last to the first, each seen through those before it.
-        const parser::SkySphere& sky = *m_scene.sky_sphere;
+        const scene::SkySphere& sky = *m_scene.sky_sphere;
         const Vec3 p = sky.transform.is_identity() ? direction : sky.transform.inverse_point(direction);
         for (auto it = sky.pigments.rbegin(); it != sky.pigments.rend(); ++it) {
-            const parser::Color c = evaluate_pigment(*it, p, m_noise_generator);
+            const Color c = texture::evaluate_pigment(*it, p, m_noise_generator);
             colour += c.rgb() * (1.0 - c.filter - c.transmit) * filter * sky.emission.rgb();
             filter = filter * transmittance(c);
         }
@@ -170,9 +170,9 @@ Vec3 Integrator::apply_fog(const Vec3& colour, double depth) const {
     // colour where it has filter; the rest of the ray sees the fog colour.
     Vec3 attenuation{1.0, 1.0, 1.0};
     Vec3 added;
-    for (const parser::Fog& fog : m_scene.fogs) {
+    for (const scene::Fog& fog : m_scene.fogs) {
         if (std::fabs(fog.distance) <= kEpsilon) continue;
-        const parser::Color& c = fog.color;
+        const Color& c = fog.color;
         double att = std::exp(-depth / fog.distance);
         att = std::max(att, c.transmit);
         attenuation = attenuation * (Vec3{1.0 - c.filter, 1.0 - c.filter, 1.0 - c.filter} + c.rgb() * c.filter) * att;
@@ -181,18 +181,19 @@ Vec3 Integrator::apply_fog(const Vec3& colour, double depth) const {
     return added + attenuation * colour;
 }
 
-Vec3 Integrator::texture_filter(const parser::Texture& texture, const Vec3& p) const {
+Vec3 Integrator::texture_filter(const scene::Texture& texture, const Vec3& p) const {
     if (!texture.texture_map.empty()) {
-        const Vec3 tp = warp_point(texture.map_pattern, p);
-        const double v = pattern_value(texture.map_pattern, tp, m_noise_generator);
+        const Vec3 tp = texture::warp_point(texture.map_pattern, p);
+        const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
         const auto& map = texture.texture_map;
-        const MapLookup m = search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        const texture::MapLookup m =
+            texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
         const Vec3 cur = texture_filter(map[m.cur].texture, tp);
         if (m.prev == m.cur) return cur;
         return cur * m.fraction + texture_filter(map[m.prev].texture, tp) * (1.0 - m.fraction);
     }
-    Vec3 filter = transmittance(evaluate_pigment(texture.pigment, p, m_noise_generator));
-    for (const parser::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p);
+    Vec3 filter = transmittance(texture::evaluate_pigment(texture.pigment, p, m_noise_generator));
+    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p);
     return filter;
 }
 
@@ -210,9 +211,9 @@ Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, 
         const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
         if (!hit) break;
         if (m_opaque[hit->object]) return {};
-        const parser::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
+        const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
         filter = filter * texture_filter(object.texture, hit->position);
-        const parser::Interior& interior = m_scene.objects[hit->object].interior;
+        const scene::Interior& interior = m_scene.objects[hit->object].interior;
         if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
             std::fabs(interior.fade_distance) > kEpsilon) {
             const double d = (hit->t - t_origin) / interior.fade_distance;
@@ -234,10 +235,10 @@ Vec3 Integrator::shadow_filter(const Vec3& p, const Vec3& dir, double distance, 
     return filter;
 }
 
-Vec3 Integrator::light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n,
+Vec3 Integrator::light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n,
                                 const InteriorStack& interiors, bool area_lights, Vec3& to_light,
                                 TraceContext& ctx) const {
-    using Type = parser::Light::Type;
+    using Type = scene::Light::Type;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
         // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
@@ -301,7 +302,7 @@ Vec3 Integrator::shadow_towards(const Vec3& p, const Vec3& dir, double distance,
     return {1.0, 1.0, 1.0};
 }
 
-Vec3 Integrator::area_light_shadow(const parser::Light& light, const Vec3& colour, const Vec3& p,
+Vec3 Integrator::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
                                    const InteriorStack& interiors, TraceContext& ctx) const {
     const int n1 = light.area_size1;
     const int n2 = light.area_size2;
@@ -368,7 +369,7 @@ Vec3 Integrator::area_light_shadow(const parser::Light& light, const Vec3& colou
     return region(region, 0, 0, n1 - 1, n2 - 1, 0);
 }
 
-Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                               const Vec3& n, TraceContext& ctx) const {
     Vec3 colour;
     const Vec3& view_dir = s.direction;
@@ -379,7 +380,7 @@ Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment,
         const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
         return Vec3{1.0, 1.0, 1.0} + (pigment - Vec3{1.0, 1.0, 1.0}) * (finish.metallic * (1.0 - f));
     };
-    for (const parser::Light& light : m_scene.lights) {
+    for (const scene::Light& light : m_scene.lights) {
         Vec3 to_light;
         // POV-Ray compat (GetRadiosityQualityFlags): on a gather ray's path area lights are point lights.
         const Vec3 arriving = light_arriving(light, s.hit->position, n, *s.interiors, s.highlights, to_light, ctx);
@@ -418,13 +419,13 @@ Vec3 Integrator::direct_light(const parser::Finish& finish, const Vec3& pigment,
     return colour;
 }
 
-Vec3 Integrator::iridescence(const parser::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+Vec3 Integrator::iridescence(const scene::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
                              const Vec3& p) const {
     // Thin-film interference: phase 2π·thickness·(|cos θ_light| + |cos θ_eye|) per wavelength; the film
     // thickness varies with POV-Ray's 5-octave turbulence when `turbulence` is given.
     double film = finish.irid_thickness;
     if (finish.irid_turbulence != 0.0) {
-        const double t = 2.0 * turbulence(p, TurbulenceParams{5, 0.5, 2.0}, m_noise_generator) - 1.0;
+        const double t = 2.0 * texture::turbulence(p, texture::TurbulenceParams{5, 0.5, 2.0}, m_noise_generator) - 1.0;
         film *= 1.0 + t * finish.irid_turbulence;
     }
     // POV-Ray's default irid_wavelength (global_settings) is rgb <0.70, 0.52, 0.48>.

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "parser/scene.h"
-#include "parser/vec3.h"
+#include "scene/scene.h"
+#include "core/vec3.h"
 
 namespace wardray::geometry {
 class SceneGeometry;
@@ -93,7 +93,7 @@ struct RayState {
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread.
 class Integrator {
 public:
-    Integrator(const parser::Scene& scene, const geometry::SceneGeometry& geometry, IntegratorOptions options);
+    Integrator(const scene::Scene& scene, const geometry::SceneGeometry& geometry, IntegratorOptions options);
 
     /// Linear RGB radiance arriving along a camera ray (the background where it hits nothing).
     Vec3 trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const;
@@ -108,7 +108,7 @@ private:
     /// Where a texture is being shaded: the surface point, its normals and the ray that found it.
     struct Surface {
         const geometry::Hit* hit = nullptr;
-        const parser::Object* object = nullptr;  ///< the primitive hit (its texture applies)
+        const scene::Object* object = nullptr;  ///< the primitive hit (its texture applies)
         Vec3 p_texture;                           ///< the point textures are evaluated at (enclosing space)
         Vec3 raw_normal;                          ///< unit, turned to face the incoming ray
         Vec3 direction;                           ///< unit direction of the incoming ray
@@ -138,18 +138,18 @@ private:
     Vec3 shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
                TraceContext& ctx) const;
     /// POV-Ray's ComputeOneTextureColour: a texture_map blends the lit colours of its entries.
-    Vec3 shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
+    Vec3 shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
                        const RayState& state, TraceContext& ctx) const;
     /// POV-Ray's ComputeLightedTexture: the layers of a plain texture, then refraction and reflection.
-    Vec3 shade_layers(const parser::Texture& texture, const Surface& s, const std::vector<const parser::Pattern*>& warps,
+    Vec3 shade_layers(const scene::Texture& texture, const Surface& s, const std::vector<const scene::Pattern*>& warps,
                       const RayState& state, TraceContext& ctx) const;
     /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
-    Vec3 direct_light(const parser::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+    Vec3 direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                       const Vec3& n, TraceContext& ctx) const;
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
     /// `area_lights` false an area light counts as a point light at its centre.
-    Vec3 light_arriving(const parser::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
+    Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
                         bool area_lights, Vec3& to_light, TraceContext& ctx) const;
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
@@ -157,7 +157,7 @@ private:
                         TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
-    Vec3 area_light_shadow(const parser::Light& light, const Vec3& colour, const Vec3& p,
+    Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
                            const InteriorStack& interiors, TraceContext& ctx) const;
     /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
     /// of every surface it crosses).
@@ -166,23 +166,23 @@ private:
     Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
                        TraceContext& ctx) const;
     /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
-    Vec3 texture_filter(const parser::Texture& texture, const Vec3& p) const;
+    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p) const;
     /// A reflected ray's colour (POV-Ray's ComputeReflection, with its fix-ups for bumped normals).
-    Vec3 reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
+    Vec3 reflect(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
                  TraceContext& ctx) const;
     /// POV-Ray's ComputeIridColour: the thin-film interference factor for light arriving along `to_light` and
     /// leaving toward the viewer along −`view_dir`.
-    Vec3 iridescence(const parser::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+    Vec3 iridescence(const scene::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
                      const Vec3& p) const;
     /// A refracted or transmitted ray's colour; sets `total_internal` when the ray reflects instead.
-    Vec3 refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish, const RayState& state,
+    Vec3 refract(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
                  bool& total_internal, TraceContext& ctx) const;
     /// POV-Ray's ComputeSky: sky_sphere pigments over the background colour.
     Vec3 sky(const Vec3& direction) const;
     /// POV-Ray's constant fog over a ray segment of length `depth`.
     Vec3 apply_fog(const Vec3& colour, double depth) const;
 
-    const parser::Scene& m_scene;
+    const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
     IntegratorOptions m_options;
     bool m_ambient_is_light = true;

@@ -8,7 +8,7 @@
 #include "cache/irradiance_record.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
-#include "lighting/pigment.h"
+#include "texture/pigment.h"
 
 namespace wardray::lighting {
 
@@ -17,7 +17,7 @@ namespace {
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 
 /// POV-Ray compat (GetRecursionSettings): rays per gather halve with each bounce, at least 5.
-int rays_at_depth(const parser::RadiositySettings& rs, int depth) {
+int rays_at_depth(const scene::RadiositySettings& rs, int depth) {
     return std::max(5, static_cast<int>(rs.count * std::ldexp(1.0, -depth)));
 }
 
@@ -25,7 +25,7 @@ int rays_at_depth(const parser::RadiositySettings& rs, int depth) {
 
 Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,
                           TraceContext& ctx) const {
-    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    const scene::RadiositySettings& rs = *m_scene.global.radiosity;
     const Vec3& p = s.hit->position;
     // POV-Ray compat: `normal on` gathers around the perturbed normal, otherwise around the true one.
     const Vec3 n = rs.normal ? n_layer : s.raw_normal;
@@ -33,7 +33,7 @@ Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, 
                                                : cached_irradiance(p, n, weight, state, ctx);
     // POV-Ray compat (ComputeAmbient): gray_threshold mixes toward grey, then brightness scales.
     if (rs.gray_threshold != 0.0) {
-        const double g = grey(e);
+        const double g = texture::grey(e);
         e = e * (1.0 - rs.gray_threshold) + Vec3{g, g, g} * rs.gray_threshold;
     }
     e = e * rs.brightness;
@@ -46,7 +46,7 @@ Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, 
 
 Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
                                  TraceContext& ctx, double& distance) const {
-    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    const scene::RadiositySettings& rs = *m_scene.global.radiosity;
     // POV-Ray compat (GetRecursionSettings, GatherLight): a gather ray starts afresh at trace level
     // ⌊1.5·(depth+1)⌋ with weight (brightness/2)^(depth+1), radiosity's adc_bailout, and room for one more level.
     RayState next;
@@ -69,7 +69,7 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
 
 Vec3 Integrator::cached_irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                                    TraceContext& ctx) const {
-    const parser::RadiositySettings& rs = *m_scene.global.radiosity;
+    const scene::RadiositySettings& rs = *m_scene.global.radiosity;
     const int depth = state.gi_depth;
     // Lazy evaluation (Ward, Rubinstein & Clear 1988): reuse the valid records when they cover the point.
     cache::LookupParams params = cache::lookup_params(rs, depth, ctx.final_pass, weight);

@@ -7,9 +7,9 @@
 
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
-#include "lighting/normal.h"
-#include "lighting/pattern.h"
-#include "lighting/pigment.h"
+#include "texture/normal.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
 
 namespace wardray::lighting {
 
@@ -30,7 +30,7 @@ struct LayerReflection {
 // POV-Ray's ComputeReflectivity: the reflected fraction and the reflection ray's weight.
 // Standard: min + (max − min)·(1 − cos θ)^falloff. Fresnel: the unpolarised Fresnel reflectance for the relative
 // index `ior` (Cook & Torrance 1982, eq. 8 form), blending min and max.
-Vec3 reflectivity(const parser::Finish& f, double cos_i, double ior, double& weight) {
+Vec3 reflectivity(const scene::Finish& f, double cos_i, double ior, double& weight) {
     const Vec3 rmin = f.reflection_min.rgb();
     const Vec3 rmax = f.reflection_max.rgb();
     if (!f.reflection_fresnel) {
@@ -59,7 +59,7 @@ Vec3 reflectivity(const parser::Finish& f, double cos_i, double ior, double& wei
 Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
                        TraceContext& ctx) const {
     // The leaf primitive carries the texture (a CSG child's own or the one it inherited).
-    const parser::Object& object = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
+    const scene::Object& object = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
     Surface s;
     s.hit = &hit;
     s.object = &object;
@@ -70,19 +70,20 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.depth = depth;
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
-    std::vector<const parser::Pattern*> warps;
+    std::vector<const scene::Pattern*> warps;
     return shade_texture(object.texture, s, warps, state, ctx);
 }
 
-Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::vector<const parser::Pattern*>& warps,
+Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
                                const RayState& state, TraceContext& ctx) const {
     if (texture.texture_map.empty()) return shade_layers(texture, s, warps, state, ctx);
     // texture_map: each entry is lit on its own at the map's warped point, and the colours are blended.
-    const parser::Pattern& pattern = texture.map_pattern;
-    s.p_texture = warp_point(pattern, s.p_texture);
-    const double value = pattern_value(pattern, s.p_texture, m_noise_generator);
+    const scene::Pattern& pattern = texture.map_pattern;
+    s.p_texture = texture::warp_point(pattern, s.p_texture);
+    const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator);
     const auto& map = texture.texture_map;
-    const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+    const texture::MapLookup m =
+        texture::search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
     warps.push_back(&pattern);
     Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, ctx);
     if (m.prev != m.cur) {
@@ -93,13 +94,13 @@ Vec3 Integrator::shade_texture(const parser::Texture& texture, Surface s, std::v
     return colour;
 }
 
-Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
-                              const std::vector<const parser::Pattern*>& warps, const RayState& state,
+Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
+                              const std::vector<const scene::Pattern*>& warps, const RayState& state,
                               TraceContext& ctx) const {
     // POV-Ray's last listed texture is the top layer; the texture holds the bottom layer and the layers over it.
     // Fixed-size storage keeps the common single-layer case free of allocations.
     constexpr std::size_t kMaxLayers = 8;
-    std::array<const parser::Texture*, kMaxLayers> layers{};
+    std::array<const scene::Texture*, kMaxLayers> layers{};
     std::size_t layer_count = 0;
     for (auto it = texture.layers.rbegin(); it != texture.layers.rend() && layer_count + 1 < kMaxLayers; ++it)
         layers[layer_count++] = &*it;
@@ -107,7 +108,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
 
     const double bailout = state.adc_bailout;
     const std::uint32_t object_id = s.hit->object;
-    const parser::Interior& interior = m_scene.objects[object_id].interior;
+    const scene::Interior& interior = m_scene.objects[object_id].interior;
     Vec3 colour;
     Vec3 filter{1.0, 1.0, 1.0};  // what the layers so far let through
     double trans = 1.0;
@@ -119,18 +120,18 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
     std::array<LayerReflection, kMaxLayers> reflections;  // filled before use
     std::size_t reflection_count = 0;
     for (std::size_t li = 0; li < layer_count; ++li) {
-        const parser::Texture* layer = layers[li];
+        const scene::Texture* layer = layers[li];
         if (trans <= bailout) break;
         Vec3 n = s.raw_normal;
-        if (layer->normal.pattern.type != parser::Pattern::Type::None) {
-            for (const parser::Pattern* w : warps) n = warp_normal(*w, n);
-            n = perturb_normal(layer->normal, n, s.p_texture, m_noise_generator);
-            for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = unwarp_normal(**it, n);
+        if (layer->normal.pattern.type != scene::Pattern::Type::None) {
+            for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
+            n = texture::perturb_normal(layer->normal, n, s.p_texture, m_noise_generator);
+            for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = texture::unwarp_normal(**it, n);
         }
         if (reflection_count == 0) top_normal = n;
-        const parser::Color pc = evaluate_pigment(layer->pigment, s.p_texture, m_noise_generator);
+        const Color pc = texture::evaluate_pigment(layer->pigment, s.p_texture, m_noise_generator);
         const Vec3 pigment = pc.rgb();
-        const parser::Finish& f = layer->finish;
+        const scene::Finish& f = layer->finish;
 
         LayerReflection r;
         r.weight = state.weight * trans;
@@ -164,7 +165,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
             // POV-Ray compat (ComputeLightedTexture): indirect light is computed once, at the first layer whose
             // diffuse part could pass the bailout, and then lights every layer's diffuse (brilliance aside).
             if (!gi_done) {
-                const double most = grey(filter * pigment) * opacity * f.diffuse;
+                const double most = texture::grey(filter * pigment) * opacity * f.diffuse;
                 if (most > state.adc_bailout) {
                     indirect_light = indirect(s, n, state.weight * most, state, ctx);
                     gi_done = true;
@@ -183,7 +184,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
             const Vec3& rf = r.reflectivity;
             filter = filter * Vec3{std::min(1.0, 1.0 - rf.x), std::min(1.0, 1.0 - rf.y), std::min(1.0, 1.0 - rf.z)};
         }
-        trans = std::min(1.0, std::fabs(grey(filter)));
+        trans = std::min(1.0, std::fabs(texture::grey(filter)));
         reflections[reflection_count++] = r;
     }
 
@@ -211,7 +212,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
 
     for (std::size_t i = 0; i < reflection_count; ++i) {
         const LayerReflection& r = reflections[i];
-        const parser::Finish& finish = layers[i]->finish;
+        const scene::Finish& finish = layers[i]->finish;
         // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
         if (total_internal && length(r.normal - top_normal) <= kEpsilon) continue;
         if (r.reflectivity == Vec3{}) continue;
@@ -226,7 +227,7 @@ Vec3 Integrator::shade_layers(const parser::Texture& texture, const Surface& s,
     return colour;
 }
 
-Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
+Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish,
                          const RayState& state, TraceContext& ctx) const {
     // Mirror direction about the (possibly bumped) normal; POV-Ray bends it back above the true surface.
     Vec3 d = s.direction - 2.0 * dot(s.direction, n) * n;
@@ -246,7 +247,7 @@ Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const p
     return colour * iridescence(finish, ray.direction, s.direction, n, p);
 }
 
-Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const parser::Finish& finish,
+Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish,
                          const RayState& state, bool& total_internal, TraceContext& ctx) const {
     total_internal = false;
     RayState next = state;

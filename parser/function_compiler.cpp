@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "parser/internal_functions.h"
+#include "function/internal_functions.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 

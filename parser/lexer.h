@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "parser/diagnostics.h"
+#include "core/diagnostics.h"
 
 namespace wardray::parser {
 

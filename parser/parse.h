@@ -10,9 +10,9 @@
 #include <utility>
 #include <vector>
 
-#include "parser/diagnostics.h"
-#include "parser/scene.h"
-#include "parser/scene_query.h"
+#include "core/diagnostics.h"
+#include "parser/namespaces.h"
+#include "scene/scene_query.h"
 
 namespace wardray::parser {
 

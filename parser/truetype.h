@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/scene.h"
+#include "parser/namespaces.h"
 
 namespace wardray::parser {
 

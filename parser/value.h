@@ -9,8 +9,7 @@
 #include <variant>
 #include <vector>
 
-#include "parser/function_vm.h"
-#include "parser/scene.h"
+#include "parser/namespaces.h"
 #include "parser/splines.h"
 
 namespace wardray::parser {

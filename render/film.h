@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "parser/vec3.h"
+#include "core/vec3.h"
 
 namespace wardray::render {
 

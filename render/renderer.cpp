@@ -12,7 +12,7 @@
 #include <mutex>
 
 #include "cache/irradiance_cache.h"
-#include "render/camera.h"
+#include "camera/camera.h"
 
 namespace wardray::render {
 
@@ -28,7 +28,7 @@ struct TileCounters {
 /// Traces and shades one image position, keeping NaN and infinity out of the picture.
 class Sampler {
 public:
-    Sampler(const CameraModel& camera, const lighting::Integrator& integrator, TileCounters& counters,
+    Sampler(const camera::CameraModel& camera, const lighting::Integrator& integrator, TileCounters& counters,
             Film* irradiance = nullptr)
         : m_camera(camera), m_integrator(integrator), m_counters(counters), m_irradiance(irradiance) {}
 
@@ -54,7 +54,7 @@ public:
     }
 
 private:
-    const CameraModel& m_camera;
+    const camera::CameraModel& m_camera;
     const lighting::Integrator& m_integrator;
     TileCounters& m_counters;
     Film* m_irradiance;
@@ -195,7 +195,7 @@ double pretrace_jitter(int pass, double x, double y, int axis) {
 
 }  // namespace
 
-std::vector<double> pretrace_sizes(const parser::RadiositySettings& rs, int width, int height) {
+std::vector<double> pretrace_sizes(const scene::RadiositySettings& rs, int width, int height) {
     // POV-Ray compat (view.cpp): block sizes from pretrace_start to pretrace_end of the larger image side,
     // halving each step, the end at least one pixel.
     const double side = std::max(width, height);
@@ -208,10 +208,10 @@ std::vector<double> pretrace_sizes(const parser::RadiositySettings& rs, int widt
     return sizes;
 }
 
-RenderResult render_image(const parser::Scene& scene, const lighting::Integrator& integrator,
+RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
     RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt};
-    const CameraModel camera(scene.camera, settings.width, settings.height);
+    const camera::CameraModel camera(scene.camera, settings.width, settings.height);
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
     const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
     const int tile_count = tiles_x * tiles_y;

@@ -9,7 +9,7 @@
 
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 #include "render/film.h"
 
 namespace wardray::cache {
@@ -58,13 +58,13 @@ struct RenderResult {
 
 /// POV-Ray's pretrace block sizes in pixels for an image of width × height: pretrace_start to pretrace_end of the
 /// larger side, halving.
-std::vector<double> pretrace_sizes(const parser::RadiositySettings& settings, int width, int height);
+std::vector<double> pretrace_sizes(const scene::RadiositySettings& settings, int width, int height);
 
 /// Renders every pixel. Each pixel depends only on its own rays and on the cache as it stood when the pass began
 /// (plus its own tile's records), so tiles may finish in any order and the image is the same for any number of
 /// threads. With an irradiance cache (and an integrator in cache mode) the pretrace passes fill it first; the
 /// cache keeps every record made, for statistics and +RFO.
-RenderResult render_image(const parser::Scene& scene, const lighting::Integrator& integrator,
+RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress,
                           cache::IrradianceCache* cache = nullptr);
 

@@ -28,7 +28,7 @@ LookupParams params(double error_bound = 1.8) {
 }
 
 TEST(LookupParams, FollowPovRaySettings) {
-    const parser::RadiositySettings s;  // POV-Ray's defaults
+    const scene::RadiositySettings s;  // POV-Ray's defaults
     const LookupParams final0 = lookup_params(s, 0, true);
     EXPECT_DOUBLE_EQ(final0.error_bound, 1.8);
     EXPECT_EQ(final0.reuse_count, 5.0);
@@ -100,7 +100,7 @@ TEST(Interpolation, ReproducesALinearFieldFromExactGradients) {
 TEST(Interpolation, GradientsLowerTheErrorAgainstBruteForce) {
     // Records 0.15 apart on the room's floor in front of the back wall's bright patch; queries between them.
     const test::RoomScene room;
-    const parser::RadiositySettings settings;
+    const scene::RadiositySettings settings;
     std::vector<IrradianceRecord> records;
     for (int i = 0; i < 4; ++i) {
         for (int k = 0; k < 4; ++k) {
@@ -171,7 +171,7 @@ TEST(Record, RadiusFollowsHarmonicMeanWithinTheLimits) {
     EXPECT_DOUBLE_EQ(make_record({0, 0, 0}, {0, 1, 0}, g, 0, {0.6, 1.0}).radius, 0.6);
     EXPECT_DOUBLE_EQ(make_record({0, 0, 0}, {0, 1, 0}, g, 0, {0.1, 0.3}).radius, 0.3);
     // POV-Ray's reuse limits: fractions of the distance to the camera, doubled per bounce.
-    const parser::RadiositySettings s;
+    const scene::RadiositySettings s;
     const RadiusLimits l0 = radius_limits(s, 0, 10.0), l1 = radius_limits(s, 1, 10.0);
     EXPECT_DOUBLE_EQ(l0.min, 0.15);
     EXPECT_DOUBLE_EQ(l0.max, 2.0);

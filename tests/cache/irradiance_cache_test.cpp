@@ -30,7 +30,7 @@ RadianceFunction ceiling_from(const Vec3& p) {
 /// Renders a 64×64 grid of floor points in 8×8 tiles: two pretrace passes (every 4th, every 2nd point) and a final
 /// pass; tiles run in parallel on `threads` threads.
 IrradianceCache render(int threads) {
-    parser::RadiositySettings settings;
+    scene::RadiositySettings settings;
     settings.recursion_limit = 1;
     IrradianceCache cache(settings);
     // Allow more threads than cores, so that four threads really run even on a small machine.
@@ -148,7 +148,7 @@ std::string saved(const IrradianceCache& cache) {
 TEST(IrradianceCache, SaveLoadRoundTripIsBitExact) {
     const IrradianceCache original = render(2);
     const std::string bytes = saved(original);
-    parser::RadiositySettings settings;
+    scene::RadiositySettings settings;
     settings.recursion_limit = 1;
     IrradianceCache loaded(settings);
     std::istringstream in(bytes, std::ios::binary);

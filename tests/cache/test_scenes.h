@@ -7,7 +7,7 @@
 
 #include "cache/gather.h"
 #include "geometry/scene_geometry.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::cache::test {
 
@@ -17,12 +17,12 @@ namespace wardray::cache::test {
 class RoomScene {
 public:
     RoomScene() {
-        add(parser::Box{{-2.0, -0.1, -3.0}, {4.0, 0.0, 3.0}});  // 0 floor, top face y=0
-        add(parser::Box{{-2.0, 3.0, -3.0}, {4.0, 3.1, 3.0}});   // 1 ceiling
-        add(parser::Box{{-2.0, 0.0, 3.0}, {4.0, 3.0, 3.1}});    // 2 back wall, face z=3
-        add(parser::Box{{-2.1, 0.0, -3.0}, {-2.0, 3.0, 3.0}});  // 3 left wall, face x=−2
-        add(parser::Box{{0.5, 0.0, 0.5}, {1.2, 0.8, 1.2}});  // 4 box
-        add(parser::Sphere{{-1.2, 0.7, 1.5}, 0.5});           // 5 sphere
+        add(scene::Box{{-2.0, -0.1, -3.0}, {4.0, 0.0, 3.0}});  // 0 floor, top face y=0
+        add(scene::Box{{-2.0, 3.0, -3.0}, {4.0, 3.1, 3.0}});   // 1 ceiling
+        add(scene::Box{{-2.0, 0.0, 3.0}, {4.0, 3.0, 3.1}});    // 2 back wall, face z=3
+        add(scene::Box{{-2.1, 0.0, -3.0}, {-2.0, 3.0, 3.0}});  // 3 left wall, face x=−2
+        add(scene::Box{{0.5, 0.0, 0.5}, {1.2, 0.8, 1.2}});  // 4 box
+        add(scene::Sphere{{-1.2, 0.7, 1.5}, 0.5});           // 5 sphere
         m_geometry = std::make_unique<geometry::SceneGeometry>(m_scene);
     }
 
@@ -55,13 +55,13 @@ public:
     }
 
 private:
-    void add(const parser::Shape& shape) {
-        parser::Object o;
+    void add(const scene::Shape& shape) {
+        scene::Object o;
         o.shape = shape;
         m_scene.objects.push_back(o);
     }
 
-    parser::Scene m_scene;
+    scene::Scene m_scene;
     std::unique_ptr<geometry::SceneGeometry> m_geometry;
 };
 

@@ -13,47 +13,47 @@ using test::make_object;
 using test::Random;
 
 // Two or three random closed shapes (optionally a plane) under a CSG operation, with a random transform.
-parser::Object random_csg(Random& rng, parser::Csg::Op op, bool allow_plane) {
-    parser::Csg csg;
+scene::Object random_csg(Random& rng, scene::Csg::Op op, bool allow_plane) {
+    scene::Csg csg;
     csg.op = op;
     const int n = rng.integer(2, 3);
     for (int i = 0; i < n; ++i) {
-        parser::Object child = make_object(test::random_shape(rng, allow_plane && i > 0), rng.transform(0.5));
+        scene::Object child = make_object(test::random_shape(rng, allow_plane && i > 0), rng.transform(0.5));
         child.inverse = rng.chance(0.15);
         csg.children.push_back(child);
     }
     return make_object(csg, rng.transform());
 }
 
-bool expected_inside(const parser::Csg& csg, const std::vector<bool>& in) {
-    bool result = csg.op == parser::Csg::Op::Intersection || csg.op == parser::Csg::Op::Difference;
+bool expected_inside(const scene::Csg& csg, const std::vector<bool>& in) {
+    bool result = csg.op == scene::Csg::Op::Intersection || csg.op == scene::Csg::Op::Difference;
     for (std::size_t i = 0; i < in.size(); ++i) {
         switch (csg.op) {
-            case parser::Csg::Op::Union:
-            case parser::Csg::Op::Merge: result = result || in[i]; break;
-            case parser::Csg::Op::Intersection: result = result && in[i]; break;
-            case parser::Csg::Op::Difference: result = result && (i == 0 ? in[i] : !in[i]); break;
+            case scene::Csg::Op::Union:
+            case scene::Csg::Op::Merge: result = result || in[i]; break;
+            case scene::Csg::Op::Intersection: result = result && in[i]; break;
+            case scene::Csg::Op::Difference: result = result && (i == 0 ? in[i] : !in[i]); break;
         }
     }
     return result;
 }
 
-constexpr parser::Csg::Op kOps[] = {parser::Csg::Op::Union, parser::Csg::Op::Intersection,
-                                     parser::Csg::Op::Difference, parser::Csg::Op::Merge};
+constexpr scene::Csg::Op kOps[] = {scene::Csg::Op::Union, scene::Csg::Op::Intersection,
+                                     scene::Csg::Op::Difference, scene::Csg::Op::Merge};
 
 TEST(Csg, InsideFollowsTheTruthTables) {
     Random rng(5);
-    for (parser::Csg::Op op : kOps) {
+    for (scene::Csg::Op op : kOps) {
         for (int trial = 0; trial < 100; ++trial) {
-            const parser::Object obj = random_csg(rng, op, true);
+            const scene::Object obj = random_csg(rng, op, true);
             const auto inst = ShapeInstance::create(obj, 0);
             ASSERT_TRUE(inst);
-            const auto& csg = std::get<parser::Csg>(obj.shape);
+            const auto& csg = std::get<scene::Csg>(obj.shape);
             for (int k = 0; k < 20; ++k) {
                 const Vec3 p_world = obj.transform.point(rng.vec(-2, 2));
                 const Vec3 p_local = obj.transform.inverse_point(p_world);
                 std::vector<bool> in;
-                for (const parser::Object& c : csg.children) in.push_back(ShapeInstance::create(c, 0)->inside(p_local));
+                for (const scene::Object& c : csg.children) in.push_back(ShapeInstance::create(c, 0)->inside(p_local));
                 EXPECT_EQ(inst->inside(p_world), expected_inside(csg, in));
             }
         }
@@ -64,11 +64,11 @@ TEST(Csg, InsideFollowsTheTruthTables) {
 // lies on the surface of the leaf it names, and (for bounded results) inside the CSG's bounds.
 TEST(Csg, CrossingsSeparateInsideFromOutside) {
     Random rng(6);
-    for (parser::Csg::Op op : kOps) {
+    for (scene::Csg::Op op : kOps) {
         int checked = 0;
         int failures = 0;
         for (int trial = 0; trial < 200; ++trial) {
-            const parser::Object obj = random_csg(rng, op, true);
+            const scene::Object obj = random_csg(rng, op, true);
             const auto inst = ShapeInstance::create(obj, 0);
             ASSERT_TRUE(inst);
             const Vec3 target = obj.transform.point(rng.vec(-1, 1));
@@ -80,10 +80,10 @@ TEST(Csg, CrossingsSeparateInsideFromOutside) {
                 const Vec3 p = origin + h.t * dir;
                 ASSERT_NE(h.leaf, nullptr);
                 // The leaf is one of the children, and the point is on that child's surface.
-                const auto& csg = std::get<parser::Csg>(obj.shape);
-                const parser::Object* leaf = h.leaf;
+                const auto& csg = std::get<scene::Csg>(obj.shape);
+                const scene::Object* leaf = h.leaf;
                 const auto it = std::find_if(csg.children.begin(), csg.children.end(),
-                                             [&](const parser::Object& c) { return &c == leaf; });
+                                             [&](const scene::Object& c) { return &c == leaf; });
                 ASSERT_NE(it, csg.children.end());
                 const auto leaf_inst = ShapeInstance::create(*leaf, 0);
                 const Vec3 p_csg = obj.transform.inverse_point(p);
@@ -95,24 +95,24 @@ TEST(Csg, CrossingsSeparateInsideFromOutside) {
                         EXPECT_LE(p[k], bounds->upper[k] + pad);
                     }
                 }
-                if (op == parser::Csg::Op::Union) continue;  // unions keep inner surfaces
+                if (op == scene::Csg::Op::Union) continue;  // unions keep inner surfaces
                 const double eps = 1e-7;
                 failures += inst->inside(p + eps * h.normal) || !inst->inside(p - eps * h.normal);
                 ++checked;
             }
         }
-        if (op == parser::Csg::Op::Union) continue;
+        if (op == scene::Csg::Op::Union) continue;
         EXPECT_GT(checked, 50);
         EXPECT_LE(failures, checked / 100) << "op " << static_cast<int>(op);
     }
 }
 
 TEST(Csg, DifferenceCutsAHoleAndFlipsTheNormal) {
-    parser::Csg csg;
-    csg.op = parser::Csg::Op::Difference;
-    csg.children.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
-    csg.children.push_back(make_object(parser::Sphere{{0, 0, -1}, 0.5}));
-    const parser::Object obj = make_object(csg);
+    scene::Csg csg;
+    csg.op = scene::Csg::Op::Difference;
+    csg.children.push_back(make_object(scene::Box{{-1, -1, -1}, {1, 1, 1}}));
+    csg.children.push_back(make_object(scene::Sphere{{0, 0, -1}, 0.5}));
+    const scene::Object obj = make_object(csg);
     const auto inst = ShapeInstance::create(obj, 4);
     ASSERT_TRUE(inst);
     // Through the hole: the sphere's inner surface at z = -0.5, facing the ray.
@@ -121,31 +121,31 @@ TEST(Csg, DifferenceCutsAHoleAndFlipsTheNormal) {
     EXPECT_NEAR(h->t, 4.5, 1e-12);
     EXPECT_NEAR(h->normal.z, -1.0, 1e-12);
     EXPECT_EQ(h->object, 4u);
-    EXPECT_EQ(h->leaf, &std::get<parser::Csg>(obj.shape).children[1]);
+    EXPECT_EQ(h->leaf, &std::get<scene::Csg>(obj.shape).children[1]);
     // Beside the hole: the box's face.
     const auto b = inst->nearest({0.8, 0.8, -5}, {0, 0, 1}, 0.0, 1e30);
     ASSERT_TRUE(b);
     EXPECT_NEAR(b->t, 4.0, 1e-12);
-    EXPECT_EQ(b->leaf, &std::get<parser::Csg>(obj.shape).children[0]);
+    EXPECT_EQ(b->leaf, &std::get<scene::Csg>(obj.shape).children[0]);
 }
 
 TEST(Csg, MergeRemovesInnerSurfacesUnionKeepsThem) {
-    parser::Csg csg;
-    csg.children.push_back(make_object(parser::Sphere{{-0.5, 0, 0}, 1}));
-    csg.children.push_back(make_object(parser::Sphere{{0.5, 0, 0}, 1}));
-    csg.op = parser::Csg::Op::Union;
+    scene::Csg csg;
+    csg.children.push_back(make_object(scene::Sphere{{-0.5, 0, 0}, 1}));
+    csg.children.push_back(make_object(scene::Sphere{{0.5, 0, 0}, 1}));
+    csg.op = scene::Csg::Op::Union;
     const auto u = ShapeInstance::create(make_object(csg), 0);
-    csg.op = parser::Csg::Op::Merge;
+    csg.op = scene::Csg::Op::Merge;
     const auto m = ShapeInstance::create(make_object(csg), 0);
     EXPECT_EQ(u->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 4u);
     EXPECT_EQ(m->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 2u);
 }
 
 TEST(Csg, IntersectionWithPlaneIsBounded) {
-    parser::Csg csg;
-    csg.op = parser::Csg::Op::Intersection;
-    csg.children.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
-    csg.children.push_back(make_object(parser::Plane{{0, 1, 0}, 0.25}));
+    scene::Csg csg;
+    csg.op = scene::Csg::Op::Intersection;
+    csg.children.push_back(make_object(scene::Box{{-1, -1, -1}, {1, 1, 1}}));
+    csg.children.push_back(make_object(scene::Plane{{0, 1, 0}, 0.25}));
     const auto inst = ShapeInstance::create(make_object(csg), 0);
     ASSERT_TRUE(inst && inst->world_bounds());
     EXPECT_NEAR(inst->world_bounds()->upper.y, 1.0, 1e-12);
@@ -157,8 +157,8 @@ TEST(Csg, IntersectionWithPlaneIsBounded) {
 }
 
 TEST(Csg, ClippedByKeepsOnlyTheSurfaceInsideTheClip) {
-    parser::Object obj = make_object(parser::Sphere{{0, 0, 0}, 1});
-    obj.clipped_by.push_back(make_object(parser::Plane{{0, 0, 1}, 0.0}));
+    scene::Object obj = make_object(scene::Sphere{{0, 0, 0}, 1});
+    obj.clipped_by.push_back(make_object(scene::Plane{{0, 0, 1}, 0.0}));
     const auto inst = ShapeInstance::create(obj, 0);
     ASSERT_TRUE(inst);
     // The front half (z < 0) remains; a ray along +z meets it at z = -1 and then sees the inside of nothing else.

@@ -13,17 +13,17 @@ namespace {
 using test::check_shape;
 using test::make_object;
 using test::Random;
-using Spline = parser::Lathe::Spline;
+using Spline = scene::Lathe::Spline;
 
-parser::Lathe lathe_of(Spline spline, std::vector<Vec3> points) {
-    parser::Lathe l;
+scene::Lathe lathe_of(Spline spline, std::vector<Vec3> points) {
+    scene::Lathe l;
     l.spline = spline;
     l.points = std::move(points);
     return l;
 }
 
 // A closed, vase-like profile from the axis at the bottom to the axis at the top, with a random waist.
-parser::Lathe random_lathe(Random& r, Spline spline) {
+scene::Lathe random_lathe(Random& r, Spline spline) {
     const double w = r.uniform(0.4, 0.9), h = r.uniform(1.0, 2.0), top = r.uniform(0.3, 0.8);
     switch (spline) {
         case Spline::Linear:
@@ -113,8 +113,8 @@ TEST(Lathe, BezierQuarterCircleBulge) {
     EXPECT_FALSE(inst->inside({1.8, 1, 0}));
 }
 
-parser::Sor sor_of(std::vector<Vec3> points, bool open = false) {
-    parser::Sor s;
+scene::Sor sor_of(std::vector<Vec3> points, bool open = false) {
+    scene::Sor s;
     s.points = std::move(points);
     s.open = open;
     return s;

@@ -14,11 +14,11 @@ using test::make_object;
 using test::Random;
 
 // A random triangle soup of `n` faces around the origin, some faces smooth.
-parser::Mesh random_mesh(Random& rng, int n) {
-    parser::Mesh m;
+scene::Mesh random_mesh(Random& rng, int n) {
+    scene::Mesh m;
     for (int i = 0; i < n; ++i) {
         const Vec3 c = rng.vec(-2, 2);
-        parser::Mesh::Face f;
+        scene::Mesh::Face f;
         for (int k = 0; k < 3; ++k) {
             f.v[k] = static_cast<int>(m.vertices.size());
             m.vertices.push_back(c + rng.vec(-0.6, 0.6));
@@ -34,7 +34,7 @@ parser::Mesh random_mesh(Random& rng, int n) {
     return m;
 }
 
-std::optional<Hit> brute_force(const parser::Scene& scene, const Ray& ray) {
+std::optional<Hit> brute_force(const scene::Scene& scene, const Ray& ray) {
     std::optional<Hit> best;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const auto inst = ShapeInstance::create(scene.objects[i], i);
@@ -46,9 +46,9 @@ std::optional<Hit> brute_force(const parser::Scene& scene, const Ray& ray) {
 
 TEST(MeshScene, EmbreeTrianglesMatchBruteForce) {
     Random rng(77);
-    parser::Scene scene;
+    scene::Scene scene;
     for (int i = 0; i < 8; ++i) {
-        parser::Object o = make_object(random_mesh(rng, 40), rng.transform(10.0));
+        scene::Object o = make_object(random_mesh(rng, 40), rng.transform(10.0));
         o.no_shadow = rng.chance(0.2);
         o.no_image = rng.chance(0.2);
         scene.objects.push_back(o);

@@ -6,10 +6,10 @@
 namespace wardray::geometry {
 namespace {
 
-parser::Object stretched_sphere() {
+scene::Object stretched_sphere() {
     // sphere { <1,2,3>, 2 scale <1,1,2> }: centre <1,2,6>, semi-axes 2, 2, 4.
-    parser::Object o;
-    o.shape = parser::Sphere{{1, 2, 3}, 2};
+    scene::Object o;
+    o.shape = scene::Sphere{{1, 2, 3}, 2};
     o.transform = Transform::scaling({1, 1, 2});
     return o;
 }
@@ -28,7 +28,7 @@ TEST(ObjectQuery, TraceFindsTheNearestSurfaceAndItsNormal) {
 
 TEST(ObjectQuery, InsideFollowsTransformAndInverse) {
     const ObjectQuery q;
-    parser::Object o = stretched_sphere();
+    scene::Object o = stretched_sphere();
     EXPECT_TRUE(q.inside(o, {1, 2, 9.5}));   // inside only because of the z stretch
     EXPECT_FALSE(q.inside(o, {1, 4.5, 6}));
     o.inverse = true;
@@ -44,10 +44,10 @@ TEST(ObjectQuery, ExtentsOfBoundedAndUnboundedObjects) {
     EXPECT_NEAR(box->first.z, 2.0, 1e-9);
     EXPECT_NEAR(box->second.y, 4.0, 1e-9);
     EXPECT_NEAR(box->second.z, 10.0, 1e-9);
-    parser::Object plane;
-    plane.shape = parser::Plane{{0, 1, 0}, 0};
+    scene::Object plane;
+    plane.shape = scene::Plane{{0, 1, 0}, 0};
     EXPECT_FALSE(q.extent(plane));  // the parser reports POV-Ray's huge box for it
-    parser::Object degenerate = stretched_sphere();
+    scene::Object degenerate = stretched_sphere();
     degenerate.transform = Transform::scaling({1, 0, 1});
     EXPECT_FALSE(q.extent(degenerate));
     EXPECT_FALSE(q.trace(degenerate, {1, 10, 6}, {0, -1, 0}));

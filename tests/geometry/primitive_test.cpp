@@ -17,48 +17,48 @@ using test::Random;
 
 TEST(Primitives, Cylinder) {
     check_shape([](Random& r) {
-        return parser::Cylinder{r.vec(-1, 1), r.vec(-1, 1), r.uniform(0.2, 1.0), r.chance(0.3)};
+        return scene::Cylinder{r.vec(-1, 1), r.vec(-1, 1), r.uniform(0.2, 1.0), r.chance(0.3)};
     }, true, 11);
 }
 
 TEST(Primitives, Cone) {
     check_shape([](Random& r) {
-        return parser::Cone{r.vec(-1, 1), r.uniform(0.0, 1.0), r.vec(-1, 1), r.uniform(0.1, 1.0), r.chance(0.3)};
+        return scene::Cone{r.vec(-1, 1), r.uniform(0.0, 1.0), r.vec(-1, 1), r.uniform(0.1, 1.0), r.chance(0.3)};
     }, true, 12);
 }
 
 TEST(Primitives, Torus) {
-    check_shape([](Random& r) { return parser::Torus{r.uniform(0.5, 1.5), r.uniform(0.1, 0.5)}; }, true, 13);
+    check_shape([](Random& r) { return scene::Torus{r.uniform(0.5, 1.5), r.uniform(0.1, 0.5)}; }, true, 13);
 }
 
 TEST(Primitives, Disc) {
     check_shape([](Random& r) {
-        return parser::Disc{r.vec(-0.3, 0.3), r.direction(), r.uniform(0.8, 1.5), r.uniform(0.0, 0.5)};
+        return scene::Disc{r.vec(-0.3, 0.3), r.direction(), r.uniform(0.8, 1.5), r.uniform(0.0, 0.5)};
     }, false, 14, 1e-9, 60);
 }
 
 TEST(Primitives, QuadricEllipsoidAndHyperboloid) {
     check_shape([](Random& r) {
         const double sign = r.chance(0.5) ? 1.0 : -1.0;
-        return parser::Quadric{{r.uniform(0.5, 2), sign * r.uniform(0.5, 2), r.uniform(0.5, 2)}, r.vec(-0.2, 0.2),
+        return scene::Quadric{{r.uniform(0.5, 2), sign * r.uniform(0.5, 2), r.uniform(0.5, 2)}, r.vec(-0.2, 0.2),
                                r.vec(-0.3, 0.3), -r.uniform(0.3, 1.0)};
     }, true, 15);
 }
 
 TEST(Primitives, Superellipsoid) {
-    check_shape([](Random& r) { return parser::Superellipsoid{r.uniform(0.2, 2.0), r.uniform(0.2, 2.0)}; }, true,
+    check_shape([](Random& r) { return scene::Superellipsoid{r.uniform(0.2, 2.0), r.uniform(0.2, 2.0)}; }, true,
                 16, 1e-8);
 }
 
 // A closed tetrahedron with outward faces and an inside_vector, as a mesh.
-parser::Mesh tetrahedron(Random& r) {
-    parser::Mesh m;
+scene::Mesh tetrahedron(Random& r) {
+    scene::Mesh m;
     m.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     for (Vec3& v : m.vertices) v = v + r.vec(-0.2, 0.2);
     // Orient each face so that its normal points away from the opposite vertex.
     const int faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
     for (int f = 0; f < 4; ++f) {
-        parser::Mesh::Face face;
+        scene::Mesh::Face face;
         face.v = {faces[f][0], faces[f][1], faces[f][2]};
         const int opposite = 6 - faces[f][0] - faces[f][1] - faces[f][2];
         const Vec3 n = cross(m.vertices[face.v[1]] - m.vertices[face.v[0]], m.vertices[face.v[2]] - m.vertices[face.v[0]]);
@@ -72,8 +72,8 @@ parser::Mesh tetrahedron(Random& r) {
 TEST(Primitives, ClosedMeshWithInsideVector) { check_shape(tetrahedron, true, 17); }
 
 // A random star-shaped outline (closed by repeating its first point), with a square hole half of the time.
-parser::Prism random_prism(Random& r) {
-    parser::Prism p;
+scene::Prism random_prism(Random& r) {
+    scene::Prism p;
     p.conic = r.chance(0.4);
     p.height1 = p.conic ? r.uniform(0.2, 0.5) : r.uniform(-1.0, 0.0);
     p.height2 = p.conic ? r.uniform(0.8, 1.2) : r.uniform(0.3, 1.0);
@@ -94,7 +94,7 @@ parser::Prism random_prism(Random& r) {
 TEST(Primitives, PrismLinearAndConic) { check_shape(random_prism, true, 19); }
 
 TEST(Primitives, PrismInsideFollowsTheOutline) {
-    parser::Prism p;
+    scene::Prism p;
     p.height1 = 0;
     p.height2 = 1;
     p.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 0},
@@ -112,9 +112,9 @@ TEST(Primitives, PrismInsideFollowsTheOutline) {
 }
 
 // A round outline through (±1, 0) and (0, ±1) in each spline type (control points as POV-Ray expects them).
-parser::Prism spline_prism(parser::Prism::Spline spline, bool conic) {
-    using Spline = parser::Prism::Spline;
-    parser::Prism p;
+scene::Prism spline_prism(scene::Prism::Spline spline, bool conic) {
+    using Spline = scene::Prism::Spline;
+    scene::Prism p;
     p.spline = spline;
     p.conic = conic;
     p.height1 = conic ? 0.5 : 0.0;
@@ -131,7 +131,7 @@ parser::Prism spline_prism(parser::Prism::Spline spline, bool conic) {
 }
 
 TEST(Primitives, PrismSplinesRandomRays) {
-    using Spline = parser::Prism::Spline;
+    using Spline = scene::Prism::Spline;
     std::uint64_t seed = 61;
     for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier})
         for (const bool conic : {false, true})
@@ -141,8 +141,8 @@ TEST(Primitives, PrismSplinesRandomRays) {
 TEST(Primitives, PrismSplineSubPolygonCutsAHole) {
     // A cubic outline of radius 1 with a second cubic sub-polygon of radius 0.3 inside it: the even-odd rule
     // makes the inner one a hole through both caps.
-    parser::Prism p;
-    p.spline = parser::Prism::Spline::Cubic;
+    scene::Prism p;
+    p.spline = scene::Prism::Spline::Cubic;
     p.height1 = 0;
     p.height2 = 0.5;
     // Each sub-polygon: a control point, the curve points back to the first, a control point.
@@ -166,7 +166,7 @@ TEST(Primitives, PrismSplineSubPolygonCutsAHole) {
 }
 
 TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
-    using Spline = parser::Prism::Spline;
+    using Spline = scene::Prism::Spline;
     for (const Spline s : {Spline::Quadratic, Spline::Cubic, Spline::Bezier}) {
         const auto inst = ShapeInstance::create(make_object(spline_prism(s, false)), 0);
         ASSERT_TRUE(inst);
@@ -185,7 +185,7 @@ TEST(Primitives, PrismSplinesRunThroughTheirPointsWithCurveNormals) {
 
 TEST(Primitives, PolygonWithHoleByEvenOddRule) {
     // A 2 x 2 square with a 1 x 1 square hole: POV-Ray's sub-polygons close when their first point repeats.
-    parser::Polygon poly;
+    scene::Polygon poly;
     poly.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {0, 0, 0},
                    {0.5, 0.5, 0}, {1.5, 0.5, 0}, {1.5, 1.5, 0}, {0.5, 1.5, 0}, {0.5, 0.5, 0}};
     const auto inst = ShapeInstance::create(make_object(poly), 0);
@@ -201,11 +201,11 @@ TEST(Primitives, PolygonWithHoleByEvenOddRule) {
 }
 
 TEST(Primitives, SmoothTriangleInterpolatesNormals) {
-    parser::Mesh m;
-    m.kind = parser::Mesh::Kind::SmoothTriangle;
+    scene::Mesh m;
+    m.kind = scene::Mesh::Kind::SmoothTriangle;
     m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     m.normals = {{-1, 0, 1}, {1, 0, 1}, {0, 1, 1}};
-    parser::Mesh::Face f;
+    scene::Mesh::Face f;
     f.v = {0, 1, 2};
     f.n = {0, 1, 2};
     m.faces.push_back(f);
@@ -220,8 +220,8 @@ TEST(Primitives, SmoothTriangleInterpolatesNormals) {
 }
 
 TEST(Primitives, CylinderCapsAndOpen) {
-    const parser::Cylinder closed{{0, 0, 0}, {0, 2, 0}, 1.0, false};
-    parser::Cylinder open = closed;
+    const scene::Cylinder closed{{0, 0, 0}, {0, 2, 0}, 1.0, false};
+    scene::Cylinder open = closed;
     open.open = true;
     const auto a = ShapeInstance::create(make_object(closed), 0);
     const auto b = ShapeInstance::create(make_object(open), 0);
@@ -237,7 +237,7 @@ TEST(Primitives, CylinderCapsAndOpen) {
 }
 
 TEST(Primitives, TorusFourCrossingsAlongItsDiameter) {
-    const auto inst = ShapeInstance::create(make_object(parser::Torus{2.0, 0.5}), 0);
+    const auto inst = ShapeInstance::create(make_object(scene::Torus{2.0, 0.5}), 0);
     ASSERT_TRUE(inst);
     const SurfaceHits hits = inst->intersect_all({-10, 0, 0}, {1, 0, 0}, 0.0, 1e30);
     ASSERT_EQ(hits.size(), 4u);
@@ -250,8 +250,8 @@ TEST(Primitives, TorusFourCrossingsAlongItsDiameter) {
 }
 
 // POV-Ray's torus written as a general quartic: (x² + y² + z² + R² - r²)² - 4R²(x² + z²).
-parser::Quartic torus_quartic(double major, double minor) {
-    parser::Quartic q;
+scene::Quartic torus_quartic(double major, double minor) {
+    scene::Quartic q;
     const double k = major * major - minor * minor;
     auto& c = q.coefficients;
     c[0] = 1;                                 // x⁴
@@ -273,7 +273,7 @@ TEST(Primitives, QuarticMatchesTheTorus) {
         const double major = rng.uniform(0.5, 1.5), minor = rng.uniform(0.1, 0.4);
         const Transform xf = rng.transform();
         const auto q = ShapeInstance::create(make_object(torus_quartic(major, minor), xf), 0);
-        const auto t = ShapeInstance::create(make_object(parser::Torus{major, minor}, xf), 0);
+        const auto t = ShapeInstance::create(make_object(scene::Torus{major, minor}, xf), 0);
         ASSERT_TRUE(q && t);
         const Vec3 target = xf.point(rng.vec(-1, 1));
         const Vec3 origin = target + rng.direction() * rng.uniform(1.0, 20.0);

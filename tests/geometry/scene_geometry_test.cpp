@@ -16,10 +16,10 @@ using test::make_object;
 using test::Random;
 
 // A random scene of spheres and boxes (and optionally planes) with random transforms and flags.
-parser::Scene random_scene(Random& rng, int count, bool planes, bool flags) {
-    parser::Scene scene;
+scene::Scene random_scene(Random& rng, int count, bool planes, bool flags) {
+    scene::Scene scene;
     for (int i = 0; i < count; ++i) {
-        parser::Object o = make_object(test::random_shape(rng, false), rng.transform(20.0));
+        scene::Object o = make_object(test::random_shape(rng, false), rng.transform(20.0));
         if (flags) {
             o.inverse = rng.chance(0.1);
             o.no_image = rng.chance(0.15);
@@ -31,7 +31,7 @@ parser::Scene random_scene(Random& rng, int count, bool planes, bool flags) {
     }
     if (planes) {
         for (int i = 0; i < 3; ++i) {
-            parser::Object o = make_object(parser::Plane{rng.direction(), rng.uniform(25.0, 40.0)}, rng.transform(3.0));
+            scene::Object o = make_object(scene::Plane{rng.direction(), rng.uniform(25.0, 40.0)}, rng.transform(3.0));
             o.inverse = flags && rng.chance(0.3);
             o.no_shadow = flags && rng.chance(0.3);
             o.no_image = flags && rng.chance(0.3);
@@ -42,7 +42,7 @@ parser::Scene random_scene(Random& rng, int count, bool planes, bool flags) {
 }
 
 // The nearest hit over all objects by a plain loop over their double-precision intersections.
-std::optional<Hit> brute_force(const parser::Scene& scene, const Ray& ray) {
+std::optional<Hit> brute_force(const scene::Scene& scene, const Ray& ray) {
     std::optional<Hit> best;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
         const auto inst = ShapeInstance::create(scene.objects[i], i);
@@ -75,7 +75,7 @@ void expect_same_hit(const std::optional<Hit>& got, const std::optional<Hit>& wa
 
 TEST(SceneGeometry, NearestHitMatchesBruteForce) {
     Random rng(42);
-    const parser::Scene scene = random_scene(rng, 300, true, true);
+    const scene::Scene scene = random_scene(rng, 300, true, true);
     const SceneGeometry geometry(scene);
     EXPECT_TRUE(geometry.skipped_objects().empty());
     int hits = 0;
@@ -92,12 +92,12 @@ TEST(SceneGeometry, NearestHitMatchesBruteForce) {
 // A camera far away compared with the objects: Embree's float ray must not lose silhouette hits.
 TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
     Random rng(17);
-    parser::Scene scene;
+    scene::Scene scene;
     for (int i = 0; i < 50; ++i) {
         // Half are axis-aligned boxes, whose faces coincide with their bounds: the worst case for a float ray.
         if (i % 2 == 0) {
             const Vec3 lo = rng.vec(-3.0, 3.0);
-            scene.objects.push_back(make_object(parser::Box{lo, lo + rng.vec(0.1, 2.0)}));
+            scene.objects.push_back(make_object(scene::Box{lo, lo + rng.vec(0.1, 2.0)}));
         } else {
             scene.objects.push_back(make_object(test::random_shape(rng, false), rng.transform(3.0)));
         }
@@ -110,7 +110,7 @@ TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
         // Aim at points of object surfaces so that many rays graze silhouettes.
         const auto& obj = scene.objects[rng.integer(0, 49)];
         Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
-        if (const auto* box = std::get_if<parser::Box>(&obj.shape)) {
+        if (const auto* box = std::get_if<scene::Box>(&obj.shape)) {
             // A point on an edge of the box, nudged by up to 1e-6 either way.
             for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
             const int along = rng.integer(0, 2);
@@ -128,10 +128,10 @@ TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
 
 TEST(SceneGeometry, OnlyBoundedObjectsAndOnlyPlanes) {
     Random rng(8);
-    const parser::Scene bounded = random_scene(rng, 50, false, false);
-    parser::Scene planes;
-    planes.objects.push_back(make_object(parser::Plane{{0, 1, 0}, -1.0}));
-    planes.objects.push_back(make_object(parser::Plane{{0, 0, -1}, -20.0}));
+    const scene::Scene bounded = random_scene(rng, 50, false, false);
+    scene::Scene planes;
+    planes.objects.push_back(make_object(scene::Plane{{0, 1, 0}, -1.0}));
+    planes.objects.push_back(make_object(scene::Plane{{0, 0, -1}, -20.0}));
     const SceneGeometry g_bounded(bounded);
     const SceneGeometry g_planes(planes);
     EXPECT_TRUE(g_bounded.bounds().has_value());
@@ -141,14 +141,14 @@ TEST(SceneGeometry, OnlyBoundedObjectsAndOnlyPlanes) {
         expect_same_hit(g_bounded.intersect(ray), brute_force(bounded, ray), "bounded");
         expect_same_hit(g_planes.intersect(ray), brute_force(planes, ray), "planes");
     }
-    const SceneGeometry empty(parser::Scene{});
+    const SceneGeometry empty(scene::Scene{});
     EXPECT_FALSE(empty.intersect(Ray{{0, 0, 0}, {0, 0, 1}}));
     EXPECT_FALSE(empty.occluded(Ray{{0, 0, 0}, {0, 0, 1}}));
 }
 
 TEST(SceneGeometry, OccludedAgreesWithIntersect) {
     Random rng(43);
-    const parser::Scene scene = random_scene(rng, 200, true, true);
+    const scene::Scene scene = random_scene(rng, 200, true, true);
     const SceneGeometry geometry(scene);
     int blocked = 0;
     for (int i = 0; i < 20000; ++i) {
@@ -164,10 +164,10 @@ TEST(SceneGeometry, OccludedAgreesWithIntersect) {
 }
 
 TEST(SceneGeometry, RayKindsSkipFlaggedObjects) {
-    parser::Scene scene;
-    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}));
-    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 10}, 1.0}));
-    scene.objects.push_back(make_object(parser::Plane{{0, 0, -1}, -20.0}));
+    scene::Scene scene;
+    scene.objects.push_back(make_object(scene::Sphere{{0, 0, 5}, 1.0}));
+    scene.objects.push_back(make_object(scene::Sphere{{0, 0, 10}, 1.0}));
+    scene.objects.push_back(make_object(scene::Plane{{0, 0, -1}, -20.0}));
     scene.objects[0].no_image = true;
     scene.objects[1].no_reflection = true;
     scene.objects[1].no_shadow = true;
@@ -191,8 +191,8 @@ TEST(SceneGeometry, RayKindsSkipFlaggedObjects) {
 }
 
 TEST(SceneGeometry, TRangeIsOpen) {
-    parser::Scene scene;
-    scene.objects.push_back(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}));
+    scene::Scene scene;
+    scene.objects.push_back(make_object(scene::Box{{-1, -1, -1}, {1, 1, 1}}));
     const SceneGeometry g(scene);
     // Hits at exactly t_min (the entry at t = 2) or t_max (the exit at t = 4) are excluded.
     const auto h = g.intersect(Ray{{0, 0, -3}, {0, 0, 1}, 2.0, 5.0});
@@ -210,12 +210,12 @@ TEST(SceneGeometry, TRangeIsOpen) {
 // The same scene and rays scaled by s give the same t (rays keep their direction vectors scaled by s too).
 TEST(SceneGeometry, ScaleInvariance) {
     Random rng(11);
-    const parser::Scene base = random_scene(rng, 100, true, false);
+    const scene::Scene base = random_scene(rng, 100, true, false);
     std::vector<Ray> rays;
     for (int i = 0; i < 3000; ++i) rays.push_back(random_ray(rng));
     const SceneGeometry g1(base);
     for (double s : {1e-6, 1e6}) {
-        parser::Scene scaled = base;
+        scene::Scene scaled = base;
         for (auto& o : scaled.objects) o.transform = o.transform.then(Transform::scaling({s, s, s}));
         const SceneGeometry gs(scaled);
         int compared = 0;
@@ -244,7 +244,7 @@ TEST(SceneGeometry, ScaleInvariance) {
 TEST(SceneGeometry, OffsetAvoidsSelfIntersection) {
     for (double s : {1e-6, 1.0, 1e6}) {
         Random rng(21);
-        parser::Scene scene = random_scene(rng, 60, true, false);
+        scene::Scene scene = random_scene(rng, 60, true, false);
         for (auto& o : scene.objects) o.transform = o.transform.then(Transform::scaling({s, s, s}));
         const SceneGeometry g(scene);
         int tested = 0;
@@ -276,10 +276,10 @@ TEST(SceneGeometry, OffsetAvoidsSelfIntersection) {
 }
 
 TEST(SceneGeometry, DegenerateObjectsSkipped) {
-    parser::Scene scene;
-    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}, Transform::scaling({0, 1, 1})));
-    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 10}, 1.0}));
-    scene.objects.push_back(make_object(parser::Plane{{0, 0, 0}, 1.0}));
+    scene::Scene scene;
+    scene.objects.push_back(make_object(scene::Sphere{{0, 0, 5}, 1.0}, Transform::scaling({0, 1, 1})));
+    scene.objects.push_back(make_object(scene::Sphere{{0, 0, 10}, 1.0}));
+    scene.objects.push_back(make_object(scene::Plane{{0, 0, 0}, 1.0}));
     const SceneGeometry g(scene);
     ASSERT_EQ(g.skipped_objects().size(), 2u);
     EXPECT_EQ(g.skipped_objects()[0], 0u);
@@ -291,8 +291,8 @@ TEST(SceneGeometry, DegenerateObjectsSkipped) {
 }
 
 TEST(SceneGeometry, BadRaysGiveNothing) {
-    parser::Scene scene;
-    scene.objects.push_back(make_object(parser::Sphere{{0, 0, 5}, 1.0}));
+    scene::Scene scene;
+    scene.objects.push_back(make_object(scene::Sphere{{0, 0, 5}, 1.0}));
     const SceneGeometry g(scene);
     EXPECT_FALSE(g.intersect(Ray{{0, 0, 0}, {0, 0, 0}}));
     EXPECT_FALSE(g.intersect(Ray{{NAN, 0, 0}, {0, 0, 1}}));
@@ -304,11 +304,11 @@ TEST(SceneGeometry, BadRaysGiveNothing) {
 
 TEST(SceneGeometry, GrazingRaysGiveNoNaN) {
     Random rng(31);
-    parser::Scene scene;
-    for (int i = 0; i < 20; ++i) scene.objects.push_back(make_object(parser::Sphere{rng.vec(-10, 10), 1.0}));
+    scene::Scene scene;
+    for (int i = 0; i < 20; ++i) scene.objects.push_back(make_object(scene::Sphere{rng.vec(-10, 10), 1.0}));
     const SceneGeometry g(scene);
     for (int i = 0; i < 5000; ++i) {
-        const auto& s = std::get<parser::Sphere>(scene.objects[rng.integer(0, 19)].shape);
+        const auto& s = std::get<scene::Sphere>(scene.objects[rng.integer(0, 19)].shape);
         const Vec3 n = rng.direction();
         const Vec3 t = normalize(cross(n, rng.direction()));
         const Vec3 p = s.center + n * (1.0 + rng.uniform(-1e-13, 1e-13));
@@ -323,7 +323,7 @@ TEST(SceneGeometry, GrazingRaysGiveNoNaN) {
 
 TEST(SceneGeometry, ConcurrentQueriesMatchSerial) {
     Random rng(55);
-    const parser::Scene scene = random_scene(rng, 200, true, true);
+    const scene::Scene scene = random_scene(rng, 200, true, true);
     const SceneGeometry g(scene);
     std::vector<Ray> rays;
     for (int i = 0; i < 8000; ++i) rays.push_back(random_ray(rng));

@@ -18,7 +18,7 @@ void check_random_hits(bool inverse, int shape_kind_seed) {
     Random rng(1234 + shape_kind_seed + (inverse ? 1000 : 0));
     int checked = 0;
     for (int trial = 0; trial < 300; ++trial) {
-        parser::Object obj = make_object(test::random_shape(rng, true), rng.transform());
+        scene::Object obj = make_object(test::random_shape(rng, true), rng.transform());
         obj.inverse = inverse;
         const auto inst = ShapeInstance::create(obj, 7);
         ASSERT_TRUE(inst.has_value());
@@ -55,7 +55,7 @@ TEST(Shapes, InverseFlipsNormalsAndInside) {
 }
 
 TEST(Shapes, InverseSphereNormalPointsTowardCentre) {
-    parser::Object obj = make_object(parser::Sphere{{0, 0, 0}, 2.0});
+    scene::Object obj = make_object(scene::Sphere{{0, 0, 0}, 2.0});
     obj.inverse = true;
     const auto inst = ShapeInstance::create(obj, 0);
     ASSERT_TRUE(inst);
@@ -69,7 +69,7 @@ TEST(Shapes, InverseSphereNormalPointsTowardCentre) {
 
 TEST(Shapes, PlaneDistanceIsAlongUnitNormal) {
     // POV-Ray compat (checked with povray 3.7): plane { <0,2,0>, 1 } is the plane y = 1, inside below.
-    const auto inst = ShapeInstance::create(make_object(parser::Plane{{0, 2, 0}, 1.0}), 0);
+    const auto inst = ShapeInstance::create(make_object(scene::Plane{{0, 2, 0}, 1.0}), 0);
     ASSERT_TRUE(inst);
     const auto hit = inst->nearest({3, 5, -2}, {0, -1, 0}, 0.0, 1e30);
     ASSERT_TRUE(hit);
@@ -85,7 +85,7 @@ TEST(Shapes, PlaneDistanceIsAlongUnitNormal) {
 }
 
 TEST(Shapes, TiltedPlaneSurface) {
-    const auto inst = ShapeInstance::create(make_object(parser::Plane{{1, 1, 0}, 2.0}), 0);
+    const auto inst = ShapeInstance::create(make_object(scene::Plane{{1, 1, 0}, 2.0}), 0);
     ASSERT_TRUE(inst);
     const auto hit = inst->nearest({0, 0, 0}, {1, 0, 0}, 0.0, 1e30);
     ASSERT_TRUE(hit);
@@ -95,8 +95,8 @@ TEST(Shapes, TiltedPlaneSurface) {
 
 TEST(Shapes, BoxCornersInAnyOrder) {
     // POV-Ray compat (checked with povray 3.7): box { <1,-1,1>, <-1,1,-1> } renders as the box from -1 to 1.
-    const auto a = ShapeInstance::create(make_object(parser::Box{{1, -1, 1}, {-1, 1, -1}}), 0);
-    const auto b = ShapeInstance::create(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}), 0);
+    const auto a = ShapeInstance::create(make_object(scene::Box{{1, -1, 1}, {-1, 1, -1}}), 0);
+    const auto b = ShapeInstance::create(make_object(scene::Box{{-1, -1, -1}, {1, 1, 1}}), 0);
     ASSERT_TRUE(a && b);
     Random rng(5);
     for (int i = 0; i < 100; ++i) {
@@ -114,7 +114,7 @@ TEST(Shapes, BoxCornersInAnyOrder) {
 
 TEST(Shapes, NegativeRadiusActsLikeItsAbsoluteValue) {
     // POV-Ray compat (checked with povray 3.7): sphere { 0, -1 } renders like sphere { 0, 1 }.
-    const auto inst = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, -1.0}), 0);
+    const auto inst = ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, -1.0}), 0);
     ASSERT_TRUE(inst);
     const auto hit = inst->nearest({0, 0, -5}, {0, 0, 1}, 0.0, 1e30);
     ASSERT_TRUE(hit);
@@ -123,12 +123,12 @@ TEST(Shapes, NegativeRadiusActsLikeItsAbsoluteValue) {
 }
 
 TEST(Shapes, DegenerateObjectsAreRejected) {
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 1.0}, Transform::scaling({1, 0, 1})), 0));
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 0.0}), 0));
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Plane{{0, 0, 0}, 1.0}), 0));
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Box{{0, 0, 0}, {1, NAN, 1}}), 0));
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, INFINITY}), 0));
-    EXPECT_FALSE(ShapeInstance::create(make_object(parser::Plane{{0, 1, 0}, 0.0}, Transform::scaling({0, 0, 0})), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, 1.0}, Transform::scaling({1, 0, 1})), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, 0.0}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Plane{{0, 0, 0}, 1.0}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Box{{0, 0, 0}, {1, NAN, 1}}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, INFINITY}), 0));
+    EXPECT_FALSE(ShapeInstance::create(make_object(scene::Plane{{0, 1, 0}, 0.0}, Transform::scaling({0, 0, 0})), 0));
 }
 
 TEST(Shapes, SphereStableForDistantOrigins) {
@@ -137,7 +137,7 @@ TEST(Shapes, SphereStableForDistantOrigins) {
     int hits = 0;
     for (int i = 0; i < 500; ++i) {
         const double r = rng.uniform(0.5, 2.0);
-        const auto inst = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, r}), 0);
+        const auto inst = ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, r}), 0);
         const double dist = std::pow(10.0, rng.uniform(4.0, 9.0));
         const Vec3 origin = rng.direction() * dist;
         const Vec3 target = rng.vec(-r, r);
@@ -154,9 +154,9 @@ TEST(Shapes, SphereStableForDistantOrigins) {
 
 TEST(Shapes, GrazingRaysNeverGiveNaN) {
     Random rng(99);
-    const auto sphere = ShapeInstance::create(make_object(parser::Sphere{{0, 0, 0}, 1.0}, rng.transform()), 0);
-    const auto box = ShapeInstance::create(make_object(parser::Box{{-1, -1, -1}, {1, 1, 1}}), 1);
-    const auto flat = ShapeInstance::create(make_object(parser::Box{{-1, 0, -1}, {1, 0, 1}}), 2);
+    const auto sphere = ShapeInstance::create(make_object(scene::Sphere{{0, 0, 0}, 1.0}, rng.transform()), 0);
+    const auto box = ShapeInstance::create(make_object(scene::Box{{-1, -1, -1}, {1, 1, 1}}), 1);
+    const auto flat = ShapeInstance::create(make_object(scene::Box{{-1, 0, -1}, {1, 0, 1}}), 2);
     ASSERT_TRUE(sphere && box && flat);
     const auto check = [](const SurfaceHits& hits) {
         for (const SurfaceHit& h : hits) {
@@ -189,7 +189,7 @@ TEST(Shapes, GrazingRaysNeverGiveNaN) {
 
 TEST(Shapes, TransformedSphereBoundsAreTight) {
     Random rng(3);
-    const parser::Object obj = make_object(parser::Sphere{{0.5, 0, 0}, 1.0}, rng.transform());
+    const scene::Object obj = make_object(scene::Sphere{{0.5, 0, 0}, 1.0}, rng.transform());
     const auto inst = ShapeInstance::create(obj, 0);
     ASSERT_TRUE(inst && inst->world_bounds());
     // Every surface point lies in the bounds, and the bounds are touched along each axis.

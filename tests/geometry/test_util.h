@@ -9,7 +9,7 @@
 #include <random>
 
 #include "geometry/instance.h"
-#include "parser/scene.h"
+#include "scene/scene.h"
 
 namespace wardray::geometry::test {
 
@@ -42,19 +42,19 @@ private:
 };
 
 /// An object holding `shape` with the given transform and no flags.
-inline parser::Object make_object(const parser::Shape& shape, const Transform& xf = Transform()) {
-    parser::Object o;
+inline scene::Object make_object(const scene::Shape& shape, const Transform& xf = Transform()) {
+    scene::Object o;
     o.shape = shape;
     o.transform = xf;
     return o;
 }
 
 /// A random sphere, box or (when allowed) plane in object space.
-inline parser::Shape random_shape(Random& rng, bool allow_plane) {
+inline scene::Shape random_shape(Random& rng, bool allow_plane) {
     const int kind = rng.integer(0, allow_plane ? 2 : 1);
-    if (kind == 0) return parser::Sphere{rng.vec(-1.0, 1.0), rng.uniform(0.2, 1.5)};
-    if (kind == 1) return parser::Box{rng.vec(-1.5, 1.5), rng.vec(-1.5, 1.5)};
-    return parser::Plane{rng.vec(-2.0, 2.0), rng.uniform(-3.0, 3.0)};
+    if (kind == 0) return scene::Sphere{rng.vec(-1.0, 1.0), rng.uniform(0.2, 1.5)};
+    if (kind == 1) return scene::Box{rng.vec(-1.5, 1.5), rng.vec(-1.5, 1.5)};
+    return scene::Plane{rng.vec(-2.0, 2.0), rng.uniform(-3.0, 3.0)};
 }
 
 /// Size of an object for relative tolerances: its bounds' magnitude, or 10 for unbounded objects.
@@ -69,7 +69,7 @@ struct AimedRay {
     Vec3 origin;
     Vec3 direction;
 };
-inline AimedRay aim_random_ray(Random& rng, const parser::Object& obj, double spread) {
+inline AimedRay aim_random_ray(Random& rng, const scene::Object& obj, double spread) {
     const Vec3 target = obj.transform.point(rng.vec(-spread, spread));
     const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 20.0);
     return {origin, (target - origin) * rng.uniform(0.1, 10.0)};
@@ -94,13 +94,13 @@ inline void expect_valid_crossing(const ShapeInstance& inst, const SurfaceHits& 
 /// Checks random rays against random objects from `make`: every crossing lies on the surface (implicit ≈ 0
 /// relative to the object's size), has a unit normal, an entering flag that matches the normal, and, for solid
 /// shapes, inside just behind the normal and outside just in front of it.
-inline void check_shape(const std::function<parser::Shape(Random&)>& make, bool solid, std::uint64_t seed,
+inline void check_shape(const std::function<scene::Shape(Random&)>& make, bool solid, std::uint64_t seed,
                  double surface_tolerance = 1e-9, int min_hits = 150, int trials = 300) {
     Random rng(seed);
     int checked = 0;
     int inside_failures = 0;
     for (int trial = 0; trial < trials; ++trial) {
-        parser::Object obj = make_object(make(rng), rng.transform());
+        scene::Object obj = make_object(make(rng), rng.transform());
         const auto inst = ShapeInstance::create(obj, 3);
         ASSERT_TRUE(inst.has_value()) << "trial " << trial;
         const double scale = test::object_scale(*inst);

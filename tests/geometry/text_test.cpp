@@ -13,11 +13,11 @@ namespace {
 using test::check_shape;
 using test::make_object;
 using test::Random;
-using Point = parser::TextGlyph::Point;
+using Point = scene::TextGlyph::Point;
 
 // A square [0, 1]² with a square hole [0.3, 0.7]², contours in TrueType's orientation (outer clockwise).
-parser::TextGlyph square_with_hole(const Vec3& offset = {}) {
-    parser::TextGlyph g;
+scene::TextGlyph square_with_hole(const Vec3& offset = {}) {
+    scene::TextGlyph g;
     g.contours = {{{0, 0}, {0, 1}, {1, 1}, {1, 0}}, {{0.3, 0.3}, {0.7, 0.3}, {0.7, 0.7}, {0.3, 0.7}}};
     g.offset = offset;
     return g;
@@ -26,8 +26,8 @@ parser::TextGlyph square_with_hole(const Vec3& offset = {}) {
 // A round glyph of radius r about c: four on-curve points on the axes and off-curve corners (quadratic arcs), or,
 // with `implied`, a hexagon of off-curve points so that the on-curve points are implied midpoints (POV-Ray starts
 // the walk at the first point as if it were on the curve: here the top, away from the x axis the tests use).
-parser::TextGlyph round_glyph(double cx, double cy, double r, bool implied) {
-    parser::TextGlyph g;
+scene::TextGlyph round_glyph(double cx, double cy, double r, bool implied) {
+    scene::TextGlyph g;
     std::vector<Point> c;
     if (implied) {
         for (int k = 0; k < 6; ++k) {
@@ -42,8 +42,8 @@ parser::TextGlyph round_glyph(double cx, double cy, double r, bool implied) {
     return g;
 }
 
-parser::Text text_of(std::vector<parser::TextGlyph> glyphs, double thickness) {
-    parser::Text t;
+scene::Text text_of(std::vector<scene::TextGlyph> glyphs, double thickness) {
+    scene::Text t;
     t.glyphs = std::move(glyphs);
     t.thickness = thickness;
     return t;
@@ -51,7 +51,7 @@ parser::Text text_of(std::vector<parser::TextGlyph> glyphs, double thickness) {
 
 TEST(Text, RandomRaysOnLinesArcsAndHoles) {
     check_shape([](Random& r) {
-        std::vector<parser::TextGlyph> glyphs{square_with_hole({-1.2, -0.5, 0}),
+        std::vector<scene::TextGlyph> glyphs{square_with_hole({-1.2, -0.5, 0}),
                                               round_glyph(0.7, 0.0, r.uniform(0.3, 0.6), r.chance(0.5))};
         return text_of(glyphs, r.uniform(0.2, 1.0));
     }, true, 31);
@@ -125,7 +125,7 @@ TEST(Text, GlyphsAreAUnion) {
 
 TEST(Text, EmptyTextIsSkipped) {
     EXPECT_FALSE(ShapeInstance::create(make_object(text_of({}, 1.0)), 0));
-    parser::TextGlyph space;  // a space has no contours
+    scene::TextGlyph space;  // a space has no contours
     EXPECT_FALSE(ShapeInstance::create(make_object(text_of({space}, 1.0)), 0));
 }
 

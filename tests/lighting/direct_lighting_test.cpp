@@ -12,10 +12,10 @@ namespace wardray::lighting {
 namespace {
 
 // A white Lambertian floor (diffuse 1, no ambient) at y = 0.
-parser::Scene floor_scene() {
-    parser::Scene scene;
-    parser::Object floor;
-    floor.shape = parser::Plane{{0, 1, 0}, 0.0};
+scene::Scene floor_scene() {
+    scene::Scene scene;
+    scene::Object floor;
+    floor.shape = scene::Plane{{0, 1, 0}, 0.0};
     floor.texture.pigment.color = {1, 1, 1};
     floor.texture.finish.ambient = {0, 0, 0};
     floor.texture.finish.diffuse = 1.0;
@@ -23,15 +23,15 @@ parser::Scene floor_scene() {
     return scene;
 }
 
-parser::Light point_light(const Vec3& p, double intensity = 1.0) {
-    parser::Light l;
+scene::Light point_light(const Vec3& p, double intensity = 1.0) {
+    scene::Light l;
     l.position = p;
     l.color = {intensity, intensity, intensity};
     return l;
 }
 
 // Radiance seen looking straight down at floor point (x, 0, z) from height 1.
-double radiance_at(const parser::Scene& scene, double x, double z, GiMode gi = GiMode::Off) {
+double radiance_at(const scene::Scene& scene, double x, double z, GiMode gi = GiMode::Off) {
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {gi});
     TraceContext counters;
@@ -40,7 +40,7 @@ double radiance_at(const parser::Scene& scene, double x, double z, GiMode gi = G
 }
 
 TEST(DirectLighting, PointLightFollowsTheCosineLawWithoutInverseSquare) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, 2, 0}));
     for (double x : {0.0, 0.5, 1.0, 2.0, 5.0}) {
         const double cos_theta = 2.0 / std::sqrt(4.0 + x * x);
@@ -49,7 +49,7 @@ TEST(DirectLighting, PointLightFollowsTheCosineLawWithoutInverseSquare) {
 }
 
 TEST(DirectLighting, BrillianceRaisesTheCosine) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.objects[0].texture.finish.brilliance = 3.0;
     scene.lights.push_back(point_light({0, 2, 0}));
     const double cos_theta = 2.0 / std::sqrt(4.0 + 1.0);
@@ -57,8 +57,8 @@ TEST(DirectLighting, BrillianceRaisesTheCosine) {
 }
 
 TEST(DirectLighting, FadeIsTwoOverOnePlusDistanceRatioToThePower) {
-    parser::Scene scene = floor_scene();
-    parser::Light l = point_light({0, 3, 0});
+    scene::Scene scene = floor_scene();
+    scene::Light l = point_light({0, 3, 0});
     l.fade_distance = 1.5;
     l.fade_power = 2.0;
     scene.lights.push_back(l);
@@ -66,9 +66,9 @@ TEST(DirectLighting, FadeIsTwoOverOnePlusDistanceRatioToThePower) {
 }
 
 TEST(DirectLighting, SpotlightIsFullInsideRadiusDarkOutsideFalloffSmoothBetween) {
-    parser::Scene scene = floor_scene();
-    parser::Light l = point_light({0, 1, 0});
-    l.type = parser::Light::Type::Spot;
+    scene::Scene scene = floor_scene();
+    scene::Light l = point_light({0, 1, 0});
+    l.type = scene::Light::Type::Spot;
     l.point_at = {0, 0, 0};
     l.radius = 20;
     l.falloff = 40;
@@ -84,9 +84,9 @@ TEST(DirectLighting, SpotlightIsFullInsideRadiusDarkOutsideFalloffSmoothBetween)
 }
 
 TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
-    parser::Scene scene = floor_scene();
-    parser::Light l = point_light({0, 10, -10});
-    l.type = parser::Light::Type::Parallel;
+    scene::Scene scene = floor_scene();
+    scene::Light l = point_light({0, 10, -10});
+    l.type = scene::Light::Type::Parallel;
     l.point_at = {0, 0, 0};
     scene.lights.push_back(l);
     const double expected = std::cos(std::numbers::pi / 4);
@@ -95,10 +95,10 @@ TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
 }
 
 TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, 4, 0}));
-    parser::Object blocker;
-    blocker.shape = parser::Sphere{{0, 2, 0}, 0.5};
+    scene::Object blocker;
+    blocker.shape = scene::Sphere{{0, 2, 0}, 0.5};
     scene.objects.push_back(blocker);
     EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
     EXPECT_NEAR(radiance_at(scene, 3.0, 0.0), 4.0 / 5.0, 1e-9);  // outside the shadow
@@ -110,7 +110,7 @@ TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
 }
 
 TEST(DirectLighting, ShadowlessLightsCauseNoHighlights) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.objects[0].texture.finish.diffuse = 0.0;
     scene.objects[0].texture.finish.phong = 1.0;
     scene.objects[0].texture.finish.specular = 1.0;
@@ -121,31 +121,31 @@ TEST(DirectLighting, ShadowlessLightsCauseNoHighlights) {
 }
 
 TEST(DirectLighting, LightBelowTheFloorContributesNothing) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, -2, 0}));
     EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
 }
 
 TEST(DirectLighting, AmbientIsLightUnlessRadiosityInA37Scene) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.objects[0].texture.finish.ambient = {0.2, 0.2, 0.2};
     scene.global.ambient_light = {0.5, 0.5, 0.5};
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.1, 1e-12);
-    scene.global.radiosity = parser::RadiositySettings{};
+    scene.global.radiosity = scene::RadiositySettings{};
     EXPECT_EQ(radiance_at(scene, 0, 0, GiMode::Off), 0.0);  // POV-Ray 3.7: ambient is not light under radiosity
     scene.version = 3.6;
     EXPECT_NEAR(radiance_at(scene, 0, 0, GiMode::Off), 0.1, 1e-12);
 }
 
 TEST(DirectLighting, EmissionAddsPigmentTimesEmission) {
-    parser::Scene scene = floor_scene();
+    scene::Scene scene = floor_scene();
     scene.objects[0].texture.pigment.color = {0.5, 0.5, 0.5};
     scene.objects[0].texture.finish.emission = {0.4, 0.4, 0.4};
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.2, 1e-12);
 }
 
 TEST(DirectLighting, MissIsBackground) {
-    parser::Scene scene;
+    scene::Scene scene;
     scene.background = {0.1, 0.2, 0.3};
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {});

@@ -6,26 +6,26 @@
 
 #include "geometry/scene_geometry.h"
 #include "lighting/direct_lighting.h"
-#include "lighting/noise.h"
-#include "lighting/pattern.h"
-#include "lighting/pigment.h"
+#include "texture/noise.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
 #include "parser/parse.h"
 
 namespace wardray::lighting {
 namespace {
 
-parser::Scene parse(const std::string& text) {
+scene::Scene parse(const std::string& text) {
     parser::ParseOptions options;
     const parser::ParseResult r =
         parser::parse_string("global_settings { assumed_gamma 1 }\n" + text, "test.pov", options);
     EXPECT_TRUE(r.ok());
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
-    return r.scene.value_or(parser::Scene{});
+    return r.scene.value_or(scene::Scene{});
 }
 
 // A pigment mapping the raw pattern value onto grey levels 0..1.
-parser::Pigment grey_ramp(parser::Pattern::Type type) {
-    parser::Pigment p;
+scene::Pigment grey_ramp(scene::Pattern::Type type) {
+    scene::Pigment p;
     p.pattern.type = type;
     p.color_map = {{0.0, {0, 0, 0}}, {1.0, {1, 1, 1}}};
     return p;
@@ -40,7 +40,7 @@ TEST(Noise, MatchesPovRaysNoiseFunction) {
     const Sample samples[] = {{{0.3, 0.7, 1.1}, 0.689585217264},   {{-2.25, 5.5, 0.125}, 0.408067910158},
                               {{10.5, -3.75, 7.2}, 0.669307813391}, {{0.01, 0.02, 0.03}, 0.307115252171},
                               {{123.4, -56.7, 8.9}, 0.320953256784}, {{-0.5, -0.5, -0.5}, 0.560727982465}};
-    for (const Sample& s : samples) EXPECT_NEAR(noise(s.p, 2), s.expected, 1e-11) << s.p.x;
+    for (const Sample& s : samples) EXPECT_NEAR(texture::noise(s.p, 2), s.expected, 1e-11) << s.p.x;
 }
 
 TEST(Noise, VturbulenceMatchesPovRay) {
@@ -48,7 +48,7 @@ TEST(Noise, VturbulenceMatchesPovRay) {
     // with the lighting layer's turbulence plugged in as the CLI does (octaves 2.7 truncate to 2, 20 clamp to 10).
     parser::ParseOptions options;
     options.vector_turbulence = [](const Vec3& p, int octaves, double omega, double lambda) {
-        return dturbulence(p, TurbulenceParams{octaves, omega, lambda});
+        return texture::dturbulence(p, texture::TurbulenceParams{octaves, omega, lambda});
     };
     const parser::ParseResult r = parser::parse_string(
         "global_settings { assumed_gamma 1 }\n"
@@ -62,7 +62,7 @@ TEST(Noise, VturbulenceMatchesPovRay) {
                              {0.104562092773, -0.022230415234, -0.312172768945}};
     ASSERT_EQ(r.scene->objects.size(), 3u);
     for (int i = 0; i < 3; ++i) {
-        const Vec3 c = std::get<parser::Sphere>(r.scene->objects[i].shape).center;
+        const Vec3 c = std::get<scene::Sphere>(r.scene->objects[i].shape).center;
         EXPECT_NEAR(c.x, expected[i].x, 1e-11) << i;
         EXPECT_NEAR(c.y, expected[i].y, 1e-11) << i;
         EXPECT_NEAR(c.z, expected[i].z, 1e-11) << i;
@@ -71,7 +71,7 @@ TEST(Noise, VturbulenceMatchesPovRay) {
 
 TEST(Patterns, MatchPovRaysEvalPigment) {
     // POV-Ray 3.7.0.10: eval_pigment(pigment { P color_map { [0 rgb 0] [1 rgb 1] } }, point).red (float colours).
-    using T = parser::Pattern::Type;
+    using T = scene::Pattern::Type;
     const Vec3 points[] = {{0.3, 0.7, 1.1}, {-2.25, 5.5, 0.125}, {10.5, -3.75, 7.2}, {-0.5, -0.5, -0.5}};
     struct Row {
         T type;
@@ -86,59 +86,59 @@ TEST(Patterns, MatchPovRaysEvalPigment) {
         {T::Waves, {0.602790296, 0.399426669, 0.608640313, 0.737113416}},
     };
     for (const Row& row : rows) {
-        parser::Pigment pig = grey_ramp(row.type);
+        scene::Pigment pig = grey_ramp(row.type);
         if (row.type == T::Marble) {
-            pig.pattern.wave = parser::WaveType::Triangle;
-            pig.pattern.turbulence = parser::Turbulence{{0.7, 0.7, 0.7}};
+            pig.pattern.wave = scene::WaveType::Triangle;
+            pig.pattern.turbulence = scene::Turbulence{{0.7, 0.7, 0.7}};
         }
         for (int i = 0; i < 4; ++i)
-            EXPECT_NEAR(evaluate_pigment(pig, points[i], 2).r, row.expected[i], 2e-6)
+            EXPECT_NEAR(texture::evaluate_pigment(pig, points[i], 2).r, row.expected[i], 2e-6)
                 << static_cast<int>(row.type) << " at point " << i;
     }
 }
 
 TEST(Patterns, MapLookupFollowsPovRaysRules) {
-    parser::Pigment p = grey_ramp(parser::Pattern::Type::Gradient);
+    scene::Pigment p = grey_ramp(scene::Pattern::Type::Gradient);
     p.color_map = {{0.2, {1, 0, 0}}, {0.5, {0, 1, 0}}, {0.5, {0, 0, 1}}, {0.8, {1, 1, 1}}};
     // Below the first entry: the first colour; above the last: the last; a repeated value is a sharp edge.
-    EXPECT_DOUBLE_EQ(evaluate_pigment(p, {0.1, 0, 0}, 2).r, 1.0);
-    EXPECT_DOUBLE_EQ(evaluate_pigment(p, {0.9, 0, 0}, 2).g, 1.0);
-    EXPECT_NEAR(evaluate_pigment(p, {0.35, 0, 0}, 2).r, 0.5, 1e-6);
-    EXPECT_NEAR(evaluate_pigment(p, {0.35, 0, 0}, 2).g, 0.5, 1e-6);
-    EXPECT_NEAR(evaluate_pigment(p, {0.65, 0, 0}, 2).b, 1.0, 1e-6);
-    EXPECT_NEAR(evaluate_pigment(p, {0.65, 0, 0}, 2).r, 0.5, 1e-6);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(p, {0.1, 0, 0}, 2).r, 1.0);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(p, {0.9, 0, 0}, 2).g, 1.0);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.35, 0, 0}, 2).r, 0.5, 1e-6);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.35, 0, 0}, 2).g, 0.5, 1e-6);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.65, 0, 0}, 2).b, 1.0, 1e-6);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.65, 0, 0}, 2).r, 0.5, 1e-6);
 }
 
 TEST(Patterns, WaveTypesShapeTheValue) {
-    parser::Pattern pat;
-    pat.type = parser::Pattern::Type::Gradient;
-    pat.wave = parser::WaveType::Triangle;
-    EXPECT_NEAR(pattern_value(pat, {0.25, 0, 0}, 2), 0.5, 1e-12);
-    EXPECT_NEAR(pattern_value(pat, {0.75, 0, 0}, 2), 0.5, 1e-12);
-    pat.wave = parser::WaveType::Sine;
-    EXPECT_NEAR(pattern_value(pat, {0.25, 0, 0}, 2), 1.0, 1e-12);
-    pat.wave = parser::WaveType::Poly;
+    scene::Pattern pat;
+    pat.type = scene::Pattern::Type::Gradient;
+    pat.wave = scene::WaveType::Triangle;
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0, 0}, 2), 0.5, 1e-12);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.75, 0, 0}, 2), 0.5, 1e-12);
+    pat.wave = scene::WaveType::Sine;
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0, 0}, 2), 1.0, 1e-12);
+    pat.wave = scene::WaveType::Poly;
     pat.exponent = 2.0;
-    EXPECT_NEAR(pattern_value(pat, {0.5, 0, 0}, 2), 0.25, 1e-12);
-    pat.wave = parser::WaveType::Ramp;
+    EXPECT_NEAR(texture::pattern_value(pat, {0.5, 0, 0}, 2), 0.25, 1e-12);
+    pat.wave = scene::WaveType::Ramp;
     pat.frequency = 2.0;
     pat.phase = 0.1;
-    EXPECT_NEAR(pattern_value(pat, {0.3, 0, 0}, 2), std::fmod(0.7, 1.00001), 1e-12);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.3, 0, 0}, 2), std::fmod(0.7, 1.00001), 1e-12);
 }
 
 TEST(Textures, ObjectTransformsAfterTheTextureMoveIt) {
-    const parser::Scene scene = parse(
+    const scene::Scene scene = parse(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 scale 0.5 } translate <0.5, 0, 0> }\n"
         "sphere { 0, 1 translate <0.5, 0, 0> pigment { checker rgb 1, rgb 0 scale 0.5 } }\n");
     ASSERT_EQ(scene.objects.size(), 2u);
     // The first pigment moved with the sphere by half a checker; the second did not.
     const Vec3 p{0.1, 0.1, 0.1};
-    EXPECT_DOUBLE_EQ(evaluate_pigment(scene.objects[0].texture.pigment, p, 2).r, 0.0);
-    EXPECT_DOUBLE_EQ(evaluate_pigment(scene.objects[1].texture.pigment, p, 2).r, 1.0);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[0].texture.pigment, p, 2).r, 0.0);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[1].texture.pigment, p, 2).r, 1.0);
 }
 
 TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
-    const parser::Scene scene = parse(
+    const scene::Scene scene = parse(
         "plane { y, 0 pigment { gradient x color_map { [0, 0.5 color rgb 0 color rgb 1] [0.5 rgb <1, 0, 0>] } } }\n"
         "plane { y, 0 pigment { bozo pigment_map { [0.3 rgb 1] [0.7 checker rgb 0, rgb 1] } turbulence 0.5 } }\n"
         "plane { y, 0 pigment { marble } normal { bumps 0.4 scale 0.2 } finish { reflection { 0.1, 0.9 fresnel } } }\n");
@@ -147,21 +147,21 @@ TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
     ASSERT_EQ(map.size(), 3u);
     EXPECT_DOUBLE_EQ(map[1].value, 0.5);
     EXPECT_DOUBLE_EQ(map[1].color.g, 1.0);
-    const parser::Pigment& bozo = scene.objects[1].texture.pigment;
+    const scene::Pigment& bozo = scene.objects[1].texture.pigment;
     ASSERT_EQ(bozo.pigment_map.size(), 2u);
-    EXPECT_EQ(bozo.pigment_map[1].pigment.pattern.type, parser::Pattern::Type::Checker);
+    EXPECT_EQ(bozo.pigment_map[1].pigment.pattern.type, scene::Pattern::Type::Checker);
     ASSERT_TRUE(bozo.pattern.turbulence.has_value());
-    const parser::Texture& t = scene.objects[2].texture;
-    EXPECT_EQ(t.pigment.pattern.wave, parser::WaveType::Triangle);
+    const scene::Texture& t = scene.objects[2].texture;
+    EXPECT_EQ(t.pigment.pattern.wave, scene::WaveType::Triangle);
     EXPECT_EQ(t.pigment.color_map.size(), 3u);  // marble's default map
-    EXPECT_EQ(t.normal.pattern.type, parser::Pattern::Type::Bumps);
+    EXPECT_EQ(t.normal.pattern.type, scene::Pattern::Type::Bumps);
     EXPECT_DOUBLE_EQ(t.normal.amount, 0.4);
     EXPECT_TRUE(t.finish.reflection_fresnel);
 }
 
 // A camera ray straight down onto a plane at y = 0 with the given texture, over a background colour.
 Vec3 look_down(const std::string& object, const std::string& extra = "") {
-    const parser::Scene scene = parse("background { rgb <0.2, 0.4, 0.6> }\n" + extra + object);
+    const scene::Scene scene = parse("background { rgb <0.2, 0.4, 0.6> }\n" + extra + object);
     EXPECT_FALSE(scene.objects.empty());
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {});

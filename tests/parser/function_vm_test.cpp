@@ -2,7 +2,7 @@
 #include <cmath>
 #include <thread>
 
-#include "parser/function_vm.h"
+#include "function/function_vm.h"
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {

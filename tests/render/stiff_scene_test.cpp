@@ -43,7 +43,7 @@ Rendered render_text(const std::string& text, const std::vector<std::pair<std::s
     options.image_height = kHeight;
     const parser::ParseResult parsed = parser::parse_string(text, "stiff.pov", options);
     std::string errors;
-    for (const parser::Diagnostic& d : parsed.diagnostics) errors += parser::format_diagnostic(d);
+    for (const Diagnostic& d : parsed.diagnostics) errors += format_diagnostic(d);
     EXPECT_TRUE(parsed.ok()) << errors;
     if (!parsed.ok()) return {Film(kWidth, kHeight), 0};
     const geometry::SceneGeometry geometry(*parsed.scene);

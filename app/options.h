@@ -1,0 +1,71 @@
+// Options: the command line, in POV-Ray's switch syntax plus wardray's long options.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "lighting/direct_lighting.h"
+#include "render/film.h"
+
+namespace wardray::app {
+
+/// Everything the command line can set. Defaults are POV-Ray's.
+struct Options {
+    std::filesystem::path scene;                    ///< empty: the bundled default scene
+    std::optional<std::filesystem::path> output;    ///< empty: the scene's name with the format's extension
+    std::optional<render::ImageFormat> format;              ///< from +F; otherwise from the output's extension
+    bool write_output = true;                       ///< -F turns file output off, as in POV-Ray
+    int width = 320;
+    int height = 240;
+    int threads = 0;                                ///< 0: all cores
+    bool antialias = false;
+    double antialias_threshold = 0.3;  ///< +A0.3
+    int antialias_depth = 3;           ///< +R3
+    double jitter = 1.0;               ///< +J1.0, -J: 0
+    double antialias_gamma = 2.5;      ///< +AG2.5
+    std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
+    int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
+    bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
+    bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
+    bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
+    bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
+    std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca
+    std::optional<std::filesystem::path> aov_irradiance;  ///< --aov irradiance FILE: indirect irradiance alone
+    std::optional<std::filesystem::path> aov_records;     ///< --aov records FILE: the image with the records as dots
+    std::vector<std::pair<std::string, double>> declares;
+    std::vector<std::filesystem::path> library_paths;
+    std::optional<std::filesystem::path> stats;
+    /// #fopen may also read from these folders (--read-path) and write into these (--write-path).
+    std::vector<std::filesystem::path> read_paths;
+    std::vector<std::filesystem::path> write_paths;
+    bool allow_file_writes = false;  ///< --allow-file-writes: #write really writes (inside the permitted folders)
+    // Parser guard rails; empty keeps the parser's defaults.
+    std::optional<std::uint64_t> max_loop_iterations;
+    std::optional<std::uint64_t> max_macro_depth;
+    std::optional<std::uint64_t> max_include_depth;
+    std::optional<std::uint64_t> max_array_size;
+    std::optional<std::uint64_t> max_string_length;
+    std::optional<std::uint64_t> max_memory_file;
+    bool check_only = false;
+    bool verbose = false;
+    bool show_help = false;
+    bool show_version = false;
+};
+
+/// What went wrong with the command line: a message for stderr; the caller exits with status 2.
+struct UsageError {
+    std::string message;
+};
+
+/// Parses argv[1..]; the result is either options or a usage error.
+std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args);
+
+/// The short usage text printed with a usage error and by --help.
+std::string usage_text();
+
+}  // namespace wardray::app

@@ -1,0 +1,46 @@
+// Scene description, global settings: global_settings and its radiosity block.
+#pragma once
+
+#include <optional>
+
+#include "core/color.h"
+#include "core/diagnostics.h"
+
+namespace wardray::scene {
+
+/// The `radiosity { ... }` block of global_settings with POV-Ray 3.7's defaults.
+struct RadiositySettings {
+    int count = 35;
+    int count_directions = 1600;
+    double error_bound = 1.8;
+    double low_error_factor = 0.5;
+    double minimum_reuse = 0.015;
+    double maximum_reuse = 0.2;
+    int nearest_count = 5;
+    int nearest_count_pretrace = 0;  ///< 0: not given
+    int recursion_limit = 2;
+    double pretrace_start = 0.08;
+    double pretrace_end = 0.04;
+    double brightness = 1.0;
+    double gray_threshold = 0.0;
+    double adc_bailout = 0.01;
+    bool always_sample = false;
+    double max_sample = -1.0;  ///< brightest a gather sample may be (its largest channel); ≤ 0: no limit
+    bool normal = false;
+    bool media = false;
+    SourceLoc loc;
+    bool operator==(const RadiositySettings&) const = default;
+};
+
+struct GlobalSettings {
+    double assumed_gamma = 1.0;
+    bool assumed_gamma_given = false;
+    Color ambient_light{1.0, 1.0, 1.0};
+    int max_trace_level = 5;
+    double adc_bailout = 1.0 / 255.0;
+    int noise_generator = 2;  ///< POV-Ray 3.7's default: range-corrected noise
+    std::optional<RadiositySettings> radiosity;
+    bool operator==(const GlobalSettings&) const = default;
+};
+
+}  // namespace wardray::scene

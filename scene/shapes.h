@@ -1,0 +1,168 @@
+// Scene description, shapes: the plain data of each primitive the renderer draws.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/vec3.h"
+
+namespace wardray::scene {
+
+struct Sphere {
+    Vec3 center;
+    double radius = 1.0;
+    bool operator==(const Sphere&) const = default;
+};
+
+struct Box {
+    Vec3 corner1;
+    Vec3 corner2;
+    bool operator==(const Box&) const = default;
+};
+
+/// POV-Ray's `plane { normal, distance }`: the surface {p : dot(n̂, p) = distance} with n̂ the unit normal;
+/// the inside is where dot(n̂, p) < distance. The parser stores the normal as written.
+struct Plane {
+    Vec3 normal{0.0, 1.0, 0.0};
+    double distance = 0.0;
+    bool operator==(const Plane&) const = default;
+};
+
+/// POV-Ray's `cylinder { base, cap, radius [open] }`.
+struct Cylinder {
+    Vec3 base;
+    Vec3 cap{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    bool open = false;  ///< no end caps
+    bool operator==(const Cylinder&) const = default;
+};
+
+/// POV-Ray's `cone { base, base_radius, cap, cap_radius [open] }`.
+struct Cone {
+    Vec3 base;
+    double base_radius = 1.0;
+    Vec3 cap{0.0, 1.0, 0.0};
+    double cap_radius = 0.0;
+    bool open = false;
+    bool operator==(const Cone&) const = default;
+};
+
+/// POV-Ray's `disc { center, normal, radius [, hole_radius] }`.
+struct Disc {
+    Vec3 center;
+    Vec3 normal{0.0, 1.0, 0.0};
+    double radius = 1.0;
+    double hole_radius = 0.0;
+    bool operator==(const Disc&) const = default;
+};
+
+/// POV-Ray's `torus { major, minor }` around the y axis at the origin.
+struct Torus {
+    double major = 1.0;
+    double minor = 0.25;
+    bool operator==(const Torus&) const = default;
+};
+
+/// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
+struct Mesh {
+    enum class Kind { Triangle, SmoothTriangle, Mesh, Mesh2 };
+    /// One face: three vertex indices and, for smooth faces, three normal indices (-1 when flat).
+    struct Face {
+        std::array<int, 3> v{};
+        std::array<int, 3> n{-1, -1, -1};
+        bool operator==(const Face&) const = default;
+    };
+    Kind kind = Kind::Mesh;
+    std::vector<Vec3> vertices;
+    std::vector<Vec3> normals;
+    std::vector<Face> faces;
+    Vec3 inside_vector;  ///< zero when not given: the mesh has no inside
+    bool operator==(const Mesh&) const = default;
+};
+
+/// POV-Ray's `polygon { n, points }`: closed sub-polygons (each repeats its first point); later ones cut holes.
+struct Polygon {
+    std::vector<Vec3> points;
+    bool operator==(const Polygon&) const = default;
+};
+
+/// POV-Ray's `quadric { <A,B,C>, <D,E,F>, <G,H,I>, J }`:
+/// A x² + B y² + C z² + D xy + E xz + F yz + G x + H y + I z + J = 0, inside where negative.
+struct Quadric {
+    Vec3 squares;
+    Vec3 mixed;
+    Vec3 linear;
+    double constant = 0.0;
+    bool operator==(const Quadric&) const = default;
+};
+
+/// POV-Ray's `superellipsoid { <e, n> }`: (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) = 1.
+struct Superellipsoid {
+    double e = 1.0;
+    double n = 1.0;
+    bool operator==(const Superellipsoid&) const = default;
+};
+
+/// POV-Ray's `quartic { <a0, ..., a34> }`: the sum of a_i times the monomials x^i y^j z^k (i + j + k <= 4) in
+/// POV-Ray's order (x⁴, x³y, x³z, x³, x²y², ..., z, 1: descending powers of x, then y, then z); inside where negative.
+struct Quartic {
+    std::array<double, 35> coefficients{};
+    bool operator==(const Quartic&) const = default;
+};
+
+/// POV-Ray's `prism { [spline type] [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }`: the 2-D
+/// outline (sub-polygons close when their first curve point repeats; even-odd rule) in the x-z plane (u -> x,
+/// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin). The spline types are those of
+/// `lathe` (quadratic and cubic sub-polygons have a control point before their first and after their last point).
+struct Prism {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    bool conic = false;
+    double height1 = 0.0;
+    double height2 = 1.0;
+    std::vector<Vec3> points;  ///< (u, v, 0)
+    bool open = false;
+    bool operator==(const Prism&) const = default;
+};
+
+/// POV-Ray's `lathe { [linear_spline | quadratic_spline | cubic_spline | bezier_spline] n, <r, y>... }`: the
+/// profile curve (r: distance from the axis, y: height) turned about the y axis.
+struct Lathe {
+    enum class Spline { Linear, Quadratic, Cubic, Bezier };
+    Spline spline = Spline::Linear;
+    std::vector<Vec3> points;  ///< (r, y, 0)
+    bool operator==(const Lathe&) const = default;
+};
+
+/// POV-Ray's `sor { n, <r, y>... [open] }`: a surface of revolution whose squared radius is a cubic in y on each
+/// interval between consecutive points (the first and the last point only set the end slopes); closed by discs at
+/// its lowest and highest point unless open.
+struct Sor {
+    std::vector<Vec3> points;  ///< (r, y, 0)
+    bool open = false;
+    bool operator==(const Sor&) const = default;
+};
+
+/// One glyph of a `text` object: the TrueType outline in em units (closed contours of quadratic B-spline points,
+/// each on or off the curve, in the font's order), placed at `offset` in the text's object space.
+struct TextGlyph {
+    struct Point {
+        double x = 0.0;
+        double y = 0.0;
+        bool on_curve = true;
+        bool operator==(const Point&) const = default;
+    };
+    std::vector<std::vector<Point>> contours;
+    Vec3 offset;
+    bool operator==(const TextGlyph&) const = default;
+};
+
+/// POV-Ray's `text { ttf "font.ttf" "string" thickness, offset }`: the glyphs laid out by the parser as POV-Ray
+/// does (advance, kerning, offset), each extruded from z = 0 to z = thickness; the union of the glyphs.
+struct Text {
+    std::vector<TextGlyph> glyphs;
+    double thickness = 1.0;
+    bool operator==(const Text&) const = default;
+};
+
+}  // namespace wardray::scene

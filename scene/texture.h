@@ -1,0 +1,155 @@
+// Scene description, textures: patterns, pigments, normals, finishes and textures with their maps.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/color.h"
+#include "core/diagnostics.h"
+#include "core/transform.h"
+#include "core/vec3.h"
+
+namespace wardray::scene {
+
+/// POV-Ray's wave types: how a pattern's value is shaped before the map lookup.
+enum class WaveType { Ramp, Triangle, Sine, Scallop, Cubic, Poly };
+
+/// POV-Ray's classic `turbulence` (a displacement by vector fBm) with its octaves, omega and lambda.
+struct Turbulence {
+    Vec3 amount;
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+    bool operator==(const Turbulence&) const = default;
+};
+
+/// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
+/// texture maps).
+struct Pattern {
+    enum class Type {
+        None, Checker, Gradient, Hexagon, Brick, Bozo, Spotted, Granite, Marble, Wood, Agate, Radial, Onion,
+        Leopard, Ripples, Waves, Wrinkles, Bumps, Dents, Crackle, Cells, Boxed, Spherical, Planar, Cylindrical
+    };
+    Type type = Type::None;
+    WaveType wave = WaveType::Ramp;
+    double exponent = 1.0;  ///< poly_wave
+    double frequency = 1.0;
+    double phase = 0.0;
+    int noise_generator = 0;  ///< 0: the scene's global setting
+    Vec3 gradient{1.0, 0.0, 0.0};
+    Vec3 brick_size{8.0, 3.0, 4.5};
+    double mortar = 0.5;
+    double agate_turb = 1.0;
+    Vec3 crackle_form{-1.0, 1.0, 0.0};
+    double crackle_metric = 2.0;
+    double crackle_offset = 0.0;
+    bool crackle_solid = false;
+    std::optional<Turbulence> turbulence;
+    Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
+    bool operator==(const Pattern&) const = default;
+};
+
+/// One `[value colour]` entry of a colour map (values stored as POV-Ray's single-precision floats).
+struct ColorMapEntry {
+    double value = 0.0;
+    Color color;
+    bool operator==(const ColorMapEntry&) const = default;
+};
+
+struct PigmentMapEntry;
+
+/// A pigment: a solid colour, or a pattern looked up in a colour map or a pigment map.
+struct Pigment {
+    Color color;  // POV-Ray compat: the default pigment is black.
+    Pattern pattern;
+    std::vector<ColorMapEntry> color_map;
+    std::vector<PigmentMapEntry> pigment_map;
+    SourceLoc loc;
+
+    /// True for a plain colour: no pattern to evaluate.
+    bool is_solid() const { return pattern.type == Pattern::Type::None; }
+    bool operator==(const Pigment&) const = default;
+};
+
+/// One `[value pigment]` entry of a pigment map.
+struct PigmentMapEntry {
+    double value = 0.0;
+    Pigment pigment;
+    bool operator==(const PigmentMapEntry&) const = default;
+};
+
+struct NormalMapEntry;
+
+/// A normal perturbation: a pattern whose slope tilts the shading normal, scaled by `bump_size`.
+struct Normal {
+    Pattern pattern;        ///< None: the normal is not perturbed
+    double amount = 0.5;    ///< bump_size, or the float after the pattern name
+    double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
+    std::vector<NormalMapEntry> normal_map;
+    SourceLoc loc;
+    bool operator==(const Normal&) const = default;
+};
+
+/// One `[value normal]` entry of a normal map.
+struct NormalMapEntry {
+    double value = 0.0;
+    Normal normal;
+    bool operator==(const NormalMapEntry&) const = default;
+};
+
+/// Surface finish with POV-Ray 3.7's defaults.
+struct Finish {
+    Color ambient{0.1, 0.1, 0.1};
+    Color emission{0.0, 0.0, 0.0};
+    double diffuse = 0.6;
+    double brilliance = 1.0;
+    double phong = 0.0;
+    double phong_size = 40.0;
+    double specular = 0.0;
+    double roughness = 0.05;
+    double metallic = 0.0;  ///< highlight tinted by the pigment
+    Color reflection_min;   ///< reflection at normal incidence (or everywhere without `reflection { a, b }`)
+    Color reflection_max;
+    bool reflection_fresnel = false;
+    double reflection_falloff = 1.0;
+    double reflection_exponent = 1.0;
+    double reflection_metallic = 0.0;
+    bool conserve_energy = false;
+    double irid = 0.0;  ///< thin-film interference amount (`irid { amount thickness turbulence }`)
+    double irid_thickness = 0.0;
+    double irid_turbulence = 0.0;
+    SourceLoc loc;
+    bool operator==(const Finish&) const = default;
+};
+
+struct TextureMapEntry;
+
+/// A texture: pigment, normal and finish, or a pattern choosing between textures (texture_map); further
+/// `texture` statements on the same object are layers painted over it.
+struct Texture {
+    Pigment pigment;
+    Finish finish;
+    Normal normal;
+    Pattern map_pattern;  ///< texture_map's pattern (None: a plain texture)
+    std::vector<TextureMapEntry> texture_map;
+    std::vector<Texture> layers;  ///< layers on top of this one, lowest first
+    bool operator==(const Texture&) const = default;
+};
+
+/// One `[value texture]` entry of a texture map.
+struct TextureMapEntry {
+    double value = 0.0;
+    Texture texture;
+    bool operator==(const TextureMapEntry&) const = default;
+};
+
+/// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
+/// by `tr`. Map entries are evaluated in their parent's pattern space and are left alone.
+inline void transform_texture(Texture& t, const Transform& tr) {
+    t.pigment.pattern.transform = t.pigment.pattern.transform.then(tr);
+    t.normal.pattern.transform = t.normal.pattern.transform.then(tr);
+    t.map_pattern.transform = t.map_pattern.transform.then(tr);
+    for (Texture& layer : t.layers) transform_texture(layer, tr);
+}
+
+}  // namespace wardray::scene

@@ -1,0 +1,279 @@
+// Noise: POV-Ray 3.7's lattice noise (texture.cpp's Noise/DNoise), turbulence, hash and random tables.
+// The tables are regenerated here from POV-Ray's seeds so that every noise-based pattern matches its images.
+#include "texture/noise.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace wardray::texture {
+
+namespace {
+
+// POV-Ray's table of 267 lattice coefficients (texture.cpp, RTable; its odd slots hold half the value before).
+constexpr std::array<double, 267> kRTable = {
+    -1, 0.604974, -0.937102, 0.414115, 0.576226, -0.0161593, 0.432334, 0.103685,
+    0.590539, 0.0286412, 0.46981, -0.84622, -0.0734112, -0.304097, -0.40206, -0.210132,
+    -0.919127, 0.652033, -0.83151, -0.183948, -0.671107, 0.852476, 0.043595, -0.404532,
+    0.75494, -0.335653, 0.618433, 0.605707, 0.708583, -0.477195, 0.899474, 0.490623,
+    0.221729, -0.400381, -0.853727, -0.932586, 0.659113, 0.961303, 0.325948, -0.750851,
+    0.842466, 0.734401, -0.649866, 0.394491, -0.466056, -0.434073, 0.109026, 0.0847028,
+    -0.738857, 0.241505, 0.16228, -0.71426, -0.883665, -0.150408, -0.90396, -0.686549,
+    -0.785214, 0.488548, 0.0246433, 0.142473, -0.602136, 0.375845, -0.00779736, 0.498955,
+    -0.268147, 0.856382, -0.386007, -0.596094, -0.867735, -0.570977, -0.914366, 0.28896,
+    0.672206, -0.233783, 0.94815, 0.895262, 0.343252, -0.173388, -0.767971, -0.314748,
+    0.824308, -0.342092, 0.721431, -0.24004, -0.63653, 0.553277, 0.376272, 0.158984,
+    -0.452659, 0.396323, -0.420676, -0.454154, 0.122179, 0.295857, 0.0664225, -0.202075,
+    -0.724788, 0.453513, 0.224567, -0.908812, 0.176349, -0.320516, -0.697139, 0.742702,
+    -0.900786, 0.471489, -0.133532, 0.119127, -0.889769, -0.23183, -0.669673, -0.046891,
+    -0.803433, -0.966735, 0.475578, -0.652644, 0.0112459, -0.730007, 0.128283, 0.145647,
+    -0.619318, 0.272023, 0.392966, 0.646418, -0.0207675, -0.315908, 0.480797, 0.535668,
+    -0.250172, -0.83093, -0.653773, -0.443809, 0.119982, -0.897642, 0.89453, 0.165789,
+    0.633875, -0.886839, 0.930877, -0.537194, 0.587732, 0.722011, -0.209461, -0.0424659,
+    -0.814267, -0.919432, 0.280262, -0.66302, -0.558099, -0.537469, -0.598779, 0.929656,
+    -0.170794, -0.537163, 0.312581, 0.959442, 0.722652, 0.499931, 0.175616, -0.534874,
+    -0.685115, 0.444999, 0.17171, 0.108202, -0.768704, -0.463828, 0.254231, 0.546014,
+    0.869474, 0.875212, -0.944427, 0.130724, -0.110185, 0.312184, -0.33138, -0.629206,
+    0.0606546, 0.722866, -0.0979477, 0.821561, 0.0931258, -0.972808, 0.0318151, -0.867033,
+    -0.387228, 0.280995, -0.218189, -0.539178, -0.427359, -0.602075, 0.311971, 0.277974,
+    0.773159, 0.592493, -0.0331884, -0.630854, -0.269947, 0.339132, 0.581079, 0.209461,
+    -0.317433, -0.284993, 0.181323, 0.341634, 0.804959, -0.229572, -0.758907, -0.336721,
+    0.605463, -0.991272, -0.0188754, -0.300191, 0.368307, -0.176135, -0.3832, -0.749569,
+    0.62356, -0.573938, 0.278309, -0.971313, 0.839994, -0.830686, 0.439078, 0.66128,
+    0.694514, 0.0565042, 0.54342, -0.438804, -0.0228428, -0.687068, 0.857267, 0.301991,
+    -0.494255, -0.941039, 0.775509, 0.410575, -0.362081, -0.671534, -0.348379, 0.932433,
+    0.886442, 0.868681, -0.225666, -0.062211, -0.0976425, -0.641444, -0.848112, 0.724697,
+    0.473503, 0.998749, 0.174701, 0.559625, -0.029099, -0.337392, -0.958129, -0.659785,
+    0.236042, -0.246937, 0.659449, -0.027512, 0.821897, -0.226215, 0.0181735, 0.500481,
+    -0.420127, -0.427878, 0.566186,
+};
+
+// POV-Ray's 32-bit linear congruential generator as written in its noise set-up: x ← x·1812433253 + 12345,
+// value bits 16..30.
+struct PovLcg {
+    std::uint32_t state;
+    int next() {
+        state = state * 1812433253u + 12345u;
+        return static_cast<int>((state >> 16) & 0x7FFFu);
+    }
+};
+
+struct Tables {
+    std::array<unsigned short, 8192> hash{};
+    std::array<double, 32768> rands{};
+    // Perlin solid noise (generator 3): permutation and unit gradients.
+    static constexpr int kEntries = 2048;
+    std::array<int, 2 * (kEntries + 1)> perm{};
+    std::array<Vec3, 2 * (kEntries + 1)> grad{};
+    std::vector<WaveSource> waves;
+
+    Tables() {
+        // Hash: a Fisher-Yates style shuffle of 0..4095 driven by the LCG seeded with 0, then duplicated.
+        for (int i = 0; i < 4096; ++i) hash[i] = static_cast<unsigned short>(i);
+        PovLcg lcg{0};
+        for (int i = 4095; i >= 0; --i) std::swap(hash[i], hash[lcg.next() % 4096]);
+        for (int i = 0; i < 4096; ++i) hash[4096 + i] = hash[i];
+
+        // POV-Ray compat: PatternRands is boost's uniform_real over mt19937 with its default seed, one 32-bit
+        // draw per value: x / 2^32.
+        std::mt19937 mt;
+        for (double& r : rands) r = static_cast<double>(mt()) / 4294967296.0;
+
+        // Solid noise: random gradients inside the unit ball (rejection), then a pairwise permutation.
+        PovLcg g{1};
+        for (int i = 0; i < kEntries; ++i) {
+            Vec3 v;
+            double s = 0.0;
+            do {
+                for (int j = 0; j < 3; ++j)
+                    v[j] = static_cast<double>((g.next() % (kEntries << 1)) - kEntries) / kEntries;
+                s = dot(v, v);
+            } while (s > 1.0 || s < 1.0e-5);
+            grad[i] = v / std::sqrt(s);
+        }
+        for (int i = 0; i < kEntries; ++i) perm[i] = i;
+        for (int i = kEntries; i > 0; i -= 2) {
+            const int k = perm[i];
+            const int j = g.next() % kEntries;
+            perm[i] = perm[j];
+            perm[j] = k;
+        }
+        for (int i = 0; i < kEntries + 2; ++i) {
+            perm[kEntries + i] = perm[i];
+            grad[kEntries + i] = grad[i];
+        }
+    }
+};
+
+const Tables& tables() {
+    static const Tables t;
+    return t;
+}
+
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr int kNoiseMin = -10000;     // POV-Ray's NOISE_MINX/Y/Z
+
+double s_curve(double t) { return t * t * (3.0 - 2.0 * t); }
+
+// One lattice axis: the wrapped 12-bit cell index and the offset inside the cell.
+// POV-Ray compat: negative coordinates round with (int)(x - (1 - EPSILON)), not floor.
+void lattice(double x, int& cell, double& frac) {
+    const int tmp = x >= 0.0 ? static_cast<int>(x) : static_cast<int>(x - (1.0 - kEpsilon));
+    cell = (tmp - kNoiseMin) & 0xFFF;
+    frac = x - tmp;
+}
+
+// The eight corner contributions of POV-Ray's noise, for coefficient block `block` (0 for Noise; 0, 4, 8 for
+// the x, y, z of DNoise). Each corner adds weight · (R[h]/2 + R[h+1]·dx + R[h+2]·dy + R[h+3]·dz).
+struct Corners {
+    int hash[8];
+    double weight[8];
+    double dx[8], dy[8], dz[8];
+};
+
+Corners corners(const Vec3& p) {
+    const Tables& t = tables();
+    int ix, iy, iz;
+    double fx, fy, fz;
+    lattice(p.x, ix, fx);
+    lattice(p.y, iy, fy);
+    lattice(p.z, iz, fz);
+    const double sx = s_curve(fx), sy = s_curve(fy), sz = s_curve(fz);
+    const double tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
+    auto hash2 = [&](int a, int b) { return static_cast<int>(t.hash[t.hash[a] ^ b]); };
+    const int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy), h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
+    Corners c{};
+    const int hxy[4] = {h00, h10, h01, h11};
+    const double wxy[4] = {tx * ty, sx * ty, tx * sy, sx * sy};
+    const double ox[4] = {fx, fx - 1.0, fx, fx - 1.0};
+    const double oy[4] = {fy, fy, fy - 1.0, fy - 1.0};
+    for (int k = 0; k < 8; ++k) {
+        const int xy = k & 3;
+        const bool upper = k >= 4;
+        c.hash[k] = (t.hash[hxy[xy] ^ (upper ? iz + 1 : iz)] & 0xFF);
+        c.weight[k] = wxy[xy] * (upper ? sz : tz);
+        c.dx[k] = ox[xy];
+        c.dy[k] = oy[xy];
+        c.dz[k] = upper ? fz - 1.0 : fz;
+    }
+    return c;
+}
+
+double corner_sum(const Corners& c, int block) {
+    double sum = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const int h = c.hash[k] + block;
+        sum += c.weight[k] * (0.5 * kRTable[h] + kRTable[h + 1] * c.dx[k] + kRTable[h + 2] * c.dy[k] +
+                              kRTable[h + 3] * c.dz[k]);
+    }
+    return sum;
+}
+
+// Perlin's gradient noise (Perlin 1989, "Hypertexture"), POV-Ray's SolidNoise, about -1..1.
+double solid_noise(const Vec3& p) {
+    const Tables& t = tables();
+    constexpr double kRollover = 10000000.023157213;
+    int b0[3], b1[3];
+    double r0[3], r1[3];
+    for (int a = 0; a < 3; ++a) {
+        const double v = p[a] + kRollover;
+        const int it = static_cast<int>(std::floor(v));
+        b0[a] = it & (Tables::kEntries - 1);
+        b1[a] = (b0[a] + 1) & (Tables::kEntries - 1);
+        r0[a] = v - it;
+        r1[a] = r0[a] - 1.0;
+    }
+    const int i = t.perm[b0[0]], j = t.perm[b1[0]];
+    const int b00 = t.perm[i + b0[1]], b10 = t.perm[j + b0[1]], b01 = t.perm[i + b1[1]], b11 = t.perm[j + b1[1]];
+    const double sx = s_curve(r0[0]), sy = s_curve(r0[1]), sz = s_curve(r0[2]);
+    auto at = [&](int idx, double rx, double ry, double rz) { return dot(t.grad[idx], Vec3{rx, ry, rz}); };
+    auto lerp = [](double s, double a, double b) { return a + s * (b - a); };
+    double layer[2];
+    for (int k = 0; k < 2; ++k) {
+        const int bz = k ? b1[2] : b0[2];
+        const double rz = k ? r1[2] : r0[2];
+        const double a = lerp(sx, at(b00 + bz, r0[0], r0[1], rz), at(b10 + bz, r1[0], r0[1], rz));
+        const double b = lerp(sx, at(b01 + bz, r0[0], r1[1], rz), at(b11 + bz, r1[0], r1[1], rz));
+        layer[k] = lerp(sy, a, b);
+    }
+    return lerp(sz, layer[0], layer[1]);
+}
+
+}  // namespace
+
+double noise(const Vec3& p, int generator) {
+    if (generator == 3) {
+        // POV-Ray compat: 1.59 and 0.985 re-centre Perlin's noise on [0, 1].
+        return std::clamp(0.5 * (1.59 * solid_noise(p) + 0.985), 0.0, 1.0);
+    }
+    double sum = corner_sum(corners(p), 0);
+    if (generator == 2) {
+        // POV-Ray compat: the measured range -1.05242..0.988997 stretched onto [0, 1].
+        sum = (sum + 1.05242) * 0.48985582;
+    } else {
+        sum += 0.5;
+    }
+    return std::clamp(sum, 0.0, 1.0);
+}
+
+Vec3 dnoise(const Vec3& p) {
+    const Corners c = corners(p);
+    return {corner_sum(c, 0), corner_sum(c, 4), corner_sum(c, 8)};
+}
+
+double turbulence(const Vec3& p, const TurbulenceParams& t, int generator) {
+    // fBm: Σ omega^i · noise(lambda^i · p); generators 2 and 3 remap each octave by 2n − 0.5 (the first clamped).
+    double value = generator > 1 ? std::clamp(2.0 * noise(p, generator) - 0.5, 0.0, 1.0) : noise(p, generator);
+    double l = t.lambda;
+    double o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        const double n = noise(p * l, generator);
+        value += o * (generator > 1 ? 2.0 * n - 0.5 : n);
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
+        }
+    }
+    return value;
+}
+
+Vec3 dturbulence(const Vec3& p, const TurbulenceParams& t) {
+    Vec3 result = dnoise(p);
+    double l = t.lambda;
+    double o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        result += o * dnoise(p * l);
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
+        }
+    }
+    return result;
+}
+
+int hash3d(int a, int b, int c) {
+    const auto& h = tables().hash;
+    return h[h[h[a & 0xFFF] ^ (b & 0xFFF)] ^ (c & 0xFFF)];
+}
+
+double pattern_rand(std::size_t i) { return tables().rands[i % 32768]; }
+
+const std::vector<WaveSource>& wave_sources() {
+    static const std::vector<WaveSource> sources = [] {
+        std::vector<WaveSource> w;
+        // POV-Ray's Initialize_Waves: centres from DNoise at (i, 0, 0), frequencies from an LCG.
+        PovLcg lcg{static_cast<std::uint32_t>(-560851967)};
+        for (int i = 0; i < 10; ++i) {
+            WaveSource s;
+            s.center = normalize(dnoise(Vec3{static_cast<double>(i), 0.0, 0.0}));
+            s.frequency = lcg.next() * 0.000030518509476 + 0.01;
+            w.push_back(s);
+        }
+        return w;
+    }();
+    return sources;
+}
+
+}  // namespace wardray::texture

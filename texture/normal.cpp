@@ -1,0 +1,118 @@
+// Normal perturbation: slope patterns sampled on a tetrahedron and the five noise-based normal-only patterns,
+// as POV-Ray 3.7 computes them (normal.cpp there).
+#include "texture/normal.h"
+
+#include <cmath>
+
+#include "texture/noise.h"
+#include "texture/pattern.h"
+
+namespace wardray::texture {
+
+namespace {
+
+using Type = scene::Pattern::Type;
+
+// POV-Ray's sampling directions: the vertices of a regular tetrahedron around the point.
+constexpr Vec3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
+                              {-0.471404521, -0.333333333, 0.816496581},
+                              {-0.471404521, -0.333333333, -0.816496581},
+                              {0.0, 1.0, 0.0}};
+
+bool is_normal_only(Type t) {
+    return t == Type::Bumps || t == Type::Dents || t == Type::Ripples || t == Type::Waves || t == Type::Wrinkles;
+}
+
+// The special normal patterns add a vector to the (pattern-space) normal directly.
+Vec3 normal_only_offset(const scene::Normal& normal, const Vec3& p, int generator) {
+    const scene::Pattern& pat = normal.pattern;
+    switch (pat.type) {
+        case Type::Bumps:
+            return dnoise(p) * normal.amount;
+        case Type::Dents: {
+            const double n = noise(p, generator);
+            return dnoise(p) * (n * n * n * normal.amount);
+        }
+        case Type::Wrinkles: {
+            Vec3 sum;
+            double scale = 1.0;
+            for (int i = 0; i < 10; ++i, scale *= 2.0) {
+                const Vec3 d = dnoise(p * scale);
+                sum += Vec3{std::fabs(d.x / scale), std::fabs(d.y / scale), std::fabs(d.z / scale)};
+            }
+            return sum * normal.amount;
+        }
+        case Type::Ripples:
+        case Type::Waves: {
+            const std::vector<WaveSource>& sources = wave_sources();
+            const double count = static_cast<double>(sources.size());
+            Vec3 sum;
+            for (const WaveSource& s : sources) {
+                const Vec3 d = p - s.center;
+                double len = length(d);
+                if (len == 0.0) len = 1.0;
+                double scalar = 0.0;
+                if (pat.type == Type::Ripples) {
+                    scalar = cycloidal(len * pat.frequency + pat.phase) * normal.amount;
+                } else {
+                    scalar = cycloidal(len * pat.frequency * s.frequency + pat.phase) * normal.amount / s.frequency;
+                }
+                sum += d * (scalar / (len * count));
+            }
+            return sum;
+        }
+        default:
+            return {};
+    }
+}
+
+}  // namespace
+
+Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n) {
+    if (pattern.transform.is_identity()) return normalize(n);
+    // Normals go into pattern space with the transpose of the pattern→world matrix.
+    const auto& m = pattern.transform.matrix();
+    const Vec3 u = normalize(n);
+    const Vec3 t{m[0][0] * u.x + m[1][0] * u.y + m[2][0] * u.z, m[0][1] * u.x + m[1][1] * u.y + m[2][1] * u.z,
+                 m[0][2] * u.x + m[1][2] * u.y + m[2][2] * u.z};
+    return normalize(t);
+}
+
+Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n) {
+    if (pattern.transform.is_identity()) return normalize(n);
+    return normalize(pattern.transform.normal(normalize(n)));
+}
+
+Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator) {
+    const scene::Pattern& pat = normal.pattern;
+    if (pat.type == Type::None) return n;
+    const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
+    const Vec3 tp = warp_point(pat, p);
+    if (!normal.normal_map.empty()) {
+        // normal_map: the entries perturb the normal in this pattern's space and the results are blended.
+        const double value = pattern_value(pat, tp, noise_generator);
+        const auto& map = normal.normal_map;
+        const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        const Vec3 local = warp_normal(pat, n);
+        Vec3 result = perturb_normal(map[m.cur].normal, local, tp, noise_generator);
+        if (m.prev != m.cur) {
+            const Vec3 other = perturb_normal(map[m.prev].normal, local, tp, noise_generator);
+            result = other * (1.0 - m.fraction) + result * m.fraction;
+        }
+        return unwarp_normal(pat, result);
+    }
+    Vec3 local = warp_normal(pat, n);
+    if (is_normal_only(pat.type)) {
+        local += normal_only_offset(normal, tp, generator);
+    } else {
+        // POV-Ray compat: the slope of any other pattern from four samples, scaled by −5 (its fudge factor).
+        const double amount = normal.amount * -5.0 * (0.02 / normal.delta);
+        for (const Vec3& dir : kPyramid) {
+            const double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            local += dir * (v * amount);
+        }
+    }
+    return unwarp_normal(pat, local);
+}
+
+}  // namespace wardray::texture

@@ -1,0 +1,314 @@
+// Pattern: POV-Ray 3.7's pattern functions (pattern.cpp there), re-derived from its documented behaviour and
+// checked against its renders; constants marked "POV-Ray compat" are POV-Ray's own.
+#include "texture/pattern.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "texture/noise.h"
+
+namespace wardray::texture {
+
+namespace {
+
+using Type = scene::Pattern::Type;
+
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+TurbulenceParams turb_params(const scene::Turbulence& t) { return {t.octaves, t.omega, t.lambda}; }
+
+// POV-Ray's FLOOR: floor that mirrors the positive side for negative values.
+double pov_floor(double x) { return x >= 0.0 ? std::floor(x) : (0.0 - std::floor(0.0 - x) - 1.0); }
+
+// POV-Ray compat: density-style patterns map distance d to 1 − d inside [0, 1], 1 below, 0 above.
+double clip_density(double d) {
+    if (d < 0.0) return 1.0;
+    if (d > 1.0) return 0.0;
+    return 1.0 - d;
+}
+
+double triangle_wave(double v) {
+    const double offset = v >= 0.0 ? v - std::floor(v) : v + 1.0 + std::floor(std::fabs(v));
+    return offset >= 0.5 ? 2.0 * (1.0 - offset) : 2.0 * offset;
+}
+
+// The fractional position inside a repeating cell, truncating like C's (int) cast and wrapping negatives.
+double cell_fraction(double x) {
+    double f = x - static_cast<double>(static_cast<int>(x));
+    if (f < 0.0) f += 1.0;
+    return f;
+}
+
+double brick(const scene::Pattern& pat, const Vec3& p) {
+    // POV-Ray compat: the mortar is stored 2·EPSILON thinner and the point shifted by EPSILON + mortar.
+    const double mortar = pat.mortar - 2.0 * kEpsilon;
+    const double fudge = kEpsilon + mortar;
+    const double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
+    const Vec3& size = pat.brick_size;
+    // Horizontal mortar layers.
+    if (cell_fraction(y / size.y) <= mortar / size.y) return 0.0;
+    // Odd and even courses are offset by half a brick along x and z.
+    const bool odd_course = cell_fraction(y / size.y * 0.5) <= 0.5;
+    const double mx = mortar / size.x, mz = mortar / size.z;
+    if (odd_course ? cell_fraction(x / size.x) <= mx : cell_fraction(x / size.x + 0.5) <= mx) return 0.0;
+    if (odd_course ? cell_fraction(z / size.z + 0.5) <= mz : cell_fraction(z / size.z) <= mz) return 0.0;
+    return 1.0;
+}
+
+double hexagon(const Vec3& p) {
+    // Three colours on a grid of half-triangles 0.5 wide and √3/2 tall, six cells per period.
+    constexpr double kXFactor = 0.5;
+    constexpr double kZFactor = 0.866025404;
+    const double x = std::fabs(p.x);
+    const double z = p.z < 0.0 ? 5.196152424 - std::fabs(p.z) : p.z;
+    double xs = x / kXFactor;
+    double zs = z / kZFactor;
+    xs -= std::floor(xs / 6.0) * 6.0;
+    zs -= std::floor(zs / 6.0) * 6.0;
+    const int xm = static_cast<int>(pov_floor(xs)) % 6;
+    const int zm = static_cast<int>(pov_floor(zs)) % 6;
+    static constexpr int kStraightA[6] = {0, 1, 1, 2, 2, 0};  // xm 0 or 5, by zm
+    static constexpr int kStraightB[6] = {2, 2, 0, 0, 1, 1};  // xm 2 or 3
+    static constexpr int kBelow[6] = {0, 2, 1, 0, 2, 1};      // diagonal cells, below the edge
+    static constexpr int kAbove[6] = {2, 1, 0, 2, 1, 0};      // diagonal cells, above the edge
+    if (xm == 0 || xm == 5) return kStraightA[zm];
+    if (xm == 2 || xm == 3) return kStraightB[zm];
+    double xl = xs - xm;
+    const double zl = zs - zm;
+    if ((xm + zm) % 2 == 1) xl = 1.0 - xl;
+    if (xl == 0.0) xl = 0.0001;
+    return (zl / xl) < 1.0 ? kBelow[zm] : kAbove[zm];
+}
+
+double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
+    // Voronoi distances to one random point per unit cube in the 81 cubes within a "3D knight move".
+    const int fx = static_cast<int>(std::floor(p.x - kEpsilon));
+    const int fy = static_cast<int>(std::floor(p.y - kEpsilon));
+    const int fz = static_cast<int>(std::floor(p.z - kEpsilon));
+    const double metric = pat.crackle_metric;
+    auto distance = [&](const Vec3& d) {
+        if (metric == 2.0) return dot(d, d);
+        if (metric == 1.0) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
+        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) + std::pow(std::fabs(d.z), metric);
+    };
+    double d[3] = {INFINITY, INFINITY, INFINITY};
+    Vec3 nearest;
+    for (int ax = -2; ax <= 2; ++ax) {
+        for (int ay = -2; ay <= 2; ++ay) {
+            for (int az = -2; az <= 2; ++az) {
+                if ((std::abs(ax) == 2) + (std::abs(ay) == 2) + (std::abs(az) == 2) > 1) continue;
+                const int cx = fx + ax, cy = fy + ay, cz = fz + az;
+                const std::size_t seed = static_cast<std::size_t>(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
+                const Vec3 point{cx + pattern_rand(seed), cy + pattern_rand(seed + 1), cz + pattern_rand(seed + 2)};
+                const double s = distance(point - p);
+                if (s < d[0]) {
+                    d[2] = d[1];
+                    d[1] = d[0];
+                    d[0] = s;
+                    nearest = point;
+                } else if (s < d[1]) {
+                    d[2] = d[1];
+                    d[1] = s;
+                } else if (s < d[2]) {
+                    d[2] = s;
+                }
+            }
+        }
+    }
+    if (pat.crackle_offset != 0.0) {
+        const double o = metric == 2.0 ? pat.crackle_offset * pat.crackle_offset
+                         : metric == 1.0 ? pat.crackle_offset
+                                         : std::pow(pat.crackle_offset, metric);
+        for (double& v : d) v += o;
+    }
+    double value = 0.0;
+    if (pat.crackle_solid) {
+        value = noise(nearest, generator);
+    } else {
+        const Vec3& form = pat.crackle_form;
+        for (int i = 0; i < 3; ++i) {
+            const double r = metric == 2.0 ? std::sqrt(d[i]) : metric == 1.0 ? d[i] : std::pow(d[i], 1.0 / metric);
+            value += form[i] * r;
+        }
+    }
+    return std::clamp(value, 0.0, 1.0);
+}
+
+double waves_sum(const scene::Pattern& pat, const Vec3& p, bool ripples) {
+    const std::vector<WaveSource>& sources = wave_sources();
+    double sum = 0.0;
+    for (const WaveSource& s : sources) {
+        double len = length(p - s.center);
+        if (len == 0.0) len = 1.0;
+        if (ripples) {
+            sum += cycloidal(len * pat.frequency + pat.phase);
+        } else {
+            sum += cycloidal(len * pat.frequency * s.frequency + pat.phase) / s.frequency;
+        }
+    }
+    const double n = static_cast<double>(sources.size());
+    return ripples ? 0.5 * (1.0 + sum / n) : 0.2 * (2.5 + sum / n);
+}
+
+double wrinkles(const Vec3& p, int generator) {
+    // Nine extra octaves of noise with lambda 2 and omega 0.5, each clipped for generators 2 and 3.
+    auto octave = [&](const Vec3& q) {
+        const double n = noise(q, generator);
+        return generator > 1 ? std::clamp(n * 2.0 - 0.5, 0.0, 1.0) : n;
+    };
+    double value = octave(p);
+    double lambda = 2.0, omega = 0.5;
+    for (int i = 1; i < 10; ++i) {
+        value += omega * octave(p * lambda);
+        lambda *= 2.0;
+        omega *= 0.5;
+    }
+    return value / 2.0;
+}
+
+double granite(const Vec3& p, int generator) {
+    // Six octaves of |1 − 2n| (capped at 0.5) at 4·p, each halved.
+    const Vec3 base = p * 4.0;
+    double value = 0.0, freq = 1.0;
+    for (int i = 0; i < 6; ++i, freq *= 2.0) {
+        double t = 0.0;
+        if (generator == 1) {
+            t = std::fabs(0.5 - noise(base * freq, generator));
+        } else {
+            t = std::min(std::fabs(1.0 - 2.0 * noise(base * freq, generator)), 0.5);
+        }
+        value += t / freq;
+    }
+    return value;
+}
+
+}  // namespace
+
+double cycloidal(double v) {
+    if (v >= 0.0) return std::sin((v - std::floor(v)) * kTwoPi);
+    return 0.0 - std::sin((0.0 - (v + std::floor(0.0 - v))) * kTwoPi);
+}
+
+Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p) {
+    Vec3 q = pattern.transform.is_identity() ? p : pattern.transform.inverse_point(p);
+    if (pattern.turbulence && pattern.type != Type::Marble && pattern.type != Type::Wood) {
+        const scene::Turbulence& t = *pattern.turbulence;
+        if (!(t.amount == Vec3{})) q += dturbulence(q, turb_params(t)) * t.amount;
+    }
+    return q;
+}
+
+double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator) {
+    switch (pat.type) {
+        case Type::None:
+            return 0.0;
+        case Type::Checker: {
+            const int v = static_cast<int>(std::floor(p.x + kEpsilon) + std::floor(p.y + kEpsilon) +
+                                           std::floor(p.z + kEpsilon));
+            return (v & 1) ? 1.0 : 0.0;
+        }
+        case Type::Gradient: {
+            const double v = dot(p, pat.gradient);
+            return v > 1.0 ? std::fmod(v, 1.0) : v;
+        }
+        case Type::Hexagon:
+            return hexagon(p);
+        case Type::Brick:
+            return brick(pat, p);
+        case Type::Bozo:
+        case Type::Spotted:
+        case Type::Bumps:
+            return noise(p, generator);
+        case Type::Dents: {
+            const double n = noise(p, generator);
+            return n * n * n;
+        }
+        case Type::Granite:
+            return granite(p, generator);
+        case Type::Marble: {
+            double turb = 0.0;
+            if (pat.turbulence)
+                turb = pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator);
+            return p.x + turb;
+        }
+        case Type::Wood: {
+            Vec3 q{p.x, p.y, 0.0};
+            if (pat.turbulence) {
+                const scene::Turbulence& t = *pat.turbulence;
+                const Vec3 w = dturbulence(p, turb_params(t));
+                q.x += cycloidal((p.x + w.x) * t.amount.x);
+                q.y += cycloidal((p.y + w.y) * t.amount.y);
+            }
+            return length(q);
+        }
+        case Type::Agate: {
+            const scene::Turbulence t = pat.turbulence.value_or(scene::Turbulence{});
+            const double turb = pat.agate_turb * turbulence(p, turb_params(t), generator);
+            const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+            return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
+        }
+        case Type::Radial:
+            if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+            return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / kTwoPi;
+        case Type::Onion:
+            return std::fmod(length(p), 1.0);
+        case Type::Leopard: {
+            const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+            return s * s;
+        }
+        case Type::Ripples:
+            return waves_sum(pat, p, true);
+        case Type::Waves:
+            return waves_sum(pat, p, false);
+        case Type::Wrinkles:
+            return wrinkles(p, generator);
+        case Type::Crackle:
+            return crackle(pat, p, generator);
+        case Type::Cells: {
+            const int h = hash3d(static_cast<int>(std::floor(p.x + kEpsilon)), static_cast<int>(std::floor(p.y + kEpsilon)),
+                                 static_cast<int>(std::floor(p.z + kEpsilon)));
+            return std::min(pattern_rand(static_cast<std::size_t>(h)), 1.0);
+        }
+        case Type::Boxed:
+            return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+        case Type::Spherical:
+            return clip_density(length(p));
+        case Type::Planar:
+            return clip_density(std::fabs(p.y));
+        case Type::Cylindrical:
+            return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
+    }
+    return 0.0;
+}
+
+double pattern_value(const scene::Pattern& pat, const Vec3& p, int noise_generator) {
+    const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
+    double value = raw_pattern_value(pat, p, generator);
+    // POV-Ray compat: frequency and phase wrap with fmod(…, 1.00001); negative results fold into [0, 1).
+    if (pat.frequency != 0.0) value = std::fmod(value * pat.frequency + pat.phase, 1.00001);
+    if (value < 0.0) value -= std::floor(value);
+    switch (pat.wave) {
+        case scene::WaveType::Ramp:
+            break;
+        case scene::WaveType::Sine:
+            value = (1.0 + cycloidal(value)) * 0.5;
+            break;
+        case scene::WaveType::Triangle:
+            value = triangle_wave(value);
+            break;
+        case scene::WaveType::Scallop:
+            value = std::fabs(cycloidal(value * 0.5));
+            break;
+        case scene::WaveType::Cubic:
+            value = value * value * (3.0 - 2.0 * value);
+            break;
+        case scene::WaveType::Poly:
+            value = std::pow(value, pat.exponent);
+            break;
+    }
+    return value;
+}
+
+}  // namespace wardray::texture

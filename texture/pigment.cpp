@@ -1,0 +1,27 @@
+// Pigment evaluation: pattern value, then colour-map or pigment-map lookup with linear blending (POV-Ray 3.7).
+#include "texture/pigment.h"
+
+#include "texture/pattern.h"
+
+namespace wardray::texture {
+
+Color evaluate_patterned_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator) {
+    const Vec3 tp = warp_point(pigment.pattern, p);
+    const double value = pattern_value(pigment.pattern, tp, noise_generator);
+    if (!pigment.pigment_map.empty()) {
+        // POV-Ray compat: map entries are evaluated at the parent's warped point (they live in its space).
+        const auto& map = pigment.pigment_map;
+        const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        const Color cur = evaluate_pigment(map[m.cur].pigment, tp, noise_generator);
+        if (m.prev == m.cur) return cur;
+        const Color prev = evaluate_pigment(map[m.prev].pigment, tp, noise_generator);
+        return lerp(prev, cur, m.fraction);
+    }
+    const auto& map = pigment.color_map;
+    if (map.empty()) return pigment.color;
+    const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+    if (m.prev == m.cur) return map[m.cur].color;
+    return lerp(map[m.prev].color, map[m.cur].color, m.fraction);
+}
+
+}  // namespace wardray::texture
