@@ -19,7 +19,7 @@
 #include "cache/irradiance_cache.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 #include "texture/noise.h"
 #include "parser/parse.h"
 #include "camera/camera.h"

@@ -9,7 +9,7 @@
 #include <variant>
 #include <vector>
 
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 #include "render/film.h"
 
 namespace wardray::app {

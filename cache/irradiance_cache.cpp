@@ -13,6 +13,20 @@ double largest_error_bound(const scene::RadiositySettings& settings) {
     return settings.error_bound * std::max(1.0, settings.low_error_factor) + 0.25;
 }
 
+/// Neighbour clamping (Křivánek et al. 2006) of a new record against `tree`'s records and back: R_new ≤ R_i +
+/// |p_new − p_i| for the records closer than R_new, then R_i ≤ R_new + |p_i − p_new| for those whose sphere R_i
+/// holds the new point (reach ≥ 1 files them).
+void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
+    tree.for_each_within(record.position, record.radius,
+                         [&](std::uint32_t i) { record.radius = clamped_radius(record, tree.records()[i]); });
+    std::vector<std::uint32_t> candidates;
+    tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
+    for (const std::uint32_t i : candidates) {
+        IrradianceRecord& other = tree.record(i);
+        other.radius = clamped_radius(other, record);
+    }
+}
+
 }  // namespace
 
 TileCache::TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {
@@ -42,17 +56,9 @@ void TileCache::add(IrradianceRecord record) {
     if (record.depth < 0 || record.depth >= m_cache->depth_count()) return;
     record.pass = m_pass;
     m_cache->clamp_new_record(record);
-    // Křivánek et al. 2006 against this tile's own records, both ways (see IrradianceCache::clamp_mutual).
+    // Then against this tile's own records, both ways.
     RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
-    own.for_each_within(record.position, record.radius, [&](std::uint32_t i) {
-        record.radius = std::min(record.radius, own.records()[i].radius + length(own.records()[i].position - record.position));
-    });
-    std::vector<std::uint32_t> candidates;
-    own.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
-    for (const std::uint32_t i : candidates) {
-        IrradianceRecord& other = own.record(i);
-        other.radius = std::min(other.radius, record.radius + length(other.position - record.position));
-    }
+    clamp_both_ways(own, record);
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
@@ -138,22 +144,12 @@ Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, c
 void IrradianceCache::clamp_new_record(IrradianceRecord& record) const {
     // Křivánek et al. 2006, neighbour clamping R_new ≤ R_i + |p_new − p_i|: only records closer than R_new can bind.
     const RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
-    tree.for_each_within(record.position, record.radius, [&](std::uint32_t i) {
-        const IrradianceRecord& other = tree.records()[i];
-        record.radius = std::min(record.radius, other.radius + length(other.position - record.position));
-    });
+    tree.for_each_within(record.position, record.radius,
+                         [&](std::uint32_t i) { record.radius = clamped_radius(record, tree.records()[i]); });
 }
 
 void IrradianceCache::clamp_mutual(IrradianceRecord& record) {
-    clamp_new_record(record);
-    // And R_i ≤ R_new + |p_i − p_new| for the records whose sphere R_i holds the new point (reach ≥ 1 files them).
-    RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
-    std::vector<std::uint32_t> candidates;
-    tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
-    for (const std::uint32_t i : candidates) {
-        IrradianceRecord& other = tree.record(i);
-        other.radius = std::min(other.radius, record.radius + length(other.position - record.position));
-    }
+    clamp_both_ways(m_octrees[static_cast<std::size_t>(record.depth)], record);
 }
 
 void IrradianceCache::add(const IrradianceRecord& record) {

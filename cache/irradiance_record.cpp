@@ -74,17 +74,10 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
 bool neighbour_clamp(IrradianceRecord& a, IrradianceRecord& b) {
     // Křivánek et al. 2006, neighbour clamping: the reuse radius is 1-Lipschitz in position, like the distance to
     // the nearest geometry it estimates.
-    const double d = length(a.position - b.position);
-    bool changed = false;
-    if (a.radius > b.radius + d) {
-        a.radius = b.radius + d;
-        changed = true;
-    }
-    if (b.radius > a.radius + d) {
-        b.radius = a.radius + d;
-        changed = true;
-    }
-    return changed;
+    const double ra = a.radius, rb = b.radius;
+    a.radius = clamped_radius(a, b);
+    b.radius = clamped_radius(b, a);
+    return a.radius != ra || b.radius != rb;
 }
 
 }  // namespace wardray::cache

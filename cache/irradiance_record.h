@@ -1,6 +1,7 @@
 // IrradianceRecord: one cached irradiance value with its reuse radius and gradients, and how a gather becomes one.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "cache/gather.h"
@@ -44,6 +45,11 @@ struct RecordOptions {
 /// the translational gradient scaled down when the radius was clamped up; always finite.
 IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const GatherResult& gathered, int depth,
                              const RadiusLimits& limits, const RecordOptions& options = {});
+
+/// Neighbour clamping (Křivánek et al. 2006), one way: `record`'s radius bounded by R_j + |p − p_j| for `neighbour` j.
+inline double clamped_radius(const IrradianceRecord& record, const IrradianceRecord& neighbour) {
+    return std::min(record.radius, neighbour.radius + length(neighbour.position - record.position));
+}
 
 /// Neighbour clamping (Křivánek et al. 2006): R_a ≤ R_b + |p_a − p_b| and R_b ≤ R_a + |p_a − p_b|.
 /// Returns true when either radius changed.

@@ -1,6 +1,7 @@
 // The user-function stack machine: building programs and evaluating them.
 #include "function/function_vm.h"
 
+#include "core/constants.h"
 #include "function/internal_functions.h"
 
 #include <algorithm>
@@ -13,7 +14,7 @@ namespace wardray::function {
 namespace {
 
 // POV-Ray compat: comparisons in functions use the same tolerance as in expressions.
-constexpr double k_epsilon = 1e-10;
+constexpr double k_epsilon = kPovEpsilon;  // POV-Ray's EPSILON
 constexpr int k_local_stack = 64;
 
 double math1(MathFn1 f, double a) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
 #include "geometry/mesh.h"
 #include "geometry/prism_outline.h"
 
@@ -184,7 +185,9 @@ std::vector<PrismPiece> prism_spline_pieces(const scene::Prism& prism) {
     const int n = static_cast<int>(P.size());
     std::vector<PrismPiece> pieces;
     Vec3 first = P.size() > 1 ? P[1] : Vec3{};
-    auto same = [](const Vec3& a, const Vec3& b) { return std::fabs(a.x - b.x) < 1e-10 && std::fabs(a.y - b.y) < 1e-10; };
+    auto same = [](const Vec3& a, const Vec3& b) {
+        return std::fabs(a.x - b.x) < kPovEpsilon && std::fabs(a.y - b.y) < kPovEpsilon;
+    };
     for (int i = 0; i < n - 1; ++i) {
         PrismPiece piece;
         for (int axis = 0; axis < 2; ++axis) {

@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "geometry/instance.h"
+#include "geometry/shape.h"
 
 namespace wardray::geometry {
 
@@ -32,27 +33,6 @@ float float_up(double x) {
     float f = static_cast<float>(x);
     if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
     return f;
-}
-
-// Entry and exit parameters of the line o + t d through a box, or entry > exit when it misses.
-void slab_range(const Bounds& b, const Vec3& o, const Vec3& d, double& t_enter, double& t_exit) {
-    t_enter = -inf;
-    t_exit = inf;
-    for (int k = 0; k < 3; ++k) {
-        if (d[k] == 0.0) {
-            if (o[k] < b.lower[k] || o[k] > b.upper[k]) {
-                t_enter = inf;
-                t_exit = -inf;
-                return;
-            }
-            continue;
-        }
-        double t0 = (b.lower[k] - o[k]) / d[k];
-        double t1 = (b.upper[k] - o[k]) / d[k];
-        if (t0 > t1) std::swap(t0, t1);
-        t_enter = std::fmax(t_enter, t0);
-        t_exit = std::fmin(t_exit, t1);
-    }
 }
 
 /// Per-query state handed to the callbacks through Embree's context (Embree's documented extension idiom:
@@ -248,7 +228,8 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     // rounding of the scene's size, not of a far camera's, and the padding of the bounds covers it.
     double t_enter = 0.0;
     double t_exit = 0.0;
-    slab_range(*padded_scene_bounds, q.origin, q.direction, t_enter, t_exit);
+    if (!slab_interval(padded_scene_bounds->lower, padded_scene_bounds->upper, q.origin, q.direction, t_enter, t_exit))
+        return;
     const double t_start = std::fmax(q.t_min, t_enter);
     if (!(t_start <= std::fmin(t_exit, q.t_best))) return;
     q.t_shift = t_start;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <tuple>
 
+#include "core/constants.h"
 #include "geometry/polynomial.h"
 
 namespace wardray::geometry {
@@ -15,7 +16,7 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 // POV-Ray compat: its EPSILON, and the DEPTH_TOLERANCE below which a closing disc is left out.
-constexpr double kEpsilon = 1e-10;
+constexpr double kEpsilon = kPovEpsilon;
 constexpr double kDiscTolerance = 1e-4;
 
 double cubic(const std::array<double, 4>& c, double y) { return ((c[3] * y + c[2]) * y + c[1]) * y + c[0]; }

@@ -1,4 +1,5 @@
-// Indirect light: POV-Ray 3.7's radiosity (ComputeAmbient) through wardray's irradiance cache, or brute force.
+// Indirect light: POV-Ray 3.7's radiosity (ComputeAmbient, GatherLight) through wardray's irradiance cache, or
+// brute force, each behind IndirectLight.
 #include <algorithm>
 #include <cmath>
 
@@ -6,31 +7,121 @@
 #include "cache/hemisphere_sampler.h"
 #include "cache/irradiance_cache.h"
 #include "cache/irradiance_record.h"
+#include "core/constants.h"
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "lighting/indirect_light.h"
+#include "lighting/integrator.h"
 #include "texture/pigment.h"
 
 namespace wardray::lighting {
 
 namespace {
 
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
-
 /// POV-Ray compat (GetRecursionSettings): rays per gather halve with each bounce, at least 5.
 int rays_at_depth(const scene::RadiositySettings& rs, int depth) {
     return std::max(5, static_cast<int>(rs.count * std::ldexp(1.0, -depth)));
 }
 
+/// Cache mode: interpolate from the tile's cache view, or gather a new record when too few are valid.
+class CachedIrradiance final : public IndirectLight {
+public:
+    CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint)
+        : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_footprint(footprint) {}
+
+    Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
+                    TraceContext& ctx) const override {
+        const scene::RadiositySettings& rs = *m_scene.global.radiosity;
+        const int depth = state.gi_depth;
+        // Lazy evaluation (Ward, Rubinstein & Clear 1988): reuse the valid records when they cover the point.
+        cache::LookupParams params = cache::lookup_params(rs, depth, ctx.final_pass, weight);
+        params.gradients = m_gradients;
+        cache::Interpolation found;
+        if (ctx.cache) {
+            found = ctx.cache->lookup(p, n, depth, params);
+            if (found.sufficient) return found.irradiance;
+        }
+        // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
+        ++ctx.rays.gathers;
+        const cache::Strata strata = cache::strata_for_count(rays_at_depth(rs, depth));
+        cache::SplitMix64 seeds(ctx.gather_seed++);
+        const cache::GatherResult gathered = cache::gather_seeded(
+            p, n, strata,
+            [&](const Vec3& dir) {
+                cache::RadianceSample sample;
+                sample.radiance = m_tracer.gather_radiance(p, dir, state, 0, ctx, sample.distance);
+                return sample;
+            },
+            seeds.next() ^ static_cast<std::uint64_t>(depth));
+        if (ctx.cache) {
+            const double camera_distance = length(p - m_scene.camera.location);
+            const cache::RadiusLimits limits =
+                cache::radius_limits(rs, depth, camera_distance, m_footprint * camera_distance);
+            cache::RecordOptions options;
+            options.gradients = m_gradients;
+            options.gradient_radius_cap = m_gradients;
+            ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
+        }
+        // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
+        if (found.records > 0)
+            return (found.irradiance * found.coverage + gathered.irradiance) / (found.coverage + 1.0);
+        return gathered.irradiance;
+    }
+
+private:
+    const scene::Scene& m_scene;
+    const GatherTracer& m_tracer;
+    bool m_gradients = true;
+    double m_footprint = 0.0;
+};
+
+/// Reference mode: a Monte Carlo estimate, many rays at the first bounce and one per path deeper.
+class ReferenceIrradiance final : public IndirectLight {
+public:
+    ReferenceIrradiance(const GatherTracer& tracer, int rays) : m_tracer(tracer), m_rays(rays) {}
+
+    Vec3 irradiance(const Vec3& p, const Vec3& n, double, const RayState& state, TraceContext& ctx) const override {
+        // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π) by
+        // stratified Monte Carlo; the first bounce takes all of --gi-rays, each deeper bounce continues its path
+        // with one ray, so a pixel averages --gi-rays independent paths.
+        const int rays = state.gi_depth == 0 ? std::max(1, m_rays) : 1;
+        cache::SplitMix64 rng(cache::seed_from(p, n, state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth));
+        const std::vector<cache::HemisphereSample> samples =
+            cache::stratified_cosine_samples(cache::strata_for_count(rays), rng);
+        Vec3 t, b;
+        cache::orthonormal_basis(n, t, b);
+        ++ctx.rays.gathers;
+        Vec3 sum;
+        for (const cache::HemisphereSample& sample : samples) {
+            const Vec3& d = sample.direction;
+            double distance = 0.0;
+            const Vec3 l = m_tracer.gather_radiance(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx, distance);
+            if (is_finite(l)) sum += l;
+        }
+        return samples.empty() ? Vec3{} : sum / static_cast<double>(samples.size());
+    }
+
+private:
+    const GatherTracer& m_tracer;
+    int m_rays = 256;
+};
+
 }  // namespace
+
+std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
+                                                            bool gradients, double footprint) {
+    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint);
+}
+
+std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays) {
+    return std::make_unique<ReferenceIrradiance>(tracer, rays);
+}
 
 Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,
                           TraceContext& ctx) const {
     const scene::RadiositySettings& rs = *m_scene.global.radiosity;
-    const Vec3& p = s.hit->position;
     // POV-Ray compat: `normal on` gathers around the perturbed normal, otherwise around the true one.
     const Vec3 n = rs.normal ? n_layer : s.raw_normal;
-    Vec3 e = m_options.gi == GiMode::Reference ? reference_irradiance(p, n, state, ctx)
-                                               : cached_irradiance(p, n, weight, state, ctx);
+    Vec3 e = m_indirect->irradiance(s.hit->position, n, weight, state, ctx);
     // POV-Ray compat (ComputeAmbient): gray_threshold mixes toward grey, then brightness scales.
     if (rs.gray_threshold != 0.0) {
         const double g = texture::grey(e);
@@ -52,7 +143,7 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
     RayState next;
     next.level = static_cast<int>(1.5 * (state.gi_depth + 1));
     next.max_level = std::max(state.max_level, next.level + 1);
-    next.weight = std::max(rs.adc_bailout + kEpsilon, std::pow(0.5 * rs.brightness, state.gi_depth + 1));
+    next.weight = std::max(rs.adc_bailout + kPovEpsilon, std::pow(0.5 * rs.brightness, state.gi_depth + 1));
     next.adc_bailout = rs.adc_bailout;
     next.gi_depth = state.gi_depth + 1;
     next.gather_ray = true;
@@ -65,64 +156,6 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
     const double brightest = std::max(l.x, std::max(l.y, l.z));
     if (rs.max_sample > 0.0 && brightest > rs.max_sample) return l * (rs.max_sample / brightest);
     return l;
-}
-
-Vec3 Integrator::cached_irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
-                                   TraceContext& ctx) const {
-    const scene::RadiositySettings& rs = *m_scene.global.radiosity;
-    const int depth = state.gi_depth;
-    // Lazy evaluation (Ward, Rubinstein & Clear 1988): reuse the valid records when they cover the point.
-    cache::LookupParams params = cache::lookup_params(rs, depth, ctx.final_pass, weight);
-    params.gradients = m_options.gradients;
-    cache::Interpolation found;
-    if (ctx.cache) {
-        found = ctx.cache->lookup(p, n, depth, params);
-        if (found.sufficient) return found.irradiance;
-    }
-    // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
-    ++ctx.rays.gathers;
-    const cache::Strata strata = cache::strata_for_count(rays_at_depth(rs, depth));
-    cache::SplitMix64 seeds(ctx.gather_seed++);
-    const cache::GatherResult gathered = cache::gather_seeded(
-        p, n, strata,
-        [&](const Vec3& dir) {
-            cache::RadianceSample sample;
-            sample.radiance = gather_radiance(p, dir, state, 0, ctx, sample.distance);
-            return sample;
-        },
-        seeds.next() ^ static_cast<std::uint64_t>(depth));
-    if (ctx.cache) {
-        const cache::RadiusLimits limits = cache::radius_limits(rs, depth, length(p - m_scene.camera.location),
-                                                                m_options.footprint * length(p - m_scene.camera.location));
-        cache::RecordOptions options;
-        options.gradients = m_options.gradients;
-        options.gradient_radius_cap = m_options.gradients;
-        ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
-    }
-    // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
-    if (found.records > 0) return (found.irradiance * found.coverage + gathered.irradiance) / (found.coverage + 1.0);
-    return gathered.irradiance;
-}
-
-Vec3 Integrator::reference_irradiance(const Vec3& p, const Vec3& n, const RayState& state, TraceContext& ctx) const {
-    // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π) by
-    // stratified Monte Carlo; the first bounce takes all of --gi-rays, each deeper bounce continues its path with
-    // one ray, so a pixel averages --gi-rays independent paths.
-    const int rays = state.gi_depth == 0 ? std::max(1, m_options.reference_rays) : 1;
-    cache::SplitMix64 rng(cache::seed_from(p, n, state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth));
-    const std::vector<cache::HemisphereSample> samples =
-        cache::stratified_cosine_samples(cache::strata_for_count(rays), rng);
-    Vec3 t, b;
-    cache::orthonormal_basis(n, t, b);
-    ++ctx.rays.gathers;
-    Vec3 sum;
-    for (const cache::HemisphereSample& sample : samples) {
-        const Vec3& d = sample.direction;
-        double distance = 0.0;
-        const Vec3 l = gather_radiance(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx, distance);
-        if (is_finite(l)) sum += l;
-    }
-    return samples.empty() ? Vec3{} : sum / static_cast<double>(samples.size());
 }
 
 }  // namespace wardray::lighting

@@ -6,7 +6,10 @@
 #include <numbers>
 
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "core/constants.h"
+#include "lighting/integrator.h"
+#include "lighting/metallic.h"
+#include "media/transmittance.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -14,8 +17,6 @@
 namespace wardray::lighting {
 
 namespace {
-
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 
 double max3(const Vec3& c) { return std::max(c.x, std::max(c.y, c.z)); }
 
@@ -35,10 +36,11 @@ Vec3 reflectivity(const scene::Finish& f, double cos_i, double ior, double& weig
     const Vec3 rmax = f.reflection_max.rgb();
     if (!f.reflection_fresnel) {
         weight *= std::max(max3(rmax), max3(rmin));
-        const double frac = std::fabs(f.reflection_falloff - 1.0) > kEpsilon ? std::pow(1.0 - cos_i, f.reflection_falloff)
-                                                                           : 1.0 - cos_i;
-        if (std::fabs(frac) < kEpsilon) return rmin;
-        if (std::fabs(frac - 1.0) < kEpsilon) return rmax;
+        const double frac = std::fabs(f.reflection_falloff - 1.0) > kPovEpsilon
+                                ? std::pow(1.0 - cos_i, f.reflection_falloff)
+                                : 1.0 - cos_i;
+        if (std::fabs(frac) < kPovEpsilon) return rmin;
+        if (std::fabs(frac - 1.0) < kPovEpsilon) return rmax;
         return rmax * frac + rmin * (1.0 - frac);
     }
     Vec3 r = rmax;
@@ -114,7 +116,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     double trans = 1.0;
     Vec3 top_normal = s.raw_normal;
     // Radiosity: indirect light reaches a surface only below the recursion limit.
-    const bool gi_needed = m_gi_enabled && state.gi_depth < m_scene.global.radiosity->recursion_limit;
+    const bool gi_needed = m_indirect && state.gi_depth < m_scene.global.radiosity->recursion_limit;
     bool gi_done = false;
     Vec3 indirect_light;
     std::array<LayerReflection, kMaxLayers> reflections;  // filled before use
@@ -149,13 +151,9 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
             else ior = interior.ior / m_scene.objects[in.objects[in.size - 1]].interior.ior;
         }
         r.reflectivity = reflectivity(f, cos_i, ior, r.weight);
-        if (f.reflection_metallic != 0.0) {
-            // Metallic reflection is tinted by the pigment away from grazing angles.
-            const double x = std::fabs(std::acos(std::clamp(cos_i, -1.0, 1.0))) / (std::numbers::pi / 2.0);
-            const double fr = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
-            r.reflectivity = r.reflectivity * (Vec3{1.0, 1.0, 1.0} + (pigment - Vec3{1.0, 1.0, 1.0}) *
-                                                                       (f.reflection_metallic * (1.0 - fr)));
-        }
+        // Metallic reflection is tinted by the pigment away from grazing angles.
+        if (f.reflection_metallic != 0.0)
+            r.reflectivity = r.reflectivity * metallic_tint(pigment, f.reflection_metallic, cos_i);
 
         // POV-Ray 3.7: the layer's own light is scaled by its opacity, 1 − filter − transmit.
         const double opacity = 1.0 - pc.filter - pc.transmit;
@@ -193,20 +191,10 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     if (trans > bailout) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
+        // POV-Ray's interior fade over the distance travelled inside.
         Vec3 fade{1.0, 1.0, 1.0};
-        if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kEpsilon) {
-            // POV-Ray's interior fade over the distance travelled inside: exponential for fade_power ≥ 1000,
-            // else fade_color + (1 − fade_color) / (1 + (d/fade_distance)^fade_power).
-            const Vec3 fc = interior.fade_color.rgb();
-            const Vec3 one{1.0, 1.0, 1.0};
-            if (interior.fade_power >= 1000.0) {
-                const Vec3 k = (one - fc) * (-s.depth / interior.fade_distance);
-                fade = Vec3{std::exp(k.x), std::exp(k.y), std::exp(k.z)};
-            } else {
-                const double att = 1.0 + std::pow(s.depth / interior.fade_distance, interior.fade_power);
-                fade = fc + (one - fc) / att;
-            }
-        }
+        if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kPovEpsilon)
+            fade = media::interior_fade(interior, s.depth);
         colour += total_internal ? fade * through : fade * through * filter;
     }
 
@@ -214,7 +202,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         const LayerReflection& r = reflections[i];
         const scene::Finish& finish = layers[i]->finish;
         // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
-        if (total_internal && length(r.normal - top_normal) <= kEpsilon) continue;
+        if (total_internal && length(r.normal - top_normal) <= kPovEpsilon) continue;
         if (r.reflectivity == Vec3{}) continue;
         Vec3 reflected = reflect(s, r.normal, r.weight, finish, state, ctx);
         if (r.exponent != 1.0) {
@@ -274,7 +262,7 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const s
     const Vec3& p = s.hit->position;
     const double offset = m_geometry.self_intersection_offset(p);
     ++ctx.rays.secondary;
-    if (std::fabs(ior - 1.0) < kEpsilon) {
+    if (std::fabs(ior - 1.0) < kPovEpsilon) {
         // POV-Ray compat: light passing straight through continues the same ray (no new trace level).
         const geometry::Ray ray{p, s.direction, offset, 1e30, geometry::RayKind::Camera};
         return trace(ray, next, true, ctx);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -402,7 +403,7 @@ void Parser::directive_switch(const Token& tok) {
         bool match = false;
         if (stop.text == "case") {
             // POV-Ray compat: #case compares with the same tolerance as '='.
-            match = std::fabs(a - value) < 1e-10;
+            match = std::fabs(a - value) < kPovEpsilon;
         } else {
             expect(",");
             const double b = parse_float();

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <unordered_set>
 
+#include "core/constants.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -15,7 +16,7 @@ namespace wardray::parser {
 namespace {
 
 // POV-Ray compat: '=' and '!=' compare with this tolerance.
-constexpr double k_epsilon = 1e-10;
+constexpr double k_epsilon = kPovEpsilon;  // POV-Ray's EPSILON
 
 Numeric combine(const Numeric& a, const Numeric& b, double (*op)(double, double)) {
     const int n = std::max(a.n, b.n);

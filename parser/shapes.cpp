@@ -2,6 +2,7 @@
 // (object modifiers are in statements.cpp).
 #include <cmath>
 
+#include "core/constants.h"
 #include "parser/parser.h"
 #include "parser/truetype.h"
 
@@ -326,8 +327,8 @@ Sor Parser::parse_sor_parameters(const Token& kw) {
         sor.points.push_back({uv.x, uv.y, 0.0});
     }
     for (int i = 0; i + 3 < n; ++i)
-        if (std::fabs(sor.points[i + 2].y - sor.points[i].y) < 1e-10 ||
-            std::fabs(sor.points[i + 3].y - sor.points[i + 1].y) < 1e-10)
+        if (std::fabs(sor.points[i + 2].y - sor.points[i].y) < kPovEpsilon ||
+            std::fabs(sor.points[i + 3].y - sor.points[i + 1].y) < kPovEpsilon)
             fail(kw, "incorrect point in surface of revolution: two heights too close");
     if (is_word(peek(), "open")) {
         next();

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 #include "scene/scene.h"
 #include "render/film.h"
 

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <random>
 
+#include "core/constants.h"
+
 namespace wardray::texture {
 
 namespace {
@@ -112,7 +114,7 @@ const Tables& tables() {
     return t;
 }
 
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr double kEpsilon = kPovEpsilon;  // POV-Ray's EPSILON
 constexpr int kNoiseMin = -10000;     // POV-Ray's NOISE_MINX/Y/Z
 
 double s_curve(double t) { return t * t * (3.0 - 2.0 * t); }

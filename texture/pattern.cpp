@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/constants.h"
 #include "texture/noise.h"
 
 namespace wardray::texture {
@@ -14,7 +15,7 @@ namespace {
 
 using Type = scene::Pattern::Type;
 
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr double kEpsilon = kPovEpsilon;  // POV-Ray's EPSILON
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 TurbulenceParams turb_params(const scene::Turbulence& t) { return {t.octaves, t.omega, t.lambda}; }

@@ -1,5 +1,5 @@
 // Direct lighting against analytic answers: the cosine law, fading, spotlight profile, shadows, ambient rules.
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 
 #include <gtest/gtest.h>
 

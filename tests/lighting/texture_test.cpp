@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 #include "texture/noise.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"

@@ -14,7 +14,7 @@
 
 #include "cache/irradiance_cache.h"
 #include "geometry/scene_geometry.h"
-#include "lighting/direct_lighting.h"
+#include "lighting/integrator.h"
 #include "parser/parse.h"
 #include "render/film.h"
 #include "render/image_metrics.h"

@@ -1,0 +1,42 @@
+// IndirectLight: how the integrator gets indirect irradiance (POV-Ray's radiosity), without knowing how it is made.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "lighting/trace_context.h"
+#include "scene/scene.h"
+
+namespace wardray::lighting {
+
+/// The integrator's side of a gather: the radiance arriving at `p` along the unit `dir`, traced as POV-Ray's
+/// radiosity rays are (a new trace level and weight from `state`'s bounce depth); `distance` receives the hit
+/// distance (+infinity for none).
+class GatherTracer {
+public:
+    virtual ~GatherTracer() = default;
+    /// One gather ray's radiance; `path_seed` tells independent reference paths apart.
+    virtual Vec3 gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
+                                 TraceContext& ctx, double& distance) const = 0;
+};
+
+/// The indirect irradiance at a surface point, before POV-Ray's brightness and gray_threshold (the integrator
+/// applies those): the cosine-weighted mean of incoming radiance, POV-Ray's normalisation (no π).
+class IndirectLight {
+public:
+    virtual ~IndirectLight() = default;
+    /// Irradiance at `p` around the unit normal `n`; `weight` is the shading ray's weight (POV-Ray lowers the
+    /// cache's accuracy for rays that matter little).
+    virtual Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
+                            TraceContext& ctx) const = 0;
+};
+
+/// Ward's irradiance cache in the tile's view `TraceContext::cache` (Ward, Rubinstein & Clear 1988): interpolate
+/// where valid records cover the point, else gather a new record. `footprint` as in IntegratorOptions.
+std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
+                                                            bool gradients, double footprint);
+
+/// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper.
+std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays);
+
+}  // namespace wardray::lighting

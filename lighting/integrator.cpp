@@ -1,0 +1,169 @@
+// Integrator: POV-Ray 3.7's ray recursion (TraceRay) and the direct light of a finish (diffuse, phong, specular,
+// metallic, iridescence); surface.cpp shades textures, indirect.cpp holds the indirect light.
+#include "lighting/integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "geometry/scene_geometry.h"
+#include "lighting/metallic.h"
+#include "media/atmosphere.h"
+#include "texture/noise.h"
+
+namespace wardray::lighting {
+
+bool InteriorStack::contains(std::uint32_t o) const {
+    for (int i = 0; i < size; ++i)
+        if (objects[i] == o) return true;
+    return false;
+}
+
+void InteriorStack::push(std::uint32_t o) {
+    if (size < kMax) objects[size++] = o;
+}
+
+bool InteriorStack::remove(std::uint32_t o) {
+    for (int i = size - 1; i >= 0; --i) {
+        if (objects[i] != o) continue;
+        for (int j = i; j + 1 < size; ++j) objects[j] = objects[j + 1];
+        --size;
+        return true;
+    }
+    return false;
+}
+
+Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
+                       IntegratorOptions options)
+    : m_scene(scene),
+      m_geometry(geometry),
+      m_options(options),
+      m_lights(scene, geometry),
+      m_sky(scene),
+      m_atmosphere(media::make_atmosphere(scene)) {
+    // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
+    // `#version 3.6` (or older) still gets it.
+    m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
+    m_noise_generator = scene.global.noise_generator;
+    // Indirect light only for a radiosity block with --gi on: through the cache, or by brute force.
+    if (scene.global.radiosity.has_value() && options.gi == GiMode::Cache)
+        m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
+    else if (scene.global.radiosity.has_value() && options.gi == GiMode::Reference)
+        m_indirect = make_reference_irradiance(*this, options.reference_rays);
+    // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
+    // inside too), which changes the relative indices of refraction. Containment is found by the parity of
+    // crossings along one ray from the camera.
+    {
+        std::vector<int> crossings(scene.objects.size(), 0);
+        const Vec3 origin = scene.camera.location;
+        const Vec3 dir = normalize(Vec3{0.1234, 0.9871, 0.0456});
+        double t0 = geometry.self_intersection_offset(origin);
+        for (int i = 0; i < 4096; ++i) {
+            const std::optional<geometry::Hit> hit =
+                geometry.intersect(geometry::Ray{origin, dir, t0, 1e30, geometry::RayKind::Camera});
+            if (!hit) break;
+            ++crossings[hit->object];
+            t0 = hit->t + geometry.self_intersection_offset(hit->position);
+        }
+        for (std::size_t o = 0; o < crossings.size(); ++o)
+            if (crossings[o] % 2 == 1) m_camera_interiors.push(static_cast<std::uint32_t>(o));
+    }
+}
+
+Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
+    ++ctx.rays.camera;
+    RayState state;
+    state.adc_bailout = m_scene.global.adc_bailout;
+    state.max_level = m_scene.global.max_trace_level;
+    state.interiors = m_camera_interiors;
+    return trace(ray, state, false, ctx);
+}
+
+Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool continued, TraceContext& ctx,
+                       double* hit_distance) const {
+    if (hit_distance) *hit_distance = INFINITY;
+    // POV-Ray compat: a ray beyond max_trace_level, or weighing less than adc_bailout, is black.
+    if (in.level >= in.max_level || in.weight < in.adc_bailout) return {};
+    RayState state = in;
+    if (!continued) ++state.level;
+    const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
+    const double scale = length(ray.direction);
+    const Vec3 direction = ray.direction / scale;
+    Vec3 colour;
+    double depth = INFINITY;
+    if (hit) {
+        depth = hit->t * scale;
+        if (hit_distance) *hit_distance = depth;
+        colour = shade(*hit, direction, depth, state, ctx);
+    } else {
+        colour = m_sky.radiance(direction);
+    }
+    if (m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    return colour;
+}
+
+Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                              const Vec3& n, TraceContext& ctx) const {
+    Vec3 colour;
+    const Vec3& view_dir = s.direction;
+    const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
+    for (const scene::Light& light : m_scene.lights) {
+        Vec3 to_light;
+        // POV-Ray compat (GetRadiosityQualityFlags): on a gather ray's path area lights are point lights.
+        const Vec3 arriving =
+            m_lights.light_arriving(light, s.hit->position, n, *s.interiors, s.highlights, to_light, ctx);
+        if (arriving == Vec3{}) continue;
+        const double cos_i = dot(n, to_light);
+        Vec3 light_colour;  // this light's diffuse and highlights
+        // Lambert with POV-Ray's brilliance exponent: diffuse · opacity · cos^brilliance.
+        if (finish.diffuse > 0.0) {
+            const double shape =
+                finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
+            light_colour += pigment * arriving * (finish.diffuse * opacity * shape);
+        }
+        // POV-Ray compat: shadowless (fill) lights cause no highlights, nor does any light on a gather ray's path.
+        if (light.shadowless || !s.highlights) {
+            if (finish.irid > 0.0)
+                light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
+            colour += light_colour;
+            continue;
+        }
+        // POV-Ray's metallic highlight tint.
+        const Vec3 tint = finish.metallic > 0.0 ? metallic_tint(pigment, finish.metallic, cos_i) : Vec3{1.0, 1.0, 1.0};
+        // Phong highlight: phong · cos(reflected, light)^phong_size (POV-Ray drops tiny values for sizes ≥ 60).
+        if (finish.phong > 0.0) {
+            const double c = dot(reflected, to_light);
+            if (c > 0.0 && (finish.phong_size < 60.0 || c > 0.0008))
+                light_colour += arriving * tint * (finish.phong * std::pow(c, finish.phong_size));
+        }
+        // Blinn specular: specular · cos(half vector, normal)^(1/roughness).
+        if (finish.specular > 0.0) {
+            const Vec3 half = normalize(to_light - view_dir);
+            const double c = dot(half, n);
+            if (c > 0.0) light_colour += arriving * tint * (finish.specular * std::pow(c, 1.0 / finish.roughness));
+        }
+        if (finish.irid > 0.0)
+            light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
+        colour += light_colour;
+    }
+    return colour;
+}
+
+Vec3 Integrator::iridescence(const scene::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+                             const Vec3& p) const {
+    // Thin-film interference: phase 2π·thickness·(|cos θ_light| + |cos θ_eye|) per wavelength; the film
+    // thickness varies with POV-Ray's 5-octave turbulence when `turbulence` is given.
+    double film = finish.irid_thickness;
+    if (finish.irid_turbulence != 0.0) {
+        const double t = 2.0 * texture::turbulence(p, texture::TurbulenceParams{5, 0.5, 2.0}, m_noise_generator) - 1.0;
+        film *= 1.0 + t * finish.irid_turbulence;
+    }
+    // POV-Ray's default irid_wavelength (global_settings) is rgb <0.70, 0.52, 0.48>.
+    constexpr double kWavelength[3] = {0.70, 0.52, 0.48};
+    const double phase =
+        2.0 * std::numbers::pi * film * (std::fabs(dot(n, to_light)) + std::fabs(dot(n, view_dir)));
+    return {1.0 + finish.irid * std::cos(phase / kWavelength[0]), 1.0 + finish.irid * std::cos(phase / kWavelength[1]),
+            1.0 + finish.irid * std::cos(phase / kWavelength[2])};
+}
+
+}  // namespace wardray::lighting

@@ -1,0 +1,119 @@
+// Integrator: the colour seen along a ray, from POV-Ray 3.7's lighting model (textures, finishes, reflection,
+// refraction, transparency), reaching light sources, indirect light and the atmosphere through their own classes.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/vec3.h"
+#include "lighting/indirect_light.h"
+#include "lighting/light_sampler.h"
+#include "lighting/trace_context.h"
+#include "media/medium.h"
+#include "media/sky.h"
+#include "scene/scene.h"
+
+namespace wardray::geometry {
+class SceneGeometry;
+struct Ray;
+struct Hit;
+}  // namespace wardray::geometry
+
+namespace wardray::lighting {
+
+/// How indirect light is computed (`--gi`).
+enum class GiMode { Off, Cache, Reference };
+
+/// How the integrator computes indirect light, from the command line.
+struct IntegratorOptions {
+    GiMode gi = GiMode::Off;
+    int reference_rays = 256;  ///< --gi-rays: paths per pixel in reference mode
+    bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
+    /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
+    /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
+    double footprint = 0.0;
+};
+
+/// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it
+/// refers to the scene and geometry, which must outlive it, and is neither copied nor moved.
+class Integrator final : private GatherTracer {
+public:
+    /// Prepares the light sources, indirect light (when the scene has radiosity and --gi is not off), the sky and
+    /// the atmosphere, and finds the objects the camera is inside.
+    Integrator(const scene::Scene& scene, const geometry::SceneGeometry& geometry, IntegratorOptions options);
+    Integrator(const Integrator&) = delete;
+    Integrator& operator=(const Integrator&) = delete;
+
+    /// Linear RGB radiance arriving along a camera ray (the background where it hits nothing).
+    Vec3 trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const;
+
+    /// True when indirect light goes through an irradiance cache that the renderer must fill in passes.
+    bool uses_cache() const { return m_indirect && m_options.gi == GiMode::Cache; }
+
+    /// Warnings about what this integrator leaves out of the picture (reported once per render).
+    const std::vector<std::string>& limitations() const { return m_limitations; }
+
+private:
+    /// Where a texture is being shaded: the surface point, its normals and the ray that found it.
+    struct Surface {
+        const geometry::Hit* hit = nullptr;
+        const scene::Object* object = nullptr;  ///< the primitive hit (its texture applies)
+        Vec3 p_texture;                           ///< the point textures are evaluated at (enclosing space)
+        Vec3 raw_normal;                          ///< unit, turned to face the incoming ray
+        Vec3 direction;                           ///< unit direction of the incoming ray
+        double depth = 0.0;                       ///< distance from the ray's origin
+        const InteriorStack* interiors = nullptr;  ///< the interiors the incoming ray is in
+        /// POV-Ray compat: false on gather rays' paths, which see no phong or specular and area lights as points.
+        bool highlights = true;
+    };
+
+    /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then the atmosphere);
+    /// `hit_distance`, when given, receives the distance to the surface hit (+infinity for none).
+    Vec3 trace(const geometry::Ray& ray, const RayState& state, bool continued, TraceContext& ctx,
+               double* hit_distance = nullptr) const;
+    /// POV-Ray's ComputeAmbient: the indirect irradiance at the surface for the normal `n_layer` (used when the
+    /// radiosity block says `normal on`), times brightness and mixed toward grey by gray_threshold.
+    Vec3 indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,
+                  TraceContext& ctx) const;
+    /// POV-Ray's GatherLight, for the indirect light: one gather ray traced from `p` along `dir`.
+    Vec3 gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
+                         TraceContext& ctx, double& distance) const override;
+    /// The colour of the surface at `hit`, `depth` along the unit `direction`.
+    Vec3 shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
+               TraceContext& ctx) const;
+    /// POV-Ray's ComputeOneTextureColour: a texture_map blends the lit colours of its entries.
+    Vec3 shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
+                       const RayState& state, TraceContext& ctx) const;
+    /// POV-Ray's ComputeLightedTexture: the layers of a plain texture, then refraction and reflection.
+    Vec3 shade_layers(const scene::Texture& texture, const Surface& s, const std::vector<const scene::Pattern*>& warps,
+                      const RayState& state, TraceContext& ctx) const;
+    /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
+    Vec3 direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                      const Vec3& n, TraceContext& ctx) const;
+    /// A reflected ray's colour (POV-Ray's ComputeReflection, with its fix-ups for bumped normals).
+    Vec3 reflect(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
+                 TraceContext& ctx) const;
+    /// POV-Ray's ComputeIridColour: the thin-film interference factor for light arriving along `to_light` and
+    /// leaving toward the viewer along −`view_dir`.
+    Vec3 iridescence(const scene::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,
+                     const Vec3& p) const;
+    /// A refracted or transmitted ray's colour; sets `total_internal` when the ray reflects instead.
+    Vec3 refract(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
+                 bool& total_internal, TraceContext& ctx) const;
+
+    const scene::Scene& m_scene;
+    const geometry::SceneGeometry& m_geometry;
+    IntegratorOptions m_options;
+    LightSampler m_lights;
+    std::unique_ptr<const IndirectLight> m_indirect;  ///< null without a radiosity block or with --gi=off
+    media::Sky m_sky;
+    std::unique_ptr<const media::Medium> m_atmosphere;  ///< null when the scene has no fog
+    bool m_ambient_is_light = true;
+    int m_noise_generator = 2;
+    InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them
+    std::vector<std::string> m_limitations;
+};
+
+}  // namespace wardray::lighting

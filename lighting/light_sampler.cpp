@@ -1,0 +1,252 @@
+// LightSampler: POV-Ray 3.7's light sources (spot, cylinder, fade), shadows filtered through transparent objects
+// and its adaptive area lights.
+#include "lighting/light_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cache/hemisphere_sampler.h"
+#include "core/constants.h"
+#include "geometry/scene_geometry.h"
+#include "media/transmittance.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
+
+namespace wardray::lighting {
+
+namespace {
+
+constexpr double kDegrees = std::numbers::pi / 180.0;
+
+// POV-Ray compat: the spotlight edge is a cubic (smoothstep) ramp in cos α between falloff and radius.
+double smooth_ramp(double low, double high, double x) {
+    if (x <= low) return 0.0;
+    if (x >= high) return 1.0;
+    const double t = (x - low) / (high - low);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+bool pigment_opaque(const scene::Pigment& p) {
+    if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
+    for (const auto& e : p.color_map)
+        if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
+    for (const auto& e : p.pigment_map)
+        if (!pigment_opaque(e.pigment)) return false;
+    return true;
+}
+
+bool texture_opaque(const scene::Texture& t) {
+    if (!t.texture_map.empty()) {
+        for (const auto& e : t.texture_map)
+            if (!texture_opaque(e.texture)) return false;
+        return true;
+    }
+    // POV-Ray compat: only the layers' pigments decide whether light passes.
+    if (!pigment_opaque(t.pigment)) return false;
+    for (const auto& layer : t.layers)
+        if (!texture_opaque(layer)) return false;
+    return true;
+}
+
+bool object_opaque(const scene::Object& o) {
+    if (!texture_opaque(o.texture)) return false;
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const scene::Object& child : csg->children)
+            if (!object_opaque(child)) return false;
+    return true;
+}
+
+}  // namespace
+
+LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry)
+    : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator) {
+    // Shadow rays need to look through objects only when something lets light pass.
+    m_opaque.reserve(scene.objects.size());
+    for (const scene::Object& o : scene.objects) {
+        const bool opaque = object_opaque(o);
+        m_opaque.push_back(opaque ? 1 : 0);
+        m_any_transparent = m_any_transparent || !opaque;
+    }
+}
+
+Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) const {
+    if (!texture.texture_map.empty()) {
+        const Vec3 tp = texture::warp_point(texture.map_pattern, p);
+        const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
+        const auto& map = texture.texture_map;
+        const texture::MapLookup m =
+            texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        const Vec3 cur = texture_filter(map[m.cur].texture, tp);
+        if (m.prev == m.cur) return cur;
+        return cur * m.fraction + texture_filter(map[m.prev].texture, tp) * (1.0 - m.fraction);
+    }
+    Vec3 filter = media::filter_colour(texture::evaluate_pigment(texture.pigment, p, m_noise_generator));
+    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p);
+    return filter;
+}
+
+Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
+                                 TraceContext& ctx) const {
+    // POV-Ray walks the shadow ray through every surface it crosses, multiplying their filter colours and the
+    // fade of the interiors it leaves.
+    Vec3 filter{1.0, 1.0, 1.0};
+    double t_origin = 0.0;
+    double t0 = m_geometry.self_intersection_offset(p);
+    const double t1 = distance - t0;
+    for (int crossing = 0; crossing < 64 && t0 < t1; ++crossing) {
+        ++ctx.rays.shadow;
+        const geometry::Ray ray{p, dir, t0, t1, geometry::RayKind::Shadow};
+        const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
+        if (!hit) break;
+        if (m_opaque[hit->object]) return {};
+        const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
+        filter = filter * texture_filter(object.texture, hit->position);
+        const scene::Interior& interior = m_scene.objects[hit->object].interior;
+        if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
+            std::fabs(interior.fade_distance) > kPovEpsilon)
+            filter = filter * media::interior_fade(interior, hit->t - t_origin);
+        // Entering adds the interior, leaving removes it (POV-Ray's ComputeShadowMedia bookkeeping).
+        if (interiors.size == 0 || !interiors.remove(hit->object)) interiors.push(hit->object);
+        if (max_abs_component(filter) < kPovEpsilon) return {};
+        t_origin = hit->t;
+        t0 = hit->t + m_geometry.self_intersection_offset(hit->position);
+    }
+    return filter;
+}
+
+Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n,
+                                  const InteriorStack& interiors, bool area_lights, Vec3& to_light,
+                                  TraceContext& ctx) const {
+    using Type = scene::Light::Type;
+    double distance = 0.0;
+    if (light.type == Type::Parallel || light.type == Type::Cylinder) {
+        // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
+        to_light = normalize(light.position - light.point_at);
+        distance = dot(light.position - p, to_light);
+        if (distance <= 0.0) return {};
+    } else {
+        const Vec3 d = light.position - p;
+        distance = length(d);
+        if (distance <= 0.0) return {};
+        to_light = d / distance;
+    }
+    // POV-Ray compat: lights at grazing angles below EPSILON do not reach the surface.
+    if (dot(n, to_light) < kPovEpsilon) return {};
+
+    double attenuation = 1.0;
+    if (light.type == Type::Spot) {
+        // POV-Ray: cos α^tightness times the ramp from falloff (dark) to radius (full), angles in degrees.
+        const Vec3 axis = normalize(light.point_at - light.position);
+        const double cos_alpha = dot(-to_light, axis);
+        const double cos_radius = std::cos(light.radius * kDegrees);
+        const double cos_falloff = std::cos(light.falloff * kDegrees);
+        if (cos_alpha <= cos_falloff) return {};
+        if (light.tightness > 0.0) attenuation *= std::pow(cos_alpha, light.tightness);
+        if (cos_alpha < cos_radius) attenuation *= smooth_ramp(cos_falloff, cos_radius, cos_alpha);
+    } else if (light.type == Type::Cylinder) {
+        // POV-Ray's cylinder light: only points ahead of the light and within `falloff` of its axis are lit,
+        // (1 − d/falloff)^tightness, with the same cubic ramp between radius and falloff (d: distance from the axis).
+        const Vec3 axis = normalize(light.point_at - light.position);
+        const Vec3 v = p - light.position;
+        const double k = dot(v, axis);
+        if (k <= 0.0) return {};
+        const double d = length(v - axis * k);
+        if (!(d < light.falloff)) return {};
+        const double closeness = 1.0 - d / light.falloff;
+        attenuation *= std::pow(closeness, light.tightness);
+        if (light.radius > 0.0 && d > light.radius)
+            attenuation *= smooth_ramp(0.0, 1.0 - light.radius / light.falloff, closeness);
+    }
+    if (light.fade_distance > 0.0 && light.fade_power > 0.0) {
+        // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); no inverse-square law otherwise.
+        attenuation *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
+    }
+    if (attenuation <= 0.0) return {};
+
+    const Vec3 colour = light.color.rgb() * attenuation;
+    if (light.shadowless) return colour;
+    if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
+        light.type != Type::Cylinder)
+        return area_light_shadow(light, colour, p, interiors, ctx);
+    return colour * shadow_towards(p, to_light, distance, interiors, ctx);
+}
+
+Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
+                                  TraceContext& ctx) const {
+    if (m_any_transparent) return shadow_filter(p, dir, distance, interiors, ctx);
+    const double offset = m_geometry.self_intersection_offset(p);
+    geometry::Ray shadow{p, dir, offset, distance - offset, geometry::RayKind::Shadow};
+    ++ctx.rays.shadow;
+    if (shadow.t_max > shadow.t_min && m_geometry.occluded(shadow)) return {};
+    return {1.0, 1.0, 1.0};
+}
+
+Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
+                                     const InteriorStack& interiors, TraceContext& ctx) const {
+    const int n1 = light.area_size1;
+    const int n2 = light.area_size2;
+    Vec3 axis1 = light.area_axis1;
+    Vec3 axis2 = light.area_axis2;
+    if (light.orient) {
+        // POV-Ray compat: `orient` turns the light's square to face the point, both axes as long as axis1.
+        const Vec3 d = normalize(light.position - p);
+        const Vec3 helper = std::fabs(std::fabs(d.z) - 1.0) < 0.01 ? Vec3{0.0, 1.0, 0.0} : Vec3{0.0, 0.0, 1.0};
+        const double len = length(axis1);
+        axis1 = normalize(cross(d, helper)) * len;
+        axis2 = normalize(cross(d, axis1)) * len;
+    }
+    // Jitter is random in POV-Ray; here it is a fixed function of the point, so renders repeat exactly.
+    cache::SplitMix64 rng(cache::seed_from(p, light.position));
+    auto uniform = [&rng]() { return rng.uniform(); };
+    std::vector<Vec3> grid(static_cast<std::size_t>(n1) * n2);
+    std::vector<char> known(grid.size(), 0);
+    // The light arriving from grid point (u, v): the colour taken at the centre, times the shadow towards it.
+    auto sample = [&](int u, int v) -> Vec3 {
+        const std::size_t k = static_cast<std::size_t>(u) * n2 + v;
+        if (known[k]) return grid[k];
+        double ju = u, jv = v;
+        if (light.jitter) {
+            ju += uniform() - 0.5;
+            jv += uniform() - 0.5;
+        }
+        Vec3 offset;
+        if (light.circular && n1 > 1 && n2 > 1) {
+            // POV-Ray compat (circular area lights): the square grid's shells are mapped onto circles.
+            ju = ju / (n1 - 1) - 0.5 + 0.001;
+            jv = jv / (n2 - 1) - 0.5 + 0.001;
+            const double scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+            offset = axis1 * (ju * scale) + axis2 * (jv * scale);
+        } else {
+            if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
+            if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+        }
+        const Vec3 d = light.position + offset - p;
+        const double distance = length(d);
+        const Vec3 c = distance > 0.0 ? colour * shadow_towards(p, d / distance, distance, interiors, ctx) : colour;
+        grid[k] = c;
+        known[k] = 1;
+        return c;
+    };
+    auto differ = [](const Vec3& a, const Vec3& b) {
+        return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) + std::fabs(a.z - b.z) > 0.1;
+    };
+    // POV-Ray's adaptive area light: average the region's four corners, and split it in four while corners differ
+    // by more than 0.1 (summed RGB) or the level is below `adaptive`, down to single grid cells.
+    auto region = [&](auto&& self, int u1, int v1, int u2, int v2, int level) -> Vec3 {
+        Vec3 c[4] = {sample(u1, v1), sample(u2, v1), sample(u1, v2), sample(u2, v2)};
+        if ((u2 - u1 > 1 || v2 - v1 > 1) && (level < light.adaptive || differ(c[0], c[1]) || differ(c[1], c[3]) ||
+                                             differ(c[3], c[2]) || differ(c[2], c[0]))) {
+            const int ul = (u1 + u2) / 2, uh = (u1 + u2 + 1) / 2;
+            const int vl = (v1 + v2) / 2, vh = (v1 + v2 + 1) / 2;
+            c[0] = self(self, u1, v1, ul, vl, level + 1);
+            c[1] = self(self, uh, v1, u2, vl, level + 1);
+            c[2] = self(self, u1, vh, ul, v2, level + 1);
+            c[3] = self(self, uh, vh, u2, v2, level + 1);
+        }
+        return (c[0] + c[1] + c[2] + c[3]) * 0.25;
+    };
+    return region(region, 0, 0, n1 - 1, n2 - 1, 0);
+}
+
+}  // namespace wardray::lighting

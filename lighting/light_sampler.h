@@ -1,0 +1,54 @@
+// LightSampler: the light arriving at a point from one light source, through shadows and area-light grids.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lighting/trace_context.h"
+#include "scene/scene.h"
+
+namespace wardray::geometry {
+class SceneGeometry;
+}  // namespace wardray::geometry
+
+namespace wardray::lighting {
+
+/// POV-Ray 3.7's light sources: attenuation (spot, cylinder, fade), filtered shadows and adaptive area lights.
+/// Stateless after construction; refers to the scene and its geometry, which must outlive it.
+class LightSampler {
+public:
+    /// Notes which objects can let light through, so shadow rays look through only those.
+    LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
+
+    /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
+    /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
+    /// `area_lights` false an area light counts as a point light at its centre. `to_light` receives the unit
+    /// direction towards the light.
+    Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
+                        bool area_lights, Vec3& to_light, TraceContext& ctx) const;
+
+private:
+    /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
+    /// opaque, else the filter colours of what stands between (shadow_filter).
+    Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
+                        TraceContext& ctx) const;
+    /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
+    /// towards the points of the light's grid.
+    Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
+                           const InteriorStack& interiors, TraceContext& ctx) const;
+    /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
+    /// of every surface it crosses). `interiors` are those of the ray that found `p` (POV-Ray starts the shadow
+    /// ray with them and fades light crossing an interior).
+    Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
+                       TraceContext& ctx) const;
+    /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
+    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p) const;
+
+    const scene::Scene& m_scene;
+    const geometry::SceneGeometry& m_geometry;
+    bool m_any_transparent = false;      ///< some object can let light through (filter or transmit somewhere)
+    std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
+    int m_noise_generator = 2;
+};
+
+}  // namespace wardray::lighting

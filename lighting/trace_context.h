@@ -1,0 +1,76 @@
+// What travels with a ray through the integrator's recursion: its trace level, weight and interiors, and the
+// worker's counters and cache view.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/vec3.h"
+
+namespace wardray::cache {
+class TileCache;
+}  // namespace wardray::cache
+
+namespace wardray::lighting {
+
+/// Rays traced, by kind, for --stats. Each thread keeps its own and the totals are summed.
+struct RayCounters {
+    std::uint64_t camera = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t secondary = 0;  ///< reflected, refracted and transmitted rays
+    std::uint64_t gather = 0;     ///< hemisphere rays for indirect light (cache gathers and reference paths)
+    std::uint64_t gathers = 0;    ///< hemisphere gathers made (new cache records, or reference estimates)
+
+    /// Adds another thread's counts.
+    RayCounters& operator+=(const RayCounters& o) {
+        camera += o.camera;
+        shadow += o.shadow;
+        secondary += o.secondary;
+        gather += o.gather;
+        gathers += o.gathers;
+        return *this;
+    }
+};
+
+/// What one worker carries through the ray recursion of one tile: its counters and its view of the cache.
+struct TraceContext {
+    RayCounters rays;
+    cache::TileCache* cache = nullptr;  ///< the tile's view of the irradiance cache (cache mode only)
+    bool final_pass = true;             ///< false in POV-Ray's pretrace passes
+    /// The next cache gather's seed: set per tile and pass by the renderer and stepped by each gather, so a record's
+    /// samples depend on the order the tile makes records in (fixed), not on its position: a scene scaled by any
+    /// factor then draws the same samples.
+    std::uint64_t gather_seed = 0;
+    /// --aov irradiance: the indirect irradiance first computed on the current camera path lands here.
+    bool capture_irradiance = false;
+    bool captured = false;
+    Vec3 irradiance;
+};
+
+/// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), by object index.
+struct InteriorStack {
+    static constexpr int kMax = 16;
+    std::array<std::uint32_t, kMax> objects{};
+    int size = 0;
+
+    /// True when the ray is inside object `o`.
+    bool contains(std::uint32_t o) const;
+    /// Enters object `o` (ignored beyond kMax interiors).
+    void push(std::uint32_t o);
+    /// Leaves object `o`; false when the ray was not inside it.
+    bool remove(std::uint32_t o);
+};
+
+/// What travels with a ray through the recursion: POV-Ray's trace level, weight (for adc_bailout) and interiors.
+struct RayState {
+    int level = 0;
+    int max_level = 5;    ///< POV-Ray's max_trace_level, raised for gathers so they always see one surface
+    double weight = 1.0;
+    double adc_bailout = 0.0;  ///< POV-Ray's ticket bailout: the scene's, or radiosity's inside a gather
+    int gi_depth = 0;          ///< radiosity bounce depth: 0 for camera paths, +1 per gather
+    bool gather_ray = false;   ///< on a gather ray's path: highlights are left out (POV-Ray compat)
+    std::uint64_t path_seed = 0;  ///< reference mode: tells the independent paths of one pixel apart
+    InteriorStack interiors;
+};
+
+}  // namespace wardray::lighting
