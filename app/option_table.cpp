@@ -151,120 +151,139 @@ Why set_sign(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
-using K = ValueKind;
+Why set_scene(const OptionUse& use, Options& o) {
+    if (use.value.empty()) return "expected a scene file name";
+    o.scene = to_path(use.value);
+    return std::nullopt;
+}
 
-// POV-Ray's switches (with their INI keys from POV-Ray 3.7's INI table), then wardray's own long options.
+Why set_antialias_gamma(const OptionUse& use, Options& o) {
+    double g = 0.0;
+    if (!parse_double(use.value, g) || g <= 0.0) return "expected a positive antialiasing gamma";
+    o.antialias_gamma = g;
+    return std::nullopt;
+}
+
+// Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
+Why set_sampling_method(const OptionUse& use, Options&) {
+    if (use.value != "1") return "only sampling method 1 (+AM1) is supported so far";
+    return std::nullopt;
+}
+
+// There is no preview window, so +D and -D are accepted and ignored.
+Why set_display(const OptionUse& use, Options&) {
+    if (!use.value.empty()) return "unknown display option";
+    return std::nullopt;
+}
+
+Why set_verbose(const OptionUse& use, Options& o) {
+    if (!use.value.empty()) return "unknown verbosity option";
+    o.verbose = use.sign.value_or(true);
+    return std::nullopt;
+}
+
+Why set_gi_gradients(const OptionUse& use, Options& o) {
+    if (use.value != "on" && use.value != "off") return "must be on or off";
+    o.gi_gradients = use.value == "on";
+    return std::nullopt;
+}
+
+Why set_no_pretrace(const OptionUse&, Options& o) {
+    o.pretrace = false;
+    return std::nullopt;
+}
+
+using K = ValueKind;
+using U = const OptionUse&;  // the setters' first parameter, short so that an entry fits its lines
+
+// POV-Ray's switches (with their keys from POV-Ray 3.7's INI table), then wardray's own long options.
 constexpr OptionSpec kOptions[] = {
-    {"I", "Input_File_Name", "", "", "", K::Value, "+Iscene.pov",
-     "the scene (or the first argument that is not an option)", "", [](const OptionUse& u, Options& o) -> Why {
-         if (u.value.empty()) return "expected a scene file name";
-         o.scene = to_path(u.value);
-         return std::nullopt;
-     }},
-    {"O", "Output_File_Name", "", "--output", "-o", K::Value, "+Ofile, -o file",
-     "output image (default: the scene's name, .png)", "needs a file name",
-     [](const OptionUse& u, Options& o) { return set_path(u.value, "expected an output file name", o.output); }},
-    {"F", "Output_File_Type", "Output_To_File", "", "", K::FlagValue, "+FN +FE +FH, -F",
-     "PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file", "", set_output_type},
-    {"W", "Width", "", "", "", K::Value, "+Wn", "image width (default 320)", "",
-     [](const OptionUse& u, Options& o) { return set_size(u.value, o.width); }},
-    {"H", "Height", "", "", "", K::Value, "+Hn", "image height (default 240)", "",
-     [](const OptionUse& u, Options& o) { return set_size(u.value, o.height); }},
-    {"WT", "Work_Threads", "", "--threads", "", K::Value, "+WTn, --threads n", "worker threads (default: all cores)",
-     "needs a count 1..1024",
-     [](const OptionUse& u, Options& o) {
-         return set_count(u.value, 1, 1024, "expected a thread count 1..1024", o.threads);
-     }},
-    {"A", "Antialias_Threshold", "Antialias", "", "", K::FlagValue, "+A[t], -A",
-     "antialiasing on with threshold t (0.3), or off", "", set_antialias},
-    {"R", "Antialias_Depth", "", "", "", K::Value, "+Rn", "antialiasing depth 1..9 (3)", "",
-     [](const OptionUse& u, Options& o) {
+    {.letters = "I", .ini_key = "Input_File_Name", .kind = K::Value, .usage = "+Iscene.pov",
+     .help = "the scene (or the first argument that is not an option)", .set = set_scene},
+    {.letters = "O", .ini_key = "Output_File_Name", .long_name = "--output", .short_name = "-o", .kind = K::Value,
+     .usage = "+Ofile, -o file", .help = "output image (default: the scene's name, .png)",
+     .long_error = "needs a file name",
+     .set = [](U u, Options& o) { return set_path(u.value, "expected an output file name", o.output); }},
+    {.letters = "F", .ini_key = "Output_File_Type", .ini_flag = "Output_To_File", .kind = K::FlagValue,
+     .usage = "+FN +FE +FH, -F", .help = "PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file",
+     .set = set_output_type},
+    {.letters = "W", .ini_key = "Width", .kind = K::Value, .usage = "+Wn", .help = "image width (default 320)",
+     .set = [](U u, Options& o) { return set_size(u.value, o.width); }},
+    {.letters = "H", .ini_key = "Height", .kind = K::Value, .usage = "+Hn", .help = "image height (default 240)",
+     .set = [](U u, Options& o) { return set_size(u.value, o.height); }},
+    {.letters = "WT", .ini_key = "Work_Threads", .long_name = "--threads", .kind = K::Value,
+     .usage = "+WTn, --threads n", .help = "worker threads (default: all cores)", .long_error = "needs a count 1..1024",
+     .set = [](U u, Options& o) { return set_count(u.value, 1, 1024, "expected a thread count 1..1024", o.threads); }},
+    {.letters = "A", .ini_key = "Antialias_Threshold", .ini_flag = "Antialias", .kind = K::FlagValue,
+     .usage = "+A[t], -A", .help = "antialiasing on with threshold t (0.3), or off", .set = set_antialias},
+    {.letters = "R", .ini_key = "Antialias_Depth", .kind = K::Value, .usage = "+Rn",
+     .help = "antialiasing depth 1..9 (3)",
+     .set = [](U u, Options& o) {
          return set_count(u.value, 1, 9, "expected an antialiasing depth 1..9", o.antialias_depth);
      }},
-    {"J", "Jitter_Amount", "Jitter", "", "", K::FlagValue, "+J[n], -J", "antialiasing jitter (1), or none", "",
-     set_jitter},
-    {"AG", "Antialias_Gamma", "", "", "", K::Value, "+AGn", "antialiasing comparison gamma (2.5)", "",
-     [](const OptionUse& u, Options& o) -> Why {
-         double g = 0.0;
-         if (!parse_double(u.value, g) || g <= 0.0) return "expected a positive antialiasing gamma";
-         o.antialias_gamma = g;
-         return std::nullopt;
-     }},
-    // Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
-    {"AM", "Sampling_Method", "", "", "", K::Value, "+AM1", "antialiasing sampling method (1, the only one)", "",
-     [](const OptionUse& u, Options& o) -> Why {
-         if (u.value != "1") return "only sampling method 1 (+AM1) is supported so far";
-         return std::nullopt;
-     }},
-    {"L", "Library_Path", "", "", "", K::Value, "+Lpath", "add an #include search folder", "",
-     [](const OptionUse& u, Options& o) { return add_path(u.value, "expected a library folder", o.library_paths); }},
-    {"", "Declare", "", "", "", K::Value, "Declare=N=V", "define the float N before parsing", "", set_declare},
-    // There is no preview window, so +D and -D are accepted and ignored.
-    {"D", "", "Display", "", "", K::Flag, "+D, -D", "accepted as in POV-Ray", "",
-     [](const OptionUse& u, Options& o) -> Why {
-         if (!u.value.empty()) return "unknown display option";
-         return std::nullopt;
-     }},
-    {"V", "", "Verbose", "", "", K::Flag, "+V, -V", "a summary line when done, or none", "",
-     [](const OptionUse& u, Options& o) -> Why {
-         if (!u.value.empty()) return "unknown verbosity option";
-         o.verbose = u.sign.value_or(true);
-         return std::nullopt;
-     }},
-    {"RFI", "", "Radiosity_From_File", "", "", K::None, "+RFI",
-     "start the irradiance cache from the radiosity file", "", set_sign<&Options::radiosity_load>},
-    {"RFO", "", "Radiosity_To_File", "", "", K::None, "+RFO", "save the irradiance cache to the radiosity file", "",
-     set_sign<&Options::radiosity_save>},
-    {"RF", "Radiosity_File_Name", "", "", "", K::Value, "+RF<file>",
-     "the radiosity file (default: the scene's name, .rca)", "",
-     [](const OptionUse& u, Options& o) {
-         return set_path(u.value, "expected a radiosity file name", o.radiosity_file);
-     }},
-    {"", "", "", "--check", "", K::None, "--check", "parse and describe the scene, render nothing", "",
-     set_sign<&Options::check_only>},
-    {"", "", "", "--gi", "", K::Value, "--gi=cache|reference|off",
-     "how indirect light is computed (default: cache with a radiosity block)", "", set_gi},
-    {"", "", "", "--gi-rays", "", K::Value, "--gi-rays N", "reference mode: paths per pixel (default 256)", "",
-     [](const OptionUse& u, Options& o) {
-         return set_count(u.value, 1, 1000000, "needs a count 1..1000000", o.gi_rays);
-     }},
-    {"", "", "", "--gi-gradients", "", K::Value, "--gi-gradients=on|off",
-     "cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)", "",
-     [](const OptionUse& u, Options& o) -> Why {
-         if (u.value != "on" && u.value != "off") return "must be on or off";
-         o.gi_gradients = u.value == "on";
-         return std::nullopt;
-     }},
-    {"", "", "", "--no-pretrace", "", K::None, "--no-pretrace", "cache mode: skip the pretrace passes", "",
-     [](const OptionUse&, Options& o) -> Why {
-         o.pretrace = false;
-         return std::nullopt;
-     }},
-    {"", "", "", "--aov", "", K::TwoValues, "--aov irradiance|records FILE",
-     "also write the indirect irradiance alone (irradiance), or the image\n"
-     "with each cache record (first bounce) as a red dot (records)", "", set_aov},
-    {"", "", "", "--stats", "", K::Value, "--stats file.json", "write timings and ray counts", "",
-     [](const OptionUse& u, Options& o) { return set_path(u.value, "needs a file name", o.stats); }},
-    {"", "", "", "--read-path", "", K::Value, "--read-path DIR", "a folder #fopen may read from", "",
-     [](const OptionUse& u, Options& o) { return add_path(u.value, "needs a folder", o.read_paths); }},
-    {"", "", "", "--write-path", "", K::Value, "--write-path DIR", "a folder #fopen may write into", "",
-     [](const OptionUse& u, Options& o) { return add_path(u.value, "needs a folder", o.write_paths); }},
-    {"", "", "", "--allow-file-writes", "", K::None, "--allow-file-writes",
-     "#write really writes (inside the --write-path folders)", "", set_sign<&Options::allow_file_writes>},
-    {"", "", "", "--max-loop-iterations", "", K::Value, "--max-loop-iterations N",
-     "raise the parser's guard rails: loop iterations,", "", [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_loop_iterations); }},
-    {"", "", "", "--max-macro-depth", "", K::Value, "--max-macro-depth N", "  macro nesting,", "",
-     [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_macro_depth); }},
-    {"", "", "", "--max-include-depth", "", K::Value, "--max-include-depth N", "  #include nesting,", "",
-     [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_include_depth); }},
-    {"", "", "", "--max-array-size", "", K::Value, "--max-array-size N", "  array elements,", "",
-     [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_array_size); }},
-    {"", "", "", "--max-string-length", "", K::Value, "--max-string-length N", "  string length,", "",
-     [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_string_length); }},
-    {"", "", "", "--max-memory-file", "", K::Value, "--max-memory-file BYTES", "  a memory file's bytes", "",
-     [](const OptionUse& u, Options& o) { return set_limit(u.value, o.max_memory_file); }},
-    {"", "", "", "--help", "-h", K::None, "--help, -h", "this text", "", set_sign<&Options::show_help>},
-    {"", "", "", "--version", "", K::None, "--version", "the version", "", set_sign<&Options::show_version>},
+    {.letters = "J", .ini_key = "Jitter_Amount", .ini_flag = "Jitter", .kind = K::FlagValue, .usage = "+J[n], -J",
+     .help = "antialiasing jitter (1), or none", .set = set_jitter},
+    {.letters = "AG", .ini_key = "Antialias_Gamma", .kind = K::Value, .usage = "+AGn",
+     .help = "antialiasing comparison gamma (2.5)", .set = set_antialias_gamma},
+    {.letters = "AM", .ini_key = "Sampling_Method", .kind = K::Value, .usage = "+AM1",
+     .help = "antialiasing sampling method (1, the only one)", .set = set_sampling_method},
+    {.letters = "L", .ini_key = "Library_Path", .kind = K::Value, .usage = "+Lpath",
+     .help = "add an #include search folder",
+     .set = [](U u, Options& o) { return add_path(u.value, "expected a library folder", o.library_paths); }},
+    {.ini_key = "Declare", .kind = K::Value, .usage = "Declare=N=V", .help = "define the float N before parsing",
+     .set = set_declare},
+    {.letters = "D", .ini_flag = "Display", .kind = K::Flag, .usage = "+D, -D", .help = "accepted as in POV-Ray",
+     .set = set_display},
+    {.letters = "V", .ini_flag = "Verbose", .kind = K::Flag, .usage = "+V, -V",
+     .help = "a summary line when done, or none", .set = set_verbose},
+    {.letters = "RFI", .ini_flag = "Radiosity_From_File", .kind = K::None, .usage = "+RFI",
+     .help = "start the irradiance cache from the radiosity file", .set = set_sign<&Options::radiosity_load>},
+    {.letters = "RFO", .ini_flag = "Radiosity_To_File", .kind = K::None, .usage = "+RFO",
+     .help = "save the irradiance cache to the radiosity file", .set = set_sign<&Options::radiosity_save>},
+    {.letters = "RF", .ini_key = "Radiosity_File_Name", .kind = K::Value, .usage = "+RF<file>",
+     .help = "the radiosity file (default: the scene's name, .rca)",
+     .set = [](U u, Options& o) { return set_path(u.value, "expected a radiosity file name", o.radiosity_file); }},
+    {.long_name = "--check", .kind = K::None, .usage = "--check",
+     .help = "parse and describe the scene, render nothing", .set = set_sign<&Options::check_only>},
+    {.long_name = "--gi", .kind = K::Value, .usage = "--gi=cache|reference|off",
+     .help = "how indirect light is computed (default: cache with a radiosity block)", .set = set_gi},
+    {.long_name = "--gi-rays", .kind = K::Value, .usage = "--gi-rays N",
+     .help = "reference mode: paths per pixel (default 256)",
+     .set = [](U u, Options& o) { return set_count(u.value, 1, 1000000, "needs a count 1..1000000", o.gi_rays); }},
+    {.long_name = "--gi-gradients", .kind = K::Value, .usage = "--gi-gradients=on|off",
+     .help = "cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)", .set = set_gi_gradients},
+    {.long_name = "--no-pretrace", .kind = K::None, .usage = "--no-pretrace",
+     .help = "cache mode: skip the pretrace passes", .set = set_no_pretrace},
+    {.long_name = "--aov", .kind = K::TwoValues, .usage = "--aov irradiance|records FILE",
+     .help = "also write the indirect irradiance alone (irradiance), or the image\n"
+             "with each cache record (first bounce) as a red dot (records)",
+     .set = set_aov},
+    {.long_name = "--stats", .kind = K::Value, .usage = "--stats file.json", .help = "write timings and ray counts",
+     .set = [](U u, Options& o) { return set_path(u.value, "needs a file name", o.stats); }},
+    {.long_name = "--read-path", .kind = K::Value, .usage = "--read-path DIR", .help = "a folder #fopen may read from",
+     .set = [](U u, Options& o) { return add_path(u.value, "needs a folder", o.read_paths); }},
+    {.long_name = "--write-path", .kind = K::Value, .usage = "--write-path DIR",
+     .help = "a folder #fopen may write into",
+     .set = [](U u, Options& o) { return add_path(u.value, "needs a folder", o.write_paths); }},
+    {.long_name = "--allow-file-writes", .kind = K::None, .usage = "--allow-file-writes",
+     .help = "#write really writes (inside the --write-path folders)", .set = set_sign<&Options::allow_file_writes>},
+    {.long_name = "--max-loop-iterations", .kind = K::Value, .usage = "--max-loop-iterations N",
+     .help = "raise the parser's guard rails: loop iterations,",
+     .set = [](U u, Options& o) { return set_limit(u.value, o.max_loop_iterations); }},
+    {.long_name = "--max-macro-depth", .kind = K::Value, .usage = "--max-macro-depth N", .help = "  macro nesting,",
+     .set = [](U u, Options& o) { return set_limit(u.value, o.max_macro_depth); }},
+    {.long_name = "--max-include-depth", .kind = K::Value, .usage = "--max-include-depth N",
+     .help = "  #include nesting,", .set = [](U u, Options& o) { return set_limit(u.value, o.max_include_depth); }},
+    {.long_name = "--max-array-size", .kind = K::Value, .usage = "--max-array-size N", .help = "  array elements,",
+     .set = [](U u, Options& o) { return set_limit(u.value, o.max_array_size); }},
+    {.long_name = "--max-string-length", .kind = K::Value, .usage = "--max-string-length N", .help = "  string length,",
+     .set = [](U u, Options& o) { return set_limit(u.value, o.max_string_length); }},
+    {.long_name = "--max-memory-file", .kind = K::Value, .usage = "--max-memory-file BYTES",
+     .help = "  a memory file's bytes", .set = [](U u, Options& o) { return set_limit(u.value, o.max_memory_file); }},
+    {.long_name = "--help", .short_name = "-h", .kind = K::None, .usage = "--help, -h", .help = "this text",
+     .set = set_sign<&Options::show_help>},
+    {.long_name = "--version", .kind = K::None, .usage = "--version", .help = "the version",
+     .set = set_sign<&Options::show_version>},
 };
 
 }  // namespace

@@ -24,8 +24,8 @@ struct OptionUse {
     /// `+` (true) or `-` (false) of a switch, or the on/off of an INI flag key; empty for an INI value key and a
     /// long option.
     std::optional<bool> sign;
-    std::string_view value;   ///< what follows the switch letters, the INI `=` or the long option; may be empty
-    std::string_view second;  ///< the second word of a TwoValues option
+    std::string_view value{};   ///< what follows the switch letters, the INI `=` or the long option; may be empty
+    std::string_view second{};  ///< the second word of a TwoValues option
 };
 
 /// Sets Options from one use; returns why the value is refused ("expected a size in pixels, 1..65536").
@@ -33,15 +33,15 @@ using OptionSetter = std::optional<std::string> (*)(const OptionUse& use, Option
 
 /// One option: how the command line and INI files spell it, what it takes, its help, and what it sets.
 struct OptionSpec {
-    std::string_view letters;     ///< POV-Ray switch letters after `+`/`-` ("WT"); empty: no switch
-    std::string_view ini_key;     ///< POV-Ray INI key taking the value ("Work_Threads"); empty: none
-    std::string_view ini_flag;    ///< POV-Ray INI key taking on/off in place of the sign ("Antialias"); empty: none
-    std::string_view long_name;   ///< wardray's long option ("--threads"); empty: none
-    std::string_view short_name;  ///< a one-letter alias of the long option ("-o"); empty: none
+    std::string_view letters{};     ///< POV-Ray switch letters after `+`/`-` ("WT"); empty: no switch
+    std::string_view ini_key{};     ///< POV-Ray INI key taking the value ("Work_Threads"); empty: none
+    std::string_view ini_flag{};    ///< POV-Ray INI key taking on/off in place of the sign ("Antialias"); empty: none
+    std::string_view long_name{};   ///< wardray's long option ("--threads"); empty: none
+    std::string_view short_name{};  ///< a one-letter alias of the long option ("-o"); empty: none
     ValueKind kind = ValueKind::None;
-    std::string_view usage;       ///< the left column of --help ("+WTn, --threads n")
-    std::string_view help;        ///< the right column; '\n' starts a continuation line
-    std::string_view long_error;  ///< what a wrong long option says after its name ("needs a count 1..1024")
+    std::string_view usage{};       ///< the left column of --help ("+WTn, --threads n")
+    std::string_view help{};        ///< the right column; '\n' starts a continuation line
+    std::string_view long_error{};  ///< what a wrong long option says after its name ("needs a count 1..1024")
     OptionSetter set = nullptr;
 };
 
