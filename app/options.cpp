@@ -1,29 +1,16 @@
-// Options: POV-Ray's `+X`/`-X` switches, `Key=Value` pairs and wardray's `--long` options.
+// Options: the command line, INI settings and --help, all three read from the option table.
 #include "app/options.h"
 
+#include <algorithm>
 #include <cctype>
-#include <charconv>
-#include <cstdlib>
+
+#include "app/option_table.h"
 
 namespace wardray::app {
 
 namespace {
 
-bool parse_int(const std::string& text, int& out) {
-    if (text.empty()) return false;
-    const char* end = text.data() + text.size();
-    auto [ptr, ec] = std::from_chars(text.data(), end, out);
-    return ec == std::errc() && ptr == end;
-}
-
-bool parse_double(const std::string& text, double& out) {
-    if (text.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(text.c_str(), &end);
-    return end == text.c_str() + text.size() && std::isfinite(out);
-}
-
-bool starts_with_ci(const std::string& s, const std::string& prefix) {
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
     if (s.size() < prefix.size()) return false;
     for (std::size_t i = 0; i < prefix.size(); ++i)
         if (std::toupper(static_cast<unsigned char>(s[i])) != std::toupper(static_cast<unsigned char>(prefix[i])))
@@ -31,118 +18,27 @@ bool starts_with_ci(const std::string& s, const std::string& prefix) {
     return true;
 }
 
-// Image sizes beyond this are refused before any memory is asked for (64k x 64k is 48 GiB of film).
-constexpr int kMaxImageSide = 65536;
-
-// Parses one POV-Ray switch body (after the + or -), e.g. "W320", "WT2", "A0.3", "FN", "Iscene.pov".
-std::optional<UsageError> apply_pov_switch(bool plus, const std::string& body, Options& o) {
-    auto bad = [&](const std::string& why) {
-        return UsageError{"invalid switch '" + std::string(plus ? "+" : "-") + body + "': " + why};
-    };
-    if (body.empty()) return bad("empty switch");
-    if (starts_with_ci(body, "AG")) {
-        double g = 0.0;
-        if (!parse_double(body.substr(2), g) || g <= 0.0) return bad("expected a positive antialiasing gamma");
-        o.antialias_gamma = g;
-        return std::nullopt;
-    }
-    if (starts_with_ci(body, "AM")) {
-        // Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
-        if (body.substr(2) != "1") return bad("only sampling method 1 (+AM1) is supported so far");
-        return std::nullopt;
-    }
-    // POV-Ray's radiosity file switches: +RFI loads, +RFO saves, +RF<name> names the file.
-    if (starts_with_ci(body, "RFI") && body.size() == 3) {
-        o.radiosity_load = plus;
-        return std::nullopt;
-    }
-    if (starts_with_ci(body, "RFO") && body.size() == 3) {
-        o.radiosity_save = plus;
-        return std::nullopt;
-    }
-    if (starts_with_ci(body, "RF")) {
-        if (body.size() == 2) return bad("expected a radiosity file name");
-        o.radiosity_file = body.substr(2);
-        return std::nullopt;
-    }
-    if (starts_with_ci(body, "WT")) {
-        int n = 0;
-        if (!parse_int(body.substr(2), n) || n < 1 || n > 1024) return bad("expected a thread count 1..1024");
-        o.threads = n;
-        return std::nullopt;
-    }
-    const char key = static_cast<char>(std::toupper(static_cast<unsigned char>(body[0])));
-    const std::string value = body.substr(1);
-    switch (key) {
-        case 'W':
-        case 'H': {
-            int n = 0;
-            if (!parse_int(value, n) || n < 1 || n > kMaxImageSide)
-                return bad("expected a size in pixels, 1.." + std::to_string(kMaxImageSide));
-            (key == 'W' ? o.width : o.height) = n;
-            return std::nullopt;
-        }
-        case 'I':
-            if (value.empty()) return bad("expected a scene file name");
-            o.scene = value;
-            return std::nullopt;
-        case 'O':
-            if (value.empty()) return bad("expected an output file name");
-            o.output = value;
-            return std::nullopt;
-        case 'L':
-            if (value.empty()) return bad("expected a library folder");
-            o.library_paths.emplace_back(value);
-            return std::nullopt;
-        case 'F':
-            if (!plus && value.empty()) {
-                o.write_output = false;
-                return std::nullopt;
-            }
-            o.write_output = true;
-            if (value.empty()) return std::nullopt;
-            switch (std::toupper(static_cast<unsigned char>(value[0]))) {
-                case 'N': o.format = render::ImageFormat::Png; break;
-                case 'E': o.format = render::ImageFormat::Exr; break;
-                case 'H': o.format = render::ImageFormat::Hdr; break;
-                default: return bad("supported formats are +FN (PNG), +FE (OpenEXR) and +FH (Radiance HDR)");
-            }
-            return std::nullopt;
-        case 'A':
-            o.antialias = plus;
-            if (!value.empty()) {
-                double t = 0.0;
-                if (!parse_double(value, t) || t < 0.0) return bad("expected a non-negative threshold");
-                o.antialias_threshold = t;
-                o.antialias = true;
-            }
-            return std::nullopt;
-        case 'R': {
-            int n = 0;
-            if (!parse_int(value, n) || n < 1 || n > 9) return bad("expected an antialiasing depth 1..9");
-            o.antialias_depth = n;
-            return std::nullopt;
-        }
-        case 'J': {
-            double j = 1.0;
-            if (!plus) j = 0.0;
-            else if (!value.empty() && (!parse_double(value, j) || j < 0.0)) return bad("expected a jitter amount >= 0");
-            o.jitter = j;
-            return std::nullopt;
-        }
-        case 'D':  // display: there is no preview window, so both are accepted and ignored
-            if (!value.empty()) return bad("unknown display option");
-            return std::nullopt;
-        case 'V':
-            if (!value.empty()) return bad("unknown verbosity option");
-            o.verbose = plus;
-            return std::nullopt;
-        default:
-            return bad("unknown switch (see --help)");
-    }
+// POV-Ray's INI booleans: on/off, true/false, yes/no, 1/0, in any case.
+std::optional<bool> parse_ini_bool(std::string_view text) {
+    for (const char* yes : {"on", "true", "yes", "1"})
+        if (text.size() == std::string_view(yes).size() && starts_with_ci(text, yes)) return true;
+    for (const char* no : {"off", "false", "no", "0"})
+        if (text.size() == std::string_view(no).size() && starts_with_ci(text, no)) return false;
+    return std::nullopt;
 }
 
-// Applies a long option; `next` yields the following argument for options that take one.
+// One POV-Ray switch: `plus` is its sign, `body` what follows the sign ("W320", "WT2", "A0.3", "FN").
+std::optional<UsageError> apply_switch(bool plus, std::string_view body, Options& o) {
+    std::string shown(1, plus ? '+' : '-');
+    shown += body;
+    const OptionSpec* spec = find_switch(body);
+    if (!spec) return UsageError{"invalid switch '" + shown + "': unknown switch (see --help)"};
+    if (auto why = spec->set(OptionUse{plus, body.substr(spec->letters.size()), {}}, o))
+        return UsageError{"invalid switch '" + shown + "': " + *why};
+    return std::nullopt;
+}
+
+// One long option (`--threads 2`, `--gi=off`, `-o file`); `next` yields the following argument when it needs one.
 template <typename Next>
 std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, Next&& next) {
     std::string name = arg;
@@ -151,72 +47,35 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
         name = arg.substr(0, eq);
         inline_value = arg.substr(eq + 1);
     }
-    auto value = [&]() -> std::optional<std::string> { return inline_value ? inline_value : next(); };
-    if (name == "--help" || name == "-h") {
-        o.show_help = true;
-    } else if (name == "--version") {
-        o.show_version = true;
-    } else if (name == "--check") {
-        o.check_only = true;
-    } else if (name == "--output" || name == "-o") {
-        const auto v = value();
-        if (!v || v->empty()) return UsageError{name + " needs a file name"};
-        o.output = *v;
-    } else if (name == "--threads") {
-        const auto v = value();
-        int n = 0;
-        if (!v || !parse_int(*v, n) || n < 1 || n > 1024) return UsageError{"--threads needs a count 1..1024"};
-        o.threads = n;
-    } else if (name == "--gi") {
-        const auto v = value();
-        if (v == "cache") o.gi = lighting::GiMode::Cache;
-        else if (v == "reference") o.gi = lighting::GiMode::Reference;
-        else if (v == "off") o.gi = lighting::GiMode::Off;
-        else return UsageError{"--gi must be cache, reference or off"};
-    } else if (name == "--gi-rays") {
-        const auto v = value();
-        int n = 0;
-        if (!v || !parse_int(*v, n) || n < 1 || n > 1000000) return UsageError{"--gi-rays needs a count 1..1000000"};
-        o.gi_rays = n;
-    } else if (name == "--gi-gradients") {
-        const auto v = value();
-        if (v == "on") o.gi_gradients = true;
-        else if (v == "off") o.gi_gradients = false;
-        else return UsageError{"--gi-gradients must be on or off"};
-    } else if (name == "--aov") {
-        const auto kind = value();
-        const auto file = next();
-        if (!kind || (*kind != "irradiance" && *kind != "records") || !file || file->empty())
-            return UsageError{"--aov needs a kind (irradiance or records) and a file name"};
-        (*kind == "irradiance" ? o.aov_irradiance : o.aov_records) = *file;
-    } else if (name == "--no-pretrace") {
-        o.pretrace = false;
-    } else if (name == "--read-path" || name == "--write-path") {
-        const auto v = value();
-        if (!v || v->empty()) return UsageError{name + " needs a folder"};
-        (name == "--read-path" ? o.read_paths : o.write_paths).emplace_back(*v);
-    } else if (name == "--allow-file-writes") {
-        o.allow_file_writes = true;
-    } else if (auto* limit = name == "--max-loop-iterations" ? &o.max_loop_iterations
-                             : name == "--max-macro-depth"   ? &o.max_macro_depth
-                             : name == "--max-include-depth" ? &o.max_include_depth
-                             : name == "--max-array-size"    ? &o.max_array_size
-                             : name == "--max-string-length" ? &o.max_string_length
-                             : name == "--max-memory-file"   ? &o.max_memory_file
-                                                             : nullptr) {
-        const auto v = value();
-        std::uint64_t n = 0;
-        const char* end = v ? v->data() + v->size() : nullptr;
-        if (!v || v->empty() || std::from_chars(v->data(), end, n).ptr != end || n == 0)
-            return UsageError{name + " needs a positive whole number"};
-        *limit = n;
-    } else if (name == "--stats") {
-        const auto v = value();
-        if (!v || v->empty()) return UsageError{"--stats needs a file name"};
-        o.stats = *v;
-    } else {
-        return UsageError{"unknown option '" + name + "' (see --help)"};
+    const OptionSpec* spec = find_long_option(name);
+    if (!spec) return UsageError{"unknown option '" + name + "' (see --help)"};
+    // A missing value is an empty one, which every option that takes a value refuses.
+    std::string value, second;
+    if (spec->kind != ValueKind::None) value = inline_value ? *inline_value : next().value_or("");
+    if (spec->kind == ValueKind::TwoValues) second = next().value_or("");
+    if (auto why = spec->set(OptionUse{std::nullopt, value, second}, o))
+        return UsageError{name + " " + (spec->long_error.empty() ? *why : std::string(spec->long_error))};
+    return std::nullopt;
+}
+
+// One INI key's value through its table entry: on/off for a flag key, anything else for a value key.
+std::optional<std::string> apply_ini_value(const OptionSpec& spec, bool is_flag_key, std::string_view value,
+                                           Options& o) {
+    if (is_flag_key) {
+        const std::optional<bool> on = parse_ini_bool(value);
+        if (!on) return "expected on or off";
+        return spec.set(OptionUse{*on, {}, {}}, o);
     }
+    if (value.empty()) return "expected a value";
+    return spec.set(OptionUse{std::nullopt, value, {}}, o);
+}
+
+// POV-Ray compat: Declare=NAME=VALUE, an INI setting, is also written on the command line.
+std::optional<UsageError> apply_declare(const std::string& arg, Options& o) {
+    bool is_flag_key = false;
+    const OptionSpec* spec = find_ini_key("Declare", is_flag_key);
+    if (auto why = spec->set(OptionUse{std::nullopt, std::string_view(arg).substr(8), {}}, o))
+        return UsageError{"invalid '" + arg + "': " + *why};
     return std::nullopt;
 }
 
@@ -224,7 +83,6 @@ std::optional<UsageError> apply_long_option(const std::string& arg, Options& o, 
 
 std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args) {
     Options o;
-    bool have_scene = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         auto next = [&]() -> std::optional<std::string> {
@@ -232,24 +90,16 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
             return std::nullopt;
         };
         std::optional<UsageError> error;
-        if (arg.rfind("--", 0) == 0 || arg == "-o" || arg == "-h") {
+        if (arg.rfind("--", 0) == 0 || find_long_option(arg)) {
             error = apply_long_option(arg, o, next);
         } else if (starts_with_ci(arg, "Declare=")) {
-            // POV-Ray's Declare=NAME=VALUE defines a float before the scene is read.
-            const std::string rest = arg.substr(8);
-            const auto eq = rest.find('=');
-            double v = 0.0;
-            if (eq == std::string::npos || eq == 0 || !parse_double(rest.substr(eq + 1), v))
-                error = UsageError{"invalid '" + arg + "': expected Declare=NAME=NUMBER"};
-            else
-                o.declares.emplace_back(rest.substr(0, eq), v);
+            error = apply_declare(arg, o);
         } else if (arg.size() >= 2 && (arg[0] == '+' || arg[0] == '-')) {
-            error = apply_pov_switch(arg[0] == '+', arg.substr(1), o);
-            if (!error && (arg[1] == 'I' || arg[1] == 'i')) have_scene = true;
+            error = apply_switch(arg[0] == '+', std::string_view(arg).substr(1), o);
         } else if (!arg.empty()) {
-            if (have_scene) return UsageError{"more than one scene given ('" + arg + "')"};
+            // The scene, given once: as the first plain argument or with +I.
+            if (!o.scene.empty()) return UsageError{"more than one scene given ('" + arg + "')"};
             o.scene = arg;
-            have_scene = true;
         } else {
             error = UsageError{"empty argument"};
         }
@@ -258,33 +108,28 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
     return o;
 }
 
+std::optional<UsageError> apply_ini_setting(std::string_view key, std::string_view value, Options& options) {
+    bool is_flag_key = false;
+    const OptionSpec* spec = find_ini_key(key, is_flag_key);
+    if (!spec) return UsageError{"unknown INI key '" + std::string(key) + "'"};
+    if (auto why = apply_ini_value(*spec, is_flag_key, value, options))
+        return UsageError{"invalid INI setting '" + std::string(key) + "=" + std::string(value) + "': " + *why};
+    return std::nullopt;
+}
+
 std::string usage_text() {
-    return "usage: wardray [scene.pov | +Iscene.pov] [options]\n"
-           "       wardray diff IMAGE REFERENCE [--json] [-o DIFFERENCE.png]\n"
-           "  +Ofile, -o file   output image (default: the scene's name, .png)\n"
-           "  +FN +FE +FH       PNG (sRGB), OpenEXR or Radiance HDR (linear); -F writes no file\n"
-           "  +Wn +Hn           image size (default 320x240)\n"
-           "  +WTn, --threads n worker threads (default: all cores)\n"
-           "  +A[t] -A          antialiasing on with threshold t (0.3), or off; +Rn depth, +J[n] -J jitter,\n"
-           "                    +AGn comparison gamma (2.5), +AM1 sampling method\n"
-           "  +Lpath            add an #include search folder\n"
-           "  Declare=N=V       define the float N before parsing\n"
-           "  +D -D +V -V       accepted as in POV-Ray\n"
-           "  --check           parse and describe the scene, render nothing\n"
-           "  --gi=cache|reference|off  how indirect light is computed (default: cache with a radiosity block)\n"
-           "  --gi-rays N               reference mode: paths per pixel (default 256)\n"
-           "  --gi-gradients=on|off     cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)\n"
-           "  --no-pretrace             cache mode: skip the pretrace passes\n"
-           "  --aov irradiance FILE     also write the indirect irradiance alone\n"
-           "  --aov records FILE        also write the image with each cache record (first bounce) as a red dot\n"
-           "  +RFI +RFO +RF<file>       load / save the irradiance cache (default file: the scene's name, .rca)\n"
-           "  --stats file.json write timings and ray counts\n"
-           "  --read-path DIR, --write-path DIR, --allow-file-writes   where #fopen may read and write\n"
-           "  --max-loop-iterations N, --max-macro-depth N, --max-include-depth N,\n"
-           "  --max-array-size N, --max-string-length N, --max-memory-file BYTES\n"
-           "                    raise the parser's guard rails\n"
-           "  --help, --version\n"
-           "With no scene, renders the bundled default scene.\n";
+    // Each entry's usage, then its help from this column on; continuation lines start at the same column.
+    constexpr std::size_t kHelpColumn = 34;
+    std::string text = "usage: wardray [scene.pov | +Iscene.pov] [options]\n"
+                       "       wardray diff IMAGE REFERENCE [--json] [-o DIFFERENCE.png]\n";
+    for (const OptionSpec& spec : option_table()) {
+        std::string line = "  " + std::string(spec.usage);
+        line.resize(std::max(line.size() + 2, kHelpColumn), ' ');
+        for (const char c : spec.help) line += c == '\n' ? "\n" + std::string(kHelpColumn, ' ') : std::string(1, c);
+        text += line + "\n";
+    }
+    text += "With no scene, renders the bundled default scene.\n";
+    return text;
 }
 
 }  // namespace wardray::app

@@ -1,10 +1,11 @@
-// Options: the command line, in POV-Ray's switch syntax plus wardray's long options.
+// Options: what a run is asked to do, from POV-Ray's switches, its INI keys and wardray's long options.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -14,7 +15,7 @@
 
 namespace wardray::app {
 
-/// Everything the command line can set. Defaults are POV-Ray's.
+/// Everything the command line (or an INI setting) can set. Defaults are POV-Ray's.
 struct Options {
     std::filesystem::path scene;                    ///< empty: the bundled default scene
     std::optional<std::filesystem::path> output;    ///< empty: the scene's name with the format's extension
@@ -55,6 +56,9 @@ struct Options {
     bool verbose = false;
     bool show_help = false;
     bool show_version = false;
+
+    /// Equal when every field is (so tests can say two spellings set the same thing).
+    friend bool operator==(const Options&, const Options&) = default;
 };
 
 /// What went wrong with the command line: a message for stderr; the caller exits with status 2.
@@ -65,7 +69,12 @@ struct UsageError {
 /// Parses argv[1..]; the result is either options or a usage error.
 std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args);
 
-/// The short usage text printed with a usage error and by --help.
+/// Applies one INI setting (`Width=640` is key "Width", value "640"; key and value trimmed, keys compared without
+/// case) through the same table as the switches, so it sets `options` as `+W640` does; an unknown key or a wrong
+/// value is an error.
+std::optional<UsageError> apply_ini_setting(std::string_view key, std::string_view value, Options& options);
+
+/// The usage text printed with a usage error and by --help, generated from the option table.
 std::string usage_text();
 
 }  // namespace wardray::app

@@ -1,0 +1,286 @@
+// The steps of rendering one scene: resolve the job, load, build, render, write.
+#include "app/run.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <vector>
+
+#include "app/app.h"
+#include "app/process_limits.h"
+#include "camera/camera.h"
+#include "geometry/object_query.h"
+#include "parser/parse.h"
+#include "texture/noise.h"
+
+#ifndef WARDRAY_SOURCE_DIR
+#define WARDRAY_SOURCE_DIR ""
+#endif
+
+namespace wardray::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kPovrayIncludeDir = "/usr/share/povray-3.7/include";
+
+// The bundled default scene: beside the executable's build folder, else in the source tree it was built from.
+std::optional<fs::path> find_default_scene(const std::string& argv0) {
+    std::error_code ec;
+    fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) exe = fs::absolute(argv0, ec);
+    const std::vector<fs::path> candidates = {exe.parent_path() / "scenes" / "default.pov",
+                                              exe.parent_path().parent_path() / "scenes" / "default.pov",
+                                              fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "default.pov"};
+    for (const fs::path& p : candidates)
+        if (fs::is_regular_file(p, ec)) return p;
+    return std::nullopt;
+}
+
+// What the parser is told: include folders, declares, file access, guard rails, and the hooks it calls back.
+parser::ParseOptions parse_options_for(const Options& options) {
+    parser::ParseOptions parse_options;
+    parse_options.library_paths.push_back(kPovrayIncludeDir);
+    for (const fs::path& p : options.library_paths) parse_options.library_paths.push_back(p);
+    parse_options.declares = options.declares;
+    parse_options.image_width = options.width;
+    parse_options.image_height = options.height;
+    parse_options.read_paths = options.read_paths;
+    parse_options.write_paths = options.write_paths;
+    if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
+    if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;
+    if (options.max_macro_depth) parse_options.max_macro_depth = *options.max_macro_depth;
+    if (options.max_include_depth) parse_options.max_include_depth = *options.max_include_depth;
+    if (options.max_array_size) parse_options.max_array_elements = *options.max_array_size;
+    if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
+    if (options.max_memory_file) parse_options.max_memory_file_bytes = *options.max_memory_file;
+    // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
+    parse_options.defer_library_declarations = !options.check_only;
+    static const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing
+    parse_options.query = &object_query;
+    parse_options.vector_turbulence = [](const Vec3& p, int octaves, double omega, double lambda) {
+        return texture::dturbulence(p, texture::TurbulenceParams{octaves, omega, lambda});
+    };
+    parse_options.debug_output = [](const std::string& text) { std::cerr << text << std::flush; };
+    return parse_options;
+}
+
+// The irradiance cache for +RFI: the records of the radiosity file, or (with a warning) an empty cache.
+void load_cache_file(cache::IrradianceCache& irradiance_cache, const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        std::cerr << "wardray: warning: cannot read radiosity file '" << file.string()
+                  << "'; starting with an empty cache\n";
+        return;
+    }
+    try {
+        irradiance_cache.load(in);
+    } catch (const cache::CacheFileError& e) {
+        std::cerr << "wardray: warning: radiosity file '" << file.string() << "' not used: " << e.what() << "\n";
+    }
+}
+
+// A one-line progress display on a terminal: phase, percent, elapsed, remaining.
+class ProgressLine {
+public:
+    explicit ProgressLine(bool enabled) : m_enabled(enabled) {}
+    void update(const char* phase, double fraction) {
+        if (!m_enabled) return;
+        const auto now = Clock::now();
+        if (fraction < 1.0 && now - m_last < std::chrono::milliseconds(100)) return;
+        m_last = now;
+        const double elapsed = seconds_since(m_start);
+        const double remaining = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+        std::fprintf(stderr, "\r%-8s %5.1f%%  elapsed %6.1fs  remaining %6.1fs", phase, 100.0 * fraction, elapsed,
+                     remaining);
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (m_enabled) std::fprintf(stderr, "\n");
+    }
+
+private:
+    bool m_enabled;
+    Clock::time_point m_start = Clock::now();
+    Clock::time_point m_last{};
+};
+
+// A diagnostic image (--aov), in the format its name says; false (with a message) when it cannot be written.
+bool write_aov(const fs::path& path, const render::Film& film) {
+    const auto error =
+        render::write_image(film, path, render::format_from_extension(path).value_or(render::ImageFormat::Png));
+    if (error) std::cerr << "wardray: error: " << *error << "\n";
+    return !error;
+}
+
+// --aov records: the image with a red dot where each first-bounce cache record projects.
+render::Film mark_records(const render::Film& film, const scene::Scene& scene,
+                          const cache::IrradianceCache* irradiance_cache, int width, int height) {
+    render::Film marked = film;
+    if (!irradiance_cache) return marked;
+    const camera::CameraModel camera(scene.camera, width, height);
+    for (const cache::IrradianceRecord& r : irradiance_cache->records(0)) {
+        double px = 0.0, py = 0.0;
+        if (!camera.project(r.position, px, py)) continue;
+        const int x = static_cast<int>(std::floor(px)), y = static_cast<int>(std::floor(py));
+        if (x >= 0 && y >= 0 && x < width && y < height) marked.set_pixel(x, y, {1.0, 0.0, 0.0});
+    }
+    return marked;
+}
+
+// +RFO: every record of the cache into the radiosity file, whole or not at all.
+bool save_cache_file(const cache::IrradianceCache& irradiance_cache, const fs::path& file) {
+    auto write_cache = [&](const fs::path& tmp) -> std::optional<std::string> {
+        std::ofstream f(tmp, std::ios::binary);
+        irradiance_cache.save(f);
+        f.close();
+        if (!f) return std::string("write failed");
+        return std::nullopt;
+    };
+    if (const auto error = render::write_atomically(file, write_cache)) {
+        std::cerr << "wardray: error: radiosity file: " << *error << "\n";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::optional<Job> resolve_job(Options options, const std::string& argv0) {
+    if (options.scene.empty()) {
+        const auto scene = find_default_scene(argv0);
+        if (!scene) {
+            std::cerr << "wardray: error: the bundled default scene (scenes/default.pov) was not found\n";
+            return std::nullopt;
+        }
+        options.scene = *scene;
+    }
+    // The output file: POV-Ray's default is the scene's name with the format's extension, in the current folder.
+    Job job;
+    job.format = options.format.value_or(
+        options.output ? render::format_from_extension(*options.output).value_or(render::ImageFormat::Png)
+                       : render::ImageFormat::Png);
+    job.output = options.output.value_or(options.scene.stem().string() + render::extension_of(job.format));
+    if (job.output.extension().empty()) job.output += render::extension_of(job.format);
+    job.options = std::move(options);
+    return job;
+}
+
+std::optional<int> refuse_job(const Job& job) {
+    const Options& options = job.options;
+    std::error_code ec;
+    if (options.write_output && !options.check_only && fs::exists(job.output, ec) &&
+        fs::equivalent(job.output, options.scene, ec)) {
+        std::cerr << "wardray: the output '" << job.output.string()
+                  << "' is the scene file itself; choose another\n";
+        return kExitUsage;
+    }
+    if (!options.check_only) {
+        if (const auto error = image_too_large(options.width, options.height)) {
+            std::cerr << "wardray: error: " << *error << "\n";
+            return kExitScene;
+        }
+    }
+    return std::nullopt;
+}
+
+std::unique_ptr<tbb::global_control> prepare_process(const Options& options) {
+    std::unique_ptr<tbb::global_control> thread_limit;
+    if (options.threads > 0)
+        thread_limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                             static_cast<std::size_t>(options.threads));
+    render::remove_partial_output_on_signal();
+    limit_heap_to_machine_memory();
+    return thread_limit;
+}
+
+std::optional<LoadedScene> load_scene(const Options& options) {
+    const auto start = Clock::now();
+    parser::ParseResult parse = parser::parse_file(options.scene, parse_options_for(options));
+    const double seconds = seconds_since(start);
+    for (const Diagnostic& d : parse.diagnostics) std::cerr << format_diagnostic(d);
+    if (!parse.ok()) return std::nullopt;
+    return LoadedScene{std::move(*parse.scene), seconds};
+}
+
+std::optional<BuiltGeometry> build_geometry(const scene::Scene& scene) {
+    const auto start = Clock::now();
+    BuiltGeometry built;
+    try {
+        built.geometry = std::make_unique<geometry::SceneGeometry>(scene);
+    } catch (const std::exception& e) {
+        std::cerr << "wardray: error: cannot build the scene's geometry: " << e.what() << "\n";
+        return std::nullopt;
+    }
+    built.seconds = seconds_since(start);
+    return built;
+}
+
+Illumination build_illumination(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
+                                const Options& options) {
+    Illumination illumination;
+    lighting::IntegratorOptions& settings = illumination.settings;
+    settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
+    settings.reference_rays = options.gi_rays;
+    settings.gradients = options.gi_gradients;
+    if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
+        settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
+    illumination.integrator = std::make_unique<lighting::Integrator>(scene, geometry, settings);
+    for (const std::string& limitation : illumination.integrator->limitations())
+        std::cerr << options.scene.string() << ": warning: " << limitation << "\n";
+    // The irradiance cache, only when the scene asks for radiosity and --gi is cache; +RFI starts it from a file.
+    illumination.cache_file = options.radiosity_file.value_or(options.scene.stem().string() + ".rca");
+    if (illumination.integrator->uses_cache()) {
+        illumination.cache = std::make_unique<cache::IrradianceCache>(*scene.global.radiosity);
+        if (options.radiosity_load) load_cache_file(*illumination.cache, illumination.cache_file);
+    }
+    return illumination;
+}
+
+RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options) {
+    ProgressLine progress(isatty(STDERR_FILENO) != 0);
+    const auto start = Clock::now();
+    render::RenderSettings settings;
+    settings.width = options.width;
+    settings.height = options.height;
+    settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
+                          options.antialias_gamma};
+    settings.pretrace = options.pretrace;
+    settings.irradiance_aov = options.aov_irradiance.has_value();
+    RenderedFrame frame{render::render_image(
+        scene, *illumination.integrator, settings, [&](double f) { progress.update("render", f); },
+        illumination.cache.get())};
+    progress.finish();
+    frame.seconds = seconds_since(start);
+    return frame;
+}
+
+bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination& illumination,
+                   const render::RenderResult& result) {
+    const Options& options = job.options;
+    if (options.write_output) {
+        if (auto error = render::write_image(result.film, job.output, job.format)) {
+            std::cerr << "wardray: error: " << *error << "\n";
+            return false;
+        }
+    }
+    if (options.aov_irradiance && result.irradiance && !write_aov(*options.aov_irradiance, *result.irradiance))
+        return false;
+    if (options.aov_records &&
+        !write_aov(*options.aov_records,
+                   mark_records(result.film, scene, illumination.cache.get(), options.width, options.height)))
+        return false;
+    if (illumination.cache && options.radiosity_save && !save_cache_file(*illumination.cache, illumination.cache_file))
+        return false;
+    return true;
+}
+
+}  // namespace wardray::app

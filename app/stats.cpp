@@ -1,0 +1,85 @@
+// --stats: the run's phase times, passes, rays and cache figures as a JSON file.
+#include "app/stats.h"
+
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+namespace wardray::app {
+
+namespace {
+
+const char* gi_name(lighting::GiMode mode) {
+    switch (mode) {
+        case lighting::GiMode::Off: return "off";
+        case lighting::GiMode::Cache: return "cache";
+        case lighting::GiMode::Reference: return "reference";
+    }
+    return "off";
+}
+
+// The cache's records per pass and depth, lookups, hit rate, mean radius and rays per record; null without one.
+nlohmann::json cache_stats(const cache::IrradianceCache* irradiance_cache, const lighting::RayCounters& rays) {
+    if (!irradiance_cache) return nullptr;
+    const cache::CacheStatistics cs = irradiance_cache->statistics();
+    nlohmann::json per_pass = nlohmann::json::array();
+    for (const auto& depths : cs.records) per_pass.push_back(depths);
+    const double rays_per_record =
+        rays.gathers > 0 ? static_cast<double>(rays.gather) / static_cast<double>(rays.gathers) : 0.0;
+    return {{"records_per_pass_and_depth", per_pass},
+            {"records", cs.total_records},
+            {"lookups", cs.lookups},
+            {"hits", cs.hits},
+            {"hit_rate", cs.hit_rate()},
+            {"mean_radius", cs.mean_radius},
+            {"rays_per_record", rays_per_record}};
+}
+
+}  // namespace
+
+bool write_stats(const std::filesystem::path& path, const Job& job, const scene::Scene& scene,
+                 const Illumination& illumination, const render::RenderResult& result, const PhaseTimes& times,
+                 Clock::time_point run_start) {
+    const Options& options = job.options;
+    nlohmann::json stats;
+    stats["scene"] = options.scene.string();
+    stats["output"] = options.write_output ? job.output.string() : "";
+    stats["width"] = options.width;
+    stats["height"] = options.height;
+    stats["threads"] = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+    stats["gi"] = gi_name(illumination.settings.gi);
+    stats["radiosity_block"] = scene.global.radiosity.has_value();
+    double pretrace_seconds = 0.0;
+    nlohmann::json passes = nlohmann::json::array();
+    for (const render::PassTiming& pass : result.passes) {
+        if (pass.kind == "pretrace") pretrace_seconds += pass.seconds;
+        passes.push_back({{"kind", pass.kind}, {"block_size", pass.block_size}, {"seconds", pass.seconds}});
+    }
+    stats["phases"] = {{"parse", times.parse}, {"build", times.build}, {"pretrace", pretrace_seconds},
+                       {"render", times.render - pretrace_seconds}, {"write", times.write}};
+    stats["passes"] = passes;
+    stats["total_seconds"] = seconds_since(run_start);
+    stats["rays"] = {{"camera", result.rays.camera},
+                     {"shadow", result.rays.shadow},
+                     {"secondary", result.rays.secondary},
+                     {"gather", result.rays.gather}};
+    stats["gathers"] = result.rays.gathers;
+    stats["non_finite_pixels"] = result.non_finite_pixels;
+    stats["supersampled_pixels"] = result.supersampled_pixels;
+    stats["cache"] = cache_stats(illumination.cache.get(), result.rays);
+    auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
+        std::ofstream f(tmp);
+        f << stats.dump(2) << "\n";
+        f.close();
+        if (!f) return std::string("write failed");
+        return std::nullopt;
+    };
+    if (const auto error = render::write_atomically(path, write)) {
+        std::cerr << "wardray: error: statistics: " << *error << "\n";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace wardray::app
