@@ -19,9 +19,11 @@ wardray. The report is written from the cache after every run: scenes with no cu
 measured. Beside it, not committed: `build/census/index.html`, a contact sheet of every scene (POV-Ray, wardray,
 difference), worst first.
 
-Scenes with an animation `.ini` beside them are rendered without it by both programs (a single frame at clock 0):
-the .ini files of the examples set only animation, antialiasing and output options (plus `Declare=fp=0` for
-animations/splinefollow, which the scene also defaults).
+Scenes with an `.ini` beside them (animations, the portfolio, benchmark, desk) are rendered without it, as
+`povray scene.pov` would: one frame, clock 0, frame_number 0, in both programs alike. Where POV-Ray fails that
+way (the portfolio scenes index arrays by frame_number), it renders the .ini's first frame instead (`scene.ini
++SF<n> +EF<n>` before the census's own options, which win); wardray reads no .ini and has no animation options,
+so it gets only the .ini's `Declare=` values, and the scene carries a note saying so.
 """
 import argparse
 import concurrent.futures
@@ -62,7 +64,7 @@ MATCH_RRMSE, MATCH_BAD, SILENT_RRMSE = 0.01, 0.005, 0.02
 STOCHASTIC_RRMSE = 0.05
 CATEGORIES = ("match", "differ-with-warning", "differ-silently", "differ-small", "blocked", "povray-fails")
 # Bumped when what is stored per scene changes, so old cache lines are not reused.
-RECORD_VERSION = 1
+RECORD_VERSION = 2
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -85,6 +87,41 @@ def scene_files(scene):
         files[name] = text
         todo += [(n, t) for n, t in renderers.local_includes(text, scene.parent) if n not in files]
     return list(files.items())
+
+
+def read_ini(path):
+    """What the census takes from a scene's .ini: its first frame, that frame's clock and its declarations.
+
+    POV-Ray renders that one frame of the .ini (the portfolio scenes index arrays by frame_number and fail
+    without it); wardray reads no .ini and has no animation options, so it gets only the declarations."""
+    ini = {"file": path.name, "frame": 1, "clock": 0.0, "declares": []}
+    for raw in path.read_text(errors="replace").splitlines():
+        line = raw.split(";", 1)[0].strip()
+        key, _, value = line.partition("=")
+        key, value = key.strip().lower(), value.strip()
+        try:
+            if key == "initial_frame" and value:
+                ini["frame"] = int(value)
+                continue
+            if key == "initial_clock" and value:
+                ini["clock"] = float(value)
+                continue
+        except ValueError:
+            continue
+        for token in line.split():
+            low = token.lower()
+            if low.startswith("declare=") and low.count("=") >= 2:
+                ini["declares"].append(token[len("declare="):])
+            elif re.fullmatch(r"[+-]kfi-?\d+", low):
+                ini["frame"] = int(low[4:])
+            elif re.fullmatch(r"[+-]ki-?[\d.]+", low):
+                ini["clock"] = float(low[3:])
+    return ini
+
+
+def ini_note(ini):
+    return (f"POV-Ray rendered frame {ini['frame']} of {ini['file']} (clock {ini['clock']:g}); wardray reads no "
+            ".ini and has no animation options (frame_number 0)")
 
 
 def stochastic_features(texts):
@@ -139,6 +176,8 @@ def hints(rec):
         out.append(f"#version {version}" + ("" if rec.get("assumed_gamma") else " with no assumed_gamma"))
     elif not rec.get("assumed_gamma"):
         out.append("no assumed_gamma" + ("" if version else ", no #version"))
+    if rec.get("ini"):
+        out.append(ini_note(rec["ini"]))
     if rec.get("metrics") and rec["metrics"].get("non_finite_wardray"):
         out.append(f"{rec['metrics']['non_finite_wardray']} non-finite pixels")
     return out
@@ -166,7 +205,8 @@ def classify(rec):
         return "povray-fails", rec["povray"].get("error") or rec["povray"]["status"]
     ward = rec["wardray"]
     if ward["status"] != "ok":
-        return "blocked", ward.get("error") or ward["status"]
+        return "blocked", (ward.get("error") or ward["status"]) + (f"; {ini_note(rec['ini'])}" if rec.get("ini")
+                                                                   else "")
     m = rec["metrics"]
     match_rrmse, match_bad, silent_rrmse = tolerance(rec.get("stochastic"))
     finite = m["non_finite_wardray"] == 0 and m["non_finite"] == 0
@@ -262,7 +302,7 @@ def povray_error(output):
     """POV-Ray's first error with its continuation lines, e.g. "Parse Error: Cannot open include file x.inc"."""
     lines = output.splitlines()
     for i, line in enumerate(lines):
-        if re.search(r"(?<!Possible )(Parse|Render|Fatal) [Ee]rror|^Error:", line):
+        if re.search(r"(?<!Possible )(Parse|Render|Fatal) [Ee]rror|^Error:|^Problem with option", line):
             text = line.strip()
             for more in lines[i + 1:i + 3]:
                 if more.startswith(" ") and more.strip() and not re.search(r"[Ee]rror", more):
@@ -327,6 +367,9 @@ class Census:
     def keys(self, scene):
         """(POV-Ray's key, the record's key): hashes of what each render depends on."""
         files = scene_files(scene)
+        ini = scene.with_suffix(".ini")
+        if ini.is_file():
+            files = files + [(ini.name, ini.read_text(errors="replace"))]
         scene_hash = hashlib.sha256(json.dumps(files).encode()).hexdigest()
         common = {"scene": self.rel(scene), "files": scene_hash, "size": list(self.size), "timeout": self.timeout,
                   "threads": 1, "record": RECORD_VERSION}
@@ -336,17 +379,39 @@ class Census:
         return pov, rec, files
 
     def povray_render(self, scene, key, fresh):
-        """POV-Ray's result for the scene, {status, seconds, error, warnings}, and its image path, cached."""
+        """POV-Ray's result for the scene, {status, seconds, error, warnings, ini}, and its image path, cached.
+
+        A scene that fails without the .ini beside it is rendered again through the .ini (its first frame)."""
         meta, image = self.results / "povray" / f"{key}.json", self.results / "povray" / f"{key}.hdr"
         if not fresh and meta.is_file():
             result = json.loads(meta.read_text())
             if result["status"] != "ok" or image.is_file():
                 return result, image
+        result = self._povray_once(scene, image, None)
+        ini = scene.with_suffix(".ini")
+        if result["status"] == "error" and ini.is_file():
+            first, result = result, self._povray_once(scene, image, read_ini(ini))
+            if result["status"] == "ok":
+                result["without_ini"] = first["error"]
+            else:
+                first["error"] += f" (through {ini.name}: {result['error']})"
+                result = first
+        meta.write_text(json.dumps(result, indent=1))
+        return result, image
+
+    def _povray_once(self, scene, image, ini):
         work = scratch_copy(scene, self.results / "work" / (self.slug(self.rel(scene)) + ".povray"))
         cmd = self.pov.command(scene.name, "census.hdr", self.size, scene.parent)
+        if ini:
+            # The .ini first, so the census's options after it win; one frame of its animation.
+            cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
         r = self.runner.run(cmd, work, self.timeout)
         output = r["stdout"] + r["stderr"]
-        result = {"seconds": r["seconds"], "warnings": povray_warnings(output), "command": cmd}
+        # An animation frame is written as census<frame number>.hdr.
+        written = sorted(work.glob("census*.hdr"))
+        if written and not (work / "census.hdr").exists():
+            written[0].rename(work / "census.hdr")
+        result = {"seconds": r["seconds"], "warnings": povray_warnings(output), "command": cmd, "ini": ini}
         if r["timed_out"]:
             result.update(status="timeout", error=f"timed out after {self.timeout} s")
         elif r["rc"] != 0 or not (work / "census.hdr").is_file():
@@ -356,17 +421,16 @@ class Census:
             result["status"] = "ok"
             shutil.move(str(work / "census.hdr"), image)
         shutil.rmtree(work, ignore_errors=True)
-        meta.write_text(json.dumps(result, indent=1))
-        return result, image
+        return result
 
-    def wardray_command(self, scene_name, output):
+    def wardray_command(self, scene_name, output, declares=()):
         w, h = self.size
         return [str(self.ward.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D",
-                f"+WT{renderers.THREADS}"]
+                f"+WT{renderers.THREADS}", *(f"Declare={d}" for d in declares)]
 
-    def wardray_render(self, scene, image):
+    def wardray_render(self, scene, image, ini):
         work = scratch_copy(scene, self.results / "work" / (self.slug(self.rel(scene)) + ".wardray"))
-        cmd = self.wardray_command(scene.name, "census.hdr")
+        cmd = self.wardray_command(scene.name, "census.hdr", ini["declares"] if ini else ())
         r = self.runner.run(cmd, work, self.timeout)
         error, features, warnings = wardray_diagnostics(r["stdout"] + "\n" + r["stderr"])
         result = {"exit": r["rc"], "seconds": r["seconds"], "features": features, "warnings": warnings[:20],
@@ -391,14 +455,14 @@ class Census:
         gammas, version = gamma_facts(files[0][1], texts)
         rec = {"scene": rel, "key": key, "record": RECORD_VERSION, "stochastic": stochastic_features(texts),
                "assumed_gamma": gammas, "version": version,
-               "ini": (scene.with_suffix(".ini")).is_file(),
                "measured": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")}
         images = self.results / "images" / self.slug(rel)
         images.mkdir(parents=True, exist_ok=True)
         for old in images.iterdir():
             old.unlink()
         rec["povray"], pov_image = self.povray_render(scene, pov_key, fresh)
-        rec["wardray"] = self.wardray_render(scene, images / "wardray.hdr")
+        rec["ini"] = rec["povray"].get("ini")  # the .ini POV-Ray needed, or None
+        rec["wardray"] = self.wardray_render(scene, images / "wardray.hdr", rec["ini"])
         rec["metrics"] = None
         ref = img = None
         if rec["povray"]["status"] == "ok":
@@ -560,7 +624,10 @@ def write_report(path, records, missing, info):
         f"- Scenes: the {info['total']} `.pov` files under `{info['examples']}` (Debian's povray-examples).",
         f"- Each scene rendered by both programs at {SIZE[0]}x{SIZE[1]}, `-A`, linear HDR (`+FH`), one thread each "
         f"(`+WT1`), {info['jobs']} scenes at a time, each program bounded at {TIMEOUT} s, in a scratch copy of the "
-        "scene's folder. Scenes with an animation `.ini` are rendered without it (one frame at clock 0) by both.",
+        "scene's folder. Scenes with an `.ini` beside them are rendered without it (one frame, clock 0, "
+        "frame_number 0) by both; where POV-Ray fails that way (the portfolio), it renders the .ini's first frame "
+        "(`scene.ini +SF<n> +EF<n>`, the census's options after it), and wardray, which reads no .ini and has no "
+        "animation options, gets only the .ini's `Declare=` values; such scenes carry a note.",
         "- Compared as ../shared/docs/METRICS.md says, POV-Ray's image the reference: rRMSE, bad-pixel fraction, "
         "non-finite pixels.",
         f"- Categories: **match** rRMSE ≤ {pct(MATCH_RRMSE, 0)} and bad pixels ≤ {pct(MATCH_BAD, 1)}, no "
@@ -770,7 +837,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=2, help="scenes rendered at once, one thread each (default 2)")
     ap.add_argument("--scenes", action="append", metavar="GLOB",
                     help="only scenes whose path below the examples matches (repeatable), e.g. 'objects/*'")
-    ap.add_argument("--fresh", action="store_true", help="redo every scene, POV-Ray's renders too")
+    ap.add_argument("--fresh", action="store_true", help="redo every chosen scene, POV-Ray's renders too")
     ap.add_argument("--check", nargs="+", metavar="SCENE",
                     help="render these scenes (paths below the examples) with no cache and no report; exit 1 "
                          "when one differs silently, is blocked or POV-Ray fails")
@@ -797,9 +864,7 @@ def main():
     results = pathlib.Path(args.results)
     results.mkdir(parents=True, exist_ok=True)
     census = Census(ward, pov, results, examples)
-    jsonl = results / "results.jsonl"
-    if args.fresh and jsonl.exists():
-        jsonl.unlink()
+    jsonl = results / "results.jsonl"  # appended to; a scene's last line wins, so --fresh needs no deletion
     cached = load_results(jsonl)
     all_scenes = find_scenes(examples, None)
     chosen = find_scenes(examples, args.scenes)

@@ -121,6 +121,19 @@ class OutputTest(unittest.TestCase):
         self.assertEqual(census.povray_error(out), "line 15: Parse Error: Cannot open include file prism3.inc.")
         self.assertIsNone(census.povray_error("Render Statistics\n"))
 
+    def test_read_ini(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            p = pathlib.Path(tmp) / "a.ini"
+            p.write_text("; Initial_Frame=9\nAntialias=On\nInitial_Frame=3\nFinal_Frame= 33\nInitial_Clock=1\n")
+            self.assertEqual(census.read_ini(p), {"file": "a.ini", "frame": 3, "clock": 1.0, "declares": []})
+            p.write_text("Input_File_Name=s.pov\n+kf0.1666 +kff20 +kc declare=fp=0\n+KFI2 +KI0.5\n")
+            self.assertEqual(census.read_ini(p), {"file": "a.ini", "frame": 2, "clock": 0.5, "declares": ["fp=0"]})
+
+    def test_an_ini_is_noted_in_the_reason(self):
+        rec = record(ward="error")
+        rec["ini"] = {"file": "t.ini", "frame": 1, "clock": 0.0, "declares": []}
+        self.assertIn("frame 1 of t.ini", census.classify(rec)[1])
+
     def test_broken_cache_lines_are_skipped(self):
         with tempfile.TemporaryDirectory() as tmp:
             p = pathlib.Path(tmp) / "results.jsonl"
