@@ -28,6 +28,7 @@ so it gets only the .ini's `Declare=` values, and the scene carries a note sayin
 import argparse
 import concurrent.futures
 import datetime
+import fcntl
 import fnmatch
 import hashlib
 import html
@@ -301,15 +302,26 @@ def scratch_copy(scene, work):
 def povray_error(output):
     """POV-Ray's first error with its continuation lines, e.g. "Parse Error: Cannot open include file x.inc"."""
     lines = output.splitlines()
+
+    def joined(i):
+        text = lines[i].strip()
+        for more in lines[i + 1:i + 3]:
+            if more.startswith(" ") and more.strip() and not re.search(r"[Ee]rror", more):
+                text += " " + more.strip()
+            else:
+                break
+        return re.sub(r"^File '[^']*' ", "", text)
+
+    possible = None
     for i, line in enumerate(lines):
-        if re.search(r"(?<!Possible )(Parse|Render|Fatal) [Ee]rror|^Error:|^Problem with option", line):
-            text = line.strip()
-            for more in lines[i + 1:i + 3]:
-                if more.startswith(" ") and more.strip() and not re.search(r"[Ee]rror", more):
-                    text += " " + more.strip()
-                else:
-                    break
-            return re.sub(r"^File '[^']*' ", "", text)[:300]
+        if "Possible Parse Error" in line:
+            possible = i
+        elif re.search(r"(Parse|Render|Fatal) [Ee]rror|^Error:|^Problem with option", line):
+            text = joined(i)
+            # "Fatal error in parser: Cannot open file." says little; the warning before it names the file.
+            if line.startswith("Fatal") and possible is not None:
+                text = joined(possible) + " " + text
+            return text[:300]
     return None
 
 
@@ -537,6 +549,17 @@ def write_png(path, pixels):
 # ---------------------------------------------------------------------------------------------------------------
 # The cache of results.
 
+def load_jsonl(path):
+    out = []
+    if path.is_file():
+        for line in path.read_text(errors="replace").splitlines():
+            try:
+                out.append(json.loads(line))
+            except json.JSONDecodeError:
+                continue
+    return out
+
+
 def load_results(path):
     """{scene: record} from results.jsonl, the last line of a scene winning; broken lines (an interrupt) skipped."""
     records = {}
@@ -595,6 +618,23 @@ def stochastic_cell(rec):
     return f"{', '.join(rec['stochastic'])} (tol. {pct(STOCHASTIC_RRMSE, 0)})"
 
 
+CAUSE_GROUPS = ("gamma: assumed_gamma ≠ 1",
+                "gamma: #version < 3.7 and no assumed_gamma (POV-Ray's gamma handling off)",
+                "#version < 3.7 with assumed_gamma 1 (pre-3.7 semantics, not gamma)",
+                "other: #version 3.7 (or none) and assumed_gamma 1")
+
+
+def cause_group(rec):
+    h = hints(rec)
+    if any(x.startswith("assumed_gamma") for x in h):
+        return CAUSE_GROUPS[0]
+    if any(x.startswith("#version") and x.endswith("no assumed_gamma") for x in h):
+        return CAUSE_GROUPS[1]
+    if any(x.startswith("#version") for x in h):
+        return CAUSE_GROUPS[2]
+    return CAUSE_GROUPS[3]
+
+
 def totals(records):
     counts = {c: 0 for c in CATEGORIES}
     for rec in records:
@@ -617,7 +657,7 @@ def write_report(path, records, missing, info):
     lines = [
         "# Render census: POV-Ray's example scenes, POV-Ray 3.7 against wardray",
         "",
-        f"Produced by `{info['command']}` on {info['date']}.",
+        f"Produced by `{info['command']}` on {info['date']}. {info['runtime']}",
         "",
         f"- wardray: {info['commit']}, binary `{info['wardray']}` (sha256 {info['digest'][:12]}).",
         f"- POV-Ray: {info['povray']}.",
@@ -673,30 +713,34 @@ def write_report(path, records, missing, info):
     lines += ["## Silent differences, worst first", "",
               f"{len(silent)} scenes differ by more than {pct(SILENT_RRMSE, 0)} (stochastic: "
               f"{pct(STOCHASTIC_RRMSE, 0)}) with no \"not rendered yet\" warning.", ""]
-    groups = {"gamma (assumed_gamma ≠ 1)": 0, "#version < 3.7": 0, "other": 0}
+    groups = {}
     for r in silent:
-        h = hints(r)
-        if any(x.startswith("assumed_gamma") for x in h):
-            groups["gamma (assumed_gamma ≠ 1)"] += 1
-        elif any(x.startswith("#version") for x in h):
-            groups["#version < 3.7"] += 1
-        else:
-            groups["other"] += 1
-    lines += ["By likely cause: " + ", ".join(f"{k} {v}" for k, v in groups.items()) + ".", ""]
+        groups.setdefault(cause_group(r), []).append(r["scene"])
+    lines += ["By likely cause (from the scene text):", "", "| likely cause | scenes | which |", "|---|---:|---|"]
+    for g in CAUSE_GROUPS:
+        names = groups.get(g, [])
+        shown = ", ".join(f"`{n}`" for n in names) if g not in CAUSE_GROUPS[:2] else ""
+        lines.append(f"| {g} | {len(names)} | {shown} |")
+    lines.append("")
     lines += ["| scene | rRMSE | bad | stochastic | hints |", "|---|---:|---:|---|---|"]
     for r in silent:
         lines.append(f"| {cell(r['scene'])} | {pct(r['metrics']['rrmse'])} | {pct(r['metrics']['bad'])} | "
                      f"{stochastic_cell(r)} | {cell(r['reason'])} |")
     lines.append("")
 
-    features = {}
+    features, alone = {}, {}
     for r in records:
-        for f in r["wardray"].get("features", []):
+        found = r["wardray"].get("features", [])
+        for f in found:
             features[f] = features.get(f, 0) + 1
+        if len(found) == 1 and r["category"] == "differ-with-warning":
+            alone[found[0]] = alone.get(found[0], 0) + 1
     if features:
-        lines += ["## Features not rendered yet, by scenes", "", "| feature | scenes |", "|---|---:|"]
+        lines += ["## Features not rendered yet, by scenes", "",
+                  "\"alone\": scenes that differ with this feature as their only warning (what rendering it could win).",
+                  "", "| feature | scenes | alone |", "|---|---:|---:|"]
         for f, n in sorted(features.items(), key=lambda kv: (-kv[1], kv[0])):
-            lines.append(f"| {cell(f)} | {n} |")
+            lines.append(f"| {cell(f)} | {n} | {alone.get(f, 0)} |")
         lines.append("")
 
     lines += ["## Every scene", "",
@@ -728,7 +772,7 @@ def write_sheet(path, records, info):
            "image-rendering:pixelated;background:#000;margin-right:4px} .c{padding:1px 5px;border-radius:3px;"
            "color:#fff} .n{height:180px;width:240px;display:inline-block;background:#111;color:#888;"
            "vertical-align:top;margin-right:4px;text-align:center;line-height:180px}</style>",
-           f"<h1>wardray render census</h1><p>{html.escape(info['commit'])}, {html.escape(info['date'])}, "
+           f"<h1>wardray render census</h1><p>{html.escape(info['commit'].replace('`', ''))}, {html.escape(info['date'])}, "
            f"{SIZE[0]}x{SIZE[1]}, -A, +WT1. Left to right: POV-Ray, wardray, difference (grey up to the bad-pixel "
            "threshold, red bad pixels, magenta non-finite). Sorted by rRMSE, worst first; then blocked, then "
            "POV-Ray failures.</p><p>" +
@@ -863,6 +907,12 @@ def main():
 
     results = pathlib.Path(args.results)
     results.mkdir(parents=True, exist_ok=True)
+    lock = (results / "lock").open("w")  # two runs on one folder would delete each other's scratch folders
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        sys.exit(f"census: another census is running on {results}")
+    shutil.rmtree(results / "work", ignore_errors=True)  # scratch folders of renders an interrupt cut short
     census = Census(ward, pov, results, examples)
     jsonl = results / "results.jsonl"  # appended to; a scene's last line wins, so --fresh needs no deletion
     cached = load_results(jsonl)
@@ -874,7 +924,7 @@ def main():
           f"{args.jobs} at a time", file=sys.stderr, flush=True)
 
     started = time.monotonic()
-    lock = threading.Lock()
+    record_lock = threading.Lock()
     bar = CensusProgress([census.rel(s) for s in todo], args.jobs)
     problem = []
 
@@ -887,7 +937,7 @@ def main():
             rec = census.measure(scene, fresh=args.fresh)
         except Interrupted:
             return None
-        with lock:
+        with record_lock:
             if census.runner.stop.is_set():
                 return None
             with jsonl.open("a") as f:
@@ -929,10 +979,15 @@ def main():
         rec["category"], rec["reason"] = classify(rec)  # the stored category may predate a change of the rules
     with (results / "runs.jsonl").open("a") as f:
         f.write(json.dumps({"date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
-                            "argv": sys.argv, "rendered": len(todo), "seconds": elapsed,
+                            "argv": sys.argv, "wardray": census.ward_digest, "jobs": args.jobs,
+                            "rendered": bar.done, "seconds": elapsed,
                             "interrupted": interrupted}) + "\n")
     shown = shown_path(args.wardray)
-    info = {"command": shlex.join(["tools/census.py", *sys.argv[1:]]),
+    full = [r for r in load_jsonl(results / "runs.jsonl") if r.get("rendered") == len(all_scenes)
+            and not r.get("interrupted") and r.get("wardray") == census.ward_digest]
+    runtime = (f"The last run that rendered all {len(all_scenes)} scenes with this binary (finished "
+               f"{full[-1]['date'][:16].replace('T', ' ')} UTC) took {progress.format_seconds(full[-1]['seconds'])} of wall time." if full else "")
+    info = {"runtime": runtime, "command": shlex.join(["tools/census.py", *sys.argv[1:]]),
             "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
             "commit": wardray_commit(ward.exe), "wardray": str(shown), "digest": census.ward_digest,
             "povray": pov.version, "examples": str(examples), "total": len(all_scenes), "jobs": args.jobs,
@@ -940,7 +995,7 @@ def main():
     write_report(pathlib.Path(args.out), current, missing, info)
     write_sheet(results / "index.html", current, info)
     counts = totals(current)
-    print(f"census: {len(todo)} scenes rendered in {progress.format_seconds(elapsed)}; "
+    print(f"census: {bar.done} scenes rendered in {progress.format_seconds(elapsed)}; "
           + ", ".join(f"{c} {counts[c]}" for c in CATEGORIES)
           + (f", not measured {len(missing)}" if missing else "")
           + f"\ncensus: wrote {args.out} and {results / 'index.html'}", file=sys.stderr)

@@ -120,6 +120,11 @@ class OutputTest(unittest.TestCase):
                "Fatal error in parser: Cannot parse input.\n")
         self.assertEqual(census.povray_error(out), "line 15: Parse Error: Cannot open include file prism3.inc.")
         self.assertIsNone(census.povray_error("Render Statistics\n"))
+        out = ("File 'sort.pov' line 82: Possible Parse Error: Cannot find file 'arial.ttf',\n"
+               " even after trying to append file type extension.\n"
+               "Fatal error in parser: Cannot open file.\n")
+        self.assertEqual(census.povray_error(out), "line 82: Possible Parse Error: Cannot find file 'arial.ttf', "
+                         "even after trying to append file type extension. Fatal error in parser: Cannot open file.")
 
     def test_read_ini(self):
         with tempfile.TemporaryDirectory() as tmp:
