@@ -25,6 +25,7 @@
 #include "camera/camera.h"
 #include "app/diff_command.h"
 #include "app/options.h"
+#include "render/output_gamma.h"
 #include "render/renderer.h"
 
 #ifndef WARDRAY_SOURCE_DIR
@@ -356,8 +357,15 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     render::RenderSettings settings;
     settings.width = options.width;
     settings.height = options.height;
+    const render::OutputGamma output_gamma =
+        render::output_gamma(scene.global, options.file_gamma, options.display_gamma);
+    // POV-Ray compat: antialiasing compares colours after decoding the working gamma (not when gamma is off).
+    const double antialias_gamma =
+        scene.global.gamma_handling
+            ? render::antialias_gamma_on_working_values(options.antialias_gamma, scene.global.assumed_gamma)
+            : options.antialias_gamma;
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
-                          options.antialias_gamma};
+                          antialias_gamma};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     const render::RenderResult result = render::render_image(
@@ -368,7 +376,7 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
     // Write.
     phase_start = Clock::now();
     if (options.write_output) {
-        if (auto error = render::write_image(result.film, output, format)) {
+        if (auto error = render::write_image(result.film, output, format, output_gamma)) {
             std::cerr << "wardray: error: " << *error << "\n";
             return kExitScene;
         }

@@ -31,6 +31,20 @@ bool starts_with_ci(const std::string& s, const std::string& prefix) {
     return true;
 }
 
+// POV-Ray's gamma INI values: a positive number (1.0 is no gamma) or sRGB.
+bool parse_gamma(const std::string& text, GammaCurve& out) {
+    double g = 0.0;
+    if (parse_double(text, g) && g > 0.0) {
+        out = GammaCurve::power_law(g);
+        return true;
+    }
+    if (text.size() == 4 && starts_with_ci(text, "srgb")) {
+        out = GammaCurve::srgb();
+        return true;
+    }
+    return false;
+}
+
 // Image sizes beyond this are refused before any memory is asked for (64k x 64k is 48 GiB of film).
 constexpr int kMaxImageSide = 65536;
 
@@ -243,6 +257,12 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
                 error = UsageError{"invalid '" + arg + "': expected Declare=NAME=NUMBER"};
             else
                 o.declares.emplace_back(rest.substr(0, eq), v);
+        } else if (starts_with_ci(arg, "File_Gamma=") || starts_with_ci(arg, "Display_Gamma=")) {
+            // POV-Ray's File_Gamma=G and Display_Gamma=G INI settings, given on the command line.
+            const auto eq = arg.find('=');
+            GammaCurve& target = arg[0] == 'F' || arg[0] == 'f' ? o.file_gamma : o.display_gamma;
+            if (!parse_gamma(arg.substr(eq + 1), target))
+                error = UsageError{"invalid '" + arg + "': expected a positive gamma or sRGB"};
         } else if (arg.size() >= 2 && (arg[0] == '+' || arg[0] == '-')) {
             error = apply_pov_switch(arg[0] == '+', arg.substr(1), o);
             if (!error && (arg[1] == 'I' || arg[1] == 'i')) have_scene = true;
@@ -269,6 +289,8 @@ std::string usage_text() {
            "                    +AGn comparison gamma (2.5), +AM1 sampling method\n"
            "  +Lpath            add an #include search folder\n"
            "  Declare=N=V       define the float N before parsing\n"
+           "  File_Gamma=G      PNG encoding gamma: sRGB (default) or a number (1.0: linear)\n"
+           "  Display_Gamma=G   display gamma (sRGB); 3.6 scenes without assumed_gamma write HDR with it\n"
            "  +D -D +V -V       accepted as in POV-Ray\n"
            "  --check           parse and describe the scene, render nothing\n"
            "  --gi=cache|reference|off  how indirect light is computed (default: cache with a radiosity block)\n"
