@@ -45,6 +45,11 @@ struct GammaTranscoding {
 
 /// POV-Ray 3.7's transcoding from `working` to `target`, with its simplifications: a neutral working curve
 /// leaves `target` alone, matching curves cancel, and two power laws (or one and the identity) fold into one.
+/// Image inputs (image_map, not rendered yet) will take texels into the working gamma with
+/// `transcoding(working, file_gamma).decode(v)`: file_gamma from `gamma G` in the image_map if given, else the
+/// file's own (PNG: its sRGB or gAMA chunk, else sRGB; HDR and EXR: neutral), else sRGB; but a scene that set
+/// assumed_gamma under #version < 3.7 takes untagged files to be in the working gamma, and with gamma handling off
+/// (GlobalSettings::gamma_handling) texels are used as they are.
 GammaTranscoding transcoding(const GammaCurve& working, const GammaCurve& target);
 
 }  // namespace wardray
