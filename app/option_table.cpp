@@ -164,6 +164,23 @@ Why set_antialias_gamma(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+// POV-Ray's File_Gamma= and Display_Gamma=: a positive number (1.0 is no gamma) or sRGB.
+Why set_gamma(std::string_view text, GammaCurve& out) {
+    double g = 0.0;
+    if (parse_double(text, g) && g > 0.0) {
+        out = GammaCurve::power_law(g);
+        return std::nullopt;
+    }
+    if (text.size() == 4 && std::tolower(static_cast<unsigned char>(text[0])) == 's' &&
+        std::tolower(static_cast<unsigned char>(text[1])) == 'r' &&
+        std::tolower(static_cast<unsigned char>(text[2])) == 'g' &&
+        std::tolower(static_cast<unsigned char>(text[3])) == 'b') {
+        out = GammaCurve::srgb();
+        return std::nullopt;
+    }
+    return "expected a positive gamma or sRGB";
+}
+
 // Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
 Why set_sampling_method(const OptionUse& use, Options&) {
     if (use.value != "1") return "only sampling method 1 (+AM1) is supported so far";
@@ -230,6 +247,12 @@ constexpr OptionSpec kOptions[] = {
     {.letters = "L", .ini_key = "Library_Path", .kind = K::Value, .usage = "+Lpath",
      .help = "add an #include search folder",
      .set = [](U u, Options& o) { return add_path(u.value, "expected a library folder", o.library_paths); }},
+    {.ini_key = "File_Gamma", .kind = K::Value, .usage = "File_Gamma=G",
+     .help = "PNG encoding gamma: sRGB (default) or a number (1.0: linear)",
+     .set = [](U u, Options& o) { return set_gamma(u.value, o.file_gamma); }},
+    {.ini_key = "Display_Gamma", .kind = K::Value, .usage = "Display_Gamma=G",
+     .help = "display gamma (sRGB); scenes without gamma handling write HDR with it",
+     .set = [](U u, Options& o) { return set_gamma(u.value, o.display_gamma); }},
     {.ini_key = "Declare", .kind = K::Value, .usage = "Declare=N=V", .help = "define the float N before parsing",
      .set = set_declare},
     {.letters = "D", .ini_flag = "Display", .kind = K::Flag, .usage = "+D, -D", .help = "accepted as in POV-Ray",

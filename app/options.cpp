@@ -70,12 +70,20 @@ std::optional<std::string> apply_ini_value(const OptionSpec& spec, bool is_flag_
     return spec.set(OptionUse{std::nullopt, value, {}}, o);
 }
 
-// POV-Ray compat: Declare=NAME=VALUE, an INI setting, is also written on the command line.
-std::optional<UsageError> apply_declare(const std::string& arg, Options& o) {
-    bool is_flag_key = false;
-    const OptionSpec* spec = find_ini_key("Declare", is_flag_key);
-    if (auto why = spec->set(OptionUse{std::nullopt, std::string_view(arg).substr(8), {}}, o))
-        return UsageError{"invalid '" + arg + "': " + *why};
+// The table entry of a command-line argument written as an INI setting (`Declare=N=V`, `File_Gamma=2.2`), or null.
+const OptionSpec* ini_argument_spec(const std::string& arg, bool& is_flag_key) {
+    const auto eq = arg.find('=');
+    if (eq == std::string::npos || eq == 0 || arg[0] == '+' || arg[0] == '-') return nullptr;
+    return find_ini_key(std::string_view(arg).substr(0, eq), is_flag_key);
+}
+
+// POV-Ray compat: an INI setting may also be written on the command line, as KEY=VALUE.
+std::optional<UsageError> apply_ini_argument(const std::string& arg, const OptionSpec& spec, bool is_flag_key,
+                                             Options& o) {
+    const std::string_view value = std::string_view(arg).substr(arg.find('=') + 1);
+    const std::optional<std::string> why =
+        is_flag_key ? apply_ini_value(spec, true, value, o) : spec.set(OptionUse{std::nullopt, value, {}}, o);
+    if (why) return UsageError{"invalid '" + arg + "': " + *why};
     return std::nullopt;
 }
 
@@ -90,10 +98,11 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
             return std::nullopt;
         };
         std::optional<UsageError> error;
+        bool is_flag_key = false;
         if (arg.rfind("--", 0) == 0 || find_long_option(arg)) {
             error = apply_long_option(arg, o, next);
-        } else if (starts_with_ci(arg, "Declare=")) {
-            error = apply_declare(arg, o);
+        } else if (const OptionSpec* spec = ini_argument_spec(arg, is_flag_key)) {
+            error = apply_ini_argument(arg, *spec, is_flag_key, o);
         } else if (arg.size() >= 2 && (arg[0] == '+' || arg[0] == '-')) {
             error = apply_switch(arg[0] == '+', std::string_view(arg).substr(1), o);
         } else if (!arg.empty()) {

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/gamma.h"
 #include "lighting/integrator.h"
 #include "render/film.h"
 
@@ -29,6 +30,8 @@ struct Options {
     int antialias_depth = 3;           ///< +R3
     double jitter = 1.0;               ///< +J1.0, -J: 0
     double antialias_gamma = 2.5;      ///< +AG2.5
+    GammaCurve file_gamma = GammaCurve::srgb();     ///< File_Gamma=: the PNG encoding (HDR and EXR stay linear)
+    GammaCurve display_gamma = GammaCurve::srgb();  ///< Display_Gamma=: used for files only by 3.6 scenes
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
     int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients

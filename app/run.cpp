@@ -14,6 +14,7 @@
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
+#include "render/output_gamma.h"
 #include "texture/noise.h"
 
 #ifndef WARDRAY_SOURCE_DIR
@@ -251,8 +252,13 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
     render::RenderSettings settings;
     settings.width = options.width;
     settings.height = options.height;
+    // POV-Ray compat: antialiasing compares colours after decoding the working gamma (not when gamma is off).
+    const double antialias_gamma =
+        scene.global.gamma_handling
+            ? render::antialias_gamma_on_working_values(options.antialias_gamma, scene.global.assumed_gamma)
+            : options.antialias_gamma;
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
-                          options.antialias_gamma};
+                          antialias_gamma};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     RenderedFrame frame{render::render_image(
@@ -267,7 +273,8 @@ bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination
                    const render::RenderResult& result) {
     const Options& options = job.options;
     if (options.write_output) {
-        if (auto error = render::write_image(result.film, job.output, job.format)) {
+        const render::OutputGamma gamma = render::output_gamma(scene.global, options.file_gamma, options.display_gamma);
+        if (auto error = render::write_image(result.film, job.output, job.format, gamma)) {
             std::cerr << "wardray: error: " << *error << "\n";
             return false;
         }

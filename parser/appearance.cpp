@@ -6,14 +6,6 @@
 
 namespace wardray::parser {
 
-namespace {
-
-double srgb_to_linear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-}  // namespace
-
 bool Parser::is_color_keyword(const Token& t) const {
     if (t.kind != TokenKind::Identifier) return false;
     static const char* const words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf",
@@ -51,9 +43,14 @@ Color Parser::parse_color() {
             c.g = p.v[1];
             c.b = p.v[2];
             if (srgb) {
-                c.r = srgb_to_linear(c.r);
-                c.g = srgb_to_linear(c.g);
-                c.b = srgb_to_linear(c.b);
+                // POV-Ray compat: sRGB values are decoded and re-encoded with the working gamma, which must
+                // already be known; before assumed_gamma POV-Ray stops with this error.
+                if (!m_scene.global.assumed_gamma_given)
+                    fail(t, "cannot read sRGB colours before assumed_gamma is set");
+                const GammaTranscoding to_working = transcoding(m_scene.global.assumed_gamma, GammaCurve::srgb());
+                c.r = to_working.decode(c.r);
+                c.g = to_working.decode(c.g);
+                c.b = to_working.decode(c.b);
             }
             if (form == "rgbf") c.filter = p.v[3];
             if (form == "rgbt") c.transmit = p.v[3];

@@ -145,6 +145,7 @@ void Parser::run_directive(const Token& tok) {
         directive_macro(tok);
     } else if (name == "version") {
         m_version = parse_float();
+        m_version_given = true;
         if (is_punct(peek_expr(), ";")) next();
     } else if (name == "debug" || name == "render" || name == "statistics") {
         const std::string message = parse_string();

@@ -199,11 +199,17 @@ ParseResult Parser::run(std::string text, const std::string& path) {
             }
             for (const Cond& c : m_conds)
                 report(make_diagnostic(Severity::Error, c.where, "'#" + c.where.text + "' has no matching #end"));
-            if (!m_scene.global.assumed_gamma_given && m_version >= 3.7) {
+            if (!m_scene.global.assumed_gamma_given) {
+                // POV-Ray compat: without assumed_gamma, a scene whose final #version is below 3.7, or that has
+                // no #version anywhere (POV-Ray then assumes 3.62), gets POV-Ray 3.6's "no gamma handling".
+                m_scene.global.gamma_handling = m_version_given && m_version >= 3.7;
                 Diagnostic d;
                 d.severity = Severity::Warning;
                 d.loc.path = path;
-                d.message = "assumed_gamma not given in global_settings; using 1.0";
+                d.message = m_scene.global.gamma_handling
+                                ? "assumed_gamma not given in global_settings; using 1.0"
+                                : "assumed_gamma not given in a scene for POV-Ray before 3.7 (by its #version, or "
+                                  "having none): gamma handling is off, as in POV-Ray 3.6";
                 report(std::move(d));
             }
         } catch (const FatalError&) {

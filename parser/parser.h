@@ -398,6 +398,7 @@ private:
     std::uint64_t m_loop_iterations = 0;
     std::vector<std::uint32_t> m_rand_streams;  ///< states of the streams seed() created
     double m_version = 3.7;
+    bool m_version_given = false;  ///< a #version was read (in any file): POV-Ray then stops assuming 3.62
     bool m_charset_utf8 = false;  ///< global_settings { charset utf8 }: text strings are decoded as UTF-8
     /// Fonts read so far, by resolved path; POV-Ray keeps each font's glyph cache for the whole scene.
     std::map<std::string, std::shared_ptr<TrueTypeFont>> m_fonts;

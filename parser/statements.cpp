@@ -615,13 +615,20 @@ void Parser::parse_global_settings(const Token& kw) {
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a global setting but found '" + w + "'");
         if (w == "assumed_gamma") {
-            if (accept_keyword("srgb")) {
-                warn_unsupported(t, "assumed_gamma srgb");
-                g.assumed_gamma = 2.2;
-            } else {
-                g.assumed_gamma = parse_float();
+            GammaCurve gamma = GammaCurve::srgb();
+            if (!accept_keyword("srgb")) {
+                const Token at = peek();
+                const double value = parse_float();
+                if (!(value > 0.0)) fail(at, "gamma value must be positive");
+                gamma = GammaCurve::power_law(value);
             }
-            g.assumed_gamma_given = true;
+            // POV-Ray compat: the first assumed_gamma stays in force.
+            if (g.assumed_gamma_given) {
+                warn(t, "a second assumed_gamma is ignored");
+            } else {
+                g.assumed_gamma = gamma;
+                g.assumed_gamma_given = true;
+            }
         } else if (w == "ambient_light") {
             g.ambient_light = parse_color();
         } else if (w == "max_trace_level") {

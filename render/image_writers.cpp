@@ -74,11 +74,19 @@ unsigned char encode_srgb8(float v) {
     return static_cast<unsigned char>(std::floor(srgb_encode(clipped) * 255.0 + 0.5));
 }
 
+unsigned char encode8(const GammaTranscoding& encoding, float v) {
+    if (encoding == transcoding(GammaCurve::neutral(), GammaCurve::srgb())) return encode_srgb8(v);
+    // POV-Ray compat: quantised in single precision, as POV-Ray does, so values on a half level round alike.
+    const float encoded = std::isfinite(v) ? static_cast<float>(encoding.encode(v)) : 0.0f;
+    return static_cast<unsigned char>(std::floor(std::clamp(encoded, 0.0f, 1.0f) * 255.0f + 0.5f));
+}
+
 namespace {
 
 // The libpng calls, in a function of their own: libpng reports errors by longjmp, so only plain locals may
 // live across its setjmp (the caller owns the file and the row buffer). Returns false on a libpng error.
-bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row) {
+bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row, const GammaTranscoding& encoding,
+                    const GammaCurve& file_gamma) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -92,13 +100,20 @@ bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row) {
     png_init_io(png, file);
     png_set_IHDR(png, info, film.width(), film.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (file_gamma.kind == GammaCurve::Kind::Srgb)
+        png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    else
+        png_set_gAMA(png, info, 1.0 / file_gamma.approximate_gamma());
     png_write_info(png, info);
     const float* data = film.data().data();
     const std::size_t row_size = static_cast<std::size_t>(film.width()) * 3;
+    const bool plain_srgb = encoding == transcoding(GammaCurve::neutral(), GammaCurve::srgb());
     for (int y = 0; y < film.height(); ++y) {
         const float* src = data + static_cast<std::size_t>(y) * row_size;
-        for (std::size_t i = 0; i < row_size; ++i) row[i] = encode_srgb8(src[i]);
+        if (plain_srgb)
+            for (std::size_t i = 0; i < row_size; ++i) row[i] = encode_srgb8(src[i]);
+        else
+            for (std::size_t i = 0; i < row_size; ++i) row[i] = encode8(encoding, src[i]);
         png_write_row(png, row);
     }
     png_write_end(png, info);
@@ -109,10 +124,16 @@ bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row) {
 }  // namespace
 
 std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path) {
+    return write_png(film, path, transcoding(GammaCurve::neutral(), GammaCurve::srgb()), GammaCurve::srgb());
+}
+
+std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path,
+                                     const GammaTranscoding& encoding, const GammaCurve& file_gamma) {
     File file(std::fopen(path.c_str(), "wb"));
     if (!file) return std::string("cannot open for writing");
     std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * 3);
-    if (!write_png_rows(file.get(), film, row.data())) return std::string("libpng failed while writing");
+    if (!write_png_rows(file.get(), film, row.data(), encoding, file_gamma))
+        return std::string("libpng failed while writing");
     if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return std::string("write failed");
     return std::nullopt;
 }

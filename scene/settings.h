@@ -5,6 +5,7 @@
 
 #include "core/color.h"
 #include "core/diagnostics.h"
+#include "core/gamma.h"
 
 namespace wardray::scene {
 
@@ -32,9 +33,13 @@ struct RadiositySettings {
     bool operator==(const RadiositySettings&) const = default;
 };
 
+/// The scene-wide settings of global_settings, with POV-Ray 3.7's defaults.
 struct GlobalSettings {
-    double assumed_gamma = 1.0;
+    GammaCurve assumed_gamma;  ///< the working gamma: how the scene's colour values are encoded
     bool assumed_gamma_given = false;
+    /// POV-Ray 3.7's gamma model; false when the scene gives no assumed_gamma and its #version is below 3.7 or
+    /// missing: POV-Ray 3.6's "no gamma handling", colour values written to files as they are.
+    bool gamma_handling = true;
     Color ambient_light{1.0, 1.0, 1.0};
     int max_trace_level = 5;
     double adc_bailout = 1.0 / 255.0;

@@ -122,7 +122,8 @@ TEST(Golden, MisspeltKeyword) {
               "    1 | spher { 0, 1 }\n"
               "      | ^~~~~\n"
               "note: did you mean 'sphere'?\n"
-              "test.pov: warning: assumed_gamma not given in global_settings; using 1.0\n");
+              "test.pov: warning: assumed_gamma not given in a scene for POV-Ray before 3.7 (by its #version, or having "
+              "none): gamma handling is off, as in POV-Ray 3.6\n");
 }
 
 TEST(Golden, UnclosedBraceAtEndOfFile) {
@@ -260,7 +261,8 @@ TEST(Golden, RedeclaringAKeyword) {
               "test.pov:1:10: error: 'sphere' is a reserved word and cannot be declared\n"
               "    1 | #declare sphere = 1;\n"
               "      |          ^~~~~~\n"
-              "test.pov: warning: assumed_gamma not given in global_settings; using 1.0\n");
+              "test.pov: warning: assumed_gamma not given in a scene for POV-Ray before 3.7 (by its #version, or having "
+              "none): gamma handling is off, as in POV-Ray 3.6\n");
 }
 
 TEST(Golden, UnknownDotItem) {
