@@ -75,29 +75,7 @@ const char* gi_name(lighting::GiMode mode) {
     return "off";
 }
 
-const char* shape_name(const scene::Shape& shape) {
-    static constexpr const char* names[] = {"sphere", "box",   "plane", "cylinder", "cone",           "disc",
-                                            "torus",  "mesh",  "polygon", "quadric", "superellipsoid", "quartic",
-                                            "prism",  "lathe", "sor", "text", "csg"};
-    static_assert(std::variant_size_v<scene::Shape> == std::size(names));
-    if (const auto* mesh = std::get_if<scene::Mesh>(&shape)) {
-        switch (mesh->kind) {
-            case scene::Mesh::Kind::Triangle: return "triangle";
-            case scene::Mesh::Kind::SmoothTriangle: return "smooth_triangle";
-            case scene::Mesh::Kind::Mesh: return "mesh";
-            case scene::Mesh::Kind::Mesh2: return "mesh2";
-        }
-    }
-    if (const auto* csg = std::get_if<scene::Csg>(&shape)) {
-        switch (csg->op) {
-            case scene::Csg::Op::Union: return "union";
-            case scene::Csg::Op::Intersection: return "intersection";
-            case scene::Csg::Op::Difference: return "difference";
-            case scene::Csg::Op::Merge: return "merge";
-        }
-    }
-    return names[shape.index()];
-}
+const char* shape_name(const scene::Shape& shape) { return scene::shape_keyword(shape); }
 
 const char* light_name(scene::Light::Type type) {
     switch (type) {
