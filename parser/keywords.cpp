@@ -66,8 +66,8 @@ const std::vector<std::string_view> k_handled = {
     "look_at", "low_error_factor", "matrix", "max", "max_intersections", "max_sample", "max_trace_level",
     "maximum_reuse", "media_attenuation", "media_interaction", "metallic", "min", "minimum_reuse",
     "mm_per_unit", "mod", "nearest_count", "no", "no_image", "no_radiosity", "no_reflection", "no_shadow",
-    "noise_generator", "number_of_waves", "off", "omnimax", "on", "orient", "orthographic", "panoramic",
-    "parallel", "perspective", "phong", "phong_size", "pi", "pigment", "point_at", "pow",
+    "noise_generator", "number_of_waves", "off", "omnimax", "on", "orient", "panoramic",
+    "parallel", "phong", "phong_size", "pi", "pigment", "point_at", "pow",
     "pretrace_end", "pretrace_start", "quick_color", "quick_colour", "radians", "radiosity", "radius",
     "recursion_limit", "red", "reflection", "reflection_exponent", "rgb", "rgbf", "rgbft", "rgbt", "right",
     "rotate", "roughness", "save_file", "scale", "select", "shadowless", "sin", "sinh", "sky", "specular",
@@ -91,6 +91,7 @@ std::unordered_set<std::string_view> reserved_words() {
     auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
     s.insert(k_shape_keywords.begin(), k_shape_keywords.end());
     for (const auto& p : k_pattern_keywords) s.insert(p.keyword);
+    for (const auto& c : k_camera_keywords) s.insert(c.keyword);
     return s;
 }
 
