@@ -15,39 +15,6 @@ namespace wardray::app {
 
 namespace {
 
-const char* shape_name(const scene::Shape& shape) {
-    static constexpr const char* names[] = {"sphere", "box",   "plane", "cylinder", "cone",           "disc",
-                                            "torus",  "mesh",  "polygon", "quadric", "superellipsoid", "quartic",
-                                            "prism",  "lathe", "sor", "text", "csg"};
-    static_assert(std::variant_size_v<scene::Shape> == std::size(names));
-    if (const auto* mesh = std::get_if<scene::Mesh>(&shape)) {
-        switch (mesh->kind) {
-            case scene::Mesh::Kind::Triangle: return "triangle";
-            case scene::Mesh::Kind::SmoothTriangle: return "smooth_triangle";
-            case scene::Mesh::Kind::Mesh: return "mesh";
-            case scene::Mesh::Kind::Mesh2: return "mesh2";
-        }
-    }
-    if (const auto* csg = std::get_if<scene::Csg>(&shape)) {
-        switch (csg->op) {
-            case scene::Csg::Op::Union: return "union";
-            case scene::Csg::Op::Intersection: return "intersection";
-            case scene::Csg::Op::Difference: return "difference";
-            case scene::Csg::Op::Merge: return "merge";
-        }
-    }
-    return names[shape.index()];
-}
-
-const char* light_name(scene::Light::Type type) {
-    switch (type) {
-        case scene::Light::Type::Point: return "point";
-        case scene::Light::Type::Spot: return "spotlight";
-        case scene::Light::Type::Parallel: return "parallel";
-        case scene::Light::Type::Cylinder: return "cylinder";
-    }
-    return "point";
-}
 
 std::string vec_text(const Vec3& v) {
     std::ostringstream s;
@@ -60,7 +27,7 @@ void describe_scene(const scene::Scene& scene, std::ostream& out) {
     out << "scene: " << scene.path << "\n";
     out << "version: " << scene.version << "\n";
     out << "camera: "
-        << (scene.camera.type == scene::Camera::Type::Orthographic ? "orthographic" : "perspective")
+        << scene::camera_type_name(scene.camera.type)
         << " at " << vec_text(scene.camera.location) << " looking along " << vec_text(scene.camera.direction)
         << "\n";
     // "objects: 3 (box 1, sphere 2)": a total, then the count of each kind in name order.
@@ -74,10 +41,10 @@ void describe_scene(const scene::Scene& scene, std::ostream& out) {
         out << (by_kind.empty() ? "" : ")") << "\n";
     };
     std::map<std::string, int> objects;
-    for (const scene::Object& o : scene.objects) ++objects[shape_name(o.shape)];
+    for (const scene::Object& o : scene.objects) ++objects[scene::shape_keyword(o.shape)];
     counts("objects", scene.objects.size(), objects);
     std::map<std::string, int> lights;
-    for (const scene::Light& l : scene.lights) ++lights[light_name(l.type)];
+    for (const scene::Light& l : scene.lights) ++lights[std::string(scene::light_type_name(l.type))];
     counts("lights", scene.lights.size(), lights);
     out << "radiosity: " << (scene.global.radiosity ? "on" : "off") << "\n";
     out << "warnings: " << scene.warnings.size() << "\n";
@@ -91,7 +58,7 @@ void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint
         Diagnostic d;
         d.severity = Severity::Warning;
         d.loc = scene.objects[index].loc;
-        d.message = std::string(shape_name(scene.objects[index].shape)) +
+        d.message = std::string(scene::shape_keyword(scene.objects[index].shape)) +
                     " is degenerate (zero size, singular transform or non-finite numbers) and is not rendered";
         std::cerr << format_diagnostic(d);
     }

@@ -14,33 +14,40 @@ std::optional<AnyShape> wrap(const Description& d) {
     return std::nullopt;
 }
 
+// True when geometry type G is built from scene shape S (it has `G::create(const S&)`).
+template <typename G, typename S>
+constexpr bool builds = requires(const S& s) { G::create(s); };
+
+// How many alternatives of AnyShape are built from scene shape S.
+template <typename S, typename... G>
+constexpr int builder_count(const std::variant<G...>*) {
+    return (0 + ... + (builds<G, S> ? 1 : 0));
+}
+
+// Builds the first alternative of AnyShape that is built from `s`.
+template <typename S, typename G, typename... Rest>
+std::optional<AnyShape> build_first(const S& s, const std::variant<G, Rest...>*) {
+    if constexpr (builds<G, S>) return wrap<G>(s);
+    else return build_first(s, static_cast<const std::variant<Rest...>*>(nullptr));
+}
+
+// The geometry factory: each scene shape of WARDRAY_SHAPES (and Csg) becomes the one geometry type whose `create`
+// takes it, so a shape without a geometry, or with two, fails to compile here.
+template <typename S>
+std::optional<AnyShape> make_geometry(const S& s) {
+    constexpr const AnyShape* any = nullptr;
+    static_assert(builder_count<S>(any) == 1, "each scene shape needs exactly one geometry type with create()");
+    return build_first(s, any);
+}
+
+// Prisms have two: spline outlines swept straight are solved exactly; linear outlines and conic sweeps are meshes.
+std::optional<AnyShape> make_geometry(const scene::Prism& s) {
+    if (s.spline != scene::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
+    return wrap<MeshShape>(s);
+}
+
 std::optional<AnyShape> make_shape(const scene::Shape& shape) {
-    return std::visit(
-        [](const auto& s) -> std::optional<AnyShape> {
-            using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, scene::Sphere>) return wrap<SphereShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Box>) return wrap<BoxShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Plane>) return wrap<PlaneShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Cylinder> || std::is_same_v<T, scene::Cone>)
-                return wrap<ConeShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Disc>) return wrap<DiscShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Torus>) return wrap<TorusShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Prism>) {
-                // Spline outlines swept straight are solved exactly; linear outlines and conic sweeps are meshes.
-                if (s.spline != scene::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
-                return wrap<MeshShape>(s);
-            } else if constexpr (std::is_same_v<T, scene::Mesh> || std::is_same_v<T, scene::Polygon>)
-                return wrap<MeshShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Quadric>) return wrap<QuadricShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Quartic>) return wrap<QuarticShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Superellipsoid>) return wrap<SuperellipsoidShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Lathe>) return wrap<LatheShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Sor>) return wrap<SorShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Text>) return wrap<TextShape>(s);
-            else if constexpr (std::is_same_v<T, scene::Csg>) return wrap<CsgShape>(s);
-            return std::nullopt;
-        },
-        shape);
+    return std::visit([](const auto& s) { return make_geometry(s); }, shape);
 }
 
 // The inside region's object-space bounds: shapes that know theirs say so, closed shapes use their surface's.

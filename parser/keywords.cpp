@@ -1,8 +1,10 @@
-// Keyword tables and the edit distance used for "did you mean" notes.
+// Keyword tables (with the kind lists of scene/) and the edit distance used for "did you mean" notes.
 #include "parser/keywords.h"
 
 #include <algorithm>
 #include <unordered_set>
+
+#include "parser/namespaces.h"
 
 namespace wardray::parser {
 
@@ -32,11 +34,10 @@ const std::vector<std::string_view> k_reserved = {
     "utf8", "uv_indices", "uv_vectors", "v_steps", "vertex_vectors", "warning", "water_level", "while", "width",
     "write"};
 
+// Object kinds that are valid POV-Ray but not drawn yet (the drawn ones are WARDRAY_SHAPES, scene/shapes.h).
 const std::vector<std::string_view> k_unsupported_objects = {
-    "cylinder", "cone", "torus", "disc", "mesh", "mesh2", "blob", "lathe", "sor", "prism", "text",
-    "height_field", "isosurface", "parametric", "julia_fractal", "superellipsoid", "sphere_sweep",
-    "bicubic_patch", "polygon", "triangle", "smooth_triangle", "quadric", "cubic", "quartic", "poly",
-    "polynomial", "ovus", "lemon", "intersection", "difference", "merge", "light_group"};
+    "blob", "height_field", "isosurface", "parametric", "julia_fractal", "sphere_sweep", "bicubic_patch", "cubic",
+    "poly", "polynomial", "ovus", "lemon", "intersection", "difference", "merge", "light_group"};
 
 const std::vector<std::string_view> k_unsupported_blocks = {
     "fog", "sky_sphere", "rainbow", "media", "normal", "interior", "material",
@@ -44,19 +45,17 @@ const std::vector<std::string_view> k_unsupported_blocks = {
     "slope_map", "density", "density_map", "function", "looks_like", "projected_through",
     "clipped_by", "bounded_by", "irid", "subsurface", "warp", "image_map", "bump_map", "material_map"};
 
+// Pattern keywords and pattern items not rendered yet (the rendered patterns are WARDRAY_PATTERNS, scene/texture.h).
 const std::vector<std::string_view> k_patterns = {
-    "agate", "aoi", "average", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cylindrical",
-    "density_file", "dents", "facets", "gradient", "granite", "hexagon", "image_pattern", "leopard", "mandel",
-    "julia", "magnet", "marble", "onion", "pavement", "pigment_pattern", "planar", "quilted", "radial",
-    "ripples", "spherical", "spiral1", "spiral2", "spotted", "square", "tiling", "triangular", "waves",
-    "wood", "wrinkles", "object", "slope", "turbulence", "octaves", "omega", "lambda", "frequency", "phase",
-    "color_map", "colour_map", "pigment_map", "image_map", "tiles", "texture_map", "material_map", "warp",
-    "uv_mapping", "function"};
+    "aoi", "average", "density_file", "facets", "image_pattern", "mandel", "julia", "magnet", "pavement",
+    "pigment_pattern", "quilted", "spiral1", "spiral2", "square", "tiling", "triangular", "object", "slope",
+    "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
+    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping", "function"};
 
 const std::vector<std::string_view> k_handled = {
     "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",
     "angle", "aperture", "area_illumination", "area_light", "asin", "asinh", "assumed_gamma", "atan", "atan2",
-    "atanh", "background", "blue", "blur_samples", "box", "brightness", "brilliance", "camera", "charset",
+    "atanh", "background", "blue", "blur_samples", "brightness", "brilliance", "camera", "charset",
     "chr", "circular", "clock", "clock_delta", "clock_on", "color", "colour", "concat", "confidence",
     "conserve_energy", "cos", "cosh", "count", "crand", "declare", "defined", "degrees", "diffuse",
     "direction", "div", "double_illuminate", "emission", "error_bound", "exp", "exponent", "fade_distance",
@@ -67,12 +66,12 @@ const std::vector<std::string_view> k_handled = {
     "look_at", "low_error_factor", "matrix", "max", "max_intersections", "max_sample", "max_trace_level",
     "maximum_reuse", "media_attenuation", "media_interaction", "metallic", "min", "minimum_reuse",
     "mm_per_unit", "mod", "nearest_count", "no", "no_image", "no_radiosity", "no_reflection", "no_shadow",
-    "noise_generator", "number_of_waves", "off", "omnimax", "on", "orient", "orthographic", "panoramic",
-    "parallel", "perspective", "phong", "phong_size", "pi", "pigment", "plane", "point_at", "pow",
+    "noise_generator", "number_of_waves", "off", "omnimax", "on", "orient", "panoramic",
+    "parallel", "phong", "phong_size", "pi", "pigment", "point_at", "pow",
     "pretrace_end", "pretrace_start", "quick_color", "quick_colour", "radians", "radiosity", "radius",
     "recursion_limit", "red", "reflection", "reflection_exponent", "rgb", "rgbf", "rgbft", "rgbt", "right",
     "rotate", "roughness", "save_file", "scale", "select", "shadowless", "sin", "sinh", "sky", "specular",
-    "sphere", "spherical", "split_union", "spotlight", "sqrt", "srgb", "srgbf", "srgbft", "srgbt", "str",
+    "spherical", "split_union", "spotlight", "sqrt", "srgb", "srgbf", "srgbft", "srgbt", "str",
     "strcmp", "strlen", "strlwr", "strupr", "sturm", "substr", "tan", "tanh", "texture", "tightness",
     "transform", "translate", "transmit", "true", "ultra_wide_angle", "union", "up", "val", "variance",
     "vaxis_rotate", "vcross", "vdot", "version", "vlength", "vnormalize", "vrotate", "x", "y", "yes", "z",
@@ -87,12 +86,20 @@ std::unordered_set<std::string_view> make_set(std::initializer_list<const std::v
     return s;
 }
 
+// Every reserved word: the tables above and the keywords of the kind lists of scene/.
+std::unordered_set<std::string_view> reserved_words() {
+    auto s = make_set({&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
+    s.insert(k_shape_keywords.begin(), k_shape_keywords.end());
+    for (const auto& p : k_pattern_keywords) s.insert(p.keyword);
+    for (const auto& c : k_camera_keywords) s.insert(c.keyword);
+    return s;
+}
+
 }  // namespace
 
 const std::vector<std::string_view>& all_keywords() {
     static const std::vector<std::string_view> all = [] {
-        auto s = make_set(
-        {&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
+        const auto s = reserved_words();
         std::vector<std::string_view> v(s.begin(), s.end());
         std::sort(v.begin(), v.end());
         return v;
@@ -101,8 +108,7 @@ const std::vector<std::string_view>& all_keywords() {
 }
 
 bool is_keyword(std::string_view word) {
-    static const auto set = make_set(
-        {&k_unsupported_objects, &k_unsupported_blocks, &k_patterns, &k_handled, &k_reserved});
+    static const auto set = reserved_words();
     return set.count(word) > 0;
 }
 

@@ -10,11 +10,11 @@ namespace wardray::parser {
 const std::vector<std::string_view>& all_keywords();
 /// True for reserved words (identifiers that cannot be user names).
 bool is_keyword(std::string_view word);
-/// Object kinds that are valid POV-Ray but not rendered yet (their block is skipped with a warning).
+/// Object kinds that are valid POV-Ray but not drawn yet (the drawn ones are WARDRAY_SHAPES); skipped with a warning.
 bool is_unsupported_object(std::string_view word);
 /// Other block statements that are valid POV-Ray but not rendered yet (fog, normal, interior, ...).
 bool is_unsupported_block(std::string_view word);
-/// Pigment and texture pattern keywords (not rendered yet).
+/// Pigment and texture pattern keywords not rendered yet (the rendered ones are WARDRAY_PATTERNS).
 bool is_pattern_keyword(std::string_view word);
 /// Levenshtein distance, capped: returns limit + 1 as soon as the distance exceeds `limit`.
 std::size_t edit_distance(std::string_view a, std::string_view b, std::size_t limit);

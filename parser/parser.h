@@ -315,8 +315,12 @@ private:
     std::vector<Object> parse_object_list(const Token& kw, const std::vector<Object>* bounded_by);
 
     // --- shapes (shapes.cpp) ---
-    /// Reads a primitive's parameters after its '{' (the modifiers follow).
+    /// Reads a primitive's parameters after its '{' (the modifiers follow) with the keyword's reader.
     Shape parse_shape_parameters(const Token& kw);
+    /// One reader per keyword of WARDRAY_SHAPES (scene/shapes.h): `Sphere read_sphere(const Token& kw)`, ...
+#define WARDRAY_SHAPE_READER(keyword, Type) Type read_##keyword(const Token& kw);
+    WARDRAY_SHAPES(WARDRAY_SHAPE_READER)
+#undef WARDRAY_SHAPE_READER
     void parse_triangle(Mesh& mesh, bool smooth);
     /// Reads `ttf "font" "string" thickness, offset` and lays the glyphs out (the font through the library path).
     Text parse_text_parameters(const Token& kw);

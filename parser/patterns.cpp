@@ -1,6 +1,7 @@
 // Patterns: pattern keywords and modifiers, colour/pigment/normal maps, and the pigment and normal blocks.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "parser/keywords.h"
@@ -11,16 +12,6 @@ namespace wardray::parser {
 namespace {
 
 using PType = Pattern::Type;
-
-const std::pair<const char*, PType> k_pattern_names[] = {
-    {"checker", PType::Checker},   {"gradient", PType::Gradient}, {"hexagon", PType::Hexagon},
-    {"brick", PType::Brick},       {"bozo", PType::Bozo},         {"spotted", PType::Spotted},
-    {"granite", PType::Granite},   {"marble", PType::Marble},     {"wood", PType::Wood},
-    {"agate", PType::Agate},       {"radial", PType::Radial},     {"onion", PType::Onion},
-    {"leopard", PType::Leopard},   {"ripples", PType::Ripples},   {"waves", PType::Waves},
-    {"wrinkles", PType::Wrinkles}, {"bumps", PType::Bumps},       {"dents", PType::Dents},
-    {"crackle", PType::Crackle},   {"cells", PType::Cells},       {"boxed", PType::Boxed},
-    {"spherical", PType::Spherical}, {"planar", PType::Planar},   {"cylindrical", PType::Cylindrical}};
 
 ColorMapEntry entry(double v, double r, double g, double b) { return {v, Color{r, g, b, 0.0, 0.0}}; }
 
@@ -81,10 +72,9 @@ void Parser::skip_to_close(const Token& kw, const char* close, std::size_t depth
 
 int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
     if (t.kind != TokenKind::Identifier) return -1;
-    const PType* found = nullptr;
-    for (const auto& [name, type] : k_pattern_names)
-        if (t.text == name) found = &type;
-    if (found == nullptr) return -1;
+    // The patterns of WARDRAY_PATTERNS (scene/texture.h); the switch below reads their own parameters.
+    const std::optional<PType> found = find_kind(k_pattern_keywords, t.text.view());
+    if (!found) return -1;
     next();
     const PType previous = pat.type;
     pat.type = *found;

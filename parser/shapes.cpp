@@ -1,6 +1,9 @@
-// Shape statements: the parameters of POV-Ray's primitives, meshes and polygons, and the building of CSG nodes
-// (object modifiers are in statements.cpp).
+// Shape statements: one reader per keyword of WARDRAY_SHAPES (POV-Ray's primitives, meshes and polygons), and the
+// building of CSG nodes (object modifiers are in statements.cpp).
+#include <algorithm>
 #include <cmath>
+#include <string_view>
+#include <unordered_map>
 
 #include "core/constants.h"
 #include "parser/parser.h"
@@ -9,180 +12,209 @@
 namespace wardray::parser {
 
 bool is_shape_keyword(std::string_view w) {
-    return w == "sphere" || w == "box" || w == "plane" || w == "cylinder" || w == "cone" || w == "disc" ||
-           w == "torus" || w == "triangle" || w == "smooth_triangle" || w == "mesh" || w == "mesh2" ||
-           w == "polygon" || w == "quadric" || w == "superellipsoid" || w == "quartic" ||
-           w == "prism" || w == "lathe" || w == "sor" || w == "text";
+    return std::find(k_shape_keywords.begin(), k_shape_keywords.end(), w) != k_shape_keywords.end();
 }
 
 Shape Parser::parse_shape_parameters(const Token& kw) {
-    const TokenText& w = kw.text;
-    if (w == "sphere") {
-        Sphere s;
-        s.center = parse_vector();
-        accept(",");  // POV-Ray compat: commas between parameters are optional
-        s.radius = parse_float();
-        return s;
-    }
-    if (w == "box") {
-        Box b;
-        b.corner1 = parse_vector();
+    // The keyword's reader, from WARDRAY_SHAPES (callers check is_shape_keyword first).
+    using Reader = Shape (*)(Parser&, const Token&);
+#define WARDRAY_SHAPE_ENTRY(keyword, Type) \
+    {#keyword, [](Parser& p, const Token& k) -> Shape { return p.read_##keyword(k); }},
+    static const std::unordered_map<std::string_view, Reader> readers = {WARDRAY_SHAPES(WARDRAY_SHAPE_ENTRY)};
+#undef WARDRAY_SHAPE_ENTRY
+    return readers.at(kw.text.view())(*this, kw);
+}
+
+Sphere Parser::read_sphere(const Token& kw) {
+    Sphere s;
+    s.center = parse_vector();
+    accept(",");  // POV-Ray compat: commas between parameters are optional
+    s.radius = parse_float();
+    return s;
+}
+
+Box Parser::read_box(const Token& kw) {
+    Box b;
+    b.corner1 = parse_vector();
+    accept(",");
+    b.corner2 = parse_vector();
+    return b;
+}
+
+Plane Parser::read_plane(const Token& kw) {
+    Plane p;
+    const Token at = peek();
+    p.normal = parse_vector();
+    if (length(p.normal) == 0.0) fail(at, "plane normal must not be zero");
+    accept(",");
+    p.distance = parse_float();
+    return p;
+}
+
+Cylinder Parser::read_cylinder(const Token& kw) {
+    Cylinder c;
+    c.base = parse_vector();
+    accept(",");
+    c.cap = parse_vector();
+    accept(",");
+    c.radius = parse_float();
+    if (c.base == c.cap) warn(kw, "degenerate cylinder: base and cap are the same point");
+    return c;
+}
+
+Cone Parser::read_cone(const Token& kw) {
+    Cone c;
+    c.base = parse_vector();
+    accept(",");
+    c.base_radius = parse_float();
+    accept(",");
+    c.cap = parse_vector();
+    accept(",");
+    c.cap_radius = parse_float();
+    if (c.base == c.cap) warn(kw, "degenerate cone: base and cap are the same point");
+    return c;
+}
+
+Disc Parser::read_disc(const Token& kw) {
+    Disc d;
+    d.center = parse_vector();
+    accept(",");
+    d.normal = parse_vector();
+    accept(",");
+    d.radius = parse_float();
+    if (accept(",")) d.hole_radius = parse_float();
+    return d;
+}
+
+Torus Parser::read_torus(const Token& kw) {
+    Torus t;
+    t.major = parse_float();
+    accept(",");
+    t.minor = parse_float();
+    return t;
+}
+
+Mesh Parser::read_triangle(const Token& kw) {
+    Mesh m;
+    m.kind = Mesh::Kind::Triangle;
+    parse_triangle(m, false);
+    return m;
+}
+
+Mesh Parser::read_smooth_triangle(const Token& kw) {
+    Mesh m;
+    m.kind = Mesh::Kind::SmoothTriangle;
+    parse_triangle(m, true);
+    return m;
+}
+
+Mesh Parser::read_mesh(const Token& kw) { return parse_mesh_body(kw); }
+
+Mesh Parser::read_mesh2(const Token& kw) { return parse_mesh2_body(kw); }
+
+Polygon Parser::read_polygon(const Token& kw) {
+    Polygon p;
+    const Token at = peek();
+    const int n = static_cast<int>(std::lround(parse_float()));
+    if (n < 3) fail(at, "a polygon needs at least 3 points");
+    for (int i = 0; i < n; ++i) {
         accept(",");
-        b.corner2 = parse_vector();
-        return b;
+        p.points.push_back(parse_vector());  // POV-Ray compat: 2-D points lie in the z = 0 plane
     }
-    if (w == "plane") {
-        Plane p;
+    return p;
+}
+
+Quadric Parser::read_quadric(const Token& kw) {
+    Quadric q;
+    q.squares = parse_vector();
+    accept(",");
+    q.mixed = parse_vector();
+    accept(",");
+    q.linear = parse_vector();
+    accept(",");
+    q.constant = parse_float();
+    return q;
+}
+
+Prism Parser::read_prism(const Token& kw) {
+    Prism p;
+    while (true) {
+        const Token t = peek();
+        if (is_word(t, "linear_spline")) {
+            next();
+            p.spline = Prism::Spline::Linear;
+        } else if (is_word(t, "linear_sweep")) {
+            next();
+            p.conic = false;
+        } else if (is_word(t, "conic_sweep")) {
+            next();
+            p.conic = true;
+        } else if (is_word(t, "quadratic_spline")) {
+            next();
+            p.spline = Prism::Spline::Quadratic;
+        } else if (is_word(t, "cubic_spline")) {
+            next();
+            p.spline = Prism::Spline::Cubic;
+        } else if (is_word(t, "bezier_spline")) {
+            next();
+            p.spline = Prism::Spline::Bezier;
+        } else {
+            break;
+        }
+    }
+    p.height1 = parse_float();
+    accept(",");
+    p.height2 = parse_float();
+    accept(",");
+    const Token at = peek();
+    const int n = static_cast<int>(std::lround(parse_float()));
+    // POV-Ray compat: its minimum point counts per spline type.
+    switch (p.spline) {
+        case Prism::Spline::Linear:
+            if (n < 3) fail(at, "a prism with linear_spline needs at least 3 points");
+            break;
+        case Prism::Spline::Quadratic:
+            if (n < 5) fail(at, "a prism with quadratic_spline needs at least 5 points");
+            break;
+        case Prism::Spline::Cubic:
+            if (n < 6) fail(at, "a prism with cubic_spline needs at least 6 points");
+            break;
+        case Prism::Spline::Bezier:
+            if (n <= 0 || n % 4 != 0) fail(at, "a prism with bezier_spline needs 4 points per segment");
+            break;
+    }
+    for (int i = 0; i < n; ++i) {
+        accept(",");
+        const Vec3 uv = parse_vector();
+        p.points.push_back({uv.x, uv.y, 0.0});
+    }
+    return p;
+}
+
+Text Parser::read_text(const Token& kw) { return parse_text_parameters(kw); }
+
+Lathe Parser::read_lathe(const Token& kw) { return parse_lathe_parameters(kw); }
+
+Sor Parser::read_sor(const Token& kw) { return parse_sor_parameters(kw); }
+
+Quartic Parser::read_quartic(const Token& kw) {
+    // Thirty-five coefficients in one vector: read them one by one so no 5-component limit applies.
+    Quartic q;
+    expect("<");
+    for (std::size_t i = 0; i < q.coefficients.size(); ++i) {
+        // POV-Ray compat: the commas are optional (primitiv.pov and hyptorus.pov leave some out).
+        if (i > 0) accept(",");
+        // The additive level, as in `matrix`: a '>' here closes the vector, it is no comparison.
         const Token at = peek();
-        p.normal = parse_vector();
-        if (length(p.normal) == 0.0) fail(at, "plane normal must not be zero");
-        accept(",");
-        p.distance = parse_float();
-        return p;
+        const Numeric c = parse_additive();
+        if (c.n != 1) fail(at, "quartic coefficients must be floats");
+        q.coefficients[i] = c.v[0];
     }
-    if (w == "cylinder") {
-        Cylinder c;
-        c.base = parse_vector();
-        accept(",");
-        c.cap = parse_vector();
-        accept(",");
-        c.radius = parse_float();
-        if (c.base == c.cap) warn(kw, "degenerate cylinder: base and cap are the same point");
-        return c;
-    }
-    if (w == "cone") {
-        Cone c;
-        c.base = parse_vector();
-        accept(",");
-        c.base_radius = parse_float();
-        accept(",");
-        c.cap = parse_vector();
-        accept(",");
-        c.cap_radius = parse_float();
-        if (c.base == c.cap) warn(kw, "degenerate cone: base and cap are the same point");
-        return c;
-    }
-    if (w == "disc") {
-        Disc d;
-        d.center = parse_vector();
-        accept(",");
-        d.normal = parse_vector();
-        accept(",");
-        d.radius = parse_float();
-        if (accept(",")) d.hole_radius = parse_float();
-        return d;
-    }
-    if (w == "torus") {
-        Torus t;
-        t.major = parse_float();
-        accept(",");
-        t.minor = parse_float();
-        return t;
-    }
-    if (w == "triangle" || w == "smooth_triangle") {
-        const bool smooth = w == "smooth_triangle";
-        Mesh m;
-        m.kind = smooth ? Mesh::Kind::SmoothTriangle : Mesh::Kind::Triangle;
-        parse_triangle(m, smooth);
-        return m;
-    }
-    if (w == "mesh") return parse_mesh_body(kw);
-    if (w == "mesh2") return parse_mesh2_body(kw);
-    if (w == "polygon") {
-        Polygon p;
-        const Token at = peek();
-        const int n = static_cast<int>(std::lround(parse_float()));
-        if (n < 3) fail(at, "a polygon needs at least 3 points");
-        for (int i = 0; i < n; ++i) {
-            accept(",");
-            p.points.push_back(parse_vector());  // POV-Ray compat: 2-D points lie in the z = 0 plane
-        }
-        return p;
-    }
-    if (w == "quadric") {
-        Quadric q;
-        q.squares = parse_vector();
-        accept(",");
-        q.mixed = parse_vector();
-        accept(",");
-        q.linear = parse_vector();
-        accept(",");
-        q.constant = parse_float();
-        return q;
-    }
-    if (w == "prism") {
-        Prism p;
-        while (true) {
-            const Token t = peek();
-            if (is_word(t, "linear_spline")) {
-                next();
-                p.spline = Prism::Spline::Linear;
-            } else if (is_word(t, "linear_sweep")) {
-                next();
-                p.conic = false;
-            } else if (is_word(t, "conic_sweep")) {
-                next();
-                p.conic = true;
-            } else if (is_word(t, "quadratic_spline")) {
-                next();
-                p.spline = Prism::Spline::Quadratic;
-            } else if (is_word(t, "cubic_spline")) {
-                next();
-                p.spline = Prism::Spline::Cubic;
-            } else if (is_word(t, "bezier_spline")) {
-                next();
-                p.spline = Prism::Spline::Bezier;
-            } else {
-                break;
-            }
-        }
-        p.height1 = parse_float();
-        accept(",");
-        p.height2 = parse_float();
-        accept(",");
-        const Token at = peek();
-        const int n = static_cast<int>(std::lround(parse_float()));
-        // POV-Ray compat: its minimum point counts per spline type.
-        switch (p.spline) {
-            case Prism::Spline::Linear:
-                if (n < 3) fail(at, "a prism with linear_spline needs at least 3 points");
-                break;
-            case Prism::Spline::Quadratic:
-                if (n < 5) fail(at, "a prism with quadratic_spline needs at least 5 points");
-                break;
-            case Prism::Spline::Cubic:
-                if (n < 6) fail(at, "a prism with cubic_spline needs at least 6 points");
-                break;
-            case Prism::Spline::Bezier:
-                if (n <= 0 || n % 4 != 0) fail(at, "a prism with bezier_spline needs 4 points per segment");
-                break;
-        }
-        for (int i = 0; i < n; ++i) {
-            accept(",");
-            const Vec3 uv = parse_vector();
-            p.points.push_back({uv.x, uv.y, 0.0});
-        }
-        return p;
-    }
-    if (w == "text") return parse_text_parameters(kw);
-    if (w == "lathe") return parse_lathe_parameters(kw);
-    if (w == "sor") return parse_sor_parameters(kw);
-    if (w == "quartic") {
-        // Thirty-five coefficients in one vector: read them one by one so no 5-component limit applies.
-        Quartic q;
-        expect("<");
-        for (std::size_t i = 0; i < q.coefficients.size(); ++i) {
-            // POV-Ray compat: the commas are optional (primitiv.pov and hyptorus.pov leave some out).
-            if (i > 0) accept(",");
-            // The additive level, as in `matrix`: a '>' here closes the vector, it is no comparison.
-            const Token at = peek();
-            const Numeric c = parse_additive();
-            if (c.n != 1) fail(at, "quartic coefficients must be floats");
-            q.coefficients[i] = c.v[0];
-        }
-        expect(">");
-        return q;
-    }
+    expect(">");
+    return q;
+}
+
+Superellipsoid Parser::read_superellipsoid(const Token& kw) {
     Superellipsoid s;
     const Vec3 en = parse_vector();
     s.e = en.x;

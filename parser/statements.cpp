@@ -516,8 +516,7 @@ CameraSpec Parser::parse_camera_body(const Token& kw) {
         if (is_punct(t, "}")) return spec;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a camera item but found '" + w + "'");
-        if (w == "perspective") spec.type = Camera::Type::Perspective;
-        else if (w == "orthographic") spec.type = Camera::Type::Orthographic;
+        if (const auto type = find_kind(k_camera_keywords, w.view())) spec.type = *type;  // WARDRAY_CAMERAS
         else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
                  w == "spherical" || w == "mesh_camera") {
             warn_unsupported(t, w + " camera");

@@ -1,14 +1,29 @@
 // Scene description, light sources.
 #pragma once
 
+#include <string_view>
+
 #include "core/color.h"
 #include "core/diagnostics.h"
 #include "core/vec3.h"
+#include "scene/kind_list.h"
 
 namespace wardray::scene {
 
+/// The light kinds, listed once: X(name, Enumerator). A point light is the default and has no keyword; each other
+/// name is the keyword that makes a light one. Light::Type and the names of light_type_name come from this list.
+#define WARDRAY_LIGHTS(X) \
+    X(point, Point)       \
+    X(spotlight, Spot)    \
+    X(parallel, Parallel) \
+    X(cylinder, Cylinder)
+
+/// A light source with POV-Ray's defaults.
 struct Light {
-    enum class Type { Point, Spot, Parallel, Cylinder };
+#define WARDRAY_LIGHT_ENUMERATOR(name, Enumerator) Enumerator,
+    /// The kinds of WARDRAY_LIGHTS, in its order.
+    enum class Type { WARDRAY_LIGHTS(WARDRAY_LIGHT_ENUMERATOR) };
+#undef WARDRAY_LIGHT_ENUMERATOR
     Type type = Type::Point;
     Vec3 position;
     Color color{1.0, 1.0, 1.0};
@@ -33,5 +48,13 @@ struct Light {
     SourceLoc loc;
     bool operator==(const Light&) const = default;
 };
+
+#define WARDRAY_LIGHT_NAME(name, Enumerator) {#name, Light::Type::Enumerator},
+/// The name of each light kind of WARDRAY_LIGHTS, in its order.
+inline constexpr KindKeyword<Light::Type> k_light_names[] = {WARDRAY_LIGHTS(WARDRAY_LIGHT_NAME)};
+#undef WARDRAY_LIGHT_NAME
+
+/// The name of a light kind: "point", "spotlight", "parallel" or "cylinder".
+constexpr std::string_view light_type_name(Light::Type type) { return kind_keyword(k_light_names, type); }
 
 }  // namespace wardray::scene

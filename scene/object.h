@@ -1,12 +1,16 @@
 // Scene description, objects: a shape with its placement, appearance and flags; CSG over objects.
 #pragma once
 
+#include <array>
+#include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "core/diagnostics.h"
 #include "core/transform.h"
 #include "scene/interior.h"
+#include "scene/kind_list.h"
 #include "scene/shapes.h"
 #include "scene/texture.h"
 
@@ -19,12 +23,23 @@ struct Csg {
     enum class Op { Union, Intersection, Difference, Merge };
     Op op = Op::Union;
     std::vector<Object> children;
+    /// The keyword that wrote this node (one per Op, in its order).
+    const char* keyword() const {
+        static constexpr const char* names[] = {"union", "intersection", "difference", "merge"};
+        return names[static_cast<int>(op)];
+    }
     bool operator==(const Csg&) const = default;
 };
 
-/// The shapes the renderer draws.
-using Shape = std::variant<Sphere, Box, Plane, Cylinder, Cone, Disc, Torus, Mesh, Polygon, Quadric, Superellipsoid,
-                           Quartic, Prism, Lathe, Sor, Text, Csg>;
+#define WARDRAY_SHAPE_TYPE(keyword, Type) Type,
+/// The shapes the renderer draws: the types of WARDRAY_SHAPES (scene/shapes.h) in its order, then CSG.
+using Shape = UniqueVariant<WARDRAY_SHAPES(WARDRAY_SHAPE_TYPE) Csg>;
+#undef WARDRAY_SHAPE_TYPE
+
+#define WARDRAY_SHAPE_KEYWORD(keyword, Type) std::string_view{#keyword},
+/// Every keyword that starts a primitive, in the order of WARDRAY_SHAPES.
+inline constexpr std::array k_shape_keywords = {WARDRAY_SHAPES(WARDRAY_SHAPE_KEYWORD)};
+#undef WARDRAY_SHAPE_KEYWORD
 
 /// One object of the scene: a shape, its placement, its appearance and its flags.
 struct Object {
@@ -42,5 +57,40 @@ struct Object {
     SourceLoc loc;
     bool operator==(const Object&) const = default;
 };
+
+namespace detail {
+
+/// The keyword of shape type T when exactly one keyword of WARDRAY_SHAPES writes it, else empty.
+template <typename T>
+constexpr std::string_view only_keyword() {
+    std::string_view found;
+    int count = 0;
+#define WARDRAY_SHAPE_MATCH(keyword, Type) \
+    if (std::is_same_v<T, Type>) {         \
+        found = #keyword;                  \
+        ++count;                           \
+    }
+    WARDRAY_SHAPES(WARDRAY_SHAPE_MATCH)
+#undef WARDRAY_SHAPE_MATCH
+    return count == 1 ? found : std::string_view{};
+}
+
+}  // namespace detail
+
+/// The keyword a shape was written with, as `--check` names it: "sphere", "mesh2", "union", ...
+inline const char* shape_keyword(const Shape& shape) {
+    return std::visit(
+        [](const auto& s) -> const char* {
+            using T = std::decay_t<decltype(s)>;
+            if constexpr (requires { s.keyword(); }) {
+                return s.keyword();
+            } else {
+                constexpr std::string_view keyword = detail::only_keyword<T>();
+                static_assert(!keyword.empty(), "a shape type several keywords write names its own with keyword()");
+                return keyword.data();  // a string literal's view: null-terminated
+            }
+        },
+        shape);
+}
 
 }  // namespace wardray::scene

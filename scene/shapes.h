@@ -1,4 +1,4 @@
-// Scene description, shapes: the plain data of each primitive the renderer draws.
+// Scene description, shapes: the plain data of each primitive the renderer draws, and their one list.
 #pragma once
 
 #include <array>
@@ -8,12 +8,14 @@
 
 namespace wardray::scene {
 
+/// POV-Ray's `sphere { center, radius }`.
 struct Sphere {
     Vec3 center;
     double radius = 1.0;
     bool operator==(const Sphere&) const = default;
 };
 
+/// POV-Ray's `box { corner1, corner2 }`.
 struct Box {
     Vec3 corner1;
     Vec3 corner2;
@@ -73,6 +75,11 @@ struct Mesh {
         bool operator==(const Face&) const = default;
     };
     Kind kind = Kind::Mesh;
+    /// The keyword this mesh was written with (one per Kind, in its order).
+    const char* keyword() const {
+        static constexpr const char* names[] = {"triangle", "smooth_triangle", "mesh", "mesh2"};
+        return names[static_cast<int>(kind)];
+    }
     std::vector<Vec3> vertices;
     std::vector<Vec3> normals;
     std::vector<Face> faces;
@@ -166,3 +173,28 @@ struct Text {
 };
 
 }  // namespace wardray::scene
+
+/// The primitive shapes, listed once: X(keyword, SceneType) for each keyword that starts a primitive, in the order
+/// of the Shape variant's alternatives (scene/object.h). The variant, the parser's keyword table, reserved words and
+/// the reader each keyword calls (`Parser::read_<keyword>`), `--check`'s names and the geometry factory all come
+/// from this list. A type that several keywords write (Mesh) names its keyword through `keyword()`.
+#define WARDRAY_SHAPES(X)             \
+    X(sphere, Sphere)                 \
+    X(box, Box)                       \
+    X(plane, Plane)                   \
+    X(cylinder, Cylinder)             \
+    X(cone, Cone)                     \
+    X(disc, Disc)                     \
+    X(torus, Torus)                   \
+    X(triangle, Mesh)                 \
+    X(smooth_triangle, Mesh)          \
+    X(mesh, Mesh)                     \
+    X(mesh2, Mesh)                    \
+    X(polygon, Polygon)               \
+    X(quadric, Quadric)               \
+    X(superellipsoid, Superellipsoid) \
+    X(quartic, Quartic)               \
+    X(prism, Prism)                   \
+    X(lathe, Lathe)                   \
+    X(sor, Sor)                       \
+    X(text, Text)

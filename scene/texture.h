@@ -8,6 +8,7 @@
 #include "core/diagnostics.h"
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "scene/kind_list.h"
 
 namespace wardray::scene {
 
@@ -23,13 +24,42 @@ struct Turbulence {
     bool operator==(const Turbulence&) const = default;
 };
 
+/// The patterns the renderer evaluates, listed once: X(keyword, Enumerator). Pattern::Type, the parser's pattern
+/// keywords and reserved words, and texture/'s evaluation table (one `<keyword>_pattern` function each, so a
+/// missing one fails to compile) all come from this list.
+#define WARDRAY_PATTERNS(X)       \
+    X(checker, Checker)           \
+    X(gradient, Gradient)         \
+    X(hexagon, Hexagon)           \
+    X(brick, Brick)               \
+    X(bozo, Bozo)                 \
+    X(spotted, Spotted)           \
+    X(granite, Granite)           \
+    X(marble, Marble)             \
+    X(wood, Wood)                 \
+    X(agate, Agate)               \
+    X(radial, Radial)             \
+    X(onion, Onion)               \
+    X(leopard, Leopard)           \
+    X(ripples, Ripples)           \
+    X(waves, Waves)               \
+    X(wrinkles, Wrinkles)         \
+    X(bumps, Bumps)               \
+    X(dents, Dents)               \
+    X(crackle, Crackle)           \
+    X(cells, Cells)               \
+    X(boxed, Boxed)               \
+    X(spherical, Spherical)       \
+    X(planar, Planar)             \
+    X(cylindrical, Cylindrical)
+
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
 /// texture maps).
 struct Pattern {
-    enum class Type {
-        None, Checker, Gradient, Hexagon, Brick, Bozo, Spotted, Granite, Marble, Wood, Agate, Radial, Onion,
-        Leopard, Ripples, Waves, Wrinkles, Bumps, Dents, Crackle, Cells, Boxed, Spherical, Planar, Cylindrical
-    };
+#define WARDRAY_PATTERN_ENUMERATOR(keyword, Enumerator) Enumerator,
+    /// None (a plain colour, no pattern), then the patterns of WARDRAY_PATTERNS in its order.
+    enum class Type { None, WARDRAY_PATTERNS(WARDRAY_PATTERN_ENUMERATOR) };
+#undef WARDRAY_PATTERN_ENUMERATOR
     Type type = Type::None;
     WaveType wave = WaveType::Ramp;
     double exponent = 1.0;  ///< poly_wave
@@ -48,6 +78,11 @@ struct Pattern {
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     bool operator==(const Pattern&) const = default;
 };
+
+#define WARDRAY_PATTERN_KEYWORD(keyword, Enumerator) {#keyword, Pattern::Type::Enumerator},
+/// The keyword of each pattern of WARDRAY_PATTERNS, in its order.
+inline constexpr KindKeyword<Pattern::Type> k_pattern_keywords[] = {WARDRAY_PATTERNS(WARDRAY_PATTERN_KEYWORD)};
+#undef WARDRAY_PATTERN_KEYWORD
 
 /// One `[value colour]` entry of a colour map (values stored as POV-Ray's single-precision floats).
 struct ColorMapEntry {

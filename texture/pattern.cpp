@@ -185,6 +185,102 @@ double granite(const Vec3& p, int generator) {
     return value;
 }
 
+// The pattern functions of WARDRAY_PATTERNS, one each, at a point of pattern space.
+
+double checker_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const int v = static_cast<int>(std::floor(p.x + kEpsilon) + std::floor(p.y + kEpsilon) +
+                                   std::floor(p.z + kEpsilon));
+    return (v & 1) ? 1.0 : 0.0;
+}
+
+double gradient_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const double v = dot(p, pat.gradient);
+    return v > 1.0 ? std::fmod(v, 1.0) : v;
+}
+
+double hexagon_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return hexagon(p); }
+
+double brick_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return brick(pat, p); }
+
+double bozo_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return noise(p, generator); }
+
+double spotted_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return noise(p, generator); }
+
+double bumps_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return noise(p, generator); }
+
+double dents_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const double n = noise(p, generator);
+    return n * n * n;
+}
+
+double granite_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return granite(p, generator); }
+
+double marble_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    double turb = 0.0;
+    if (pat.turbulence) turb = pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator);
+    return p.x + turb;
+}
+
+double wood_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    Vec3 q{p.x, p.y, 0.0};
+    if (pat.turbulence) {
+        const scene::Turbulence& t = *pat.turbulence;
+        const Vec3 w = dturbulence(p, turb_params(t));
+        q.x += cycloidal((p.x + w.x) * t.amount.x);
+        q.y += cycloidal((p.y + w.y) * t.amount.y);
+    }
+    return length(q);
+}
+
+double agate_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const scene::Turbulence t = pat.turbulence.value_or(scene::Turbulence{});
+    const double turb = pat.agate_turb * turbulence(p, turb_params(t), generator);
+    const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+    return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
+}
+
+double radial_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+    return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / kTwoPi;
+}
+
+double onion_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return std::fmod(length(p), 1.0); }
+
+double leopard_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+    return s * s;
+}
+
+double ripples_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return waves_sum(pat, p, true); }
+
+double waves_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return waves_sum(pat, p, false); }
+
+double wrinkles_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return wrinkles(p, generator); }
+
+double crackle_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return crackle(pat, p, generator);
+}
+
+double cells_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const int h = hash3d(static_cast<int>(std::floor(p.x + kEpsilon)), static_cast<int>(std::floor(p.y + kEpsilon)),
+                         static_cast<int>(std::floor(p.z + kEpsilon)));
+    return std::min(pattern_rand(static_cast<std::size_t>(h)), 1.0);
+}
+
+double boxed_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+}
+
+double spherical_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return clip_density(length(p)); }
+
+double planar_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return clip_density(std::fabs(p.y));
+}
+
+double cylindrical_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
+}
+
 }  // namespace
 
 double cycloidal(double v) {
@@ -202,85 +298,17 @@ Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p) {
 }
 
 double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator) {
+    // One case per pattern of WARDRAY_PATTERNS, each calling its `<keyword>_pattern`: a listed pattern without
+    // its evaluation fails to compile here.
+#define WARDRAY_PATTERN_CASE(keyword, Enumerator) \
+    case Type::Enumerator:                        \
+        return keyword##_pattern(pat, p, generator);
     switch (pat.type) {
         case Type::None:
             return 0.0;
-        case Type::Checker: {
-            const int v = static_cast<int>(std::floor(p.x + kEpsilon) + std::floor(p.y + kEpsilon) +
-                                           std::floor(p.z + kEpsilon));
-            return (v & 1) ? 1.0 : 0.0;
-        }
-        case Type::Gradient: {
-            const double v = dot(p, pat.gradient);
-            return v > 1.0 ? std::fmod(v, 1.0) : v;
-        }
-        case Type::Hexagon:
-            return hexagon(p);
-        case Type::Brick:
-            return brick(pat, p);
-        case Type::Bozo:
-        case Type::Spotted:
-        case Type::Bumps:
-            return noise(p, generator);
-        case Type::Dents: {
-            const double n = noise(p, generator);
-            return n * n * n;
-        }
-        case Type::Granite:
-            return granite(p, generator);
-        case Type::Marble: {
-            double turb = 0.0;
-            if (pat.turbulence)
-                turb = pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator);
-            return p.x + turb;
-        }
-        case Type::Wood: {
-            Vec3 q{p.x, p.y, 0.0};
-            if (pat.turbulence) {
-                const scene::Turbulence& t = *pat.turbulence;
-                const Vec3 w = dturbulence(p, turb_params(t));
-                q.x += cycloidal((p.x + w.x) * t.amount.x);
-                q.y += cycloidal((p.y + w.y) * t.amount.y);
-            }
-            return length(q);
-        }
-        case Type::Agate: {
-            const scene::Turbulence t = pat.turbulence.value_or(scene::Turbulence{});
-            const double turb = pat.agate_turb * turbulence(p, turb_params(t), generator);
-            const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
-            return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
-        }
-        case Type::Radial:
-            if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
-            return 0.25 + (std::atan2(p.x, p.z) + std::numbers::pi) / kTwoPi;
-        case Type::Onion:
-            return std::fmod(length(p), 1.0);
-        case Type::Leopard: {
-            const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
-            return s * s;
-        }
-        case Type::Ripples:
-            return waves_sum(pat, p, true);
-        case Type::Waves:
-            return waves_sum(pat, p, false);
-        case Type::Wrinkles:
-            return wrinkles(p, generator);
-        case Type::Crackle:
-            return crackle(pat, p, generator);
-        case Type::Cells: {
-            const int h = hash3d(static_cast<int>(std::floor(p.x + kEpsilon)), static_cast<int>(std::floor(p.y + kEpsilon)),
-                                 static_cast<int>(std::floor(p.z + kEpsilon)));
-            return std::min(pattern_rand(static_cast<std::size_t>(h)), 1.0);
-        }
-        case Type::Boxed:
-            return clip_density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
-        case Type::Spherical:
-            return clip_density(length(p));
-        case Type::Planar:
-            return clip_density(std::fabs(p.y));
-        case Type::Cylindrical:
-            return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
+        WARDRAY_PATTERNS(WARDRAY_PATTERN_CASE)
     }
+#undef WARDRAY_PATTERN_CASE
     return 0.0;
 }
 

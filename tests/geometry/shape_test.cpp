@@ -2,8 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <string>
+#include <string_view>
 
 #include "geometry/instance.h"
+#include "parser/keywords.h"
+#include "parser/parse.h"
 #include "test_util.h"
 
 namespace wardray::geometry {
@@ -207,6 +212,65 @@ TEST(Shapes, TransformedSphereBoundsAreTight) {
         EXPECT_NEAR(b.lower[k], lo[k], 0.05);
         EXPECT_NEAR(b.upper[k], hi[k], 0.05);
     }
+}
+
+// One small valid statement per keyword of WARDRAY_SHAPES (scene/shapes.h): a new shape adds its line here.
+const std::map<std::string_view, std::string> k_shape_samples = {
+    {"sphere", "sphere { 0, 1 }"},
+    {"box", "box { -1, 1 }"},
+    {"plane", "plane { y, 0 }"},
+    {"cylinder", "cylinder { 0, y, 1 }"},
+    {"cone", "cone { 0, 1, y, 0.5 }"},
+    {"disc", "disc { 0, y, 1 }"},
+    {"torus", "torus { 1, 0.25 }"},
+    {"triangle", "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }"},
+    {"smooth_triangle", "smooth_triangle { <0, 0, 0>, y, <1, 0, 0>, y, <0, 0, 1>, y }"},
+    {"mesh", "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } }"},
+    {"mesh2", "mesh2 { vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } face_indices { 1, <0, 1, 2> } }"},
+    {"polygon", "polygon { 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }"},
+    {"quadric", "quadric { <1, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 }"},
+    {"superellipsoid", "superellipsoid { <1, 1> }"},
+    {"quartic", "quartic { <0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, "
+                "0, 0, 1, 0, -1> }"},
+    {"prism", "prism { linear_sweep 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }"},
+    {"lathe", "lathe { linear_spline 3, <0, 0>, <1, 0.5>, <0, 1> }"},
+    {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},
+    {"text", "text { ttf \"timrom.ttf\" \"A\", 0.5, 0 }"},
+};
+
+// Parses one statement as a scene of one object.
+std::optional<scene::Object> parse_single_object(const std::string& statement) {
+    parser::ParseOptions options;
+    options.library_paths = {"/usr/share/povray-3.7/include"};
+    const parser::ParseResult r =
+        parser::parse_string("global_settings { assumed_gamma 1 }\n" + statement, "list.pov", options);
+    if (!r.ok() || !r.scene || r.scene->objects.size() != 1) return std::nullopt;
+    return r.scene->objects.front();
+}
+
+// The shape list is consistent: each keyword is reserved, parses to its scene type, is named by it in --check,
+// and builds a geometry.
+TEST(ShapeList, EveryKeywordParsesToItsKindAndHasAGeometry) {
+    int checked = 0;
+#define WARDRAY_CHECK_SHAPE(keyword, Type)                                                                  \
+    {                                                                                                       \
+        SCOPED_TRACE(#keyword);                                                                             \
+        EXPECT_TRUE(parser::is_keyword(#keyword));                                                          \
+        const auto sample = k_shape_samples.find(#keyword);                                                 \
+        ASSERT_NE(sample, k_shape_samples.end()) << "add a sample statement for the new shape";             \
+        const auto object = parse_single_object(sample->second);                                            \
+        ASSERT_TRUE(object.has_value());                                                                    \
+        EXPECT_TRUE(std::holds_alternative<scene::Type>(object->shape));                                    \
+        EXPECT_EQ(std::string_view(scene::shape_keyword(object->shape)), #keyword);                         \
+        EXPECT_TRUE(ShapeInstance::create(*object, 0).has_value());                                         \
+        ++checked;                                                                                          \
+    }
+    WARDRAY_SHAPES(WARDRAY_CHECK_SHAPE)
+#undef WARDRAY_CHECK_SHAPE
+    EXPECT_EQ(checked, static_cast<int>(scene::k_shape_keywords.size()));
+    EXPECT_EQ(k_shape_samples.size(), scene::k_shape_keywords.size());
+    // A keyword of the list is no user name.
+    EXPECT_FALSE(parse_single_object("#declare torus = 1;\nsphere { 0, 1 }").has_value());
 }
 
 }  // namespace

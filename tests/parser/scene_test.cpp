@@ -1,6 +1,8 @@
 // Tests of scene statements: camera resolution, lights, objects, textures, unions, global settings, warnings.
 #include <cmath>
+#include <string>
 
+#include "parser/keywords.h"
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {
@@ -482,6 +484,35 @@ TEST(Objects, DeclaredNormalsReadAsWrittenInPlace) {
     const ParseResult r = test::parse_fail("#declare A = array[1] { 1 }\nsphere { 0, 1 normal { A[0] } }\n");
     EXPECT_NE(test::all_diagnostics(r).find("expected a normal but found a number"), std::string::npos)
         << test::all_diagnostics(r);
+}
+
+// The pattern list is consistent: each keyword of WARDRAY_PATTERNS is reserved, is no "not rendered yet" pattern,
+// and parses to its pattern type in a pigment, a normal and a texture map.
+TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
+    for (const auto& [keyword, type] : k_pattern_keywords) {
+        SCOPED_TRACE(std::string(keyword));
+        EXPECT_TRUE(is_keyword(keyword));
+        EXPECT_FALSE(is_pattern_keyword(keyword));
+        const std::string pattern = std::string(keyword) + (keyword == "gradient" ? " y" : "");
+        const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
+                                 " } }\nsphere { 0, 1 texture { " + pattern +
+                                 " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");
+        ASSERT_EQ(s.objects.size(), 2u);
+        EXPECT_EQ(s.objects[0].texture.pigment.pattern.type, type);
+        EXPECT_EQ(s.objects[0].texture.normal.pattern.type, type);
+        EXPECT_EQ(s.objects[1].texture.map_pattern.type, type);
+    }
+}
+
+// The camera list is consistent: each keyword of WARDRAY_CAMERAS is reserved and sets its projection.
+TEST(CameraList, EveryKeywordSetsItsTypeAndIsReserved) {
+    for (const auto& [keyword, type] : k_camera_keywords) {
+        SCOPED_TRACE(std::string(keyword));
+        EXPECT_TRUE(is_keyword(keyword));
+        EXPECT_EQ(camera_type_name(type), keyword);
+        const Scene s = parse_ok("camera { " + std::string(keyword) + " location -5*z look_at 0 }");
+        EXPECT_EQ(s.camera.type, type);
+    }
 }
 
 }  // namespace
