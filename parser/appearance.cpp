@@ -1,4 +1,4 @@
-// Appearance: colours (with POV-Ray's promotion rules), pigments, finishes, textures and block skipping.
+// Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, sky sphere, fog, #default.
 #include <cmath>
 
 #include "parser/keywords.h"
@@ -14,16 +14,7 @@ double srgb_to_linear(double c) {
 
 }  // namespace
 
-bool Parser::is_color_keyword(const Token& t) const {
-    if (t.kind != TokenKind::Identifier) return false;
-    static const char* const words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf",
-                                        "srgbt", "srgbft", "red", "green", "blue", "filter", "transmit"};
-    for (const char* w : words)
-        if (t.text == w) return true;
-    return false;
-}
-
-Color Parser::parse_color() {
+Color AppearanceReader::parse_color() {
     Color c;
     bool any = false;
     while (true) {
@@ -88,21 +79,7 @@ Color Parser::parse_color() {
     return c;
 }
 
-void Parser::skip_block(const Token& kw) {
-    // Skips a balanced `{ ... }` (directives inside are still processed, as POV-Ray would).
-    expect("{");
-    const std::size_t depth = m_brace_depth;
-    while (m_brace_depth >= depth) {
-        const Token t = next();
-        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' block has no closing '}'");
-    }
-}
-
-void Parser::skip_optional_block(const Token& kw) {
-    if (is_punct(peek(), "{")) skip_block(kw);
-}
-
-void Parser::parse_finish_item(Finish& f, const Token& item) {
+void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
     const TokenText& w = item.text;
     // `albedo` rescales the value when the finish block ends (see parse_finish_body).
     auto scalar_with_albedo = [&]() {
@@ -166,7 +143,7 @@ void Parser::parse_finish_item(Finish& f, const Token& item) {
     }
 }
 
-Finish Parser::parse_finish_body(const Token& kw) {
+Finish AppearanceReader::parse_finish_body(const Token& kw) {
     expect("{");
     m_finish_albedo = 0;
     Finish f = m_default_finish;
@@ -205,14 +182,14 @@ Finish Parser::parse_finish_body(const Token& kw) {
     }
 }
 
-Texture Parser::parse_texture_body(const Token& kw) {
+Texture AppearanceReader::parse_texture_body(const Token& kw) {
     expect("{");
     Texture tx = default_texture();
     parse_texture_items(tx, kw, "}");
     return tx;
 }
 
-void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
+void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
     const std::size_t depth = m_brace_depth;
     expand_macros();
     if (is_array_element_next()) {
@@ -284,7 +261,7 @@ void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close
     }
 }
 
-void Parser::parse_reflection_block(Finish& f) {
+void AppearanceReader::parse_reflection_block(Finish& f) {
     // reflection { [min,] max [fresnel] [falloff F] [exponent E] [metallic M] }
     expect("{");
     f.reflection_min = parse_color();
@@ -311,7 +288,7 @@ void Parser::parse_reflection_block(Finish& f) {
     }
 }
 
-Interior Parser::parse_interior_body(const Token& /*kw*/) {
+Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
     expect("{");
     Interior in;
     expand_macros();
@@ -349,7 +326,7 @@ Interior Parser::parse_interior_body(const Token& /*kw*/) {
     }
 }
 
-SkySphere Parser::parse_sky_sphere(const Token& kw) {
+SkySphere AppearanceReader::parse_sky_sphere(const Token& kw) {
     expect("{");
     SkySphere sky;
     expand_macros();
@@ -382,7 +359,7 @@ SkySphere Parser::parse_sky_sphere(const Token& kw) {
     return sky;
 }
 
-Fog Parser::parse_fog(const Token& kw) {
+Fog AppearanceReader::parse_fog(const Token& kw) {
     expect("{");
     Fog fog;
     fog.loc = make_diagnostic(Severity::Note, kw, "").loc;
@@ -408,6 +385,30 @@ Fog Parser::parse_fog(const Token& kw) {
             parse_numeric();
         } else {
             fail(t, "expected distance, a colour or fog_type in fog but found " + describe_token(t));
+        }
+    }
+}
+
+void AppearanceReader::directive_default(const Token& tok) {
+    // Deferred declarations were written against the defaults in force where they stand.
+    evaluate_all_deferred();
+    expect("{");
+    while (true) {
+        const Token t = next();
+        if (is_punct(t, "}")) return;
+        if (is_word(t, "texture")) {
+            const Texture tx = parse_texture_body(t);
+            m_default_pigment = tx.pigment;
+            m_default_finish = tx.finish;
+        } else if (is_word(t, "pigment")) {
+            m_default_pigment = parse_pigment_body(t);
+        } else if (is_word(t, "finish")) {
+            m_default_finish = parse_finish_body(t);
+        } else if (t.kind == TokenKind::Identifier && is_unsupported_block(t.text)) {
+            warn_unsupported(t, t.text);
+            skip_block(t);
+        } else {
+            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
         }
     }
 }

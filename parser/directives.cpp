@@ -19,7 +19,7 @@ bool is_opening_directive(const std::string& name) {
 // ---------------------------------------------------------------------------------------------------------------
 // Directives
 
-Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener) {
+Token Preprocessor::skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener) {
     while (true) {
         const Token& t = raw();
         if (t.kind == TokenKind::EndOfFile) {
@@ -41,7 +41,7 @@ Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, co
     }
 }
 
-void Parser::process_directive() {
+void Preprocessor::process_directive() {
     const Token tok = raw();
     // Directives read their operands through peek(), which runs the directives it meets: a loop that jumps
     // back while a directive waits for its operand (`#while (1) #declare S #end`) nests one call deeper on
@@ -69,7 +69,7 @@ void Parser::process_directive() {
     }
 }
 
-void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
+void Preprocessor::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
     // Leave the macros and includes its operands entered, and the #if/#while/... they opened.
     while (m_frames.size() > frames) return_from_macro();
     if (m_conds.size() > conds) m_conds.resize(conds);
@@ -104,7 +104,7 @@ void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::si
     }
 }
 
-void Parser::run_directive(const Token& tok) {
+void Preprocessor::run_directive(const Token& tok) {
     const TokenText& name = tok.text;
     if (name == "declare" || name == "local") {
         directive_declare(tok, name == "local");
@@ -164,7 +164,7 @@ void Parser::run_directive(const Token& tok) {
     }
 }
 
-void Parser::directive_declare(const Token& tok, bool local) {
+void Preprocessor::directive_declare(const Token& tok, bool local) {
     if (is_word(peek(), "deprecated")) {
         // `#declare deprecated [once] "message" Name = ...`: the message is for users of Name; not shown here.
         next();
@@ -258,7 +258,7 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
 }
 
-void Parser::directive_if(const Token& tok) {
+void Preprocessor::directive_if(const Token& tok) {
     bool cond = false;
     if (tok.text == "if") {
         cond = parse_float() != 0.0;
@@ -287,7 +287,7 @@ void Parser::directive_if(const Token& tok) {
     }
 }
 
-void Parser::directive_else(const Token& tok, bool elseif) {
+void Preprocessor::directive_else(const Token& tok, bool elseif) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     if (m_conds.size() > floor && m_conds.back().kind == Cond::Kind::Switch && !elseif) return;  // falls through
     if (m_conds.size() <= floor || m_conds.back().kind != Cond::Kind::If)
@@ -298,7 +298,7 @@ void Parser::directive_else(const Token& tok, bool elseif) {
     skip_until(0, {"end"}, opener);
 }
 
-void Parser::directive_end(const Token& tok) {
+void Preprocessor::directive_end(const Token& tok) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     if (m_conds.size() <= floor) {
         if (!m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
@@ -341,7 +341,7 @@ void Parser::directive_end(const Token& tok) {
     }
 }
 
-void Parser::directive_while(const Token& tok) {
+void Preprocessor::directive_while(const Token& tok) {
     const std::size_t directive_pos = m_pos - 1;
     const double cond = parse_float();
     if (cond == 0.0) {
@@ -356,7 +356,7 @@ void Parser::directive_while(const Token& tok) {
     m_conds.push_back(std::move(c));
 }
 
-void Parser::directive_for(const Token& tok) {
+void Preprocessor::directive_for(const Token& tok) {
     expect("(");
     const Token id = expect_identifier();
     expect(",");
@@ -382,7 +382,7 @@ void Parser::directive_for(const Token& tok) {
     m_conds.push_back(std::move(c));
 }
 
-void Parser::directive_switch(const Token& tok) {
+void Preprocessor::directive_switch(const Token& tok) {
     const double value = parse_float();
     Cond c;
     c.kind = Cond::Kind::Switch;
@@ -413,7 +413,7 @@ void Parser::directive_switch(const Token& tok) {
     }
 }
 
-void Parser::directive_break(const Token& tok) {
+void Preprocessor::directive_break(const Token& tok) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     std::size_t target = m_conds.size();
     for (std::size_t i = m_conds.size(); i > floor; --i) {
@@ -429,7 +429,7 @@ void Parser::directive_break(const Token& tok) {
     skip_until(open_ifs, {"end"}, opener);
 }
 
-std::vector<std::filesystem::path> Parser::search_candidates(const std::filesystem::path& requested,
+std::vector<std::filesystem::path> SourceStream::search_candidates(const std::filesystem::path& requested,
                                                             const char* extension) const {
     // Search order: the reading file's folder, then the library paths in order.
     std::vector<std::filesystem::path> candidates;
@@ -447,7 +447,7 @@ std::vector<std::filesystem::path> Parser::search_candidates(const std::filesyst
     return candidates;
 }
 
-void Parser::directive_include(const Token& tok) {
+void Preprocessor::directive_include(const Token& tok) {
     const Token name_tok = peek();
     const std::string name = parse_string();
     std::size_t include_depth = 0;
@@ -499,7 +499,7 @@ void Parser::directive_include(const Token& tok) {
     m_pos = 0;
 }
 
-void Parser::directive_macro(const Token& tok) {
+void Preprocessor::directive_macro(const Token& tok) {
     const Token id = expect_identifier();
     Macro macro;
     macro.where = id;
@@ -526,30 +526,6 @@ void Parser::directive_macro(const Token& tok) {
     if (stop.kind == TokenKind::EndOfFile) return;
     macro.end = m_pos - 1;
     m_macros[id.text] = std::move(macro);
-}
-
-void Parser::directive_default(const Token& tok) {
-    // Deferred declarations were written against the defaults in force where they stand.
-    evaluate_all_deferred();
-    expect("{");
-    while (true) {
-        const Token t = next();
-        if (is_punct(t, "}")) return;
-        if (is_word(t, "texture")) {
-            const Texture tx = parse_texture_body(t);
-            m_default_pigment = tx.pigment;
-            m_default_finish = tx.finish;
-        } else if (is_word(t, "pigment")) {
-            m_default_pigment = parse_pigment_body(t);
-        } else if (is_word(t, "finish")) {
-            m_default_finish = parse_finish_body(t);
-        } else if (t.kind == TokenKind::Identifier && is_unsupported_block(t.text)) {
-            warn_unsupported(t, t.text);
-            skip_block(t);
-        } else {
-            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
-        }
-    }
 }
 
 }  // namespace wardray::parser

@@ -10,7 +10,7 @@
 
 namespace wardray::parser {
 
-Parser::Parser(const ParseOptions& options)
+SourceStream::SourceStream(const ParseOptions& options)
     : m_stack_base(static_cast<const char*>(__builtin_frame_address(0))), m_options(options) {}
 
 std::string SourceFile::line_text(std::uint32_t line) const {
@@ -27,21 +27,21 @@ std::string SourceFile::line_text(std::uint32_t line) const {
     return text.substr(start, end - start);
 }
 
-Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at, std::size_t& depth)
-    : m_parser(parser), m_depth(depth) {
+SourceStream::NestingGuard::NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth)
+    : m_stream(stream), m_depth(depth) {
     // The stack grows down on every platform we build for: the distance from where the parser began is its use.
     const char* here = static_cast<const char*>(__builtin_frame_address(0));
-    const bool stack_full = m_parser.m_stack_base - here > k_max_stack_bytes;
+    const bool stack_full = m_stream.m_stack_base - here > k_max_stack_bytes;
     if (++m_depth <= k_max_nesting && !stack_full) return;
     --m_depth;
-    m_parser.report(m_parser.make_diagnostic(
+    m_stream.report(m_stream.make_diagnostic(
         Severity::Error, at,
         stack_full ? "nesting too deep for the stack (" + std::to_string(m_depth) + " levels); stopping"
                    : "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
     throw FatalError{};
 }
 
-Diagnostic Parser::make_diagnostic(Severity s, const Token& at, std::string message) const {
+Diagnostic SourceStream::make_diagnostic(Severity s, const Token& at, std::string message) const {
     Diagnostic d;
     d.severity = s;
     d.message = std::move(message);
@@ -77,14 +77,14 @@ Diagnostic Parser::make_diagnostic(Severity s, const Token& at, std::string mess
     return d;
 }
 
-void Parser::report(Diagnostic d) {
+void SourceStream::report(Diagnostic d) {
     const bool error = d.severity == Severity::Error;
-    if (d.severity == Severity::Warning) m_scene.warnings.push_back(d);
+    if (d.severity == Severity::Warning) m_warnings.push_back(d);
     m_diagnostics.push_back(std::move(d));
     if (error && ++m_errors >= m_options.max_errors) throw FatalError{};
 }
 
-void Parser::fail(const Token& at, std::string message) {
+void SourceStream::fail(const Token& at, std::string message) {
     if (at.kind == TokenKind::EndOfFile && at.file < m_files.size()) {
         // After an unterminated string the rest of the file is gone: what fails at its end is a consequence.
         if (m_files[at.file]->truncated) throw FatalError{};
@@ -101,11 +101,11 @@ void Parser::fail(const Token& at, std::string message) {
     throw StatementError{};
 }
 
-void Parser::warn(const Token& at, std::string message) {
+void SourceStream::warn(const Token& at, std::string message) {
     report(make_diagnostic(Severity::Warning, at, std::move(message)));
 }
 
-void Parser::warn_unsupported(const Token& at, const std::string& feature) {
+void SourceStream::warn_unsupported(const Token& at, const std::string& feature) {
     Diagnostic d = make_diagnostic(Severity::Warning, at, feature + " is not rendered yet");
     if (m_declaring.empty()) {
         emit_feature_warning(std::move(d));
@@ -116,12 +116,12 @@ void Parser::warn_unsupported(const Token& at, const std::string& feature) {
     m_declaring.back().push_back(std::move(d));
 }
 
-void Parser::emit_feature_warning(Diagnostic d) {
+void SourceStream::emit_feature_warning(Diagnostic d) {
     if (!m_warned_features.insert(d.message).second) return;
     report(std::move(d));
 }
 
-void Parser::fail_undeclared(const Token& at) {
+void TokenStream::fail_undeclared(const Token& at) {
     if (m_failed_declarations.count(at.text) > 0) throw StatementError{};  // its #declare was reported
     Diagnostic d = make_diagnostic(Severity::Error, at, "undeclared identifier '" + at.text + "'");
     // Suggest the closest declared name (preferred) or keyword within edit distance 2.
@@ -145,7 +145,7 @@ void Parser::fail_undeclared(const Token& at) {
     throw StatementError{};
 }
 
-void Parser::recover_after_error(std::size_t depth) {
+void TokenStream::recover_after_error(std::size_t depth) {
     // A failed statement keyword followed by a block (`spher { ... }`): skip that block too.
     if (m_brace_depth == depth && is_punct(raw(), "{")) {
         ++m_pos;
@@ -175,7 +175,6 @@ void Parser::recover_after_error(std::size_t depth) {
 ParseResult Parser::run(std::string text, const std::string& path) {
     ParseResult result;
     try {
-        m_scene.path = path;
         m_scopes.emplace_back();
         for (const auto& [name, value] : m_options.declares) m_scopes.front()[name] = Numeric::scalar(value);
         auto file = std::make_unique<SourceFile>();
@@ -199,7 +198,7 @@ ParseResult Parser::run(std::string text, const std::string& path) {
             }
             for (const Cond& c : m_conds)
                 report(make_diagnostic(Severity::Error, c.where, "'#" + c.where.text + "' has no matching #end"));
-            if (!m_scene.global.assumed_gamma_given && m_version >= 3.7) {
+            if (!m_builder.global().assumed_gamma_given && m_version >= 3.7) {
                 Diagnostic d;
                 d.severity = Severity::Warning;
                 d.loc.path = path;
@@ -227,9 +226,8 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         m_diagnostics.push_back(std::move(d));
         ++m_errors;
     }
-    m_scene.version = m_version;
     result.diagnostics = std::move(m_diagnostics);
-    if (m_errors == 0) result.scene = std::move(m_scene);
+    if (m_errors == 0) result.scene = m_builder.finish(path, m_version, std::move(m_warnings));
     return result;
 }
 

@@ -1,0 +1,34 @@
+// SceneReader: the top-level statements of a scene file (objects, lights, camera, global settings, ...).
+#pragma once
+
+#include <optional>
+
+#include "parser/object_reader.h"
+#include "parser/scene_builder.h"
+
+namespace wardray::parser {
+
+/// Reads one statement at a time through a keyword table and writes what it places into the SceneBuilder.
+class SceneReader : public ObjectReader {
+protected:
+    using ObjectReader::ObjectReader;
+
+    /// Reads one top-level statement.
+    void parse_statement();
+    /// Places an object statement's parts and lights in the scene, with the default texture where none is given.
+    void place_object(ObjectValue ov);
+    /// Reads `camera { ... }` after its keyword.
+    CameraSpec parse_camera_body(const Token& kw);
+    /// Reads `global_settings { ... }` after its keyword.
+    void parse_global_settings(const Token& kw);
+    /// Reads `radiosity { ... }` of the global settings into `rad`.
+    void parse_radiosity(const Token& kw, RadiositySettings& rad);
+    std::optional<Value> parse_item_value(const Token& t) final;
+    /// A declared colour map, kept as a pigment holding only that map.
+    Pigment color_map_value(const Token& kw);
+
+    SceneBuilder m_builder;
+    bool m_charset_utf8 = false;  ///< global_settings { charset utf8 }: text strings are decoded as UTF-8
+};
+
+}  // namespace wardray::parser
