@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -105,63 +106,76 @@ void Preprocessor::skip_failed_directive(const Token& tok, std::size_t frames, s
 }
 
 void Preprocessor::run_directive(const Token& tok) {
-    const TokenText& name = tok.text;
-    if (name == "declare" || name == "local") {
-        directive_declare(tok, name == "local");
-    } else if (name == "undef") {
-        const Token id = expect_identifier();
-        before_rebinding(id.text);
-        bool erased = false;
-        for (auto it = m_scopes.rbegin(); it != m_scopes.rend() && !erased; ++it) erased = it->erase(id.text) > 0;
-        if (!erased) m_macros.erase(id.text);
-    } else if (name == "if" || name == "ifdef" || name == "ifndef") {
-        directive_if(tok);
-    } else if (name == "elseif" || name == "else") {
-        directive_else(tok, name == "elseif");
-    } else if (name == "end") {
-        directive_end(tok);
-    } else if (name == "while") {
-        directive_while(tok);
-    } else if (name == "for") {
-        directive_for(tok);
-    } else if (name == "switch") {
-        directive_switch(tok);
-    } else if (name == "case" || name == "range") {
-        // Reached while running a case: POV-Ray compat, a case without #break falls through.
-        if (m_conds.empty() || m_conds.back().kind != Cond::Kind::Switch) fail(tok, "'#" + name + "' outside #switch");
-        expect("(");
-        parse_float();
-        if (name == "range") {
-            expect(",");
-            parse_float();
-        }
-        expect(")");
-    } else if (name == "break") {
-        directive_break(tok);
-    } else if (name == "include") {
-        directive_include(tok);
-    } else if (name == "macro") {
-        directive_macro(tok);
-    } else if (name == "version") {
-        m_version = parse_float();
-        if (is_punct(peek_expr(), ";")) next();
-    } else if (name == "debug" || name == "render" || name == "statistics") {
-        const std::string message = parse_string();
-        if (m_options.debug_output) m_options.debug_output(message);
-    } else if (name == "warning") {
-        const std::string message = parse_string();
-        warn(tok, message);
-    } else if (name == "error") {
-        const std::string message = parse_string();
-        report(make_diagnostic(Severity::Error, tok, message));
-        throw FatalError{};
-    } else if (name == "default") {
-        directive_default(tok);
-    } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
-        directive_file_io(tok);
-    } else {
-        fail(tok, "unknown directive '#" + name + "'");
+    using Directive = void (*)(Preprocessor&, const Token&);
+    auto file_io = [](Preprocessor& p, const Token& t) { p.directive_file_io(t); };
+    auto message = [](Preprocessor& p, const Token&) {
+        const std::string text = p.parse_string();
+        if (p.m_options.debug_output) p.m_options.debug_output(text);
+    };
+    static const KeywordTable<Directive> directives = {
+        {"declare", [](Preprocessor& p, const Token& t) { p.directive_declare(t, false); }},
+        {"local", [](Preprocessor& p, const Token& t) { p.directive_declare(t, true); }},
+        {"undef",
+         [](Preprocessor& p, const Token&) {
+             const Token id = p.expect_identifier();
+             p.before_rebinding(id.text);
+             bool erased = false;
+             for (auto it = p.m_scopes.rbegin(); it != p.m_scopes.rend() && !erased; ++it)
+                 erased = it->erase(id.text) > 0;
+             if (!erased) p.m_macros.erase(id.text);
+         }},
+        {"if", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"ifdef", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"ifndef", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"elseif", [](Preprocessor& p, const Token& t) { p.directive_else(t, true); }},
+        {"else", [](Preprocessor& p, const Token& t) { p.directive_else(t, false); }},
+        {"end", [](Preprocessor& p, const Token& t) { p.directive_end(t); }},
+        {"while", [](Preprocessor& p, const Token& t) { p.directive_while(t); }},
+        {"for", [](Preprocessor& p, const Token& t) { p.directive_for(t); }},
+        {"switch", [](Preprocessor& p, const Token& t) { p.directive_switch(t); }},
+        {"case", [](Preprocessor& p, const Token& t) { p.directive_case(t); }},
+        {"range", [](Preprocessor& p, const Token& t) { p.directive_case(t); }},
+        {"break", [](Preprocessor& p, const Token& t) { p.directive_break(t); }},
+        {"include", [](Preprocessor& p, const Token& t) { p.directive_include(t); }},
+        {"macro", [](Preprocessor& p, const Token& t) { p.directive_macro(t); }},
+        {"version",
+         [](Preprocessor& p, const Token&) {
+             p.m_version = p.parse_float();
+             if (p.is_punct(p.peek_expr(), ";")) p.next();
+         }},
+        {"debug", message},
+        {"render", message},
+        {"statistics", message},
+        {"warning", [](Preprocessor& p, const Token& t) { p.warn(t, p.parse_string()); }},
+        {"error",
+         [](Preprocessor& p, const Token& t) {
+             const std::string text = p.parse_string();
+             p.report(p.make_diagnostic(Severity::Error, t, text));
+             throw FatalError{};
+         }},
+        {"default", [](Preprocessor& p, const Token& t) { p.directive_default(t); }},
+        {"fopen", file_io},
+        {"fclose", file_io},
+        {"read", file_io},
+        {"write", file_io},
+    };
+    if (const Directive* directive = directives.find(tok.text)) {
+        (*directive)(*this, tok);
+        return;
     }
+    fail(tok, "unknown directive '#" + tok.text + "'");
+}
+
+void Preprocessor::directive_case(const Token& tok) {
+    // Reached while running a case: POV-Ray compat, a case without #break falls through.
+    if (m_conds.empty() || m_conds.back().kind != Cond::Kind::Switch) fail(tok, "'#" + tok.text + "' outside #switch");
+    expect("(");
+    parse_float();
+    if (tok.text == "range") {
+        expect(",");
+        parse_float();
+    }
+    expect(")");
 }
 
 void Preprocessor::directive_declare(const Token& tok, bool local) {
@@ -427,24 +441,6 @@ void Preprocessor::directive_break(const Token& tok) {
     const Token opener = m_conds[target].where;
     m_conds.resize(target);
     skip_until(open_ifs, {"end"}, opener);
-}
-
-std::vector<std::filesystem::path> SourceStream::search_candidates(const std::filesystem::path& requested,
-                                                            const char* extension) const {
-    // Search order: the reading file's folder, then the library paths in order.
-    std::vector<std::filesystem::path> candidates;
-    if (requested.is_absolute()) {
-        candidates.push_back(requested);
-    } else {
-        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
-        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
-    }
-    if (!requested.has_extension()) {
-        // POV-Ray compat: a name without extension is also tried with the usual one.
-        const std::size_t n = candidates.size();
-        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + extension);
-    }
-    return candidates;
 }
 
 void Preprocessor::directive_include(const Token& tok) {

@@ -466,12 +466,6 @@ std::shared_ptr<const UserFunction> Evaluator::parse_user_function(const Token& 
     return f;
 }
 
-void SourceStream::warn_once(const Token& at, const std::string& message) {
-    // Checked before the diagnostic is built: loops may call the same function millions of times.
-    if (m_warned_features.count(message) > 0) return;
-    emit_feature_warning(make_diagnostic(Severity::Warning, at, message));
-}
-
 Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) {
     expect("(");
     std::vector<double> args;

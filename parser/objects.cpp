@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -23,7 +24,41 @@ void transform_textures(Object& o, bool own_texture, const Transform& tr) {
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
 }
 
+/// Sets the flag `flag` (no_shadow, no_image, ...) on every part of the object.
+void set_flag(ObjectValue& ov, bool Object::*flag) {
+    for (ObjectPart& part : ov.parts) part.object.*flag = true;
+}
+
 }  // namespace
+
+void ObjectReader::skip_unsupported_modifier(ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
+    r.warn_unsupported(kw, kw.text);
+    r.skip_block(kw);
+}
+
+void ObjectReader::skip_unsupported_light_item(ObjectReader& r, Light&, const Token& kw) {
+    r.warn_unsupported(kw, kw.text);
+    r.skip_block(kw);
+}
+
+void ObjectReader::parse_area_light(Light& light) {
+    light.area = true;
+    // POV-Ray compat: the commas between the four values are optional.
+    light.area_axis1 = parse_vector();
+    accept(",");
+    light.area_axis2 = parse_vector();
+    accept(",");
+    const Token& at1 = peek();
+    const double n1 = parse_float();
+    accept(",");
+    const Token& at2 = peek();
+    const double n2 = parse_float();
+    // POV-Ray compat: sizes are truncated, and a size below 1 is an error.
+    if (!(n1 >= 1.0) || n1 > 1e4) fail(at1, "area_light size must be between 1 and 10000");
+    if (!(n2 >= 1.0) || n2 > 1e4) fail(at2, "area_light size must be between 1 and 10000");
+    light.area_size1 = static_cast<int>(n1);
+    light.area_size2 = static_cast<int>(n2);
+}
 
 ObjectValue ObjectReader::parse_object(const Token& kw) {
     const NestingGuard guard(*this, kw);
@@ -163,8 +198,7 @@ void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
 }
 
 void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
-    bool textured = false;
-    std::vector<Object> bounded_by;
+    ModifierState state;
     while (true) {
         expand_macros();
         const Token t = peek();
@@ -177,69 +211,98 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
         if (is_punct(t, "}")) return;
         if (t.kind != TokenKind::Identifier) fail(t, "expected an object modifier or '}' but found '" + t.text + "'");
         const TokenText& w = t.text;
-        if (w == "pigment") {
-            texture_to_modify(ov).pigment = parse_pigment_body(t);
-        } else if (w == "finish") {
-            texture_to_modify(ov).finish = parse_finish_body(t);
-        } else if (w == "texture") {
-            if (textured) {
-                // POV-Ray compat: further texture statements are layers on top of the first.
-                texture_to_modify(ov).layers.push_back(parse_texture_body(t));
-            } else {
-                texture_to_modify(ov) = parse_texture_body(t);
-                textured = true;
-            }
-        } else if (w == "no_shadow" || w == "no_image" || w == "no_reflection" || w == "no_radiosity") {
-            for (ObjectPart& part : ov.parts) {
-                Object& o = part.object;
-                (w == "no_shadow" ? o.no_shadow : w == "no_image" ? o.no_image
-                                                : w == "no_reflection" ? o.no_reflection : o.no_radiosity) = true;
-            }
-        } else if (w == "inverse") {
-            make_union_node(ov);
-            for (ObjectPart& part : ov.parts) part.object.inverse = !part.object.inverse;
-        } else if (w == "clipped_by") {
-            const std::vector<Object> clips = parse_object_list(t, &bounded_by);
-            make_union_node(ov);
-            // Clipping objects are given in world space; store them relative to the object so later transforms
-            // move both together.
-            for (ObjectPart& part : ov.parts) {
-                const Transform to_local = part.object.transform.inverse();
-                for (Object clip : clips) {
-                    clip.transform = clip.transform.then(to_local);
-                    part.object.clipped_by.push_back(std::move(clip));
-                }
-            }
-        } else if (w == "bounded_by") {
+        using Modifier = void (*)(ObjectReader&, ObjectValue&, const Token&, ModifierState&);
+        static const KeywordTable<Modifier> modifiers = {
+            {"pigment",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).pigment = r.parse_pigment_body(kw);
+             }},
+            {"finish",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).finish = r.parse_finish_body(kw);
+             }},
+            {"texture",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
+                 if (state.textured) {
+                     // POV-Ray compat: further texture statements are layers on top of the first.
+                     r.texture_to_modify(ov).layers.push_back(r.parse_texture_body(kw));
+                 } else {
+                     r.texture_to_modify(ov) = r.parse_texture_body(kw);
+                     state.textured = true;
+                 }
+             }},
+            {"no_shadow",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_shadow); }},
+            {"no_image",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_image); }},
+            {"no_reflection",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
+                 set_flag(ov, &Object::no_reflection);
+             }},
+            {"no_radiosity",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_radiosity); }},
+            {"inverse",
+             [](ObjectReader& r, ObjectValue& ov, const Token&, ModifierState&) {
+                 r.make_union_node(ov);
+                 for (ObjectPart& part : ov.parts) part.object.inverse = !part.object.inverse;
+             }},
+            {"clipped_by",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
+                 const std::vector<Object> clips = r.parse_object_list(kw, &state.bounded_by);
+                 r.make_union_node(ov);
+                 // Clipping objects are given in world space; store them relative to the object so later
+                 // transforms move both together.
+                 for (ObjectPart& part : ov.parts) {
+                     const Transform to_local = part.object.transform.inverse();
+                     for (Object clip : clips) {
+                         clip.transform = clip.transform.then(to_local);
+                         part.object.clipped_by.push_back(std::move(clip));
+                     }
+                 }
+             }},
             // Bounds are accepted and not needed for correctness: the renderer builds its own.
-            bounded_by = parse_object_list(t, nullptr);
-        } else if (w == "open") {
-            for (ObjectPart& part : ov.parts) {
-                if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
-            }
-        } else if (w == "hollow") {
-            parse_bool_optional();
-        } else if (w == "sturm" || w == "split_union" || w == "cutaway_textures") {
-            if (w == "split_union") parse_bool_optional();
-        } else if (w == "double_illuminate") {
-            warn_unsupported(t, w);
-        } else if (w == "radiosity") {
-            warn_unsupported(t, "object radiosity importance");
-            skip_block(t);
-        } else if (w == "normal") {
-            texture_to_modify(ov).normal = parse_normal_body(t);
-        } else if (w == "interior") {
-            const Interior interior = parse_interior_body(t);
-            for (ObjectPart& part : ov.parts) part.object.interior = interior;
-        } else if (w == "interior_texture" || w == "material" ||
-                   w == "photons") {
-            warn_unsupported(t, w);
-            skip_block(t);
-        } else if (w == "uv_mapping") {
-            warn_unsupported(t, w);
+            {"bounded_by",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState& state) {
+                 state.bounded_by = r.parse_object_list(kw, nullptr);
+             }},
+            {"open",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
+                 for (ObjectPart& part : ov.parts) {
+                     if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
+                 }
+             }},
+            {"hollow", [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
+            {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            {"split_union",
+             [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
+            {"cutaway_textures", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            {"double_illuminate",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+            {"radiosity",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
+                 r.warn_unsupported(kw, "object radiosity importance");
+                 r.skip_block(kw);
+             }},
+            {"normal",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).normal = r.parse_normal_body(kw);
+             }},
+            {"interior",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 const Interior interior = r.parse_interior_body(kw);
+                 for (ObjectPart& part : ov.parts) part.object.interior = interior;
+             }},
+            {"interior_texture", &skip_unsupported_modifier},
+            {"material", &skip_unsupported_modifier},
+            {"photons", &skip_unsupported_modifier},
+            {"uv_mapping",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+        };
+        if (const Modifier* modifier = modifiers.find(w)) {
+            (*modifier)(*this, ov, t, state);
         } else if (is_object_keyword(t) && compound) {
             fail(t, "objects of a union must come before its modifiers");
         } else {
@@ -285,59 +348,52 @@ Light ObjectReader::parse_light_body(const Token& kw) {
         if (is_punct(t, "}")) return light;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
-        // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own defaults
-        // (degrees for a spotlight, distances from the axis for a cylinder light).
-        if (w == "spotlight") {
-            light.type = Light::Type::Spot;
-            light.radius = 30.0;
-            light.falloff = 45.0;
-            light.tightness = 0.0;
-        } else if (w == "cylinder") {
-            light.type = Light::Type::Cylinder;
-            light.radius = 0.75;
-            light.falloff = 1.0;
-            light.tightness = 0.0;
-        }
-        else if (w == "parallel") light.type = Light::Type::Parallel;
-        else if (w == "point_at") light.point_at = parse_vector();
-        else if (w == "radius") light.radius = parse_float();
-        else if (w == "falloff") light.falloff = parse_float();
-        else if (w == "tightness") light.tightness = parse_float();
-        else if (w == "fade_distance") light.fade_distance = parse_float();
-        else if (w == "fade_power") light.fade_power = parse_float();
-        else if (w == "shadowless") light.shadowless = true;
-        else if (w == "area_light") {
-            light.area = true;
-            // POV-Ray compat: the commas between the four values are optional.
-            light.area_axis1 = parse_vector();
-            accept(",");
-            light.area_axis2 = parse_vector();
-            accept(",");
-            const Token& at1 = peek();
-            const double n1 = parse_float();
-            accept(",");
-            const Token& at2 = peek();
-            const double n2 = parse_float();
-            // POV-Ray compat: sizes are truncated, and a size below 1 is an error.
-            if (!(n1 >= 1.0) || n1 > 1e4) fail(at1, "area_light size must be between 1 and 10000");
-            if (!(n2 >= 1.0) || n2 > 1e4) fail(at2, "area_light size must be between 1 and 10000");
-            light.area_size1 = static_cast<int>(n1);
-            light.area_size2 = static_cast<int>(n2);
-        } else if (w == "adaptive") {
-            light.adaptive = std::max(0, static_cast<int>(std::min(parse_float(), 100.0)));
-        } else if (w == "jitter") {
-            light.jitter = true;
-        } else if (w == "circular") {
-            light.circular = true;
-        } else if (w == "orient") {
-            light.orient = true;
-        } else if (w == "area_illumination") {
-            if (parse_bool_optional()) warn_unsupported(t, "area_illumination");
-        } else if (w == "media_interaction" || w == "media_attenuation") {
-            parse_bool_optional();
-        } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
-            warn_unsupported(t, w);
-            skip_block(t);
+        using Item = void (*)(ObjectReader&, Light&, const Token&);
+        static const KeywordTable<Item> items = {
+            // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own
+            // defaults (degrees for a spotlight, distances from the axis for a cylinder light).
+            {"spotlight",
+             [](ObjectReader&, Light& l, const Token&) {
+                 l.type = Light::Type::Spot;
+                 l.radius = 30.0;
+                 l.falloff = 45.0;
+                 l.tightness = 0.0;
+             }},
+            {"cylinder",
+             [](ObjectReader&, Light& l, const Token&) {
+                 l.type = Light::Type::Cylinder;
+                 l.radius = 0.75;
+                 l.falloff = 1.0;
+                 l.tightness = 0.0;
+             }},
+            {"parallel", [](ObjectReader&, Light& l, const Token&) { l.type = Light::Type::Parallel; }},
+            {"point_at", [](ObjectReader& r, Light& l, const Token&) { l.point_at = r.parse_vector(); }},
+            {"radius", [](ObjectReader& r, Light& l, const Token&) { l.radius = r.parse_float(); }},
+            {"falloff", [](ObjectReader& r, Light& l, const Token&) { l.falloff = r.parse_float(); }},
+            {"tightness", [](ObjectReader& r, Light& l, const Token&) { l.tightness = r.parse_float(); }},
+            {"fade_distance", [](ObjectReader& r, Light& l, const Token&) { l.fade_distance = r.parse_float(); }},
+            {"fade_power", [](ObjectReader& r, Light& l, const Token&) { l.fade_power = r.parse_float(); }},
+            {"shadowless", [](ObjectReader&, Light& l, const Token&) { l.shadowless = true; }},
+            {"area_light", [](ObjectReader& r, Light& l, const Token&) { r.parse_area_light(l); }},
+            {"adaptive",
+             [](ObjectReader& r, Light& l, const Token&) {
+                 l.adaptive = std::max(0, static_cast<int>(std::min(r.parse_float(), 100.0)));
+             }},
+            {"jitter", [](ObjectReader&, Light& l, const Token&) { l.jitter = true; }},
+            {"circular", [](ObjectReader&, Light& l, const Token&) { l.circular = true; }},
+            {"orient", [](ObjectReader&, Light& l, const Token&) { l.orient = true; }},
+            {"area_illumination",
+             [](ObjectReader& r, Light&, const Token& kw) {
+                 if (r.parse_bool_optional()) r.warn_unsupported(kw, "area_illumination");
+             }},
+            {"media_interaction", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
+            {"media_attenuation", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
+            {"looks_like", &skip_unsupported_light_item},
+            {"projected_through", &skip_unsupported_light_item},
+            {"photons", &skip_unsupported_light_item},
+        };
+        if (const Item* item = items.find(w)) {
+            (*item)(*this, light, t);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a light_source item but found '" + w + "'");

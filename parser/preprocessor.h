@@ -46,6 +46,8 @@ protected:
     void directive_else(const Token& tok, bool elseif);
     /// #switch.
     void directive_switch(const Token& tok);
+    /// #case or #range met while running a case (without #break it falls through).
+    void directive_case(const Token& tok);
     /// #break.
     void directive_break(const Token& tok);
     /// #include.

@@ -19,6 +19,12 @@ protected:
     void place_object(ObjectValue ov);
     /// Reads `camera { ... }` after its keyword.
     CameraSpec parse_camera_body(const Token& kw);
+    /// A camera projection that is valid POV-Ray and not rendered yet; true when it ends the block (mesh_camera).
+    static bool other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
+    /// A focal blur item (not rendered yet): warns and reads its value.
+    static bool focal_blur(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
+    /// radiosity save_file / load_file (not supported): warns and reads the file name.
+    static void radiosity_file(SceneReader& r, RadiositySettings& rad, const Token& item);
     /// Reads `global_settings { ... }` after its keyword.
     void parse_global_settings(const Token& kw);
     /// Reads `radiosity { ... }` of the global settings into `rad`.

@@ -122,6 +122,38 @@ void SceneReader::place_object(ObjectValue ov) {
     for (Light& l : ov.lights) m_builder.add_light(std::move(l));
 }
 
+namespace {
+
+/// A radiosity count, rounded as POV-Ray does.
+int as_int(double f) { return static_cast<int>(std::lround(f)); }
+
+}  // namespace
+
+bool SceneReader::other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw) {
+    r.warn_unsupported(item, item.text + " camera");
+    spec.other_projection = true;
+    if (item.text != "mesh_camera") return false;
+    // Its parameters and meshes are not modelled: skip the rest of the camera block.
+    const std::size_t depth = r.m_brace_depth;
+    while (r.m_brace_depth >= depth) {
+        if (r.next().kind == TokenKind::EndOfFile) r.fail(kw, "camera block has no closing '}'");
+    }
+    return true;
+}
+
+bool SceneReader::focal_blur(SceneReader& r, CameraSpec&, const Token& item, const Token&) {
+    r.warn_unsupported(item, "focal blur");
+    if (item.text == "focal_point") r.parse_vector();
+    else r.parse_float();
+    if (item.text == "blur_samples" && r.accept(",")) r.parse_float();
+    return false;
+}
+
+void SceneReader::radiosity_file(SceneReader& r, RadiositySettings&, const Token& item) {
+    r.warn_unsupported(item, "radiosity " + item.text);
+    r.parse_string();
+}
+
 CameraSpec SceneReader::parse_camera_body(const Token& kw) {
     expect("{");
     CameraSpec spec;
@@ -146,46 +178,76 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
         if (is_punct(t, "}")) return spec;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a camera item but found '" + w + "'");
-        if (w == "perspective") spec.type = Camera::Type::Perspective;
-        else if (w == "orthographic") spec.type = Camera::Type::Orthographic;
-        else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
-                 w == "spherical" || w == "mesh_camera") {
-            warn_unsupported(t, w + " camera");
-            spec.other_projection = true;
-            if (w == "mesh_camera") {
-                // Its parameters and meshes are not modelled: skip the rest of the camera block.
-                const std::size_t depth = m_brace_depth;
-                while (m_brace_depth >= depth) {
-                    if (next().kind == TokenKind::EndOfFile) fail(kw, "camera block has no closing '}'");
-                }
-                return spec;
-            }
-        } else if (w == "cylinder") {
-            warn_unsupported(t, "cylinder camera");
-            spec.other_projection = true;
-            parse_float();
-        } else if (w == "location") spec.location = parse_vector();
-        else if (w == "look_at") spec.look_at = parse_vector();
-        else if (w == "direction") spec.direction = parse_vector();
-        else if (w == "right") {
-            spec.right = parse_vector();
-            spec.had_right = true;
-        } else if (w == "up") {
-            spec.up = parse_vector();
-            spec.had_up = true;
-        } else if (w == "sky") spec.sky = parse_vector();
-        else if (w == "angle") {
-            spec.angle = parse_float();
-            if (accept(",")) parse_float();  // the vertical angle of the spherical camera
-        } else if (w == "aperture" || w == "blur_samples" || w == "confidence" || w == "variance" ||
-                   w == "focal_point") {
-            warn_unsupported(t, "focal blur");
-            if (w == "focal_point") parse_vector();
-            else parse_float();
-            if (w == "blur_samples" && accept(",")) parse_float();
-        } else if (w == "normal") {
-            warn_unsupported(t, "camera normal");
-            skip_block(t);
+        // An item returns true when it ends the camera block.
+        using Item = bool (*)(SceneReader&, CameraSpec&, const Token& item, const Token& kw);
+        static const KeywordTable<Item> items = {
+            {"perspective",
+             [](SceneReader&, CameraSpec& c, const Token&, const Token&) {
+                 c.type = Camera::Type::Perspective;
+                 return false;
+             }},
+            {"orthographic",
+             [](SceneReader&, CameraSpec& c, const Token&, const Token&) {
+                 c.type = Camera::Type::Orthographic;
+                 return false;
+             }},
+            {"fisheye", &other_projection},
+            {"ultra_wide_angle", &other_projection},
+            {"omnimax", &other_projection},
+            {"panoramic", &other_projection},
+            {"spherical", &other_projection},
+            {"mesh_camera", &other_projection},
+            {"cylinder",
+             [](SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
+                 r.warn_unsupported(item, "cylinder camera");
+                 c.other_projection = true;
+                 r.parse_float();
+                 return false;
+             }},
+            {"location", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.location = r.parse_vector();
+                 return false;
+             }},
+            {"look_at", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.look_at = r.parse_vector();
+                 return false;
+             }},
+            {"direction", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.direction = r.parse_vector();
+                 return false;
+             }},
+            {"right", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.right = r.parse_vector();
+                 c.had_right = true;
+                 return false;
+             }},
+            {"up", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.up = r.parse_vector();
+                 c.had_up = true;
+                 return false;
+             }},
+            {"sky", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.sky = r.parse_vector();
+                 return false;
+             }},
+            {"angle", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.angle = r.parse_float();
+                 if (r.accept(",")) r.parse_float();  // the vertical angle of the spherical camera
+                 return false;
+             }},
+            {"aperture", &focal_blur},
+            {"blur_samples", &focal_blur},
+            {"confidence", &focal_blur},
+            {"variance", &focal_blur},
+            {"focal_point", &focal_blur},
+            {"normal", [](SceneReader& r, CameraSpec&, const Token& item, const Token&) {
+                 r.warn_unsupported(item, "camera normal");
+                 r.skip_block(item);
+                 return false;
+             }},
+        };
+        if (const Item* item = items.find(w)) {
+            if ((*item)(*this, spec, t, kw)) return spec;
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a camera item but found '" + w + "'");
@@ -196,39 +258,58 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
 void SceneReader::parse_radiosity(const Token& kw, RadiositySettings& rad) {
     expect("{");
     rad.loc = make_diagnostic(Severity::Note, kw, "").loc;
-    auto as_int = [](double f) { return static_cast<int>(std::lround(f)); };
     while (true) {
         expand_macros();
         const Token t = next();
         if (is_punct(t, "}")) return;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a radiosity item but found '" + w + "'");
-        if (w == "count") {
-            rad.count = as_int(parse_float());
-            if (accept(",")) rad.count_directions = as_int(parse_float());
-        } else if (w == "nearest_count") {
-            rad.nearest_count = as_int(parse_float());
-            if (accept(",")) rad.nearest_count_pretrace = as_int(parse_float());
-        } else if (w == "error_bound") rad.error_bound = parse_float();
-        else if (w == "low_error_factor") rad.low_error_factor = parse_float();
-        else if (w == "minimum_reuse") rad.minimum_reuse = parse_float();
-        else if (w == "maximum_reuse") rad.maximum_reuse = parse_float();
-        else if (w == "recursion_limit") rad.recursion_limit = as_int(parse_float());
-        else if (w == "pretrace_start") rad.pretrace_start = parse_float();
-        else if (w == "pretrace_end") rad.pretrace_end = parse_float();
-        else if (w == "brightness") rad.brightness = parse_float();
-        else if (w == "gray_threshold") rad.gray_threshold = parse_float();
-        else if (w == "adc_bailout") rad.adc_bailout = parse_float();
-        else if (w == "always_sample") rad.always_sample = parse_bool_optional();
-        else if (w == "normal") rad.normal = parse_bool_optional();
-        else if (w == "media") rad.media = parse_bool_optional();
-        else if (w == "max_sample") rad.max_sample = parse_float();
-        else if (w == "subsurface") {
-            warn_unsupported(t, "radiosity subsurface");
-            parse_bool_optional();
-        } else if (w == "save_file" || w == "load_file") {
-            warn_unsupported(t, "radiosity " + w);
-            parse_string();
+        using Item = void (*)(SceneReader&, RadiositySettings&, const Token&);
+        static const KeywordTable<Item> items = {
+            {"count",
+             [](SceneReader& r, RadiositySettings& s, const Token&) {
+                 s.count = as_int(r.parse_float());
+                 if (r.accept(",")) s.count_directions = as_int(r.parse_float());
+             }},
+            {"nearest_count",
+             [](SceneReader& r, RadiositySettings& s, const Token&) {
+                 s.nearest_count = as_int(r.parse_float());
+                 if (r.accept(",")) s.nearest_count_pretrace = as_int(r.parse_float());
+             }},
+            {"error_bound",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.error_bound = r.parse_float(); }},
+            {"low_error_factor",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.low_error_factor = r.parse_float(); }},
+            {"minimum_reuse",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.minimum_reuse = r.parse_float(); }},
+            {"maximum_reuse",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.maximum_reuse = r.parse_float(); }},
+            {"recursion_limit",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.recursion_limit = as_int(r.parse_float()); }},
+            {"pretrace_start",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.pretrace_start = r.parse_float(); }},
+            {"pretrace_end",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.pretrace_end = r.parse_float(); }},
+            {"brightness", [](SceneReader& r, RadiositySettings& s, const Token&) { s.brightness = r.parse_float(); }},
+            {"gray_threshold",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.gray_threshold = r.parse_float(); }},
+            {"adc_bailout",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.adc_bailout = r.parse_float(); }},
+            {"always_sample",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.always_sample = r.parse_bool_optional(); }},
+            {"normal", [](SceneReader& r, RadiositySettings& s, const Token&) { s.normal = r.parse_bool_optional(); }},
+            {"media", [](SceneReader& r, RadiositySettings& s, const Token&) { s.media = r.parse_bool_optional(); }},
+            {"max_sample", [](SceneReader& r, RadiositySettings& s, const Token&) { s.max_sample = r.parse_float(); }},
+            {"subsurface",
+             [](SceneReader& r, RadiositySettings&, const Token& item) {
+                 r.warn_unsupported(item, "radiosity subsurface");
+                 r.parse_bool_optional();
+             }},
+            {"save_file", &radiosity_file},
+            {"load_file", &radiosity_file},
+        };
+        if (const Item* item = items.find(w)) {
+            (*item)(*this, rad, t);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a radiosity item but found '" + w + "'");
@@ -244,38 +325,54 @@ void SceneReader::parse_global_settings(const Token& kw) {
         if (is_punct(t, "}")) return;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a global setting but found '" + w + "'");
-        if (w == "assumed_gamma") {
-            if (accept_keyword("srgb")) {
-                warn_unsupported(t, "assumed_gamma srgb");
-                g.assumed_gamma = 2.2;
-            } else {
-                g.assumed_gamma = parse_float();
-            }
-            g.assumed_gamma_given = true;
-        } else if (w == "ambient_light") {
-            g.ambient_light = parse_color();
-        } else if (w == "max_trace_level") {
-            g.max_trace_level = static_cast<int>(std::lround(parse_float()));
-        } else if (w == "adc_bailout") {
-            g.adc_bailout = parse_float();
-        } else if (w == "radiosity") {
-            RadiositySettings rad = g.radiosity.value_or(RadiositySettings{});
-            parse_radiosity(t, rad);
-            g.radiosity = rad;
-        } else if (w == "photons" || w == "subsurface") {
-            warn_unsupported(t, w);
-            skip_block(t);
-        } else if (w == "noise_generator") {
-            g.noise_generator = std::clamp(static_cast<int>(parse_float()), 1, 3);
-        } else if (w == "max_intersections" || w == "number_of_waves" ||
-                   w == "mm_per_unit") {
-            parse_float();
-        } else if (w == "irid_wavelength") {
-            parse_color();
-        } else if (w == "hf_gray_16") {
-            parse_bool_optional();
-        } else if (w == "charset") {
-            m_charset_utf8 = expect_identifier().text == "utf8";
+        using Setting = void (*)(SceneReader&, GlobalSettings&, const Token&);
+        // Settings that are valid POV-Ray and not rendered yet: warned about, their block skipped.
+        auto skip_unsupported_setting = [](SceneReader& r, GlobalSettings&, const Token& item) {
+            r.warn_unsupported(item, item.text);
+            r.skip_block(item);
+        };
+        static const KeywordTable<Setting> settings = {
+            {"assumed_gamma",
+             [](SceneReader& r, GlobalSettings& g, const Token& item) {
+                 if (r.accept_keyword("srgb")) {
+                     r.warn_unsupported(item, "assumed_gamma srgb");
+                     g.assumed_gamma = 2.2;
+                 } else {
+                     g.assumed_gamma = r.parse_float();
+                 }
+                 g.assumed_gamma_given = true;
+             }},
+            {"ambient_light",
+             [](SceneReader& r, GlobalSettings& g, const Token&) { g.ambient_light = r.parse_color(); }},
+            {"max_trace_level",
+             [](SceneReader& r, GlobalSettings& g, const Token&) {
+                 g.max_trace_level = static_cast<int>(std::lround(r.parse_float()));
+             }},
+            {"adc_bailout", [](SceneReader& r, GlobalSettings& g, const Token&) { g.adc_bailout = r.parse_float(); }},
+            {"radiosity",
+             [](SceneReader& r, GlobalSettings& g, const Token& item) {
+                 RadiositySettings rad = g.radiosity.value_or(RadiositySettings{});
+                 r.parse_radiosity(item, rad);
+                 g.radiosity = rad;
+             }},
+            {"photons", skip_unsupported_setting},
+            {"subsurface", skip_unsupported_setting},
+            {"noise_generator",
+             [](SceneReader& r, GlobalSettings& g, const Token&) {
+                 g.noise_generator = std::clamp(static_cast<int>(r.parse_float()), 1, 3);
+             }},
+            {"max_intersections", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"number_of_waves", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"mm_per_unit", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"irid_wavelength", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_color(); }},
+            {"hf_gray_16", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_bool_optional(); }},
+            {"charset",
+             [](SceneReader& r, GlobalSettings&, const Token&) {
+                 r.m_charset_utf8 = r.expect_identifier().text == "utf8";
+             }},
+        };
+        if (const Setting* setting = settings.find(w)) {
+            (*setting)(*this, g, t);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a global setting but found '" + w + "'");

@@ -313,42 +313,6 @@ bool TokenStream::count_loop_iteration(const Token& where) {
     throw FatalError{};
 }
 
-bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (f == nullptr) {
-        error = std::strerror(errno);
-        return false;
-    }
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    text.clear();
-    if (!ec) text.reserve(static_cast<std::size_t>(size));
-    char buffer[1 << 16];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, f)) text.append(buffer, n);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed) error = std::strerror(EIO);
-    return !failed;
-}
-
-std::optional<std::uint32_t> SourceStream::load_file(const std::filesystem::path& path, bool library,
-                                                     std::string& error) {
-    const std::string key = path.lexically_normal().string();
-    if (const auto it = m_file_index.find(key); it != m_file_index.end()) {
-        if (m_files[it->second]->tokens.empty()) lex_file(it->second, false);  // released after its first reading
-        return it->second;
-    }
-    auto file = std::make_unique<SourceFile>();
-    if (!read_text_file(path, file->text, error)) return std::nullopt;
-    file->path = key;
-    file->library = library;
-    const auto index = static_cast<std::uint32_t>(m_files.size());
-    m_files.push_back(std::move(file));
-    m_file_index[key] = index;
-    lex_file(index, true);
-    return index;
-}
-
 void TokenStream::keep_macro_bodies(std::uint32_t index) {
     const SourceFile& file = *m_files[index];
     auto bodies = std::make_unique<SourceFile>();
@@ -368,17 +332,6 @@ void TokenStream::keep_macro_bodies(std::uint32_t index) {
     }
     bodies->tokens.push_back(file.tokens.back());  // the file's EndOfFile
     m_files.push_back(std::move(bodies));
-}
-
-void SourceStream::lex_file(std::uint32_t index, bool first) {
-    SourceFile& file = *m_files[index];
-    std::vector<Diagnostic> lex_errors;
-    file.tokens = lex(file.text, index, file.path, lex_errors, file.decoded);
-    if (!first) return;  // its errors were reported the first time
-    for (auto& d : lex_errors) {
-        file.truncated = file.truncated || d.message == "unterminated string";
-        report(std::move(d));
-    }
 }
 
 }  // namespace wardray::parser
