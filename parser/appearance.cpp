@@ -1,6 +1,7 @@
 // Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, sky sphere, fog, #default.
 #include <cmath>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -80,67 +81,80 @@ Color AppearanceReader::parse_color() {
 }
 
 void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
-    const TokenText& w = item.text;
     // `albedo` rescales the value when the finish block ends (see parse_finish_body).
-    auto scalar_with_albedo = [&]() {
-        if (accept_keyword("albedo")) m_finish_albedo |= w == "diffuse" ? 1u : (w == "phong" ? 2u : 4u);
-        return parse_float();
+    static const auto scalar_with_albedo = [](AppearanceReader& r, const Token& kw) {
+        if (r.accept_keyword("albedo")) r.m_finish_albedo |= kw.text == "diffuse" ? 1u : (kw.text == "phong" ? 2u : 4u);
+        return r.parse_float();
     };
-    if (w == "ambient") {
-        f.ambient = parse_color();
-    } else if (w == "emission") {
-        f.emission = parse_color();
-    } else if (w == "diffuse") {
-        f.diffuse = scalar_with_albedo();
-        if (accept(",")) {
-            parse_float();
-            warn_unsupported(item, "diffuse backside value");
-        }
-    } else if (w == "brilliance") {
-        f.brilliance = parse_float();
-    } else if (w == "phong") {
-        f.phong = scalar_with_albedo();
-    } else if (w == "phong_size") {
-        f.phong_size = parse_float();
-    } else if (w == "specular") {
-        f.specular = scalar_with_albedo();
-    } else if (w == "roughness") {
-        f.roughness = parse_float();
-        if (f.roughness <= 0.0) fail(item, "roughness must be greater than 0");
-    } else if (w == "reflection") {
-        if (is_punct(peek(), "{")) {
-            parse_reflection_block(f);
-        } else {
-            // Old syntax: one colour for every angle; a second one makes it `reflection { a, b }`.
-            f.reflection_min = f.reflection_max = parse_color();
-            f.reflection_falloff = 1.0;
-            f.reflection_fresnel = false;
-            if (accept(",")) f.reflection_max = parse_color();
-        }
-    } else if (w == "reflection_exponent") {
-        f.reflection_exponent = parse_float();
-    } else if (w == "metallic") {
-        f.metallic = starts_value(peek()) ? parse_float() : 1.0;
-    } else if (w == "conserve_energy") {
-        f.conserve_energy = parse_bool_optional();
-    } else if (w == "crand") {
-        warn_once(item, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
-        parse_float();
-    } else if (w == "irid") {
-        expect("{");
-        f.irid = parse_float();
-        while (!accept("}")) {
-            const Token t = next();
-            if (is_word(t, "thickness")) f.irid_thickness = parse_float();
-            else if (is_word(t, "turbulence")) f.irid_turbulence = parse_vector().x;
-            else fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
-        }
-    } else if (w == "subsurface") {
-        warn_unsupported(item, w);
-        skip_block(item);
-    } else {
-        fail(item, "expected a finish item but found '" + w + "'");
+    using Item = void (*)(AppearanceReader&, Finish&, const Token&);
+    static const KeywordTable<Item> items = {
+        {"ambient", [](AppearanceReader& r, Finish& f, const Token&) { f.ambient = r.parse_color(); }},
+        {"emission", [](AppearanceReader& r, Finish& f, const Token&) { f.emission = r.parse_color(); }},
+        {"diffuse",
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.diffuse = scalar_with_albedo(r, kw);
+             if (r.accept(",")) {
+                 r.parse_float();
+                 r.warn_unsupported(kw, "diffuse backside value");
+             }
+         }},
+        {"brilliance", [](AppearanceReader& r, Finish& f, const Token&) { f.brilliance = r.parse_float(); }},
+        {"phong", [](AppearanceReader& r, Finish& f, const Token& kw) { f.phong = scalar_with_albedo(r, kw); }},
+        {"phong_size", [](AppearanceReader& r, Finish& f, const Token&) { f.phong_size = r.parse_float(); }},
+        {"specular",
+         [](AppearanceReader& r, Finish& f, const Token& kw) { f.specular = scalar_with_albedo(r, kw); }},
+        {"roughness",
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.roughness = r.parse_float();
+             if (f.roughness <= 0.0) r.fail(kw, "roughness must be greater than 0");
+         }},
+        {"reflection",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             if (r.is_punct(r.peek(), "{")) {
+                 r.parse_reflection_block(f);
+             } else {
+                 // Old syntax: one colour for every angle; a second one makes it `reflection { a, b }`.
+                 f.reflection_min = f.reflection_max = r.parse_color();
+                 f.reflection_falloff = 1.0;
+                 f.reflection_fresnel = false;
+                 if (r.accept(",")) f.reflection_max = r.parse_color();
+             }
+         }},
+        {"reflection_exponent",
+         [](AppearanceReader& r, Finish& f, const Token&) { f.reflection_exponent = r.parse_float(); }},
+        {"metallic",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             f.metallic = r.starts_value(r.peek()) ? r.parse_float() : 1.0;
+         }},
+        {"conserve_energy",
+         [](AppearanceReader& r, Finish& f, const Token&) { f.conserve_energy = r.parse_bool_optional(); }},
+        {"crand",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             r.warn_once(kw, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
+             r.parse_float();
+         }},
+        {"irid",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             r.expect("{");
+             f.irid = r.parse_float();
+             while (!r.accept("}")) {
+                 const Token t = r.next();
+                 if (r.is_word(t, "thickness")) f.irid_thickness = r.parse_float();
+                 else if (r.is_word(t, "turbulence")) f.irid_turbulence = r.parse_vector().x;
+                 else r.fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
+             }
+         }},
+        {"subsurface",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             r.warn_unsupported(kw, kw.text);
+             r.skip_block(kw);
+         }},
+    };
+    if (const Item* read = items.find(item.text)) {
+        (*read)(*this, f, item);
+        return;
     }
+    fail(item, "expected a finish item but found '" + item.text + "'");
 }
 
 Finish AppearanceReader::parse_finish_body(const Token& kw) {

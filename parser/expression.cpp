@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <numbers>
 #include <string_view>
-#include <unordered_set>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -301,41 +301,58 @@ Numeric Evaluator::parse_postfix(std::optional<Numeric> first) {
 }
 
 std::optional<Numeric> Evaluator::builtin_constant(const Token& t) {
-    static const std::unordered_set<std::string_view> constants = {
-        "pi", "tau", "true", "yes", "on", "false", "no", "off", "x", "y", "z", "t", "u", "v", "clock", "clock_delta",
-        "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock", "final_clock", "image_width",
-        "image_height", "version"};
-    if (constants.count(t.text) == 0) return std::nullopt;
-    const TokenText& w = t.text;
-    if (w == "pi") return Numeric::scalar(std::numbers::pi);
-    // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
-    if (w == "tau") return Numeric::scalar(2.0 * std::numbers::pi);
-    if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1.0);
-    if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0.0);
-    if (w == "x") return Numeric::vector3({1, 0, 0});
-    if (w == "y") return Numeric::vector3({0, 1, 0});
-    if (w == "z") return Numeric::vector3({0, 0, 1});
-    if (w == "t") {
-        Numeric r;
-        r.n = 4;
-        r.v = {0, 0, 0, 1, 0};
-        return r;
-    }
-    if (w == "u" || w == "v") {
-        Numeric r;
-        r.n = 2;
-        r.v = {w == "u" ? 1.0 : 0.0, w == "v" ? 1.0 : 0.0, 0, 0, 0};
-        return r;
-    }
-    if (w == "clock") return Numeric::scalar(m_options.clock);
-    // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
-    if (w == "clock_delta") return Numeric::scalar(0.0);
-    if (w == "clock_on" || w == "frame_number" || w == "initial_frame" || w == "final_frame")
-        return Numeric::scalar(0.0);
-    if (w == "initial_clock" || w == "final_clock") return Numeric::scalar(m_options.clock);
-    if (w == "image_width") return Numeric::scalar(m_options.image_width);
-    if (w == "image_height") return Numeric::scalar(m_options.image_height);
-    if (w == "version") return Numeric::scalar(m_version);
+    using Constant = Numeric (*)(const Evaluator&);
+    auto one = [](const Evaluator&) { return Numeric::scalar(1.0); };
+    auto zero = [](const Evaluator&) { return Numeric::scalar(0.0); };
+    auto clock = [](const Evaluator& e) { return Numeric::scalar(e.m_options.clock); };
+    static const KeywordTable<Constant> constants = {
+        {"pi", [](const Evaluator&) { return Numeric::scalar(std::numbers::pi); }},
+        // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
+        {"tau", [](const Evaluator&) { return Numeric::scalar(2.0 * std::numbers::pi); }},
+        {"true", one},
+        {"yes", one},
+        {"on", one},
+        {"false", zero},
+        {"no", zero},
+        {"off", zero},
+        {"x", [](const Evaluator&) { return Numeric::vector3({1, 0, 0}); }},
+        {"y", [](const Evaluator&) { return Numeric::vector3({0, 1, 0}); }},
+        {"z", [](const Evaluator&) { return Numeric::vector3({0, 0, 1}); }},
+        {"t",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 4;
+             r.v = {0, 0, 0, 1, 0};
+             return r;
+         }},
+        {"u",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 2;
+             r.v = {1.0, 0.0, 0, 0, 0};
+             return r;
+         }},
+        {"v",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 2;
+             r.v = {0.0, 1.0, 0, 0, 0};
+             return r;
+         }},
+        {"clock", clock},
+        // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
+        {"clock_delta", zero},
+        {"clock_on", zero},
+        {"frame_number", zero},
+        {"initial_frame", zero},
+        {"final_frame", zero},
+        {"initial_clock", clock},
+        {"final_clock", clock},
+        {"image_width", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_width); }},
+        {"image_height", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_height); }},
+        {"version", [](const Evaluator& e) { return Numeric::scalar(e.m_version); }},
+    };
+    if (const Constant* constant = constants.find(t.text)) return (*constant)(*this);
     return std::nullopt;
 }
 
