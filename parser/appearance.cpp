@@ -1,21 +1,13 @@
-// Appearance: colours (with POV-Ray's promotion rules), pigments, finishes, textures and block skipping.
+// Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, sky sphere, fog, #default.
 #include <cmath>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
 namespace wardray::parser {
 
-bool Parser::is_color_keyword(const Token& t) const {
-    if (t.kind != TokenKind::Identifier) return false;
-    static const char* const words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf",
-                                        "srgbt", "srgbft", "red", "green", "blue", "filter", "transmit"};
-    for (const char* w : words)
-        if (t.text == w) return true;
-    return false;
-}
-
-Color Parser::parse_color() {
+Color AppearanceReader::parse_color() {
     Color c;
     bool any = false;
     while (true) {
@@ -45,9 +37,8 @@ Color Parser::parse_color() {
             if (srgb) {
                 // POV-Ray compat: sRGB values are decoded and re-encoded with the working gamma, which must
                 // already be known; before assumed_gamma POV-Ray stops with this error.
-                if (!m_scene.global.assumed_gamma_given)
-                    fail(t, "cannot read sRGB colours before assumed_gamma is set");
-                const GammaTranscoding to_working = transcoding(m_scene.global.assumed_gamma, GammaCurve::srgb());
+                if (!m_working_gamma) fail(t, "cannot read sRGB colours before assumed_gamma is set");
+                const GammaTranscoding to_working = transcoding(*m_working_gamma, GammaCurve::srgb());
                 c.r = to_working.decode(c.r);
                 c.g = to_working.decode(c.g);
                 c.b = to_working.decode(c.b);
@@ -85,85 +76,84 @@ Color Parser::parse_color() {
     return c;
 }
 
-void Parser::skip_block(const Token& kw) {
-    // Skips a balanced `{ ... }` (directives inside are still processed, as POV-Ray would).
-    expect("{");
-    const std::size_t depth = m_brace_depth;
-    while (m_brace_depth >= depth) {
-        const Token t = next();
-        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' block has no closing '}'");
-    }
-}
-
-void Parser::skip_optional_block(const Token& kw) {
-    if (is_punct(peek(), "{")) skip_block(kw);
-}
-
-void Parser::parse_finish_item(Finish& f, const Token& item) {
-    const TokenText& w = item.text;
+void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
     // `albedo` rescales the value when the finish block ends (see parse_finish_body).
-    auto scalar_with_albedo = [&]() {
-        if (accept_keyword("albedo")) m_finish_albedo |= w == "diffuse" ? 1u : (w == "phong" ? 2u : 4u);
-        return parse_float();
+    static const auto scalar_with_albedo = [](AppearanceReader& r, const Token& kw) {
+        if (r.accept_keyword("albedo")) r.m_finish_albedo |= kw.text == "diffuse" ? 1u : (kw.text == "phong" ? 2u : 4u);
+        return r.parse_float();
     };
-    if (w == "ambient") {
-        f.ambient = parse_color();
-    } else if (w == "emission") {
-        f.emission = parse_color();
-    } else if (w == "diffuse") {
-        f.diffuse = scalar_with_albedo();
-        if (accept(",")) {
-            parse_float();
-            warn_unsupported(item, "diffuse backside value");
-        }
-    } else if (w == "brilliance") {
-        f.brilliance = parse_float();
-    } else if (w == "phong") {
-        f.phong = scalar_with_albedo();
-    } else if (w == "phong_size") {
-        f.phong_size = parse_float();
-    } else if (w == "specular") {
-        f.specular = scalar_with_albedo();
-    } else if (w == "roughness") {
-        f.roughness = parse_float();
-        if (f.roughness <= 0.0) fail(item, "roughness must be greater than 0");
-    } else if (w == "reflection") {
-        if (is_punct(peek(), "{")) {
-            parse_reflection_block(f);
-        } else {
-            // Old syntax: one colour for every angle; a second one makes it `reflection { a, b }`.
-            f.reflection_min = f.reflection_max = parse_color();
-            f.reflection_falloff = 1.0;
-            f.reflection_fresnel = false;
-            if (accept(",")) f.reflection_max = parse_color();
-        }
-    } else if (w == "reflection_exponent") {
-        f.reflection_exponent = parse_float();
-    } else if (w == "metallic") {
-        f.metallic = starts_value(peek()) ? parse_float() : 1.0;
-    } else if (w == "conserve_energy") {
-        f.conserve_energy = parse_bool_optional();
-    } else if (w == "crand") {
-        warn_once(item, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
-        parse_float();
-    } else if (w == "irid") {
-        expect("{");
-        f.irid = parse_float();
-        while (!accept("}")) {
-            const Token t = next();
-            if (is_word(t, "thickness")) f.irid_thickness = parse_float();
-            else if (is_word(t, "turbulence")) f.irid_turbulence = parse_vector().x;
-            else fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
-        }
-    } else if (w == "subsurface") {
-        warn_unsupported(item, w);
-        skip_block(item);
-    } else {
-        fail(item, "expected a finish item but found '" + w + "'");
+    using Item = void (*)(AppearanceReader&, Finish&, const Token&);
+    static const KeywordTable<Item> items = {
+        {"ambient", [](AppearanceReader& r, Finish& f, const Token&) { f.ambient = r.parse_color(); }},
+        {"emission", [](AppearanceReader& r, Finish& f, const Token&) { f.emission = r.parse_color(); }},
+        {"diffuse",
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.diffuse = scalar_with_albedo(r, kw);
+             if (r.accept(",")) {
+                 r.parse_float();
+                 r.warn_unsupported(kw, "diffuse backside value");
+             }
+         }},
+        {"brilliance", [](AppearanceReader& r, Finish& f, const Token&) { f.brilliance = r.parse_float(); }},
+        {"phong", [](AppearanceReader& r, Finish& f, const Token& kw) { f.phong = scalar_with_albedo(r, kw); }},
+        {"phong_size", [](AppearanceReader& r, Finish& f, const Token&) { f.phong_size = r.parse_float(); }},
+        {"specular",
+         [](AppearanceReader& r, Finish& f, const Token& kw) { f.specular = scalar_with_albedo(r, kw); }},
+        {"roughness",
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.roughness = r.parse_float();
+             if (f.roughness <= 0.0) r.fail(kw, "roughness must be greater than 0");
+         }},
+        {"reflection",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             if (r.is_punct(r.peek(), "{")) {
+                 r.parse_reflection_block(f);
+             } else {
+                 // Old syntax: one colour for every angle; a second one makes it `reflection { a, b }`.
+                 f.reflection_min = f.reflection_max = r.parse_color();
+                 f.reflection_falloff = 1.0;
+                 f.reflection_fresnel = false;
+                 if (r.accept(",")) f.reflection_max = r.parse_color();
+             }
+         }},
+        {"reflection_exponent",
+         [](AppearanceReader& r, Finish& f, const Token&) { f.reflection_exponent = r.parse_float(); }},
+        {"metallic",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             f.metallic = r.starts_value(r.peek()) ? r.parse_float() : 1.0;
+         }},
+        {"conserve_energy",
+         [](AppearanceReader& r, Finish& f, const Token&) { f.conserve_energy = r.parse_bool_optional(); }},
+        {"crand",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             r.warn_once(kw, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
+             r.parse_float();
+         }},
+        {"irid",
+         [](AppearanceReader& r, Finish& f, const Token&) {
+             r.expect("{");
+             f.irid = r.parse_float();
+             while (!r.accept("}")) {
+                 const Token t = r.next();
+                 if (r.is_word(t, "thickness")) f.irid_thickness = r.parse_float();
+                 else if (r.is_word(t, "turbulence")) f.irid_turbulence = r.parse_vector().x;
+                 else r.fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
+             }
+         }},
+        {"subsurface",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             r.warn_unsupported(kw, kw.text);
+             r.skip_block(kw);
+         }},
+    };
+    if (const Item* read = items.find(item.text)) {
+        (*read)(*this, f, item);
+        return;
     }
+    fail(item, "expected a finish item but found '" + item.text + "'");
 }
 
-Finish Parser::parse_finish_body(const Token& kw) {
+Finish AppearanceReader::parse_finish_body(const Token& kw) {
     expect("{");
     m_finish_albedo = 0;
     Finish f = m_default_finish;
@@ -202,14 +192,14 @@ Finish Parser::parse_finish_body(const Token& kw) {
     }
 }
 
-Texture Parser::parse_texture_body(const Token& kw) {
+Texture AppearanceReader::parse_texture_body(const Token& kw) {
     expect("{");
     Texture tx = default_texture();
     parse_texture_items(tx, kw, "}");
     return tx;
 }
 
-void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
+void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
     const std::size_t depth = m_brace_depth;
     expand_macros();
     if (is_array_element_next()) {
@@ -281,7 +271,7 @@ void Parser::parse_texture_items(Texture& tx, const Token& kw, const char* close
     }
 }
 
-void Parser::parse_reflection_block(Finish& f) {
+void AppearanceReader::parse_reflection_block(Finish& f) {
     // reflection { [min,] max [fresnel] [falloff F] [exponent E] [metallic M] }
     expect("{");
     f.reflection_min = parse_color();
@@ -308,7 +298,7 @@ void Parser::parse_reflection_block(Finish& f) {
     }
 }
 
-Interior Parser::parse_interior_body(const Token& /*kw*/) {
+Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
     expect("{");
     Interior in;
     expand_macros();
@@ -346,7 +336,7 @@ Interior Parser::parse_interior_body(const Token& /*kw*/) {
     }
 }
 
-SkySphere Parser::parse_sky_sphere(const Token& kw) {
+SkySphere AppearanceReader::parse_sky_sphere(const Token& kw) {
     expect("{");
     SkySphere sky;
     expand_macros();
@@ -379,7 +369,7 @@ SkySphere Parser::parse_sky_sphere(const Token& kw) {
     return sky;
 }
 
-Fog Parser::parse_fog(const Token& kw) {
+Fog AppearanceReader::parse_fog(const Token& kw) {
     expect("{");
     Fog fog;
     fog.loc = make_diagnostic(Severity::Note, kw, "").loc;
@@ -405,6 +395,30 @@ Fog Parser::parse_fog(const Token& kw) {
             parse_numeric();
         } else {
             fail(t, "expected distance, a colour or fog_type in fog but found " + describe_token(t));
+        }
+    }
+}
+
+void AppearanceReader::directive_default(const Token& tok) {
+    // Deferred declarations were written against the defaults in force where they stand.
+    evaluate_all_deferred();
+    expect("{");
+    while (true) {
+        const Token t = next();
+        if (is_punct(t, "}")) return;
+        if (is_word(t, "texture")) {
+            const Texture tx = parse_texture_body(t);
+            m_default_pigment = tx.pigment;
+            m_default_finish = tx.finish;
+        } else if (is_word(t, "pigment")) {
+            m_default_pigment = parse_pigment_body(t);
+        } else if (is_word(t, "finish")) {
+            m_default_finish = parse_finish_body(t);
+        } else if (t.kind == TokenKind::Identifier && is_unsupported_block(t.text)) {
+            warn_unsupported(t, t.text);
+            skip_block(t);
+        } else {
+            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
         }
     }
 }

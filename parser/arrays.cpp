@@ -5,7 +5,7 @@
 
 namespace wardray::parser {
 
-Value Parser::parse_array_declaration(const Token& kw) {
+Value Evaluator::parse_array_declaration(const Token& kw) {
     auto array = std::make_shared<ArrayValue>();
     std::size_t total = 1;
     while (is_punct(peek_expr(), "[")) {
@@ -27,7 +27,7 @@ Value Parser::parse_array_declaration(const Token& kw) {
     return array;
 }
 
-void Parser::parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t offset, const Token& kw) {
+void Evaluator::parse_array_initializer(ArrayValue& array, std::size_t dim, std::size_t offset, const Token& kw) {
     const NestingGuard guard(*this, kw);
     const Token open = expect("{");
     std::size_t stride = 1;
@@ -49,7 +49,7 @@ void Parser::parse_array_initializer(ArrayValue& array, std::size_t dim, std::si
                        std::to_string(array.dims[dim]));
 }
 
-std::size_t Parser::parse_array_index(const ArrayValue& array, const Token& id) {
+std::size_t Evaluator::parse_array_index(const ArrayValue& array, const Token& id) {
     std::size_t flat = 0;
     for (std::size_t d = 0; d < array.dims.size(); ++d) {
         expect("[");
@@ -67,7 +67,7 @@ std::size_t Parser::parse_array_index(const ArrayValue& array, const Token& id) 
     return flat;
 }
 
-bool Parser::is_array_element_next() {
+bool Evaluator::is_array_element_next() {
     const Token& t = peek();
     if (t.kind != TokenKind::Identifier) return false;
     const Value* v = lookup(t.text);
@@ -76,7 +76,7 @@ bool Parser::is_array_element_next() {
     return m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "[");
 }
 
-std::optional<Value> Parser::take_array_element() {
+std::optional<Value> Evaluator::take_array_element() {
     if (!is_array_element_next()) return std::nullopt;
     const Token id = next();
     // Keep the array alive while its index is evaluated (the index may redeclare it).

@@ -40,7 +40,7 @@ bool readable_when_deferred(const Value& v) {
 
 }  // namespace
 
-bool Parser::try_defer_declaration(const Token& id, bool local) {
+bool Preprocessor::try_defer_declaration(const Token& id, bool local) {
     if (!m_options.defer_library_declarations || m_evaluating_deferred > 0 || !m_declaring.empty()) return false;
     const SourceFile& file = *m_files[m_file];
     if (!file.library || m_frames.empty() || m_frames.back().kind != Frame::Kind::Include) return false;
@@ -112,7 +112,7 @@ bool Parser::try_defer_declaration(const Token& id, bool local) {
     return true;
 }
 
-void Parser::evaluate_deferred(Value& slot) {
+void Preprocessor::evaluate_deferred(Value& slot) {
     const std::uint32_t index = std::get<Deferred>(slot).index;
     m_deferred[index].pending = false;
     const DeferredDeclaration d = m_deferred[index];
@@ -169,7 +169,7 @@ void Parser::evaluate_deferred(Value& slot) {
     }
 }
 
-void Parser::evaluate_pending(std::uint32_t index) {
+void Preprocessor::evaluate_pending(std::uint32_t index) {
     if (!m_deferred[index].pending) return;
     const std::string name = m_deferred[index].name;
     for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
@@ -183,7 +183,7 @@ void Parser::evaluate_pending(std::uint32_t index) {
     m_deferred[index].pending = false;  // rebound or undefined before anything read it
 }
 
-void Parser::before_rebinding(const std::string& name) {
+void Preprocessor::before_rebinding(const std::string& name) {
     if (m_deferred_readers.empty()) return;
     const auto found = m_deferred_readers.find(name);
     if (found == m_deferred_readers.end()) return;
@@ -192,7 +192,7 @@ void Parser::before_rebinding(const std::string& name) {
     for (const std::uint32_t index : readers) evaluate_pending(index);
 }
 
-void Parser::before_scope_ends(const std::unordered_map<std::string, Value>& scope) {
+void Preprocessor::before_scope_ends(const std::unordered_map<std::string, Value>& scope) {
     if (m_deferred_readers.empty()) return;
     std::vector<std::string> names;
     for (const auto& [name, value] : scope)
@@ -200,7 +200,7 @@ void Parser::before_scope_ends(const std::unordered_map<std::string, Value>& sco
     for (const std::string& name : names) before_rebinding(name);
 }
 
-void Parser::evaluate_all_deferred() {
+void Preprocessor::evaluate_all_deferred() {
     for (std::uint32_t i = 0; i < m_deferred.size(); ++i) evaluate_pending(i);
     m_deferred_readers.clear();
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/constants.h"
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -20,7 +21,7 @@ bool is_opening_directive(const std::string& name) {
 // ---------------------------------------------------------------------------------------------------------------
 // Directives
 
-Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener) {
+Token Preprocessor::skip_until(int depth, std::initializer_list<const char*> stops, const Token& opener) {
     while (true) {
         const Token& t = raw();
         if (t.kind == TokenKind::EndOfFile) {
@@ -42,7 +43,7 @@ Token Parser::skip_until(int depth, std::initializer_list<const char*> stops, co
     }
 }
 
-void Parser::process_directive() {
+void Preprocessor::process_directive() {
     const Token tok = raw();
     // Directives read their operands through peek(), which runs the directives it meets: a loop that jumps
     // back while a directive waits for its operand (`#while (1) #declare S #end`) nests one call deeper on
@@ -70,7 +71,7 @@ void Parser::process_directive() {
     }
 }
 
-void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
+void Preprocessor::skip_failed_directive(const Token& tok, std::size_t frames, std::size_t conds, std::size_t braces) {
     // Leave the macros and includes its operands entered, and the #if/#while/... they opened.
     while (m_frames.size() > frames) return_from_macro();
     if (m_conds.size() > conds) m_conds.resize(conds);
@@ -105,68 +106,81 @@ void Parser::skip_failed_directive(const Token& tok, std::size_t frames, std::si
     }
 }
 
-void Parser::run_directive(const Token& tok) {
-    const TokenText& name = tok.text;
-    if (name == "declare" || name == "local") {
-        directive_declare(tok, name == "local");
-    } else if (name == "undef") {
-        const Token id = expect_identifier();
-        before_rebinding(id.text);
-        bool erased = false;
-        for (auto it = m_scopes.rbegin(); it != m_scopes.rend() && !erased; ++it) erased = it->erase(id.text) > 0;
-        if (!erased) m_macros.erase(id.text);
-    } else if (name == "if" || name == "ifdef" || name == "ifndef") {
-        directive_if(tok);
-    } else if (name == "elseif" || name == "else") {
-        directive_else(tok, name == "elseif");
-    } else if (name == "end") {
-        directive_end(tok);
-    } else if (name == "while") {
-        directive_while(tok);
-    } else if (name == "for") {
-        directive_for(tok);
-    } else if (name == "switch") {
-        directive_switch(tok);
-    } else if (name == "case" || name == "range") {
-        // Reached while running a case: POV-Ray compat, a case without #break falls through.
-        if (m_conds.empty() || m_conds.back().kind != Cond::Kind::Switch) fail(tok, "'#" + name + "' outside #switch");
-        expect("(");
-        parse_float();
-        if (name == "range") {
-            expect(",");
-            parse_float();
-        }
-        expect(")");
-    } else if (name == "break") {
-        directive_break(tok);
-    } else if (name == "include") {
-        directive_include(tok);
-    } else if (name == "macro") {
-        directive_macro(tok);
-    } else if (name == "version") {
-        m_version = parse_float();
-        m_version_given = true;
-        if (is_punct(peek_expr(), ";")) next();
-    } else if (name == "debug" || name == "render" || name == "statistics") {
-        const std::string message = parse_string();
-        if (m_options.debug_output) m_options.debug_output(message);
-    } else if (name == "warning") {
-        const std::string message = parse_string();
-        warn(tok, message);
-    } else if (name == "error") {
-        const std::string message = parse_string();
-        report(make_diagnostic(Severity::Error, tok, message));
-        throw FatalError{};
-    } else if (name == "default") {
-        directive_default(tok);
-    } else if (name == "fopen" || name == "fclose" || name == "read" || name == "write") {
-        directive_file_io(tok);
-    } else {
-        fail(tok, "unknown directive '#" + name + "'");
+void Preprocessor::run_directive(const Token& tok) {
+    using Directive = void (*)(Preprocessor&, const Token&);
+    auto file_io = [](Preprocessor& p, const Token& t) { p.directive_file_io(t); };
+    auto message = [](Preprocessor& p, const Token&) {
+        const std::string text = p.parse_string();
+        if (p.m_options.debug_output) p.m_options.debug_output(text);
+    };
+    static const KeywordTable<Directive> directives = {
+        {"declare", [](Preprocessor& p, const Token& t) { p.directive_declare(t, false); }},
+        {"local", [](Preprocessor& p, const Token& t) { p.directive_declare(t, true); }},
+        {"undef",
+         [](Preprocessor& p, const Token&) {
+             const Token id = p.expect_identifier();
+             p.before_rebinding(id.text);
+             bool erased = false;
+             for (auto it = p.m_scopes.rbegin(); it != p.m_scopes.rend() && !erased; ++it)
+                 erased = it->erase(id.text) > 0;
+             if (!erased) p.m_macros.erase(id.text);
+         }},
+        {"if", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"ifdef", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"ifndef", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
+        {"elseif", [](Preprocessor& p, const Token& t) { p.directive_else(t, true); }},
+        {"else", [](Preprocessor& p, const Token& t) { p.directive_else(t, false); }},
+        {"end", [](Preprocessor& p, const Token& t) { p.directive_end(t); }},
+        {"while", [](Preprocessor& p, const Token& t) { p.directive_while(t); }},
+        {"for", [](Preprocessor& p, const Token& t) { p.directive_for(t); }},
+        {"switch", [](Preprocessor& p, const Token& t) { p.directive_switch(t); }},
+        {"case", [](Preprocessor& p, const Token& t) { p.directive_case(t); }},
+        {"range", [](Preprocessor& p, const Token& t) { p.directive_case(t); }},
+        {"break", [](Preprocessor& p, const Token& t) { p.directive_break(t); }},
+        {"include", [](Preprocessor& p, const Token& t) { p.directive_include(t); }},
+        {"macro", [](Preprocessor& p, const Token& t) { p.directive_macro(t); }},
+        {"version",
+         [](Preprocessor& p, const Token&) {
+             p.m_version = p.parse_float();
+             p.m_version_given = true;
+             if (p.is_punct(p.peek_expr(), ";")) p.next();
+         }},
+        {"debug", message},
+        {"render", message},
+        {"statistics", message},
+        {"warning", [](Preprocessor& p, const Token& t) { p.warn(t, p.parse_string()); }},
+        {"error",
+         [](Preprocessor& p, const Token& t) {
+             const std::string text = p.parse_string();
+             p.report(p.make_diagnostic(Severity::Error, t, text));
+             throw FatalError{};
+         }},
+        {"default", [](Preprocessor& p, const Token& t) { p.directive_default(t); }},
+        {"fopen", file_io},
+        {"fclose", file_io},
+        {"read", file_io},
+        {"write", file_io},
+    };
+    if (const Directive* directive = directives.find(tok.text)) {
+        (*directive)(*this, tok);
+        return;
     }
+    fail(tok, "unknown directive '#" + tok.text + "'");
 }
 
-void Parser::directive_declare(const Token& tok, bool local) {
+void Preprocessor::directive_case(const Token& tok) {
+    // Reached while running a case: POV-Ray compat, a case without #break falls through.
+    if (m_conds.empty() || m_conds.back().kind != Cond::Kind::Switch) fail(tok, "'#" + tok.text + "' outside #switch");
+    expect("(");
+    parse_float();
+    if (tok.text == "range") {
+        expect(",");
+        parse_float();
+    }
+    expect(")");
+}
+
+void Preprocessor::directive_declare(const Token& tok, bool local) {
     if (is_word(peek(), "deprecated")) {
         // `#declare deprecated [once] "message" Name = ...`: the message is for users of Name; not shown here.
         next();
@@ -260,7 +274,7 @@ void Parser::directive_declare(const Token& tok, bool local) {
     }
 }
 
-void Parser::directive_if(const Token& tok) {
+void Preprocessor::directive_if(const Token& tok) {
     bool cond = false;
     if (tok.text == "if") {
         cond = parse_float() != 0.0;
@@ -289,7 +303,7 @@ void Parser::directive_if(const Token& tok) {
     }
 }
 
-void Parser::directive_else(const Token& tok, bool elseif) {
+void Preprocessor::directive_else(const Token& tok, bool elseif) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     if (m_conds.size() > floor && m_conds.back().kind == Cond::Kind::Switch && !elseif) return;  // falls through
     if (m_conds.size() <= floor || m_conds.back().kind != Cond::Kind::If)
@@ -300,7 +314,7 @@ void Parser::directive_else(const Token& tok, bool elseif) {
     skip_until(0, {"end"}, opener);
 }
 
-void Parser::directive_end(const Token& tok) {
+void Preprocessor::directive_end(const Token& tok) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     if (m_conds.size() <= floor) {
         if (!m_frames.empty() && m_frames.back().kind == Frame::Kind::Macro) {
@@ -343,7 +357,7 @@ void Parser::directive_end(const Token& tok) {
     }
 }
 
-void Parser::directive_while(const Token& tok) {
+void Preprocessor::directive_while(const Token& tok) {
     const std::size_t directive_pos = m_pos - 1;
     const double cond = parse_float();
     if (cond == 0.0) {
@@ -358,7 +372,7 @@ void Parser::directive_while(const Token& tok) {
     m_conds.push_back(std::move(c));
 }
 
-void Parser::directive_for(const Token& tok) {
+void Preprocessor::directive_for(const Token& tok) {
     expect("(");
     const Token id = expect_identifier();
     expect(",");
@@ -384,7 +398,7 @@ void Parser::directive_for(const Token& tok) {
     m_conds.push_back(std::move(c));
 }
 
-void Parser::directive_switch(const Token& tok) {
+void Preprocessor::directive_switch(const Token& tok) {
     const double value = parse_float();
     Cond c;
     c.kind = Cond::Kind::Switch;
@@ -415,7 +429,7 @@ void Parser::directive_switch(const Token& tok) {
     }
 }
 
-void Parser::directive_break(const Token& tok) {
+void Preprocessor::directive_break(const Token& tok) {
     const std::size_t floor = m_frames.empty() ? 0 : m_frames.back().cond_depth;
     std::size_t target = m_conds.size();
     for (std::size_t i = m_conds.size(); i > floor; --i) {
@@ -431,25 +445,7 @@ void Parser::directive_break(const Token& tok) {
     skip_until(open_ifs, {"end"}, opener);
 }
 
-std::vector<std::filesystem::path> Parser::search_candidates(const std::filesystem::path& requested,
-                                                            const char* extension) const {
-    // Search order: the reading file's folder, then the library paths in order.
-    std::vector<std::filesystem::path> candidates;
-    if (requested.is_absolute()) {
-        candidates.push_back(requested);
-    } else {
-        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
-        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
-    }
-    if (!requested.has_extension()) {
-        // POV-Ray compat: a name without extension is also tried with the usual one.
-        const std::size_t n = candidates.size();
-        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + extension);
-    }
-    return candidates;
-}
-
-void Parser::directive_include(const Token& tok) {
+void Preprocessor::directive_include(const Token& tok) {
     const Token name_tok = peek();
     const std::string name = parse_string();
     std::size_t include_depth = 0;
@@ -501,7 +497,7 @@ void Parser::directive_include(const Token& tok) {
     m_pos = 0;
 }
 
-void Parser::directive_macro(const Token& tok) {
+void Preprocessor::directive_macro(const Token& tok) {
     const Token id = expect_identifier();
     Macro macro;
     macro.where = id;
@@ -528,30 +524,6 @@ void Parser::directive_macro(const Token& tok) {
     if (stop.kind == TokenKind::EndOfFile) return;
     macro.end = m_pos - 1;
     m_macros[id.text] = std::move(macro);
-}
-
-void Parser::directive_default(const Token& tok) {
-    // Deferred declarations were written against the defaults in force where they stand.
-    evaluate_all_deferred();
-    expect("{");
-    while (true) {
-        const Token t = next();
-        if (is_punct(t, "}")) return;
-        if (is_word(t, "texture")) {
-            const Texture tx = parse_texture_body(t);
-            m_default_pigment = tx.pigment;
-            m_default_finish = tx.finish;
-        } else if (is_word(t, "pigment")) {
-            m_default_pigment = parse_pigment_body(t);
-        } else if (is_word(t, "finish")) {
-            m_default_finish = parse_finish_body(t);
-        } else if (t.kind == TokenKind::Identifier && is_unsupported_block(t.text)) {
-            warn_unsupported(t, t.text);
-            skip_block(t);
-        } else {
-            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
-        }
-    }
 }
 
 }  // namespace wardray::parser

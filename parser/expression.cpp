@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <numbers>
 #include <string_view>
-#include <unordered_set>
 
 #include "core/constants.h"
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -64,17 +64,16 @@ const char* value_kind_name(const Value& v) {
 // ---------------------------------------------------------------------------------------------------------------
 // Entry points
 
-bool Parser::starts_string(const Token& t) {
-    if (t.kind == TokenKind::String) return true;
+bool Evaluator::is_color_keyword(const Token& t) const {
     if (t.kind != TokenKind::Identifier) return false;
-    static const std::unordered_set<std::string_view> string_functions = {"concat", "str",    "chr", "substr",
-                                                                          "strupr", "strlwr", "vstr"};
-    if (string_functions.count(t.text) > 0) return true;
-    const Value* v = lookup(t.text);
-    return v != nullptr && std::holds_alternative<std::string>(*v);
+    static const char* const words[] = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf",
+                                        "srgbt", "srgbft", "red", "green", "blue", "filter", "transmit"};
+    for (const char* w : words)
+        if (t.text == w) return true;
+    return false;
 }
 
-Value Parser::parse_rvalue() {
+Value Evaluator::parse_rvalue() {
     const Token t = peek();
     const NestingGuard guard(*this, t);
     if (starts_string(t)) return parse_string();
@@ -85,32 +84,7 @@ Value Parser::parse_rvalue() {
             invoke_macro(t, m->second);
             return parse_rvalue();
         }
-        if (w == "pigment") return parse_pigment_body(next());
-        if (w == "finish") return parse_finish_body(next());
-        if (w == "normal") return parse_normal_body(next());
-        if (w == "interior") return parse_interior_body(next());
-        if (w == "texture") {
-            Texture tx = parse_texture_body(next());
-            // POV-Ray compat: further textures in one declaration are layers painted over the first.
-            const ScopedSetting layers(m_directive_ends_value_at, m_brace_depth);
-            while (is_word(peek_expr(), "texture")) tx.layers.push_back(parse_texture_body(next()));
-            return tx;
-        }
-        if (w == "color_map" || w == "colour_map") {
-            // A declared colour map is kept as a pigment holding only that map; parse_color_map reads it back.
-            Pigment p;
-            p.color_map = parse_color_map(next());
-            return p;
-        }
-        if (w == "transform") return parse_transform_body(next());
-        if (w == "camera") return parse_camera_body(next());
-        if (w == "light_source") {
-            const Token kw = next();
-            ObjectValue ov;
-            ov.lights.push_back(parse_light_body(kw));
-            return ov;
-        }
-        if (is_object_keyword(t)) return parse_object(next());
+        if (std::optional<Value> item = parse_item_value(t)) return std::move(*item);
         if (w == "array") return parse_array_declaration(next());
         if (is_array_element_next()) {
             Value element = *take_array_element();
@@ -144,23 +118,23 @@ Value Parser::parse_rvalue() {
 
 // POV-Ray compat: outside parentheses '<' never compares, so `box { <0,0,0> <1,1,1> }` reads as two vectors
 // (POV-Ray's documentation asks for parentheses around every relational, logical and conditional expression).
-Numeric Parser::parse_numeric() { return parse_conditional(false); }
+Numeric Evaluator::parse_numeric() { return parse_conditional(false); }
 
-double Parser::parse_float() {
+double Evaluator::parse_float() {
     const Token at = peek();
     const Numeric n = parse_numeric();
     if (n.n != 1) fail(at, "expected a float but found a vector");
     return n.v[0];
 }
 
-Vec3 Parser::parse_vector() {
+Vec3 Evaluator::parse_vector() {
     const Token at = peek();
     const Numeric n = parse_numeric();
     if (n.n > 3 && n.n != 5) fail(at, "expected a 3-component vector but found " + std::to_string(n.n) + " components");
     return n.vec3();
 }
 
-bool Parser::parse_bool_optional() {
+bool Evaluator::parse_bool_optional() {
     const Token& t = peek_expr();
     bool starts_value = t.kind == TokenKind::Number || is_punct(t, "(") || is_punct(t, "!");
     if (t.kind == TokenKind::Identifier) {
@@ -176,7 +150,7 @@ bool Parser::parse_bool_optional() {
 // ---------------------------------------------------------------------------------------------------------------
 // Precedence levels, lowest first: ?: , & | , relations , + - , * / , unary , postfix .x
 
-Numeric Parser::parse_conditional(bool allow_less) {
+Numeric Evaluator::parse_conditional(bool allow_less) {
     const Token at = peek();
     Numeric c = parse_logical(allow_less);
     if (!is_punct(peek_expr(), "?")) {
@@ -195,7 +169,7 @@ Numeric Parser::parse_conditional(bool allow_less) {
     return c.v[0] != 0.0 ? a : b;
 }
 
-Numeric Parser::parse_logical(bool allow_less) {
+Numeric Evaluator::parse_logical(bool allow_less) {
     Numeric a = parse_relational(allow_less);
     while (true) {
         const Token& op = peek_expr();
@@ -209,7 +183,7 @@ Numeric Parser::parse_logical(bool allow_less) {
     }
 }
 
-Numeric Parser::parse_relational(bool allow_less) {
+Numeric Evaluator::parse_relational(bool allow_less) {
     if (starts_string(peek())) {
         // Strings compare with the same operators, lexicographically.
         const std::string x = parse_string();
@@ -248,7 +222,7 @@ Numeric Parser::parse_relational(bool allow_less) {
     }
 }
 
-Numeric Parser::parse_additive(std::optional<Numeric> first) {
+Numeric Evaluator::parse_additive(std::optional<Numeric> first) {
     Numeric a = parse_multiplicative(std::move(first));
     while (true) {
         const Token& op = peek_expr();
@@ -260,7 +234,7 @@ Numeric Parser::parse_additive(std::optional<Numeric> first) {
     }
 }
 
-Numeric Parser::parse_multiplicative(std::optional<Numeric> first) {
+Numeric Evaluator::parse_multiplicative(std::optional<Numeric> first) {
     Numeric a = parse_unary(std::move(first));
     while (true) {
         const Token& op = peek_expr();
@@ -278,7 +252,7 @@ Numeric Parser::parse_multiplicative(std::optional<Numeric> first) {
     }
 }
 
-Numeric Parser::parse_unary(std::optional<Numeric> first) {
+Numeric Evaluator::parse_unary(std::optional<Numeric> first) {
     if (first) return parse_postfix(std::move(first));
     const Token& t = peek();
     const NestingGuard guard(*this, t);
@@ -301,7 +275,7 @@ Numeric Parser::parse_unary(std::optional<Numeric> first) {
     return parse_postfix();
 }
 
-Numeric Parser::parse_postfix(std::optional<Numeric> first) {
+Numeric Evaluator::parse_postfix(std::optional<Numeric> first) {
     Numeric a = first ? *first : parse_primary();
     while (is_punct(peek_expr(), ".")) {
         next();
@@ -327,46 +301,63 @@ Numeric Parser::parse_postfix(std::optional<Numeric> first) {
     return a;
 }
 
-std::optional<Numeric> Parser::builtin_constant(const Token& t) {
-    static const std::unordered_set<std::string_view> constants = {
-        "pi", "tau", "true", "yes", "on", "false", "no", "off", "x", "y", "z", "t", "u", "v", "clock", "clock_delta",
-        "clock_on", "frame_number", "initial_frame", "final_frame", "initial_clock", "final_clock", "image_width",
-        "image_height", "version"};
-    if (constants.count(t.text) == 0) return std::nullopt;
-    const TokenText& w = t.text;
-    if (w == "pi") return Numeric::scalar(std::numbers::pi);
-    // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
-    if (w == "tau") return Numeric::scalar(2.0 * std::numbers::pi);
-    if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1.0);
-    if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0.0);
-    if (w == "x") return Numeric::vector3({1, 0, 0});
-    if (w == "y") return Numeric::vector3({0, 1, 0});
-    if (w == "z") return Numeric::vector3({0, 0, 1});
-    if (w == "t") {
-        Numeric r;
-        r.n = 4;
-        r.v = {0, 0, 0, 1, 0};
-        return r;
-    }
-    if (w == "u" || w == "v") {
-        Numeric r;
-        r.n = 2;
-        r.v = {w == "u" ? 1.0 : 0.0, w == "v" ? 1.0 : 0.0, 0, 0, 0};
-        return r;
-    }
-    if (w == "clock") return Numeric::scalar(m_options.clock);
-    // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
-    if (w == "clock_delta") return Numeric::scalar(0.0);
-    if (w == "clock_on" || w == "frame_number" || w == "initial_frame" || w == "final_frame")
-        return Numeric::scalar(0.0);
-    if (w == "initial_clock" || w == "final_clock") return Numeric::scalar(m_options.clock);
-    if (w == "image_width") return Numeric::scalar(m_options.image_width);
-    if (w == "image_height") return Numeric::scalar(m_options.image_height);
-    if (w == "version") return Numeric::scalar(m_version);
+std::optional<Numeric> Evaluator::builtin_constant(const Token& t) {
+    using Constant = Numeric (*)(const Evaluator&);
+    auto one = [](const Evaluator&) { return Numeric::scalar(1.0); };
+    auto zero = [](const Evaluator&) { return Numeric::scalar(0.0); };
+    auto clock = [](const Evaluator& e) { return Numeric::scalar(e.m_options.clock); };
+    static const KeywordTable<Constant> constants = {
+        {"pi", [](const Evaluator&) { return Numeric::scalar(std::numbers::pi); }},
+        // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
+        {"tau", [](const Evaluator&) { return Numeric::scalar(2.0 * std::numbers::pi); }},
+        {"true", one},
+        {"yes", one},
+        {"on", one},
+        {"false", zero},
+        {"no", zero},
+        {"off", zero},
+        {"x", [](const Evaluator&) { return Numeric::vector3({1, 0, 0}); }},
+        {"y", [](const Evaluator&) { return Numeric::vector3({0, 1, 0}); }},
+        {"z", [](const Evaluator&) { return Numeric::vector3({0, 0, 1}); }},
+        {"t",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 4;
+             r.v = {0, 0, 0, 1, 0};
+             return r;
+         }},
+        {"u",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 2;
+             r.v = {1.0, 0.0, 0, 0, 0};
+             return r;
+         }},
+        {"v",
+         [](const Evaluator&) {
+             Numeric r;
+             r.n = 2;
+             r.v = {0.0, 1.0, 0, 0, 0};
+             return r;
+         }},
+        {"clock", clock},
+        // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
+        {"clock_delta", zero},
+        {"clock_on", zero},
+        {"frame_number", zero},
+        {"initial_frame", zero},
+        {"final_frame", zero},
+        {"initial_clock", clock},
+        {"final_clock", clock},
+        {"image_width", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_width); }},
+        {"image_height", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_height); }},
+        {"version", [](const Evaluator& e) { return Numeric::scalar(e.m_version); }},
+    };
+    if (const Constant* constant = constants.find(t.text)) return (*constant)(*this);
     return std::nullopt;
 }
 
-Numeric Parser::parse_primary() {
+Numeric Evaluator::parse_primary() {
     // Inside an operand directives run as they come (`(M(0)) + 1` with M's body in #if ... #else ... #end).
     ScopedSetting operand(m_directive_ends_value_at, k_directives_run);
     const Token t = peek();

@@ -72,7 +72,7 @@ void write_binary(std::ostream& out, const std::string& type, double value) {
 
 }  // namespace
 
-void Parser::assign_existing_or_global(const std::string& name, Value v) {
+void Preprocessor::assign_existing_or_global(const std::string& name, Value v) {
     if (Value* existing = lookup_mutable(name)) {
         *existing = std::move(v);
         return;
@@ -80,7 +80,7 @@ void Parser::assign_existing_or_global(const std::string& name, Value v) {
     declare(name, std::move(v), false);
 }
 
-void Parser::directive_file_io(const Token& tok) {
+void Preprocessor::directive_file_io(const Token& tok) {
     const TokenText& name = tok.text;
     const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
     if (name == "fopen") {

@@ -47,7 +47,7 @@ Instruction op(Instruction::Op o, std::uint32_t a = 0) {
 /// inside the body work) and emitting stack-machine code.
 class FunctionCompiler {
 public:
-    FunctionCompiler(Parser& parser, FunctionProgram& program) : m_p(parser), m_prog(program) {}
+    FunctionCompiler(Evaluator& evaluator, FunctionProgram& program) : m_p(evaluator), m_prog(program) {}
 
     /// `?:`, the lowest precedence level.
     void expression() {
@@ -123,7 +123,7 @@ private:
 
     void unary() {
         const Token t = m_p.peek();
-        const Parser::NestingGuard guard(m_p, t);
+        const SourceStream::NestingGuard guard(m_p, t);
         if (m_p.is_punct(t, "-")) {
             m_p.next();
             unary();
@@ -388,13 +388,13 @@ private:
         std::uint32_t slot = 0;  ///< the counter's local slot; the limit is in the next one
     };
 
-    Parser& m_p;
+    Evaluator& m_p;
     FunctionProgram& m_prog;
     std::vector<LoopVariable> m_loop_vars;  ///< loop variables in scope, innermost last
     std::uint32_t m_slots_in_use = 0;      ///< local slots taken by the enclosing sum()/prod() calls
 };
 
-std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw) {
+std::shared_ptr<const UserFunction> Evaluator::parse_user_function(const Token& kw) {
     auto f = std::make_shared<UserFunction>();
     f->loc = make_diagnostic(Severity::Note, kw, "").loc;
     std::vector<std::string> params;
@@ -466,13 +466,7 @@ std::shared_ptr<const UserFunction> Parser::parse_user_function(const Token& kw)
     return f;
 }
 
-void Parser::warn_once(const Token& at, const std::string& message) {
-    // Checked before the diagnostic is built: loops may call the same function millions of times.
-    if (m_warned_features.count(message) > 0) return;
-    emit_feature_warning(make_diagnostic(Severity::Warning, at, message));
-}
-
-Numeric Parser::call_user_function(const Token& name, const UserFunction& f) {
+Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) {
     expect("(");
     std::vector<double> args;
     if (!accept(")")) {

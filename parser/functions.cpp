@@ -35,7 +35,7 @@ std::string format_str(double value, int min_length, int precision) {
 
 }  // namespace
 
-std::string Parser::parse_string() {
+std::string Evaluator::parse_string() {
     const NestingGuard guard(*this, peek());
     const Token t = next();
     if (t.kind == TokenKind::String) return t.text;
@@ -124,7 +124,7 @@ std::string Parser::parse_string() {
     fail(t, "expected a string but '" + w + "' is " + value_kind_name(*v));
 }
 
-Numeric Parser::parse_function(const Token& name) {
+Numeric Evaluator::parse_function(const Token& name) {
     const TokenText& f = name.text;
     auto arg_list = [&](std::size_t min_args, std::size_t max_args) {
         expect("(");
@@ -323,7 +323,7 @@ Numeric Parser::parse_function(const Token& name) {
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");
 }
 
-Numeric Parser::parse_geometry_query(const Token& name) {
+Numeric Evaluator::parse_geometry_query(const Token& name) {
     const TokenText& f = name.text;
     expect("(");
     const Token obj_at = peek();

@@ -1,4 +1,4 @@
-// Parse entry points, the statement loop with error recovery, and diagnostics with include/macro notes.
+// Parse entry points, the statement loop with error recovery, and the undeclared-identifier diagnostic.
 #include "parser/parse.h"
 
 #include <cerrno>
@@ -10,118 +10,7 @@
 
 namespace wardray::parser {
 
-Parser::Parser(const ParseOptions& options)
-    : m_stack_base(static_cast<const char*>(__builtin_frame_address(0))), m_options(options) {}
-
-std::string SourceFile::line_text(std::uint32_t line) const {
-    // Diagnostics and entity locations ask for lines often: index the line starts once per file.
-    if (line_starts.empty()) {
-        line_starts.push_back(0);
-        for (std::size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n') line_starts.push_back(i + 1);
-    }
-    if (line == 0 || line > line_starts.size()) return {};
-    const std::size_t start = line_starts[line - 1];
-    std::size_t end = line < line_starts.size() ? line_starts[line] - 1 : text.size();
-    if (end > start && text[end - 1] == '\r') --end;
-    return text.substr(start, end - start);
-}
-
-Parser::NestingGuard::NestingGuard(Parser& parser, const Token& at, std::size_t& depth)
-    : m_parser(parser), m_depth(depth) {
-    // The stack grows down on every platform we build for: the distance from where the parser began is its use.
-    const char* here = static_cast<const char*>(__builtin_frame_address(0));
-    const bool stack_full = m_parser.m_stack_base - here > k_max_stack_bytes;
-    if (++m_depth <= k_max_nesting && !stack_full) return;
-    --m_depth;
-    m_parser.report(m_parser.make_diagnostic(
-        Severity::Error, at,
-        stack_full ? "nesting too deep for the stack (" + std::to_string(m_depth) + " levels); stopping"
-                   : "nesting deeper than " + std::to_string(k_max_nesting) + " levels; stopping"));
-    throw FatalError{};
-}
-
-Diagnostic Parser::make_diagnostic(Severity s, const Token& at, std::string message) const {
-    Diagnostic d;
-    d.severity = s;
-    d.message = std::move(message);
-    if (at.file < m_files.size()) {
-        const SourceFile& f = *m_files[at.file];
-        d.loc = SourceLoc{f.path, at.line, at.column};
-    }
-    d.span = at.kind == TokenKind::EndOfFile ? 1 : at.length;
-    // A note without a message only carries a location (for scene entities): skip the costly parts.
-    if (s == Severity::Note && d.message.empty()) return d;
-    if (at.file < m_files.size()) d.source_line = m_files[at.file]->line_text(at.line);
-    // Notes, innermost first: the macro being expanded and the include chain; deep recursion is shortened to
-    // the innermost and outermost few frames.
-    constexpr std::size_t k_shown_each_side = 3;
-    const std::size_t n_frames = m_frames.size();
-    for (auto it = m_frames.rbegin(); it != m_frames.rend(); ++it) {
-        const auto from_inside = static_cast<std::size_t>(it - m_frames.rbegin());
-        if (n_frames > 2 * k_shown_each_side + 1 && from_inside >= k_shown_each_side &&
-            from_inside < n_frames - k_shown_each_side) {
-            if (from_inside == k_shown_each_side)
-                d.notes.push_back("... " + std::to_string(n_frames - 2 * k_shown_each_side) +
-                                  " more macro calls and includes ...");
-            continue;
-        }
-        const Token& site = it->call_site;
-        const std::string where =
-            (site.file < m_files.size() ? m_files[site.file]->path : std::string("?")) + ":" + std::to_string(site.line);
-        if (it->kind == Frame::Kind::Include)
-            d.notes.push_back("included from " + where);
-        else
-            d.notes.push_back("in macro '" + it->name + "' invoked from " + where);
-    }
-    return d;
-}
-
-void Parser::report(Diagnostic d) {
-    const bool error = d.severity == Severity::Error;
-    if (d.severity == Severity::Warning) m_scene.warnings.push_back(d);
-    m_diagnostics.push_back(std::move(d));
-    if (error && ++m_errors >= m_options.max_errors) throw FatalError{};
-}
-
-void Parser::fail(const Token& at, std::string message) {
-    if (at.kind == TokenKind::EndOfFile && at.file < m_files.size()) {
-        // After an unterminated string the rest of the file is gone: what fails at its end is a consequence.
-        if (m_files[at.file]->truncated) throw FatalError{};
-        // The file ended inside a block: point at the brace that was never closed.
-        if (!m_open_braces.empty() && m_open_braces.back().file == at.file) {
-            Diagnostic d = make_diagnostic(Severity::Error, m_open_braces.back(),
-                                           "this '{' is never closed: the file ends before its '}'");
-            d.notes.insert(d.notes.begin(), "the file ends at line " + std::to_string(at.line) + " inside this block");
-            report(std::move(d));
-            throw FatalError{};
-        }
-    }
-    report(make_diagnostic(Severity::Error, at, std::move(message)));
-    throw StatementError{};
-}
-
-void Parser::warn(const Token& at, std::string message) {
-    report(make_diagnostic(Severity::Warning, at, std::move(message)));
-}
-
-void Parser::warn_unsupported(const Token& at, const std::string& feature) {
-    Diagnostic d = make_diagnostic(Severity::Warning, at, feature + " is not rendered yet");
-    if (m_declaring.empty()) {
-        emit_feature_warning(std::move(d));
-        return;
-    }
-    for (const Diagnostic& pending : m_declaring.back())
-        if (pending.message == d.message) return;
-    m_declaring.back().push_back(std::move(d));
-}
-
-void Parser::emit_feature_warning(Diagnostic d) {
-    if (!m_warned_features.insert(d.message).second) return;
-    report(std::move(d));
-}
-
-void Parser::fail_undeclared(const Token& at) {
+void TokenStream::fail_undeclared(const Token& at) {
     if (m_failed_declarations.count(at.text) > 0) throw StatementError{};  // its #declare was reported
     Diagnostic d = make_diagnostic(Severity::Error, at, "undeclared identifier '" + at.text + "'");
     // Suggest the closest declared name (preferred) or keyword within edit distance 2.
@@ -145,7 +34,7 @@ void Parser::fail_undeclared(const Token& at) {
     throw StatementError{};
 }
 
-void Parser::recover_after_error(std::size_t depth) {
+void TokenStream::recover_after_error(std::size_t depth) {
     // A failed statement keyword followed by a block (`spher { ... }`): skip that block too.
     if (m_brace_depth == depth && is_punct(raw(), "{")) {
         ++m_pos;
@@ -175,7 +64,6 @@ void Parser::recover_after_error(std::size_t depth) {
 ParseResult Parser::run(std::string text, const std::string& path) {
     ParseResult result;
     try {
-        m_scene.path = path;
         m_scopes.emplace_back();
         for (const auto& [name, value] : m_options.declares) m_scopes.front()[name] = Numeric::scalar(value);
         auto file = std::make_unique<SourceFile>();
@@ -199,14 +87,14 @@ ParseResult Parser::run(std::string text, const std::string& path) {
             }
             for (const Cond& c : m_conds)
                 report(make_diagnostic(Severity::Error, c.where, "'#" + c.where.text + "' has no matching #end"));
-            if (!m_scene.global.assumed_gamma_given) {
+            if (!m_builder.global().assumed_gamma_given) {
                 // POV-Ray compat: without assumed_gamma, a scene whose final #version is below 3.7, or that has
                 // no #version anywhere (POV-Ray then assumes 3.62), gets POV-Ray 3.6's "no gamma handling".
-                m_scene.global.gamma_handling = m_version_given && m_version >= 3.7;
+                m_builder.global().gamma_handling = m_version_given && m_version >= 3.7;
                 Diagnostic d;
                 d.severity = Severity::Warning;
                 d.loc.path = path;
-                d.message = m_scene.global.gamma_handling
+                d.message = m_builder.global().gamma_handling
                                 ? "assumed_gamma not given in global_settings; using 1.0"
                                 : "assumed_gamma not given in a scene for POV-Ray before 3.7 (by its #version, or "
                                   "having none): gamma handling is off, as in POV-Ray 3.6";
@@ -233,9 +121,8 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         m_diagnostics.push_back(std::move(d));
         ++m_errors;
     }
-    m_scene.version = m_version;
     result.diagnostics = std::move(m_diagnostics);
-    if (m_errors == 0) result.scene = std::move(m_scene);
+    if (m_errors == 0) result.scene = m_builder.finish(path, m_version, std::move(m_warnings));
     return result;
 }
 

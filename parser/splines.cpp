@@ -189,7 +189,7 @@ Numeric spline_value(const Spline& spline, Spline::Type type, double t) {
 // ---------------------------------------------------------------------------------------------------------------
 // Parsing
 
-void Parser::warn_few_spline_points(const Token& at, const Spline& spline, Spline::Type type) {
+void Evaluator::warn_few_spline_points(const Token& at, const Spline& spline, Spline::Type type) {
     const std::size_t n = spline.points.size();
     if (n >= spline_min_points(type) || n == 1) return;
     std::string result = "it interpolates linearly";
@@ -200,7 +200,7 @@ void Parser::warn_few_spline_points(const Token& at, const Spline& spline, Splin
                       ", as in POV-Ray");
 }
 
-Spline Parser::parse_spline_body(const Token& kw) {
+Spline Evaluator::parse_spline_body(const Token& kw) {
     expect("{");
     Spline spline;
     expand_macros();
@@ -270,7 +270,7 @@ Spline Parser::parse_spline_body(const Token& kw) {
     return spline;
 }
 
-Numeric Parser::call_spline(const Token& name, const Spline& spline) {
+Numeric Evaluator::call_spline(const Token& name, const Spline& spline) {
     if (!is_punct(peek(), "("))
         fail(name, "'" + name.text + "' is a spline: call it with a parameter, as " + name.text + "(t)");
     next();

@@ -1,13 +1,14 @@
-// Scene statements: objects (union flattening, CSG nodes), transforms, lights, camera, global settings, background.
+// Scene statements: the top-level statement table, placing objects, the camera and the global settings.
 #include <algorithm>
 #include <cmath>
 
+#include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
 namespace wardray::parser {
 
-void Parser::parse_statement() {
+void SceneReader::parse_statement() {
     const Token t = next();
     if (t.kind != TokenKind::Identifier) {
         fail(t, t.kind == TokenKind::EndOfFile ? "unexpected end of file"
@@ -18,31 +19,35 @@ void Parser::parse_statement() {
         invoke_macro(t, m->second);
         return;
     }
-    if (w == "camera") {
-        const CameraSpec spec = parse_camera_body(t);
-        std::string error;
-        std::string warning;
-        Camera cam = resolve_camera(spec, error, warning);
-        if (!warning.empty()) warn(t, warning);
-        if (!error.empty()) fail(t, error);
-        m_scene.camera = cam;
-    } else if (w == "light_source") {
-        m_scene.lights.push_back(parse_light_body(t));
+    using Statement = void (*)(SceneReader&, const Token&);
+    static const KeywordTable<Statement> statements = {
+        {"camera",
+         [](SceneReader& r, const Token& kw) {
+             const CameraSpec spec = r.parse_camera_body(kw);
+             std::string error;
+             std::string warning;
+             Camera cam = resolve_camera(spec, error, warning);
+             if (!warning.empty()) r.warn(kw, warning);
+             if (!error.empty()) r.fail(kw, error);
+             r.m_builder.set_camera(cam);
+         }},
+        {"light_source", [](SceneReader& r, const Token& kw) { r.m_builder.add_light(r.parse_light_body(kw)); }},
+        // POV-Ray compat: the old `default { ... }` statement is #default.
+        {"default", [](SceneReader& r, const Token& kw) { r.directive_default(kw); }},
+        {"global_settings", [](SceneReader& r, const Token& kw) { r.parse_global_settings(kw); }},
+        {"background",
+         [](SceneReader& r, const Token&) {
+             r.expect("{");
+             r.m_builder.set_background(r.parse_color());
+             r.expect("}");
+         }},
+        {"sky_sphere", [](SceneReader& r, const Token& kw) { r.m_builder.set_sky_sphere(r.parse_sky_sphere(kw)); }},
+        {"fog", [](SceneReader& r, const Token& kw) { r.m_builder.add_fog(r.parse_fog(kw)); }},
+    };
+    if (const Statement* statement = statements.find(w)) {
+        (*statement)(*this, t);
     } else if (is_object_keyword(t)) {
         place_object(parse_object(t));
-    } else if (w == "default") {
-        // POV-Ray compat: the old `default { ... }` statement is #default.
-        directive_default(t);
-    } else if (w == "global_settings") {
-        parse_global_settings(t);
-    } else if (w == "background") {
-        expect("{");
-        m_scene.background = parse_color();
-        expect("}");
-    } else if (w == "sky_sphere") {
-        m_scene.sky_sphere = parse_sky_sphere(t);
-    } else if (w == "fog") {
-        m_scene.fogs.push_back(parse_fog(t));
     } else if (is_unsupported_block(w)) {
         warn_unsupported(t, w);
         skip_block(t);
@@ -55,11 +60,43 @@ void Parser::parse_statement() {
     }
 }
 
-bool Parser::is_object_keyword(const Token& t) const {
-    if (t.kind != TokenKind::Identifier) return false;
-    const TokenText& w = t.text;
-    return is_shape_keyword(w) || w == "object" || w == "union" || w == "intersection" || w == "difference" ||
-           w == "merge" || is_unsupported_object(w);
+std::optional<Value> SceneReader::parse_item_value(const Token& t) {
+    using Item = Value (*)(SceneReader&, const Token&);
+    static const KeywordTable<Item> items = {
+        {"pigment", [](SceneReader& r, const Token& kw) -> Value { return r.parse_pigment_body(kw); }},
+        {"finish", [](SceneReader& r, const Token& kw) -> Value { return r.parse_finish_body(kw); }},
+        {"normal", [](SceneReader& r, const Token& kw) -> Value { return r.parse_normal_body(kw); }},
+        {"interior", [](SceneReader& r, const Token& kw) -> Value { return r.parse_interior_body(kw); }},
+        {"texture",
+         [](SceneReader& r, const Token& kw) -> Value {
+             Texture tx = r.parse_texture_body(kw);
+             // POV-Ray compat: further textures in one declaration are layers painted over the first.
+             const ScopedSetting layers(r.m_directive_ends_value_at, r.m_brace_depth);
+             while (r.is_word(r.peek_expr(), "texture")) tx.layers.push_back(r.parse_texture_body(r.next()));
+             return tx;
+         }},
+        // A declared colour map is kept as a pigment holding only that map; parse_color_map reads it back.
+        {"color_map", [](SceneReader& r, const Token& kw) -> Value { return r.color_map_value(kw); }},
+        {"colour_map", [](SceneReader& r, const Token& kw) -> Value { return r.color_map_value(kw); }},
+        {"transform", [](SceneReader& r, const Token& kw) -> Value { return r.parse_transform_body(kw); }},
+        {"camera", [](SceneReader& r, const Token& kw) -> Value { return r.parse_camera_body(kw); }},
+        {"light_source",
+         [](SceneReader& r, const Token& kw) -> Value {
+             ObjectValue ov;
+             ov.lights.push_back(r.parse_light_body(kw));
+             return ov;
+         }},
+    };
+    if (t.kind != TokenKind::Identifier) return std::nullopt;
+    if (const Item* item = items.find(t.text)) return (*item)(*this, next());
+    if (is_object_keyword(t)) return parse_object(next());
+    return std::nullopt;
+}
+
+Pigment SceneReader::color_map_value(const Token& kw) {
+    Pigment p;
+    p.color_map = parse_color_map(kw);
+    return p;
 }
 
 namespace {
@@ -74,425 +111,67 @@ void inherit_textures(Object& o) {
     }
 }
 
-// POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
-void transform_textures(Object& o, bool own_texture, const Transform& tr) {
-    if (own_texture) transform_texture(o.texture, tr);
-    if (auto* csg = std::get_if<Csg>(&o.shape))
-        for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
-}
-
 }  // namespace
 
-void Parser::place_object(ObjectValue ov) {
+void SceneReader::place_object(ObjectValue ov) {
     for (ObjectPart& part : ov.parts) {
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
-        m_scene.objects.push_back(std::move(part.object));
+        m_builder.add_object(std::move(part.object));
     }
-    for (Light& l : ov.lights) m_scene.lights.push_back(std::move(l));
+    for (Light& l : ov.lights) m_builder.add_light(std::move(l));
 }
 
-ObjectValue Parser::parse_object(const Token& kw) {
-    const NestingGuard guard(*this, kw);
-    const TokenText& w = kw.text;
-    if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
-        warn_unsupported(kw, w);
-        skip_block(kw);
-        return {};
-    }
-    expect("{");
-    ObjectValue ov;
-    const SourceLoc loc = make_diagnostic(Severity::Note, kw, "").loc;
-    auto add_shape = [&](Shape shape) {
-        ObjectPart part;
-        part.object.shape = std::move(shape);
-        part.object.loc = loc;
-        ov.parts.push_back(std::move(part));
-    };
-    const Value* copied = nullptr;
-    if (w == "mesh" || w == "mesh2") {
-        // POV-Ray compat: `mesh { Declared_Mesh modifiers }` copies the declared mesh (the mesh-camera examples
-        // place one mesh several times this way).
-        const Token& first = peek();
-        const Value* v = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
-        const auto* declared = v ? std::get_if<Boxed<ObjectValue>>(v) : nullptr;
-        if (declared && (*declared)->parts.size() == 1 && (*declared)->lights.empty() &&
-            std::holds_alternative<Mesh>((*declared)->parts.front().object.shape))
-            copied = v;
-    }
-    if (copied != nullptr) {
-        next();
-        ov = *std::get<Boxed<ObjectValue>>(*copied);
-    } else if (is_shape_keyword(w)) {
-        add_shape(parse_shape_parameters(kw));
-        // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
-        if (w == "text") ov.parts.back().object.transform = Transform::rotation({0.001, 0.001, 0.001});
-    } else if (w == "object") {
-        expand_macros();
-        std::optional<Value> element;
-        const Token at = peek();
-        if ((element = take_array_element())) {
-            if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) ov = **o;
-            else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
-            parse_object_modifiers(ov, ov.compound);
-            return ov;
-        }
-        const Token id = next();
-        if (is_object_keyword(id)) {
-            ov = parse_object(id);
-        } else if (is_word(id, "light_source")) {
-            ov.lights.push_back(parse_light_body(id));
-        } else if (id.kind == TokenKind::Identifier) {
-            const Value* v = lookup(id.text);
-            if (v == nullptr) fail_undeclared(id);
-            if (std::holds_alternative<Unsupported>(*v)) {
-                // Already warned about where it was declared; the object is left out.
-            } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
-                ov = **o;
-            } else {
-                fail(id, "expected an object identifier but '" + id.text + "' is not an object");
-            }
-        } else {
-            fail(id, "expected an object identifier but found '" + id.text + "'");
-        }
-    } else if (w == "intersection" || w == "difference" || w == "merge") {
-        // A real CSG node: each child statement becomes one child object (a union node when it has several parts).
-        Csg csg;
-        csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
-        while (true) {
-            expand_macros();
-            const Token& t = peek();
-            if (is_object_keyword(t)) {
-                const Token child_kw = next();
-                ObjectValue child = parse_object(child_kw);
-                if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
-                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
-            } else if (is_word(t, "light_source")) {
-                const Token lkw = next();
-                ov.lights.push_back(parse_light_body(lkw));
-            } else {
-                break;
-            }
-        }
-        add_shape(std::move(csg));
-    } else {
-        // union: children first, then the union's own modifiers.
-        ov.compound = true;
-        while (true) {
-            expand_macros();
-            const Token& t = peek();
-            if (is_object_keyword(t)) {
-                const Token child_kw = next();
-                ObjectValue child = parse_object(child_kw);
-                for (ObjectPart& part : child.parts) {
-                    if (!part.has_texture && child.texture) {
-                        part.object.texture = *child.texture;
-                        part.has_texture = true;
-                    }
-                    ov.parts.push_back(std::move(part));
-                }
-                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
-            } else if (is_word(t, "light_source")) {
-                const Token lkw = next();
-                ov.lights.push_back(parse_light_body(lkw));
-            } else {
-                break;
-            }
-        }
-    }
-    parse_object_modifiers(ov, ov.compound);
-    return ov;
-}
+namespace {
 
-Texture& Parser::texture_to_modify(ObjectValue& ov) {
-    if (ov.compound || ov.parts.size() != 1) {
-        if (!ov.texture) ov.texture = default_texture();
-        return *ov.texture;
-    }
-    ObjectPart& part = ov.parts.front();
-    if (!part.has_texture) {
-        part.object.texture = default_texture();
-        part.has_texture = true;
-    }
-    return part.object.texture;
-}
+/// A radiosity count, rounded as POV-Ray does.
+int as_int(double f) { return static_cast<int>(std::lround(f)); }
 
-void Parser::apply_transform(ObjectValue& ov, const Transform& tr) {
-    for (ObjectPart& part : ov.parts) {
-        part.object.transform = part.object.transform.then(tr);
-        transform_textures(part.object, part.has_texture, tr);
-    }
-    if (ov.texture) transform_texture(*ov.texture, tr);
-    for (Light& l : ov.lights) {
-        l.position = tr.point(l.position);
-        l.point_at = tr.point(l.point_at);
-    }
-}
+}  // namespace
 
-void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
-    bool textured = false;
-    std::vector<Object> bounded_by;
-    while (true) {
-        expand_macros();
-        const Token t = peek();
-        Transform tr;
-        if (parse_transform_item(t, tr)) {
-            apply_transform(ov, tr);
-            continue;
-        }
-        next();
-        if (is_punct(t, "}")) return;
-        if (t.kind != TokenKind::Identifier) fail(t, "expected an object modifier or '}' but found '" + t.text + "'");
-        const TokenText& w = t.text;
-        if (w == "pigment") {
-            texture_to_modify(ov).pigment = parse_pigment_body(t);
-        } else if (w == "finish") {
-            texture_to_modify(ov).finish = parse_finish_body(t);
-        } else if (w == "texture") {
-            if (textured) {
-                // POV-Ray compat: further texture statements are layers on top of the first.
-                texture_to_modify(ov).layers.push_back(parse_texture_body(t));
-            } else {
-                texture_to_modify(ov) = parse_texture_body(t);
-                textured = true;
-            }
-        } else if (w == "no_shadow" || w == "no_image" || w == "no_reflection" || w == "no_radiosity") {
-            for (ObjectPart& part : ov.parts) {
-                Object& o = part.object;
-                (w == "no_shadow" ? o.no_shadow : w == "no_image" ? o.no_image
-                                                : w == "no_reflection" ? o.no_reflection : o.no_radiosity) = true;
-            }
-        } else if (w == "inverse") {
-            make_union_node(ov);
-            for (ObjectPart& part : ov.parts) part.object.inverse = !part.object.inverse;
-        } else if (w == "clipped_by") {
-            const std::vector<Object> clips = parse_object_list(t, &bounded_by);
-            make_union_node(ov);
-            // Clipping objects are given in world space; store them relative to the object so later transforms
-            // move both together.
-            for (ObjectPart& part : ov.parts) {
-                const Transform to_local = part.object.transform.inverse();
-                for (Object clip : clips) {
-                    clip.transform = clip.transform.then(to_local);
-                    part.object.clipped_by.push_back(std::move(clip));
-                }
-            }
-        } else if (w == "bounded_by") {
-            // Bounds are accepted and not needed for correctness: the renderer builds its own.
-            bounded_by = parse_object_list(t, nullptr);
-        } else if (w == "open") {
-            for (ObjectPart& part : ov.parts) {
-                if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
-                if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
-            }
-        } else if (w == "hollow") {
-            parse_bool_optional();
-        } else if (w == "sturm" || w == "split_union" || w == "cutaway_textures") {
-            if (w == "split_union") parse_bool_optional();
-        } else if (w == "double_illuminate") {
-            warn_unsupported(t, w);
-        } else if (w == "radiosity") {
-            warn_unsupported(t, "object radiosity importance");
-            skip_block(t);
-        } else if (w == "normal") {
-            texture_to_modify(ov).normal = parse_normal_body(t);
-        } else if (w == "interior") {
-            const Interior interior = parse_interior_body(t);
-            for (ObjectPart& part : ov.parts) part.object.interior = interior;
-        } else if (w == "interior_texture" || w == "material" ||
-                   w == "photons") {
-            warn_unsupported(t, w);
-            skip_block(t);
-        } else if (w == "uv_mapping") {
-            warn_unsupported(t, w);
-        } else if (is_object_keyword(t) && compound) {
-            fail(t, "objects of a union must come before its modifiers");
-        } else {
-            if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
-            fail(t, "expected an object modifier or '}' but found '" + w + "'");
-        }
-    }
-}
-
-bool Parser::parse_transform_item(const Token& t, Transform& out) {
-    if (t.kind != TokenKind::Identifier) return false;
-    const TokenText& w = t.text;
-    if (w == "translate") {
-        next();
-        out = out.then(Transform::translation(parse_vector()));
-    } else if (w == "rotate") {
-        next();
-        out = out.then(Transform::rotation(parse_vector()));
-    } else if (w == "scale") {
-        next();
-        Vec3 s = parse_vector();
-        for (int i = 0; i < 3; ++i) {
-            if (s[i] == 0.0) {
-                // POV-Ray compat: a zero scale component is changed to 1 with a warning.
-                warn(t, "scale by 0 changed to 1");
-                s[i] = 1.0;
-            }
-        }
-        out = out.then(Transform::scaling(s));
-    } else if (w == "matrix") {
-        next();
-        expect("<");
-        std::array<double, 12> m{};
-        for (int i = 0; i < 12; ++i) {
-            if (i > 0) expect(",");
-            const Token at = peek();
-            const Numeric c = parse_additive();
-            if (c.n != 1) fail(at, "matrix entries must be floats");
-            m[i] = c.v[0];
-        }
-        expect(">");
-        for (int col = 0; col < 3; ++col) {
-            if (m[col] != 0.0 || m[3 + col] != 0.0 || m[6 + col] != 0.0) continue;
-            // POV-Ray compat: a zero column scales by 0; like `scale 0`, it becomes 1 with a warning.
-            warn(t, "matrix column " + std::to_string(col + 1) + " is zero (a scale by 0); changed to 1");
-            m[4 * col] = 1.0;
-        }
-        const auto tr = Transform::from_pov_matrix(m);
-        // POV-Ray compat: POV-Ray stops with "Singular matrix" here too; it cannot place the object.
-        if (!tr || !tr->is_invertible()) fail(t, "matrix is singular: it flattens space, so the object has no inverse");
-        out = out.then(*tr);
-    } else if (w == "transform") {
-        next();
-        if (is_punct(peek(), "{")) {
-            out = out.then(parse_transform_body(t));
-        } else {
-            const Token id = expect_identifier();
-            const Value* v = lookup(id.text);
-            if (v == nullptr) fail_undeclared(id);
-            const auto* tv = std::get_if<Boxed<Transform>>(v);
-            if (tv == nullptr) fail(id, "'" + id.text + "' is not a transform");
-            out = out.then(**tv);
-        }
-    } else {
-        return false;
+bool SceneReader::other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw) {
+    r.warn_unsupported(item, item.text + " camera");
+    spec.other_projection = true;
+    if (item.text != "mesh_camera") return false;
+    // Its parameters and meshes are not modelled: skip the rest of the camera block.
+    const std::size_t depth = r.m_brace_depth;
+    while (r.m_brace_depth >= depth) {
+        if (r.next().kind == TokenKind::EndOfFile) r.fail(kw, "camera block has no closing '}'");
     }
     return true;
 }
 
-Transform Parser::parse_transform_body(const Token& kw) {
-    expect("{");
-    Transform result;
-    while (true) {
-        expand_macros();  // transforms.inc's macros stand where a transform item is expected
-        const Token t = peek();
-        if (parse_transform_item(t, result)) continue;
-        next();
-        if (is_punct(t, "}")) return result;
-        if (is_word(t, "inverse")) {
-            result = result.inverse();
-        } else if (t.kind == TokenKind::Identifier && lookup(t.text) &&
-                   std::holds_alternative<Boxed<Transform>>(*lookup(t.text))) {
-            result = result.then(*std::get<Boxed<Transform>>(*lookup(t.text)));
-        } else {
-            fail(t, "expected a transformation but found '" + t.text + "'");
-        }
-    }
+bool SceneReader::focal_blur(SceneReader& r, CameraSpec&, const Token& item, const Token&) {
+    r.warn_unsupported(item, "focal blur");
+    if (item.text == "focal_point") r.parse_vector();
+    else r.parse_float();
+    if (item.text == "blur_samples" && r.accept(",")) r.parse_float();
+    return false;
 }
 
-Light Parser::parse_light_body(const Token& kw) {
-    expect("{");
-    Light light;
-    light.loc = make_diagnostic(Severity::Note, kw, "").loc;
-    expand_macros();
-    const Token& first = peek();
-    const Value* ident = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
-    const auto* boxed = ident ? std::get_if<Boxed<ObjectValue>>(ident) : nullptr;
-    const ObjectValue* ov = boxed ? &**boxed : nullptr;
-    if (ov != nullptr && ov->lights.size() == 1 && ov->parts.empty()) {
-        next();
-        light = ov->lights.front();
-    } else {
-        light.position = parse_vector();
-        accept(",");
-        if (!is_punct(peek(), "}")) light.color = parse_color();
+void SceneReader::read_assumed_gamma(SceneReader& r, GlobalSettings& g, const Token& item) {
+    GammaCurve gamma = GammaCurve::srgb();
+    if (!r.accept_keyword("srgb")) {
+        const Token at = r.peek();
+        const double value = r.parse_float();
+        if (!(value > 0.0)) r.fail(at, "gamma value must be positive");
+        gamma = GammaCurve::power_law(value);
     }
-    while (true) {
-        expand_macros();
-        const Token t = peek();
-        Transform tr;
-        if (parse_transform_item(t, tr)) {
-            light.position = tr.point(light.position);
-            light.point_at = tr.point(light.point_at);
-            light.area_axis1 = tr.vector(light.area_axis1);
-            light.area_axis2 = tr.vector(light.area_axis2);
-            continue;
-        }
-        if (is_color_keyword(t)) {
-            light.color = parse_color();
-            continue;
-        }
-        next();
-        if (is_punct(t, "}")) return light;
-        const TokenText& w = t.text;
-        if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
-        // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own defaults
-        // (degrees for a spotlight, distances from the axis for a cylinder light).
-        if (w == "spotlight") {
-            light.type = Light::Type::Spot;
-            light.radius = 30.0;
-            light.falloff = 45.0;
-            light.tightness = 0.0;
-        } else if (w == "cylinder") {
-            light.type = Light::Type::Cylinder;
-            light.radius = 0.75;
-            light.falloff = 1.0;
-            light.tightness = 0.0;
-        }
-        else if (w == "parallel") light.type = Light::Type::Parallel;
-        else if (w == "point_at") light.point_at = parse_vector();
-        else if (w == "radius") light.radius = parse_float();
-        else if (w == "falloff") light.falloff = parse_float();
-        else if (w == "tightness") light.tightness = parse_float();
-        else if (w == "fade_distance") light.fade_distance = parse_float();
-        else if (w == "fade_power") light.fade_power = parse_float();
-        else if (w == "shadowless") light.shadowless = true;
-        else if (w == "area_light") {
-            light.area = true;
-            // POV-Ray compat: the commas between the four values are optional.
-            light.area_axis1 = parse_vector();
-            accept(",");
-            light.area_axis2 = parse_vector();
-            accept(",");
-            const Token& at1 = peek();
-            const double n1 = parse_float();
-            accept(",");
-            const Token& at2 = peek();
-            const double n2 = parse_float();
-            // POV-Ray compat: sizes are truncated, and a size below 1 is an error.
-            if (!(n1 >= 1.0) || n1 > 1e4) fail(at1, "area_light size must be between 1 and 10000");
-            if (!(n2 >= 1.0) || n2 > 1e4) fail(at2, "area_light size must be between 1 and 10000");
-            light.area_size1 = static_cast<int>(n1);
-            light.area_size2 = static_cast<int>(n2);
-        } else if (w == "adaptive") {
-            light.adaptive = std::max(0, static_cast<int>(std::min(parse_float(), 100.0)));
-        } else if (w == "jitter") {
-            light.jitter = true;
-        } else if (w == "circular") {
-            light.circular = true;
-        } else if (w == "orient") {
-            light.orient = true;
-        } else if (w == "area_illumination") {
-            if (parse_bool_optional()) warn_unsupported(t, "area_illumination");
-        } else if (w == "media_interaction" || w == "media_attenuation") {
-            parse_bool_optional();
-        } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
-            warn_unsupported(t, w);
-            skip_block(t);
-        } else {
-            if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
-            fail(t, "expected a light_source item but found '" + w + "'");
-        }
+    if (g.assumed_gamma_given) {
+        r.warn(item, "a second assumed_gamma is ignored");
+        return;
     }
+    g.assumed_gamma = gamma;
+    g.assumed_gamma_given = true;
+    r.m_working_gamma = gamma;
 }
 
-CameraSpec Parser::parse_camera_body(const Token& kw) {
+void SceneReader::radiosity_file(SceneReader& r, RadiositySettings&, const Token& item) {
+    r.warn_unsupported(item, "radiosity " + item.text);
+    r.parse_string();
+}
+
+CameraSpec SceneReader::parse_camera_body(const Token& kw) {
     expect("{");
     CameraSpec spec;
     spec.loc = make_diagnostic(Severity::Note, kw, "").loc;
@@ -516,45 +195,68 @@ CameraSpec Parser::parse_camera_body(const Token& kw) {
         if (is_punct(t, "}")) return spec;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a camera item but found '" + w + "'");
-        if (const auto type = find_kind(k_camera_keywords, w.view())) spec.type = *type;  // WARDRAY_CAMERAS
-        else if (w == "fisheye" || w == "ultra_wide_angle" || w == "omnimax" || w == "panoramic" ||
-                 w == "spherical" || w == "mesh_camera") {
-            warn_unsupported(t, w + " camera");
-            spec.other_projection = true;
-            if (w == "mesh_camera") {
-                // Its parameters and meshes are not modelled: skip the rest of the camera block.
-                const std::size_t depth = m_brace_depth;
-                while (m_brace_depth >= depth) {
-                    if (next().kind == TokenKind::EndOfFile) fail(kw, "camera block has no closing '}'");
-                }
-                return spec;
-            }
-        } else if (w == "cylinder") {
-            warn_unsupported(t, "cylinder camera");
-            spec.other_projection = true;
-            parse_float();
-        } else if (w == "location") spec.location = parse_vector();
-        else if (w == "look_at") spec.look_at = parse_vector();
-        else if (w == "direction") spec.direction = parse_vector();
-        else if (w == "right") {
-            spec.right = parse_vector();
-            spec.had_right = true;
-        } else if (w == "up") {
-            spec.up = parse_vector();
-            spec.had_up = true;
-        } else if (w == "sky") spec.sky = parse_vector();
-        else if (w == "angle") {
-            spec.angle = parse_float();
-            if (accept(",")) parse_float();  // the vertical angle of the spherical camera
-        } else if (w == "aperture" || w == "blur_samples" || w == "confidence" || w == "variance" ||
-                   w == "focal_point") {
-            warn_unsupported(t, "focal blur");
-            if (w == "focal_point") parse_vector();
-            else parse_float();
-            if (w == "blur_samples" && accept(",")) parse_float();
-        } else if (w == "normal") {
-            warn_unsupported(t, "camera normal");
-            skip_block(t);
+        // An item returns true when it ends the camera block.
+        using Item = bool (*)(SceneReader&, CameraSpec&, const Token& item, const Token& kw);
+        static const KeywordTable<Item> items = {
+            {"fisheye", &other_projection},
+            {"ultra_wide_angle", &other_projection},
+            {"omnimax", &other_projection},
+            {"panoramic", &other_projection},
+            {"spherical", &other_projection},
+            {"mesh_camera", &other_projection},
+            {"cylinder",
+             [](SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
+                 r.warn_unsupported(item, "cylinder camera");
+                 c.other_projection = true;
+                 r.parse_float();
+                 return false;
+             }},
+            {"location", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.location = r.parse_vector();
+                 return false;
+             }},
+            {"look_at", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.look_at = r.parse_vector();
+                 return false;
+             }},
+            {"direction", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.direction = r.parse_vector();
+                 return false;
+             }},
+            {"right", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.right = r.parse_vector();
+                 c.had_right = true;
+                 return false;
+             }},
+            {"up", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.up = r.parse_vector();
+                 c.had_up = true;
+                 return false;
+             }},
+            {"sky", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.sky = r.parse_vector();
+                 return false;
+             }},
+            {"angle", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
+                 c.angle = r.parse_float();
+                 if (r.accept(",")) r.parse_float();  // the vertical angle of the spherical camera
+                 return false;
+             }},
+            {"aperture", &focal_blur},
+            {"blur_samples", &focal_blur},
+            {"confidence", &focal_blur},
+            {"variance", &focal_blur},
+            {"focal_point", &focal_blur},
+            {"normal", [](SceneReader& r, CameraSpec&, const Token& item, const Token&) {
+                 r.warn_unsupported(item, "camera normal");
+                 r.skip_block(item);
+                 return false;
+             }},
+        };
+        if (const auto type = find_kind(k_camera_keywords, w.view())) {
+            spec.type = *type;  // a projection of WARDRAY_CAMERAS
+        } else if (const Item* item = items.find(w)) {
+            if ((*item)(*this, spec, t, kw)) return spec;
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a camera item but found '" + w + "'");
@@ -562,42 +264,61 @@ CameraSpec Parser::parse_camera_body(const Token& kw) {
     }
 }
 
-void Parser::parse_radiosity(const Token& kw, RadiositySettings& rad) {
+void SceneReader::parse_radiosity(const Token& kw, RadiositySettings& rad) {
     expect("{");
     rad.loc = make_diagnostic(Severity::Note, kw, "").loc;
-    auto as_int = [](double f) { return static_cast<int>(std::lround(f)); };
     while (true) {
         expand_macros();
         const Token t = next();
         if (is_punct(t, "}")) return;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a radiosity item but found '" + w + "'");
-        if (w == "count") {
-            rad.count = as_int(parse_float());
-            if (accept(",")) rad.count_directions = as_int(parse_float());
-        } else if (w == "nearest_count") {
-            rad.nearest_count = as_int(parse_float());
-            if (accept(",")) rad.nearest_count_pretrace = as_int(parse_float());
-        } else if (w == "error_bound") rad.error_bound = parse_float();
-        else if (w == "low_error_factor") rad.low_error_factor = parse_float();
-        else if (w == "minimum_reuse") rad.minimum_reuse = parse_float();
-        else if (w == "maximum_reuse") rad.maximum_reuse = parse_float();
-        else if (w == "recursion_limit") rad.recursion_limit = as_int(parse_float());
-        else if (w == "pretrace_start") rad.pretrace_start = parse_float();
-        else if (w == "pretrace_end") rad.pretrace_end = parse_float();
-        else if (w == "brightness") rad.brightness = parse_float();
-        else if (w == "gray_threshold") rad.gray_threshold = parse_float();
-        else if (w == "adc_bailout") rad.adc_bailout = parse_float();
-        else if (w == "always_sample") rad.always_sample = parse_bool_optional();
-        else if (w == "normal") rad.normal = parse_bool_optional();
-        else if (w == "media") rad.media = parse_bool_optional();
-        else if (w == "max_sample") rad.max_sample = parse_float();
-        else if (w == "subsurface") {
-            warn_unsupported(t, "radiosity subsurface");
-            parse_bool_optional();
-        } else if (w == "save_file" || w == "load_file") {
-            warn_unsupported(t, "radiosity " + w);
-            parse_string();
+        using Item = void (*)(SceneReader&, RadiositySettings&, const Token&);
+        static const KeywordTable<Item> items = {
+            {"count",
+             [](SceneReader& r, RadiositySettings& s, const Token&) {
+                 s.count = as_int(r.parse_float());
+                 if (r.accept(",")) s.count_directions = as_int(r.parse_float());
+             }},
+            {"nearest_count",
+             [](SceneReader& r, RadiositySettings& s, const Token&) {
+                 s.nearest_count = as_int(r.parse_float());
+                 if (r.accept(",")) s.nearest_count_pretrace = as_int(r.parse_float());
+             }},
+            {"error_bound",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.error_bound = r.parse_float(); }},
+            {"low_error_factor",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.low_error_factor = r.parse_float(); }},
+            {"minimum_reuse",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.minimum_reuse = r.parse_float(); }},
+            {"maximum_reuse",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.maximum_reuse = r.parse_float(); }},
+            {"recursion_limit",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.recursion_limit = as_int(r.parse_float()); }},
+            {"pretrace_start",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.pretrace_start = r.parse_float(); }},
+            {"pretrace_end",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.pretrace_end = r.parse_float(); }},
+            {"brightness", [](SceneReader& r, RadiositySettings& s, const Token&) { s.brightness = r.parse_float(); }},
+            {"gray_threshold",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.gray_threshold = r.parse_float(); }},
+            {"adc_bailout",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.adc_bailout = r.parse_float(); }},
+            {"always_sample",
+             [](SceneReader& r, RadiositySettings& s, const Token&) { s.always_sample = r.parse_bool_optional(); }},
+            {"normal", [](SceneReader& r, RadiositySettings& s, const Token&) { s.normal = r.parse_bool_optional(); }},
+            {"media", [](SceneReader& r, RadiositySettings& s, const Token&) { s.media = r.parse_bool_optional(); }},
+            {"max_sample", [](SceneReader& r, RadiositySettings& s, const Token&) { s.max_sample = r.parse_float(); }},
+            {"subsurface",
+             [](SceneReader& r, RadiositySettings&, const Token& item) {
+                 r.warn_unsupported(item, "radiosity subsurface");
+                 r.parse_bool_optional();
+             }},
+            {"save_file", &radiosity_file},
+            {"load_file", &radiosity_file},
+        };
+        if (const Item* item = items.find(w)) {
+            (*item)(*this, rad, t);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a radiosity item but found '" + w + "'");
@@ -605,53 +326,53 @@ void Parser::parse_radiosity(const Token& kw, RadiositySettings& rad) {
     }
 }
 
-void Parser::parse_global_settings(const Token& kw) {
+void SceneReader::parse_global_settings(const Token& kw) {
     expect("{");
-    GlobalSettings& g = m_scene.global;
+    GlobalSettings& g = m_builder.global();
     while (true) {
         const Token t = next();
         if (is_punct(t, "}")) return;
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a global setting but found '" + w + "'");
-        if (w == "assumed_gamma") {
-            GammaCurve gamma = GammaCurve::srgb();
-            if (!accept_keyword("srgb")) {
-                const Token at = peek();
-                const double value = parse_float();
-                if (!(value > 0.0)) fail(at, "gamma value must be positive");
-                gamma = GammaCurve::power_law(value);
-            }
-            // POV-Ray compat: the first assumed_gamma stays in force.
-            if (g.assumed_gamma_given) {
-                warn(t, "a second assumed_gamma is ignored");
-            } else {
-                g.assumed_gamma = gamma;
-                g.assumed_gamma_given = true;
-            }
-        } else if (w == "ambient_light") {
-            g.ambient_light = parse_color();
-        } else if (w == "max_trace_level") {
-            g.max_trace_level = static_cast<int>(std::lround(parse_float()));
-        } else if (w == "adc_bailout") {
-            g.adc_bailout = parse_float();
-        } else if (w == "radiosity") {
-            RadiositySettings rad = g.radiosity.value_or(RadiositySettings{});
-            parse_radiosity(t, rad);
-            g.radiosity = rad;
-        } else if (w == "photons" || w == "subsurface") {
-            warn_unsupported(t, w);
-            skip_block(t);
-        } else if (w == "noise_generator") {
-            g.noise_generator = std::clamp(static_cast<int>(parse_float()), 1, 3);
-        } else if (w == "max_intersections" || w == "number_of_waves" ||
-                   w == "mm_per_unit") {
-            parse_float();
-        } else if (w == "irid_wavelength") {
-            parse_color();
-        } else if (w == "hf_gray_16") {
-            parse_bool_optional();
-        } else if (w == "charset") {
-            m_charset_utf8 = expect_identifier().text == "utf8";
+        using Setting = void (*)(SceneReader&, GlobalSettings&, const Token&);
+        // Settings that are valid POV-Ray and not rendered yet: warned about, their block skipped.
+        auto skip_unsupported_setting = [](SceneReader& r, GlobalSettings&, const Token& item) {
+            r.warn_unsupported(item, item.text);
+            r.skip_block(item);
+        };
+        static const KeywordTable<Setting> settings = {
+            {"assumed_gamma", &read_assumed_gamma},
+            {"ambient_light",
+             [](SceneReader& r, GlobalSettings& g, const Token&) { g.ambient_light = r.parse_color(); }},
+            {"max_trace_level",
+             [](SceneReader& r, GlobalSettings& g, const Token&) {
+                 g.max_trace_level = static_cast<int>(std::lround(r.parse_float()));
+             }},
+            {"adc_bailout", [](SceneReader& r, GlobalSettings& g, const Token&) { g.adc_bailout = r.parse_float(); }},
+            {"radiosity",
+             [](SceneReader& r, GlobalSettings& g, const Token& item) {
+                 RadiositySettings rad = g.radiosity.value_or(RadiositySettings{});
+                 r.parse_radiosity(item, rad);
+                 g.radiosity = rad;
+             }},
+            {"photons", skip_unsupported_setting},
+            {"subsurface", skip_unsupported_setting},
+            {"noise_generator",
+             [](SceneReader& r, GlobalSettings& g, const Token&) {
+                 g.noise_generator = std::clamp(static_cast<int>(r.parse_float()), 1, 3);
+             }},
+            {"max_intersections", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"number_of_waves", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"mm_per_unit", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
+            {"irid_wavelength", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_color(); }},
+            {"hf_gray_16", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_bool_optional(); }},
+            {"charset",
+             [](SceneReader& r, GlobalSettings&, const Token&) {
+                 r.m_charset_utf8 = r.expect_identifier().text == "utf8";
+             }},
+        };
+        if (const Setting* setting = settings.find(w)) {
+            (*setting)(*this, g, t);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a global setting but found '" + w + "'");

@@ -2,6 +2,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
+#include <unordered_set>
 
 #include "parser/parser.h"
 
@@ -10,7 +12,7 @@ namespace wardray::parser {
 // ---------------------------------------------------------------------------------------------------------------
 // Token access
 
-const Token& Parser::peek() {
+const Token& TokenStream::peek() {
     while (true) {
         const Token& t = raw();
         if (t.kind == TokenKind::Directive) {
@@ -25,7 +27,7 @@ const Token& Parser::peek() {
     }
 }
 
-const Token& Parser::peek_expr() {
+const Token& TokenStream::peek_expr() {
     // A macro's closing #end is always read through (so `M(1) * 2` works). Other directives run too, except
     // between the operands of a declared value, which they end, so `#declare A = 1 #if (A)` sees A declared.
     while (true) {
@@ -42,7 +44,7 @@ const Token& Parser::peek_expr() {
     }
 }
 
-Token Parser::next() {
+Token TokenStream::next() {
     Token t = peek();
     if (t.kind != TokenKind::EndOfFile) ++m_pos;
     if (t.kind == TokenKind::Punct) {
@@ -58,19 +60,19 @@ Token Parser::next() {
     return t;
 }
 
-bool Parser::accept(std::string_view punct) {
+bool TokenStream::accept(std::string_view punct) {
     if (!is_punct(peek(), punct)) return false;
     next();
     return true;
 }
 
-bool Parser::accept_keyword(std::string_view word) {
+bool TokenStream::accept_keyword(std::string_view word) {
     if (!is_word(peek(), word)) return false;
     next();
     return true;
 }
 
-Token Parser::expect(std::string_view punct) {
+Token TokenStream::expect(std::string_view punct) {
     const Token& t = peek();
     if (!is_punct(t, punct)) {
         const std::string found = t.kind == TokenKind::EndOfFile ? "end of file" : "'" + t.text + "'";
@@ -81,7 +83,7 @@ Token Parser::expect(std::string_view punct) {
     return next();
 }
 
-Token Parser::expect_identifier() {
+Token TokenStream::expect_identifier() {
     const Token& t = peek();
     if (t.kind != TokenKind::Identifier) {
         const std::string found = t.kind == TokenKind::EndOfFile ? "end of file" : "'" + t.text + "'";
@@ -90,7 +92,7 @@ Token Parser::expect_identifier() {
     return next();
 }
 
-void Parser::accept_semicolon_after_declare(const Value& v, const Token& where) {
+void TokenStream::accept_semicolon_after_declare(const Value& v, const Token& where) {
     if (is_punct(peek_expr(), ";")) {
         next();
         return;
@@ -100,10 +102,34 @@ void Parser::accept_semicolon_after_declare(const Value& v, const Token& where) 
         warn(where, "missing ';' after the declaration of '" + where.text + "'");
 }
 
+void TokenStream::skip_block(const Token& kw) {
+    // Skips a balanced `{ ... }` (directives inside are still processed, as POV-Ray would).
+    expect("{");
+    const std::size_t depth = m_brace_depth;
+    while (m_brace_depth >= depth) {
+        const Token t = next();
+        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' block has no closing '}'");
+    }
+}
+
+void TokenStream::skip_optional_block(const Token& kw) {
+    if (is_punct(peek(), "{")) skip_block(kw);
+}
+
+bool TokenStream::starts_string(const Token& t) {
+    if (t.kind == TokenKind::String) return true;
+    if (t.kind != TokenKind::Identifier) return false;
+    static const std::unordered_set<std::string_view> string_functions = {"concat", "str",    "chr", "substr",
+                                                                          "strupr", "strlwr", "vstr"};
+    if (string_functions.count(t.text) > 0) return true;
+    const Value* v = lookup(t.text);
+    return v != nullptr && std::holds_alternative<std::string>(*v);
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Symbols
 
-const Value* Parser::lookup(const std::string& name) {
+const Value* TokenStream::lookup(const std::string& name) {
     if (const auto deferred = m_deferred_warnings.find(name); deferred != m_deferred_warnings.end()) {
         const std::vector<Diagnostic> warnings = deferred->second;
         for (const Diagnostic& d : warnings) {
@@ -118,14 +144,14 @@ const Value* Parser::lookup(const std::string& name) {
     return slot;
 }
 
-Value* Parser::lookup_mutable(const std::string& name) {
+Value* TokenStream::lookup_mutable(const std::string& name) {
     before_rebinding(name);
     Value* slot = find_slot(name);
     if (slot != nullptr && std::holds_alternative<Deferred>(*slot)) evaluate_deferred(*slot);
     return slot;
 }
 
-Value* Parser::find_slot(const std::string& name) {
+Value* TokenStream::find_slot(const std::string& name) {
     for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
         const auto found = it->find(name);
         if (found != it->end()) return &found->second;
@@ -133,7 +159,7 @@ Value* Parser::find_slot(const std::string& name) {
     return nullptr;
 }
 
-void Parser::declare(const std::string& name, Value v, bool local) {
+void TokenStream::declare(const std::string& name, Value v, bool local) {
     before_rebinding(name);
     // POV-Ray compat: #local binds in the innermost scope (include file or macro); #declare rebinds the innermost
     // existing name, a macro's local included, and creates a global only when the name is new.
@@ -149,7 +175,7 @@ void Parser::declare(const std::string& name, Value v, bool local) {
     scope[name] = std::move(v);
 }
 
-std::vector<std::string> Parser::known_names() const {
+std::vector<std::string> TokenStream::known_names() const {
     std::vector<std::string> names;
     for (const auto& scope : m_scopes)
         for (const auto& [name, value] : scope) names.push_back(name);
@@ -160,7 +186,7 @@ std::vector<std::string> Parser::known_names() const {
 // ---------------------------------------------------------------------------------------------------------------
 // Frames
 
-void Parser::handle_end_of_file() {
+void TokenStream::handle_end_of_file() {
     const Frame frame = m_frames.back();
     const Token& eof = raw();
     while (m_conds.size() > frame.cond_depth) {
@@ -187,7 +213,7 @@ void Parser::handle_end_of_file() {
     m_pos = frame.return_pos;
 }
 
-void Parser::return_from_macro() {
+void TokenStream::return_from_macro() {
     const Frame frame = m_frames.back();
     before_scope_ends(m_scopes.back());
     m_frames.pop_back();
@@ -196,7 +222,7 @@ void Parser::return_from_macro() {
     m_pos = frame.return_pos;
 }
 
-void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
+void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
     expect("(");
     std::vector<std::optional<Value>> args;
     std::unordered_map<std::string, std::pair<std::size_t, std::string>> references;
@@ -268,7 +294,7 @@ void Parser::invoke_macro(const Token& name_tok, const Macro& macro) {
     m_pos = macro.body;
 }
 
-void Parser::expand_macros() {
+void TokenStream::expand_macros() {
     while (true) {
         const Token& t = peek();
         if (t.kind != TokenKind::Identifier) return;
@@ -279,7 +305,7 @@ void Parser::expand_macros() {
     }
 }
 
-bool Parser::count_loop_iteration(const Token& where) {
+bool TokenStream::count_loop_iteration(const Token& where) {
     if (++m_loop_iterations <= m_options.max_loop_iterations) return true;
     report(make_diagnostic(Severity::Error, where,
                            "loops ran more than the limit of " + std::to_string(m_options.max_loop_iterations) +
@@ -287,42 +313,7 @@ bool Parser::count_loop_iteration(const Token& where) {
     throw FatalError{};
 }
 
-bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (f == nullptr) {
-        error = std::strerror(errno);
-        return false;
-    }
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    text.clear();
-    if (!ec) text.reserve(static_cast<std::size_t>(size));
-    char buffer[1 << 16];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, f)) text.append(buffer, n);
-    const bool failed = std::ferror(f) != 0;
-    std::fclose(f);
-    if (failed) error = std::strerror(EIO);
-    return !failed;
-}
-
-std::optional<std::uint32_t> Parser::load_file(const std::filesystem::path& path, bool library, std::string& error) {
-    const std::string key = path.lexically_normal().string();
-    if (const auto it = m_file_index.find(key); it != m_file_index.end()) {
-        if (m_files[it->second]->tokens.empty()) lex_file(it->second, false);  // released after its first reading
-        return it->second;
-    }
-    auto file = std::make_unique<SourceFile>();
-    if (!read_text_file(path, file->text, error)) return std::nullopt;
-    file->path = key;
-    file->library = library;
-    const auto index = static_cast<std::uint32_t>(m_files.size());
-    m_files.push_back(std::move(file));
-    m_file_index[key] = index;
-    lex_file(index, true);
-    return index;
-}
-
-void Parser::keep_macro_bodies(std::uint32_t index) {
+void TokenStream::keep_macro_bodies(std::uint32_t index) {
     const SourceFile& file = *m_files[index];
     auto bodies = std::make_unique<SourceFile>();
     bodies->path = file.path;
@@ -341,17 +332,6 @@ void Parser::keep_macro_bodies(std::uint32_t index) {
     }
     bodies->tokens.push_back(file.tokens.back());  // the file's EndOfFile
     m_files.push_back(std::move(bodies));
-}
-
-void Parser::lex_file(std::uint32_t index, bool first) {
-    SourceFile& file = *m_files[index];
-    std::vector<Diagnostic> lex_errors;
-    file.tokens = lex(file.text, index, file.path, lex_errors, file.decoded);
-    if (!first) return;  // its errors were reported the first time
-    for (auto& d : lex_errors) {
-        file.truncated = file.truncated || d.message == "unterminated string";
-        report(std::move(d));
-    }
 }
 
 }  // namespace wardray::parser

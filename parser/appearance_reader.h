@@ -1,0 +1,68 @@
+// AppearanceReader: colours, finishes, textures, interiors, the sky sphere and fog, and the #default texture.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/gamma.h"
+#include "parser/evaluator.h"
+
+namespace wardray::parser {
+
+/// Reads the blocks that say how a surface looks. Pigments, normals and their patterns and maps are read by
+/// the pattern reader (patterns.cpp), which this layer reaches through the hooks below.
+class AppearanceReader : public Evaluator {
+protected:
+    using Evaluator::Evaluator;
+
+    Color parse_color() final;
+    /// Reads `finish { ... }` after its keyword.
+    Finish parse_finish_body(const Token& kw);
+    /// Reads one finish item `item` (already consumed) into `f`.
+    void parse_finish_item(Finish& f, const Token& item);
+    /// Reads `reflection { ... }` into the finish.
+    void parse_reflection_block(Finish& f);
+    /// Reads `texture { ... }` after its keyword.
+    Texture parse_texture_body(const Token& kw);
+    /// Reads texture items up to `close` ('}' of a texture block or ']' of a texture_map entry).
+    void parse_texture_items(Texture& tx, const Token& kw, const char* close);
+    /// Reads `interior { ... }` after its keyword.
+    Interior parse_interior_body(const Token& kw);
+    /// Reads `sky_sphere { ... }` after its keyword.
+    SkySphere parse_sky_sphere(const Token& kw);
+    /// Reads `fog { ... }` after its keyword.
+    Fog parse_fog(const Token& kw);
+    void directive_default(const Token& tok) final;
+
+    /// Reads `pigment { ... }` after its keyword (the pattern reader's).
+    virtual Pigment parse_pigment_body(const Token& kw) = 0;
+    /// Reads `normal { ... }` after its keyword (the pattern reader's).
+    virtual Normal parse_normal_body(const Token& kw) = 0;
+    /// Reads a colour map after its keyword (the pattern reader's).
+    virtual std::vector<ColorMapEntry> parse_color_map(const Token& kw) = 0;
+    /// True when `t` can start a float, vector or colour expression (the pattern reader's).
+    virtual bool starts_value(const Token& t) = 0;
+    /// Consumes tokens up to and including `close` at brace depth `depth` (the pattern reader's).
+    virtual void skip_to_close(const Token& kw, const char* close, std::size_t depth) = 0;
+    /// Reads a pattern keyword and its own parameters into `pat`: -1 when `t` is not one, else the length of the
+    /// list of colours/pigments/textures that may follow it (the pattern reader's).
+    virtual int parse_pattern_keyword(const Token& t, Pattern& pat) = 0;
+    /// Reads one pattern modifier; false when `t` is none (the pattern reader's).
+    virtual bool parse_pattern_modifier(const Token& t, Pattern& pat) = 0;
+
+    /// A texture made of the current #default pigment and finish.
+    Texture default_texture() const {
+        Texture t;
+        t.pigment = m_default_pigment;
+        t.finish = m_default_finish;
+        return t;
+    }
+    Pigment m_default_pigment;
+    Finish m_default_finish;
+    /// Finish items given with `albedo` in the block being read (bits: diffuse, phong, specular).
+    unsigned m_finish_albedo = 0;
+    /// The working gamma, once global_settings' assumed_gamma is read: sRGB colours are re-encoded into it.
+    std::optional<GammaCurve> m_working_gamma;
+};
+
+}  // namespace wardray::parser

@@ -1,0 +1,404 @@
+// Objects: object statements (union flattening, CSG nodes), their modifiers, transforms and light sources.
+#include <algorithm>
+#include <cmath>
+
+#include "parser/keyword_table.h"
+#include "parser/keywords.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+bool is_object_keyword(const Token& t) {
+    if (t.kind != TokenKind::Identifier) return false;
+    const TokenText& w = t.text;
+    return is_shape_keyword(w) || w == "object" || w == "union" || w == "intersection" || w == "difference" ||
+           w == "merge" || is_unsupported_object(w);
+}
+
+namespace {
+
+// POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
+void transform_textures(Object& o, bool own_texture, const Transform& tr) {
+    if (own_texture) transform_texture(o.texture, tr);
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
+}
+
+/// Sets the flag `flag` (no_shadow, no_image, ...) on every part of the object.
+void set_flag(ObjectValue& ov, bool Object::*flag) {
+    for (ObjectPart& part : ov.parts) part.object.*flag = true;
+}
+
+}  // namespace
+
+void ObjectReader::skip_unsupported_modifier(ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
+    r.warn_unsupported(kw, kw.text);
+    r.skip_block(kw);
+}
+
+void ObjectReader::skip_unsupported_light_item(ObjectReader& r, Light&, const Token& kw) {
+    r.warn_unsupported(kw, kw.text);
+    r.skip_block(kw);
+}
+
+void ObjectReader::parse_area_light(Light& light) {
+    light.area = true;
+    // POV-Ray compat: the commas between the four values are optional.
+    light.area_axis1 = parse_vector();
+    accept(",");
+    light.area_axis2 = parse_vector();
+    accept(",");
+    const Token& at1 = peek();
+    const double n1 = parse_float();
+    accept(",");
+    const Token& at2 = peek();
+    const double n2 = parse_float();
+    // POV-Ray compat: sizes are truncated, and a size below 1 is an error.
+    if (!(n1 >= 1.0) || n1 > 1e4) fail(at1, "area_light size must be between 1 and 10000");
+    if (!(n2 >= 1.0) || n2 > 1e4) fail(at2, "area_light size must be between 1 and 10000");
+    light.area_size1 = static_cast<int>(n1);
+    light.area_size2 = static_cast<int>(n2);
+}
+
+ObjectValue ObjectReader::parse_object(const Token& kw) {
+    const NestingGuard guard(*this, kw);
+    const TokenText& w = kw.text;
+    if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
+        warn_unsupported(kw, w);
+        skip_block(kw);
+        return {};
+    }
+    expect("{");
+    ObjectValue ov;
+    const SourceLoc loc = make_diagnostic(Severity::Note, kw, "").loc;
+    auto add_shape = [&](Shape shape) {
+        ObjectPart part;
+        part.object.shape = std::move(shape);
+        part.object.loc = loc;
+        ov.parts.push_back(std::move(part));
+    };
+    const Value* copied = nullptr;
+    if (w == "mesh" || w == "mesh2") {
+        // POV-Ray compat: `mesh { Declared_Mesh modifiers }` copies the declared mesh (the mesh-camera examples
+        // place one mesh several times this way).
+        const Token& first = peek();
+        const Value* v = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
+        const auto* declared = v ? std::get_if<Boxed<ObjectValue>>(v) : nullptr;
+        if (declared && (*declared)->parts.size() == 1 && (*declared)->lights.empty() &&
+            std::holds_alternative<Mesh>((*declared)->parts.front().object.shape))
+            copied = v;
+    }
+    if (copied != nullptr) {
+        next();
+        ov = *std::get<Boxed<ObjectValue>>(*copied);
+    } else if (is_shape_keyword(w)) {
+        add_shape(parse_shape_parameters(kw));
+        // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
+        if (w == "text") ov.parts.back().object.transform = Transform::rotation({0.001, 0.001, 0.001});
+    } else if (w == "object") {
+        expand_macros();
+        std::optional<Value> element;
+        const Token at = peek();
+        if ((element = take_array_element())) {
+            if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) ov = **o;
+            else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
+            parse_object_modifiers(ov, ov.compound);
+            return ov;
+        }
+        const Token id = next();
+        if (is_object_keyword(id)) {
+            ov = parse_object(id);
+        } else if (is_word(id, "light_source")) {
+            ov.lights.push_back(parse_light_body(id));
+        } else if (id.kind == TokenKind::Identifier) {
+            const Value* v = lookup(id.text);
+            if (v == nullptr) fail_undeclared(id);
+            if (std::holds_alternative<Unsupported>(*v)) {
+                // Already warned about where it was declared; the object is left out.
+            } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
+                ov = **o;
+            } else {
+                fail(id, "expected an object identifier but '" + id.text + "' is not an object");
+            }
+        } else {
+            fail(id, "expected an object identifier but found '" + id.text + "'");
+        }
+    } else if (w == "intersection" || w == "difference" || w == "merge") {
+        // A real CSG node: each child statement becomes one child object (a union node when it has several parts).
+        Csg csg;
+        csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
+        while (true) {
+            expand_macros();
+            const Token& t = peek();
+            if (is_object_keyword(t)) {
+                const Token child_kw = next();
+                ObjectValue child = parse_object(child_kw);
+                if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
+                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+            } else if (is_word(t, "light_source")) {
+                const Token lkw = next();
+                ov.lights.push_back(parse_light_body(lkw));
+            } else {
+                break;
+            }
+        }
+        add_shape(std::move(csg));
+    } else {
+        // union: children first, then the union's own modifiers.
+        ov.compound = true;
+        while (true) {
+            expand_macros();
+            const Token& t = peek();
+            if (is_object_keyword(t)) {
+                const Token child_kw = next();
+                ObjectValue child = parse_object(child_kw);
+                for (ObjectPart& part : child.parts) {
+                    if (!part.has_texture && child.texture) {
+                        part.object.texture = *child.texture;
+                        part.has_texture = true;
+                    }
+                    ov.parts.push_back(std::move(part));
+                }
+                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+            } else if (is_word(t, "light_source")) {
+                const Token lkw = next();
+                ov.lights.push_back(parse_light_body(lkw));
+            } else {
+                break;
+            }
+        }
+    }
+    parse_object_modifiers(ov, ov.compound);
+    return ov;
+}
+
+Texture& ObjectReader::texture_to_modify(ObjectValue& ov) {
+    if (ov.compound || ov.parts.size() != 1) {
+        if (!ov.texture) ov.texture = default_texture();
+        return *ov.texture;
+    }
+    ObjectPart& part = ov.parts.front();
+    if (!part.has_texture) {
+        part.object.texture = default_texture();
+        part.has_texture = true;
+    }
+    return part.object.texture;
+}
+
+void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
+    for (ObjectPart& part : ov.parts) {
+        part.object.transform = part.object.transform.then(tr);
+        transform_textures(part.object, part.has_texture, tr);
+    }
+    if (ov.texture) transform_texture(*ov.texture, tr);
+    for (Light& l : ov.lights) {
+        l.position = tr.point(l.position);
+        l.point_at = tr.point(l.point_at);
+    }
+}
+
+void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
+    ModifierState state;
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        Transform tr;
+        if (parse_transform_item(t, tr)) {
+            apply_transform(ov, tr);
+            continue;
+        }
+        next();
+        if (is_punct(t, "}")) return;
+        if (t.kind != TokenKind::Identifier) fail(t, "expected an object modifier or '}' but found '" + t.text + "'");
+        const TokenText& w = t.text;
+        using Modifier = void (*)(ObjectReader&, ObjectValue&, const Token&, ModifierState&);
+        static const KeywordTable<Modifier> modifiers = {
+            {"pigment",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).pigment = r.parse_pigment_body(kw);
+             }},
+            {"finish",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).finish = r.parse_finish_body(kw);
+             }},
+            {"texture",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
+                 if (state.textured) {
+                     // POV-Ray compat: further texture statements are layers on top of the first.
+                     r.texture_to_modify(ov).layers.push_back(r.parse_texture_body(kw));
+                 } else {
+                     r.texture_to_modify(ov) = r.parse_texture_body(kw);
+                     state.textured = true;
+                 }
+             }},
+            {"no_shadow",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_shadow); }},
+            {"no_image",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_image); }},
+            {"no_reflection",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
+                 set_flag(ov, &Object::no_reflection);
+             }},
+            {"no_radiosity",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_radiosity); }},
+            {"inverse",
+             [](ObjectReader& r, ObjectValue& ov, const Token&, ModifierState&) {
+                 r.make_union_node(ov);
+                 for (ObjectPart& part : ov.parts) part.object.inverse = !part.object.inverse;
+             }},
+            {"clipped_by",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
+                 const std::vector<Object> clips = r.parse_object_list(kw, &state.bounded_by);
+                 r.make_union_node(ov);
+                 // Clipping objects are given in world space; store them relative to the object so later
+                 // transforms move both together.
+                 for (ObjectPart& part : ov.parts) {
+                     const Transform to_local = part.object.transform.inverse();
+                     for (Object clip : clips) {
+                         clip.transform = clip.transform.then(to_local);
+                         part.object.clipped_by.push_back(std::move(clip));
+                     }
+                 }
+             }},
+            // Bounds are accepted and not needed for correctness: the renderer builds its own.
+            {"bounded_by",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState& state) {
+                 state.bounded_by = r.parse_object_list(kw, nullptr);
+             }},
+            {"open",
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
+                 for (ObjectPart& part : ov.parts) {
+                     if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Cone>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Prism>(&part.object.shape)) c->open = true;
+                     if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
+                 }
+             }},
+            {"hollow", [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
+            {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            {"split_union",
+             [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
+            {"cutaway_textures", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            {"double_illuminate",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+            {"radiosity",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
+                 r.warn_unsupported(kw, "object radiosity importance");
+                 r.skip_block(kw);
+             }},
+            {"normal",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 r.texture_to_modify(ov).normal = r.parse_normal_body(kw);
+             }},
+            {"interior",
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
+                 const Interior interior = r.parse_interior_body(kw);
+                 for (ObjectPart& part : ov.parts) part.object.interior = interior;
+             }},
+            {"interior_texture", &skip_unsupported_modifier},
+            {"material", &skip_unsupported_modifier},
+            {"photons", &skip_unsupported_modifier},
+            {"uv_mapping",
+             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+        };
+        if (const Modifier* modifier = modifiers.find(w)) {
+            (*modifier)(*this, ov, t, state);
+        } else if (is_object_keyword(t) && compound) {
+            fail(t, "objects of a union must come before its modifiers");
+        } else {
+            if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
+            fail(t, "expected an object modifier or '}' but found '" + w + "'");
+        }
+    }
+}
+
+Light ObjectReader::parse_light_body(const Token& kw) {
+    expect("{");
+    Light light;
+    light.loc = make_diagnostic(Severity::Note, kw, "").loc;
+    expand_macros();
+    const Token& first = peek();
+    const Value* ident = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
+    const auto* boxed = ident ? std::get_if<Boxed<ObjectValue>>(ident) : nullptr;
+    const ObjectValue* ov = boxed ? &**boxed : nullptr;
+    if (ov != nullptr && ov->lights.size() == 1 && ov->parts.empty()) {
+        next();
+        light = ov->lights.front();
+    } else {
+        light.position = parse_vector();
+        accept(",");
+        if (!is_punct(peek(), "}")) light.color = parse_color();
+    }
+    while (true) {
+        expand_macros();
+        const Token t = peek();
+        Transform tr;
+        if (parse_transform_item(t, tr)) {
+            light.position = tr.point(light.position);
+            light.point_at = tr.point(light.point_at);
+            light.area_axis1 = tr.vector(light.area_axis1);
+            light.area_axis2 = tr.vector(light.area_axis2);
+            continue;
+        }
+        if (is_color_keyword(t)) {
+            light.color = parse_color();
+            continue;
+        }
+        next();
+        if (is_punct(t, "}")) return light;
+        const TokenText& w = t.text;
+        if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
+        using Item = void (*)(ObjectReader&, Light&, const Token&);
+        static const KeywordTable<Item> items = {
+            // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own
+            // defaults (degrees for a spotlight, distances from the axis for a cylinder light).
+            {"spotlight",
+             [](ObjectReader&, Light& l, const Token&) {
+                 l.type = Light::Type::Spot;
+                 l.radius = 30.0;
+                 l.falloff = 45.0;
+                 l.tightness = 0.0;
+             }},
+            {"cylinder",
+             [](ObjectReader&, Light& l, const Token&) {
+                 l.type = Light::Type::Cylinder;
+                 l.radius = 0.75;
+                 l.falloff = 1.0;
+                 l.tightness = 0.0;
+             }},
+            {"parallel", [](ObjectReader&, Light& l, const Token&) { l.type = Light::Type::Parallel; }},
+            {"point_at", [](ObjectReader& r, Light& l, const Token&) { l.point_at = r.parse_vector(); }},
+            {"radius", [](ObjectReader& r, Light& l, const Token&) { l.radius = r.parse_float(); }},
+            {"falloff", [](ObjectReader& r, Light& l, const Token&) { l.falloff = r.parse_float(); }},
+            {"tightness", [](ObjectReader& r, Light& l, const Token&) { l.tightness = r.parse_float(); }},
+            {"fade_distance", [](ObjectReader& r, Light& l, const Token&) { l.fade_distance = r.parse_float(); }},
+            {"fade_power", [](ObjectReader& r, Light& l, const Token&) { l.fade_power = r.parse_float(); }},
+            {"shadowless", [](ObjectReader&, Light& l, const Token&) { l.shadowless = true; }},
+            {"area_light", [](ObjectReader& r, Light& l, const Token&) { r.parse_area_light(l); }},
+            {"adaptive",
+             [](ObjectReader& r, Light& l, const Token&) {
+                 l.adaptive = std::max(0, static_cast<int>(std::min(r.parse_float(), 100.0)));
+             }},
+            {"jitter", [](ObjectReader&, Light& l, const Token&) { l.jitter = true; }},
+            {"circular", [](ObjectReader&, Light& l, const Token&) { l.circular = true; }},
+            {"orient", [](ObjectReader&, Light& l, const Token&) { l.orient = true; }},
+            {"area_illumination",
+             [](ObjectReader& r, Light&, const Token& kw) {
+                 if (r.parse_bool_optional()) r.warn_unsupported(kw, "area_illumination");
+             }},
+            {"media_interaction", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
+            {"media_attenuation", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
+            {"looks_like", &skip_unsupported_light_item},
+            {"projected_through", &skip_unsupported_light_item},
+            {"photons", &skip_unsupported_light_item},
+        };
+        if (const Item* item = items.find(w)) {
+            (*item)(*this, light, t);
+        } else {
+            if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
+            fail(t, "expected a light_source item but found '" + w + "'");
+        }
+    }
+}
+
+}  // namespace wardray::parser

@@ -1,0 +1,43 @@
+// SceneBuilder: what the statement readers write into; it holds the scene until the parse hands it over.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "parser/namespaces.h"
+
+namespace wardray::parser {
+
+/// The target of the statement readers, in the spirit of pbrt-v4's ParserTarget: one call per entity the
+/// scene file places, and the finished scene at the end.
+class SceneBuilder {
+public:
+    /// Places an object at the top level of the scene.
+    void add_object(Object object) { m_scene.objects.push_back(std::move(object)); }
+    /// Adds a light source.
+    void add_light(Light light) { m_scene.lights.push_back(std::move(light)); }
+    /// Sets the camera; a later camera statement replaces it.
+    void set_camera(const Camera& camera) { m_scene.camera = camera; }
+    /// Sets the background colour.
+    void set_background(const Color& color) { m_scene.background = color; }
+    /// Sets the sky sphere; a later one replaces it.
+    void set_sky_sphere(SkySphere sky) { m_scene.sky_sphere = std::move(sky); }
+    /// Adds a fog layer.
+    void add_fog(Fog fog) { m_scene.fogs.push_back(std::move(fog)); }
+    /// The global settings, which global_settings blocks change item by item.
+    GlobalSettings& global() { return m_scene.global; }
+
+    /// The scene built, for the main file `path`, with the language version at its end and its warnings.
+    Scene finish(std::string path, double version, std::vector<Diagnostic> warnings) {
+        m_scene.path = std::move(path);
+        m_scene.version = version;
+        m_scene.warnings = std::move(warnings);
+        return std::move(m_scene);
+    }
+
+private:
+    Scene m_scene;
+};
+
+}  // namespace wardray::parser

@@ -1,0 +1,42 @@
+// SceneReader: the top-level statements of a scene file (objects, lights, camera, global settings, ...).
+#pragma once
+
+#include <optional>
+
+#include "parser/object_reader.h"
+#include "parser/scene_builder.h"
+
+namespace wardray::parser {
+
+/// Reads one statement at a time through a keyword table and writes what it places into the SceneBuilder.
+class SceneReader : public ObjectReader {
+protected:
+    using ObjectReader::ObjectReader;
+
+    /// Reads one top-level statement.
+    void parse_statement();
+    /// Places an object statement's parts and lights in the scene, with the default texture where none is given.
+    void place_object(ObjectValue ov);
+    /// Reads `camera { ... }` after its keyword.
+    CameraSpec parse_camera_body(const Token& kw);
+    /// A camera projection that is valid POV-Ray and not rendered yet; true when it ends the block (mesh_camera).
+    static bool other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
+    /// A focal blur item (not rendered yet): warns and reads its value.
+    static bool focal_blur(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
+    /// `assumed_gamma G | srgb`: the working gamma; POV-Ray compat: the first one stays in force.
+    static void read_assumed_gamma(SceneReader& r, GlobalSettings& g, const Token& item);
+    /// radiosity save_file / load_file (not supported): warns and reads the file name.
+    static void radiosity_file(SceneReader& r, RadiositySettings& rad, const Token& item);
+    /// Reads `global_settings { ... }` after its keyword.
+    void parse_global_settings(const Token& kw);
+    /// Reads `radiosity { ... }` of the global settings into `rad`.
+    void parse_radiosity(const Token& kw, RadiositySettings& rad);
+    std::optional<Value> parse_item_value(const Token& t) final;
+    /// A declared colour map, kept as a pigment holding only that map.
+    Pigment color_map_value(const Token& kw);
+
+    SceneBuilder m_builder;
+    bool m_charset_utf8 = false;  ///< global_settings { charset utf8 }: text strings are decoded as UTF-8
+};
+
+}  // namespace wardray::parser

@@ -1,0 +1,177 @@
+// SourceStream: the files a parse reads, the position in their tokens, and the diagnostics it reports.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/lexer.h"
+#include "parser/parse.h"
+#include "parser/value.h"
+
+namespace wardray::parser {
+
+/// One source file read by the parse, with its tokens (kept alive so macros and loops can re-read them).
+struct SourceFile {
+    std::string path;  ///< as shown in diagnostics
+    std::string text;
+    std::vector<Token> tokens;
+    DecodedStrings decoded;  ///< string literals with escapes, which tokens view
+    bool truncated = false;  ///< the lexer gave up early (unterminated string): errors at its end are noise
+    bool library = false;    ///< found through the library paths: its declarations may be deferred
+    bool has_macros = false; ///< defines a macro, whose body is read from `tokens` at every call
+    mutable std::vector<std::size_t> line_starts;  ///< offset of each line, built on the first diagnostic
+
+    /// The text of line `line` (from 1) without its line ending, found through the line index.
+    std::string line_text(std::uint32_t line) const;
+};
+
+/// Reads a whole file into `text` with one copy; false with the reason in `error` when it cannot be read.
+bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error);
+
+/// Thrown inside the parser to abandon the current statement after an error was reported.
+struct StatementError {};
+/// Thrown inside the parser to end the whole parse (error limit, #error, runaway recursion).
+struct FatalError {};
+
+/// How a token reads in a message: 'word', string "text", '#directive' or end of file.
+std::string describe_token(const Token& t);
+/// "a pigment", "an object", ... for messages about identifiers of the wrong kind.
+const char* value_kind_name(const Value& v);
+
+/// The bottom layer of the parser: source files and their tokens, the include/macro frames, diagnostics with
+/// their include and macro notes, and the guards on nesting. The layers above read tokens through it.
+class SourceStream {
+public:
+    SourceStream(const SourceStream&) = delete;
+    SourceStream& operator=(const SourceStream&) = delete;
+
+protected:
+    /// A stream reading with `options` (library paths, declares, image size, error limit).
+    explicit SourceStream(const ParseOptions& options);
+    virtual ~SourceStream() = default;
+
+    /// A file or macro being read, with where to return when it ends.
+    struct Frame {
+        enum class Kind { Include, Macro };
+        Kind kind = Kind::Include;
+        std::string name;
+        std::uint32_t return_file = 0;
+        std::size_t return_pos = 0;
+        Token call_site;
+        std::size_t cond_depth = 0;
+        std::size_t scope_index = 0;  ///< the macro's own symbol table
+        /// Macro parameters given a bare identifier: #declare on them writes that identifier (by reference).
+        std::unordered_map<std::string, std::pair<std::size_t, std::string>> references;
+    };
+
+    /// The current token, before directives and macro ends are handled.
+    const Token& raw() const { return m_files[m_file]->tokens[m_pos]; }
+    // Inline, taking views: most callers pass literals, whose length is then known where they are compared.
+    /// True when `t` is the punctuation `p`.
+    bool is_punct(const Token& t, std::string_view p) const { return t.kind == TokenKind::Punct && t.text == p; }
+    /// True when `t` is the identifier or keyword `w`.
+    bool is_word(const Token& t, std::string_view w) const { return t.kind == TokenKind::Identifier && t.text == w; }
+
+    /// Lexes a file's text into its tokens; the first time, its lexical errors are reported.
+    void lex_file(std::uint32_t index, bool first);
+    /// Reads and lexes a file once (a second #include of it reuses the tokens); `library` marks a file found
+    /// through the library paths.
+    std::optional<std::uint32_t> load_file(const std::filesystem::path& path, bool library, std::string& error);
+    /// Where a file named in the scene is looked for, in order: the reading file's folder, then the library paths;
+    /// a name without extension is then tried with `extension` in the same places.
+    std::vector<std::filesystem::path> search_candidates(const std::filesystem::path& requested,
+                                                         const char* extension) const;
+
+    /// A diagnostic at `at` with the source line and the include/macro notes.
+    Diagnostic make_diagnostic(Severity s, const Token& at, std::string message) const;
+    /// Records a diagnostic; ends the parse at the error limit.
+    void report(Diagnostic d);
+    /// Reports an error at `at` and abandons the statement.
+    [[noreturn]] void fail(const Token& at, std::string message);
+    /// Reports a warning at `at`.
+    void warn(const Token& at, std::string message);
+    /// Warns that `feature` is not rendered yet, once per parse, deferred while a declaration is read.
+    void warn_unsupported(const Token& at, const std::string& feature);
+    /// A warning shown once per parse for each distinct message.
+    void warn_once(const Token& at, const std::string& message);
+    /// Reports an unsupported-feature warning unless the same one was shown already.
+    void emit_feature_warning(Diagnostic d);
+
+    /// The deepest nesting of blocks and expressions the descent follows.
+    static constexpr std::size_t k_max_nesting = 400;
+    /// The most stack the descent may use: frames are larger in sanitizer and debug builds, where 400 levels
+    /// can exceed the default 8 MiB stack, so the guard also measures the stack itself.
+    static constexpr std::ptrdiff_t k_max_stack_bytes = std::ptrdiff_t{4} << 20;
+    /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
+    class NestingGuard {
+    public:
+        /// Counts one level of the descent's own nesting at `at`.
+        NestingGuard(SourceStream& stream, const Token& at) : NestingGuard(stream, at, stream.m_nesting) {}
+        /// Counts in `depth` instead of the descent's own counter.
+        NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth);
+        ~NestingGuard() { --m_depth; }
+        NestingGuard(const NestingGuard&) = delete;
+        NestingGuard& operator=(const NestingGuard&) = delete;
+
+    private:
+        SourceStream& m_stream;
+        std::size_t& m_depth;
+    };
+    /// POV-Ray compat: while a directive reads its operands (a #declare's value included) and while a float,
+    /// vector or colour value reads its operators, the brace depth they started at; a directive met at that depth
+    /// ends what is being read. Blocks opened inside (objects, pigments, ...) and the inside of an operand ('(',
+    /// '<', a call: k_directives_run) run directives as they come.
+    static constexpr std::size_t k_directives_run = static_cast<std::size_t>(-1);
+    /// Sets a variable for a scope and puts its old value back at the end, or earlier through restore().
+    class ScopedSetting {
+    public:
+        /// Sets `setting` to `value` until the end of the scope.
+        ScopedSetting(std::size_t& setting, std::size_t value) : m_setting(setting), m_old(setting) {
+            setting = value;
+        }
+        ~ScopedSetting() { restore(); }
+        ScopedSetting(const ScopedSetting&) = delete;
+        ScopedSetting& operator=(const ScopedSetting&) = delete;
+        /// Puts the old value back now.
+        void restore() { m_setting = m_old; }
+
+    private:
+        std::size_t& m_setting;
+        std::size_t m_old;
+    };
+
+    std::size_t m_nesting = 0;
+    std::size_t m_directive_ends_value_at = k_directives_run;
+    std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
+    const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
+
+    const ParseOptions& m_options;
+    std::vector<std::unique_ptr<SourceFile>> m_files;
+    std::map<std::string, std::uint32_t> m_file_index;  ///< resolved path -> index, so re-includes do not re-lex
+    std::uint32_t m_file = 0;
+    std::size_t m_pos = 0;
+    std::size_t m_brace_depth = 0;  ///< '{' minus '}' consumed so far, for error recovery
+    std::vector<Token> m_open_braces;  ///< the '{' tokens not closed yet, innermost last
+    std::vector<Frame> m_frames;
+    double m_version = 3.7;
+    bool m_version_given = false;  ///< a #version was read (in any file): POV-Ray then stops assuming 3.62
+
+    std::vector<Diagnostic> m_diagnostics;
+    std::vector<Diagnostic> m_warnings;  ///< the warnings among them, which the scene keeps
+    std::size_t m_errors = 0;
+    std::set<std::string> m_warned_features;
+    /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
+    /// so unused declarations of include files cost nothing.
+    std::unordered_map<std::string, std::vector<Diagnostic>> m_deferred_warnings;
+    std::vector<std::vector<Diagnostic>> m_declaring;  ///< warnings collected by the declarations being parsed
+};
+
+}  // namespace wardray::parser
