@@ -961,11 +961,11 @@ def failure_group(rec, lookup):
         return "macro called with the wrong number of arguments", where
     m = re.search(r"undeclared identifier '(\w+)'", msg)
     if m:
+        name = m.group(1)
         text = masked(lookup.file_text(loc["file"])) if lookup else ""
         head = "\n".join(text.splitlines()[:loc["line"] - 1])
-        decl = [x.end() for x in re.finditer(rf"#\s*local\s+{re.escape(m.group(1))}\b", head)]
-        if decl and re.search(r"#\s*end\b", head[decl[-1]:]):
-            return "#local declared inside #for/#while/#if, used after its #end", where
+        if line.strip() == name and re.search(rf"#\s*local\s+{re.escape(name)}\b", head):
+            return "macro returning one of its #local identifiers (the identifier alone before #end)", where
         return "undeclared identifier", where
     m = re.search(r"in (\w+) but found", msg) or re.search(r"expected an? (\w+) item but found", msg)
     if m and label is not None:
@@ -1531,6 +1531,11 @@ def main():
             if rid not in lookups:
                 lookups[rid] = SourceLookup(folders.get(rid))
             return lookups[rid]
+        for rec in current:
+            if rec["category"] == "blocked":
+                # The construct, not wardray's message, which quotes the scene's own names.
+                group, where = failure_group(rec, lookup_for(rec))
+                rec["reason"] = group + (f" at {where}" if where else "")
         extra = corpus_sections(current, lookup_for, memory_limit)
         census.work_root.rmdir() if census.work_root.is_dir() and not any(census.work_root.iterdir()) else None
     write_report(pathlib.Path(args.out), current, missing, info, extra)

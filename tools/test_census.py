@@ -169,7 +169,7 @@ class FailureGroupTest(unittest.TestCase):
             '#include "x.inc";\n'
             "#macro M(A, B) A #end\n"
             "M(1, 2, )\n"
-            "#for (I, 0, 2)\n  #local Sum = I;\n#end\nSum\n")
+            "#macro F()\n#for (I, 0, 2)\n  #local Sum = I;\n#end\n  Sum\n#end\n")
         (self.repo / "sub" / "inc" / "a.inc").write_text('#include "inc/b.inc"\n')
         (self.repo / "sub" / "inc" / "b.inc").write_text("\n")
         self.look = census.SourceLookup(self.repo, self.lib)
@@ -203,9 +203,9 @@ class FailureGroupTest(unittest.TestCase):
                          "#include \"...\"; (a ';' after #include)")
         self.assertEqual(self.group("macro 'M' takes 2 parameter(s) but 3 were given", line=5)[0],
                          "macro call with an empty last argument ', )'")
-        self.assertEqual(self.group("undeclared identifier 'Sum'", line=9)[0],
-                         "#local declared inside #for/#while/#if, used after its #end")
-        self.assertEqual(self.group("undeclared identifier 'Other'", line=9)[0], "undeclared identifier")
+        self.assertEqual(self.group("undeclared identifier 'Sum'", line=10)[0],
+                         "macro returning one of its #local identifiers (the identifier alone before #end)")
+        self.assertEqual(self.group("undeclared identifier 'Other'", line=10)[0], "undeclared identifier")
 
     def test_directives_and_keywords(self):
         self.assertEqual(self.group("'declare' cannot start a statement")[0], "declare without #")
