@@ -5,6 +5,8 @@
     tools/census.py build/wardray --scenes 'objects/*' # only these (the report still lists every scene)
     tools/census.py build/wardray --fresh              # forget the cached results and redo everything
     tools/census.py build/wardray --check objects/blob.pov ... --expect-match   # the CTest mode
+    tools/census.py build/wardray --corpus /work/wild --manifest /work/wild/MANIFEST.tsv --report docs/reports/wild.md
+                                                      # another corpus (issue 23's scenes from the wild)
 
 Each scene is rendered by both programs at 120x90, `-A`, linear Radiance HDR (`+FH`), one thread each (`+WT1`),
 each bounded at 60 s, in a scratch copy of the scene's folder (POV-Ray writes only below its current folder, and
@@ -24,9 +26,21 @@ Scenes with an `.ini` beside them (animations, the portfolio, benchmark, desk) a
 way (the portfolio scenes index arrays by frame_number), it renders the .ini's first frame instead (`scene.ini
 +SF<n> +EF<n>` before the census's own options, which win); wardray reads no .ini and has no animation options,
 so it gets only the .ini's `Declare=` values, and the scene carries a note saying so.
+
+With `--corpus ROOT --manifest MANIFEST.tsv`, the scenes are the manifest's rows instead (`path` below ROOT, whose
+first folder is the scene's repository, `repository`, `commit`), with their own results folder (default
+`build/census-<corpus name>/`) and report. Scenes are named by a neutral id, `r<NN>/<path in its repository>`
+(repositories numbered in the manifest's order), never by anything copied from them. Each render runs in a scratch
+copy of the scene's whole repository under /tmp (POV-Ray's povray.conf permits reads below /tmp and the current
+folder only), in the scene's folder, and is measured with /usr/bin/time (wall time, peak memory) and each program's
+own parse time (POV-Ray's statistics, wardray's `--stats`); wardray's address space is bounded (`--memory-limit`)
+so that a runaway parse cannot exhaust the machine. The report adds why scenes do not parse (the failures grouped
+by the construct that fails), the silent differences grouped by their hints, and the scenes where wardray takes
+more than twice POV-Ray's parse time or peak memory.
 """
 import argparse
 import concurrent.futures
+import csv
 import datetime
 import fcntl
 import fnmatch
@@ -36,6 +50,7 @@ import json
 import math
 import os
 import pathlib
+import posixpath
 import re
 import shlex
 import shutil
@@ -357,20 +372,149 @@ def wardray_diagnostics(output):
     return error, features, warnings
 
 
+def read_time_file(path):
+    """{wall, peak_kb[, signal]} from `/usr/bin/time -f '%e %M' -o path`; {} when it wrote nothing (killed)."""
+    out = {}
+    try:
+        lines = path.read_text(errors="replace").splitlines()
+    except OSError:
+        return out
+    for line in lines:
+        m = re.match(r"Command terminated by signal (\d+)", line)
+        if m:
+            out["signal"] = int(m.group(1))
+        m = re.fullmatch(r"\s*([\d.]+) (\d+)\s*", line)
+        if m:
+            out.update(wall=float(m.group(1)), peak_kb=int(m.group(2)))
+    return out
+
+
+def povray_parse_seconds(output):
+    """POV-Ray's own parse time from its statistics ("Parse Time: ... (0.123 seconds)"), or None."""
+    m = re.search(r"Parse Time:.*\(\s*([\d.]+) seconds\)", output)
+    return float(m.group(1)) if m else None
+
+
+def wardray_parse_seconds(stats_path):
+    try:
+        return float(json.loads(stats_path.read_text())["phases"]["parse"])
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+POVRAY_INCLUDE = pathlib.Path("/usr/share/povray-3.7/include")
+
+
+def error_location(output, repo, cwd):
+    """{file, line, col, message} of wardray's first error, the file relative to the repository copy `repo`
+    (`<povray include>/x.inc` for POV-Ray's library), or None."""
+    for line in output.splitlines():
+        m = re.match(r"^(.*?):(\d+):(\d+): error: (.*)$", line.strip())
+        if not m:
+            continue
+        file = pathlib.Path(m.group(1))
+        full = pathlib.Path(os.path.normpath(file if file.is_absolute() else pathlib.Path(cwd) / file))
+        for base, prefix in ((pathlib.Path(repo), ""), (POVRAY_INCLUDE, "<povray include>/")):
+            try:
+                shown = prefix + full.relative_to(base).as_posix()
+                break
+            except ValueError:
+                continue
+        else:
+            shown = file.name
+        return {"file": shown, "line": int(m.group(2)), "col": int(m.group(3)), "message": m.group(4).strip()}
+    return None
+
+
+class Manifest:
+    """A corpus of scenes listed in a manifest (issue 23's scenes from the wild), as the census sees it.
+
+    MANIFEST.tsv has a header line and tab-separated columns, at least `path` (below the corpus root; its first
+    folder holds the scene's repository) and `repository` (owner/name); `commit` and the rest are kept as given.
+    A scene's neutral id is `r<NN>/<path in the repository>`, the repositories numbered from 01 in the order they
+    first appear in the manifest."""
+
+    def __init__(self, root, manifest):
+        self.root = pathlib.Path(root).resolve()
+        self.manifest = pathlib.Path(manifest)
+        with self.manifest.open(newline="", errors="replace") as f:
+            self.rows = [r for r in csv.DictReader(f, delimiter="\t") if r.get("path")]
+        self.repos = {}  # repository folder below the root -> rNN
+        self.by_path = {}
+        for row in self.rows:
+            folder = row["path"].split("/", 1)[0]
+            self.repos.setdefault(folder, f"r{len(self.repos) + 1:02d}")
+            self.by_path[row["path"]] = row
+        self.digits = max(2, len(str(len(self.repos))))
+
+    def scenes(self):
+        return [self.root / r["path"] for r in self.rows]
+
+    def path(self, scene):
+        """The scene's path below the corpus root, as the manifest writes it."""
+        return pathlib.Path(scene).resolve().relative_to(self.root).as_posix()
+
+    def repo_folder(self, scene):
+        return self.root / self.path(scene).split("/", 1)[0]
+
+    def neutral(self, corpus_path):
+        """`a+b/sub/x.pov` -> `r07/sub/x.pov`."""
+        folder, _, rest = corpus_path.partition("/")
+        return f"{self.repos.get(folder, folder)}/{rest}"
+
+    def rel(self, scene):
+        return self.neutral(self.path(scene))
+
+    def row(self, scene):
+        return self.by_path.get(self.path(scene), {})
+
+
 class Census:
-    def __init__(self, wardray, povray, results, examples=EXAMPLES, size=SIZE, timeout=TIMEOUT):
+    def __init__(self, wardray, povray, results, examples=EXAMPLES, size=SIZE, timeout=TIMEOUT, corpus=None,
+                 work_root=None, memory_limit=None):
+        """`corpus`: a Manifest, or None for the example scenes below `examples`. With a corpus, renders run in
+        copies of the scene's repository below `work_root` and are timed (wall, peak memory, parse time), and
+        wardray's address space is bounded at `memory_limit` bytes (None: unbounded)."""
         self.ward, self.pov = wardray, povray
         self.results = pathlib.Path(results)
         self.examples = pathlib.Path(examples)
         self.size, self.timeout = size, timeout
+        self.corpus = corpus
+        self.timed = corpus is not None
+        self.memory_limit = memory_limit
+        self.work_root = pathlib.Path(work_root) if work_root else self.results / "work"
         self.runner = Runner()
         renderers.THREADS = 1  # the commands of tools/compare/renderers.py read this when they are built
         self.ward_digest = wardray.digest()
-        for sub in ("povray", "images", "work"):
+        for sub in ("povray", "images"):
             (self.results / sub).mkdir(parents=True, exist_ok=True)
+        self.work_root.mkdir(parents=True, exist_ok=True)
 
     def rel(self, scene):
+        if self.corpus:
+            return self.corpus.rel(scene)
         return scene.relative_to(self.examples).as_posix()
+
+    def scratch(self, scene, suffix):
+        """(the scratch folder to delete afterwards, the folder to render in) for one render of the scene."""
+        work = self.work_root / (self.slug(self.rel(scene)) + suffix)
+        if not self.corpus:
+            return work, scratch_copy(scene, work)
+        if work.exists():
+            shutil.rmtree(work)
+        work.mkdir(parents=True)
+        repo = self.corpus.repo_folder(scene)
+        shutil.copytree(repo, work / "repo", symlinks=True)
+        return work, work / "repo" / scene.resolve().parent.relative_to(repo.resolve())
+
+    def timed_command(self, cmd, work):
+        """The command run under /usr/bin/time (wall seconds, peak resident kilobytes to work/time.txt), and for
+        wardray in a bounded address space."""
+        if not self.timed:
+            return cmd
+        if self.memory_limit and cmd[0] == str(self.ward.exe):
+            cmd = ["prlimit", f"--as={int(self.memory_limit)}", "--", *cmd]
+        return ["/usr/bin/time", "-o", str(work / "time.txt"), "-f", "%e %M", *cmd]
 
     @staticmethod
     def slug(rel):
@@ -385,8 +529,11 @@ class Census:
         scene_hash = hashlib.sha256(json.dumps(files).encode()).hexdigest()
         common = {"scene": self.rel(scene), "files": scene_hash, "size": list(self.size), "timeout": self.timeout,
                   "threads": 1, "record": RECORD_VERSION}
+        if self.corpus:
+            common.update(corpus=self.corpus.row(scene).get("commit"), timed=True)
         pov = hashlib.sha256(json.dumps({**common, "povray": self.pov.version}, sort_keys=True).encode()).hexdigest()
-        rec = hashlib.sha256(json.dumps({**common, "povray_key": pov, "wardray": self.ward_digest},
+        extra = {"memory_limit": self.memory_limit} if self.corpus else {}
+        rec = hashlib.sha256(json.dumps({**common, **extra, "povray_key": pov, "wardray": self.ward_digest},
                                         sort_keys=True).encode()).hexdigest()
         return pov, rec, files
 
@@ -412,18 +559,21 @@ class Census:
         return result, image
 
     def _povray_once(self, scene, image, ini):
-        work = scratch_copy(scene, self.results / "work" / (self.slug(self.rel(scene)) + ".povray"))
-        cmd = self.pov.command(scene.name, "census.hdr", self.size, scene.parent)
+        root, work = self.scratch(scene, ".povray")
+        # In a corpus, the copy of the scene's folder: POV-Ray may not read the original.
+        cmd = self.pov.command(scene.name, "census.hdr", self.size, work if self.corpus else scene.parent)
         if ini:
             # The .ini first, so the census's options after it win; one frame of its animation.
             cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
-        r = self.runner.run(cmd, work, self.timeout)
+        r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)
         output = r["stdout"] + r["stderr"]
         # An animation frame is written as census<frame number>.hdr.
         written = sorted(work.glob("census*.hdr"))
         if written and not (work / "census.hdr").exists():
             written[0].rename(work / "census.hdr")
         result = {"seconds": r["seconds"], "warnings": povray_warnings(output), "command": cmd, "ini": ini}
+        if self.timed:
+            result["resources"] = {**read_time_file(root / "time.txt"), "parse": povray_parse_seconds(output)}
         if r["timed_out"]:
             result.update(status="timeout", error=f"timed out after {self.timeout} s")
         elif r["rc"] != 0 or not (work / "census.hdr").is_file():
@@ -432,7 +582,7 @@ class Census:
         else:
             result["status"] = "ok"
             shutil.move(str(work / "census.hdr"), image)
-        shutil.rmtree(work, ignore_errors=True)
+        shutil.rmtree(root, ignore_errors=True)
         return result
 
     def wardray_command(self, scene_name, output, declares=()):
@@ -441,12 +591,21 @@ class Census:
                 f"+WT{renderers.THREADS}", *(f"Declare={d}" for d in declares)]
 
     def wardray_render(self, scene, image, ini):
-        work = scratch_copy(scene, self.results / "work" / (self.slug(self.rel(scene)) + ".wardray"))
+        root, work = self.scratch(scene, ".wardray")
         cmd = self.wardray_command(scene.name, "census.hdr", ini["declares"] if ini else ())
-        r = self.runner.run(cmd, work, self.timeout)
-        error, features, warnings = wardray_diagnostics(r["stdout"] + "\n" + r["stderr"])
+        if self.timed:
+            cmd += ["--stats", str(root / "stats.json")]
+        r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)
+        output = r["stdout"] + "\n" + r["stderr"]
+        error, features, warnings = wardray_diagnostics(output)
         result = {"exit": r["rc"], "seconds": r["seconds"], "features": features, "warnings": warnings[:20],
                   "error": error, "command": cmd}
+        if self.timed:
+            result["resources"] = {**read_time_file(root / "time.txt"), "parse": wardray_parse_seconds(
+                root / "stats.json")}
+            result["location"] = error_location(output, root / "repo", work)
+            if "signal" in result["resources"] and r["rc"] is not None:
+                result["exit"] = r["rc"] = -result["resources"]["signal"]  # /usr/bin/time's status is 128 + signal
         if r["timed_out"]:
             result.update(status="timeout", error=f"timed out after {self.timeout} s")
         elif r["rc"] != 0:
@@ -456,7 +615,7 @@ class Census:
         else:
             result["status"] = "ok"
             shutil.move(str(work / "census.hdr"), image)
-        shutil.rmtree(work, ignore_errors=True)
+        shutil.rmtree(root, ignore_errors=True)
         return result
 
     def measure(self, scene, fresh=False):
@@ -635,6 +794,333 @@ def cause_group(rec):
     return CAUSE_GROUPS[3]
 
 
+# ---------------------------------------------------------------------------------------------------------------
+# Why scenes do not parse, and what silent differences have in common (a corpus's report).
+
+OBJECT_WORDS = {"union", "difference", "intersection", "merge", "object", "sphere", "box", "cylinder", "cone",
+                "plane", "torus", "quadric", "quartic", "poly", "cubic", "polynomial", "mesh", "mesh2", "lathe", "sor",
+                "prism", "text", "blob", "superellipsoid", "height_field", "isosurface", "parametric", "disc",
+                "triangle", "smooth_triangle", "polygon", "julia_fractal", "sphere_sweep", "bicubic_patch", "ovus",
+                "lemon", "light_source", "light_group"}
+ITEM_WORDS = {"pigment", "texture", "finish", "normal", "interior", "material", "media", "density", "color_map",
+              "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map", "density_map", "camera",
+              "spline", "function", "array", "transform"}
+COLOUR_WORDS = {"color", "colour", "rgb", "rgbf", "rgbt", "rgbft", "srgb", "srgbf", "srgbt", "srgbft", "red", "green",
+                "blue"}
+
+
+class SourceLookup:
+    """What a failure's grouping needs from the scene's sources: the text of a line, and the kind of value an
+    identifier is declared as (read from the files of the scene's repository, then POV-Ray's include files).
+    Used to name the failing construct only; nothing of the text goes into the report."""
+
+    SOURCE_SUFFIXES = {".pov", ".inc", ".mcr", ".povray"}
+
+    def __init__(self, repo, library=POVRAY_INCLUDE):
+        self.repo = pathlib.Path(repo) if repo else None
+        self.library = pathlib.Path(library) if library else None
+        self._texts = None
+
+    def texts(self):
+        """[(path, masked text)] of the repository's scene files, then the library's."""
+        if self._texts is None:
+            self._texts = []
+            for base in (self.repo, self.library):
+                if base is None or not base.is_dir():
+                    continue
+                for f in sorted(base.rglob("*")):
+                    if f.suffix.lower() in self.SOURCE_SUFFIXES and f.is_file():
+                        self._texts.append((f, masked(f.read_text(errors="replace"))))
+        return self._texts
+
+    def line(self, file, number):
+        """Line `number` (from 1) of `file` (relative to the repository, or `<povray include>/x.inc`), or ''."""
+        if file.startswith("<povray include>/"):
+            path = self.library / file[len("<povray include>/"):] if self.library else None
+        else:
+            path = self.repo / file if self.repo else None
+        try:
+            return path.read_text(errors="replace").splitlines()[number - 1]
+        except (OSError, IndexError, AttributeError):
+            return ""
+
+    def file_text(self, file):
+        try:
+            return (self.repo / file).read_text(errors="replace")
+        except (OSError, TypeError):
+            return ""
+
+    def declared(self, name, depth=0):
+        """The kind `name` is declared as: 'pigment', 'texture', 'object', 'colour', 'float', 'vector', 'macro',
+        'string', ... or None when no declaration is found."""
+        if not re.fullmatch(r"[A-Za-z_]\w*", name) or depth > 3:
+            return None
+        decl = re.compile(rf"#\s*(?:declare|local)\s+{re.escape(name)}\s*=\s*([A-Za-z_]\w*|<|\"|[-+\d.(])")
+        macro = re.compile(rf"#\s*macro\s+{re.escape(name)}\s*\(")
+        for _, text in self.texts():
+            if macro.search(text):
+                return "macro"
+            m = decl.search(text)
+            if not m:
+                continue
+            word = m.group(1)
+            if word in ITEM_WORDS:
+                return word.replace("colour", "color")
+            if word in COLOUR_WORDS:
+                return "color"
+            if word in OBJECT_WORDS:
+                return "object"
+            if word == "<":
+                return "vector"
+            if word == '"' or word in ("concat", "str", "chr", "substr", "strupr", "strlwr"):
+                return "string"
+            if re.fullmatch(r"[-+\d.(]", word) or word in ("int", "floor", "ceil", "abs", "sqrt", "pow", "sin",
+                                                          "cos", "rand", "seed", "true", "false", "yes", "no",
+                                                          "on", "off", "pi", "clock", "vlength", "vdot"):
+                return "float"
+            return self.declared(word, depth + 1) or "identifier"
+        return None
+
+
+def token_label(token, lookup):
+    """How a failing token is named in a group: a declared identifier by its kind ('PigmentIdentifier'), a number
+    as <number>, a keyword or punctuation as itself."""
+    if re.fullmatch(r"[-+]?[\d.]+(e[-+]?\d+)?", token, re.I):
+        return "<number>"
+    kind = lookup.declared(token) if lookup else None
+    if kind:
+        return kind.capitalize().replace("_map", "Map") + "Identifier"
+    if re.fullmatch(r"[A-Z_]\w*", token) and token != token.lower():
+        return "Identifier"  # capitalised and declared nowhere we can see: an identifier, not a keyword
+    return token
+
+
+DIRECTIVES = {"declare", "local", "include", "macro", "if", "ifdef", "ifndef", "else", "end", "while", "for",
+              "switch", "case", "break", "default", "undef", "version", "debug", "warning", "error", "fopen",
+              "fclose", "read", "write", "range", "elseif"}
+
+
+def failure_group(rec, lookup):
+    """(construct, location) of a blocked scene: what fails, named from wardray's first error message (its text
+    and the token it names, the token by its declared kind) and the source line where it points.
+
+    Known constructs get a short name ("texture { PigmentIdentifier }", "#undef A[i]", "declare without #",
+    "nested #include path", ...); any other message is its text with identifiers, numbers and names replaced by
+    their kinds, so that scenes failing the same way fall in one group."""
+    w = rec["wardray"]
+    loc = w.get("location")
+    where = f"{loc['file']}:{loc['line']}" if loc else ""
+    if w["status"] == "timeout":
+        return f"timed out after {TIMEOUT} s (parse or render)", where
+    resources = w.get("resources") or {}
+    if not loc:
+        err = w.get("error") or ""
+        if re.search(r"bad_alloc|out of memory|cannot allocate", err, re.I):
+            return "out of memory (address space bounded)", where
+        if w.get("exit") is not None and w["exit"] < 0:
+            return f"crash ({exit_text(w['exit'])})", where
+        if resources.get("signal"):
+            return f"crash (killed by signal {resources['signal']})", where
+        return re.sub(r"\d+", "<n>", err) or "no error message", where
+    msg = loc["message"]
+    line = lookup.line(loc["file"], loc["line"]) if lookup else ""
+    before = line[:max(loc["col"] - 1, 0)]
+    found = re.search(r"(?:found|but found) '([^']*)'", msg)
+    token = found.group(1) if found else None
+    label = token_label(token, lookup) if token is not None else None
+
+    if re.search(r"#\s*undef\b", before):
+        return "#undef A[i]", where
+    if re.match(r"\s*#\s*include\b", line) and token == ";":
+        return "#include \"...\"; (a ';' after #include)", where
+    m = re.search(r"cannot open include file '([^']+)'", msg)
+    if m:
+        name = m.group(1)
+        scene_dir = posixpath.dirname(rec["scene"].split("/", 1)[-1])
+        if lookup and lookup.repo and posixpath.dirname(loc["file"]) != scene_dir and \
+                (lookup.repo / scene_dir / name).is_file():
+            return "nested #include path (relative to the scene's folder, not the including file's)", where
+        return "#include of a file not found", where
+    m = re.search(r"'(\w+)' cannot start a statement", msg)
+    if m:
+        word = m.group(1)
+        return (f"{word} without #" if word in DIRECTIVES else f"statement starting with '{token_label(word, lookup)}'"), where
+    m = re.search(r"'(\w+)' is a reserved word and cannot be declared", msg)
+    if m:
+        return f"#declare of a reserved word ({m.group(1)})", where
+    m = re.search(r"'(\w+)' (?:is not supported yet|is not implemented)", msg)
+    if m:
+        return f"{m.group(1)}", where
+    m = re.search(r"'(\w+)' cannot stand alone here", msg)
+    if m or (label == "ObjectIdentifier" and "object modifier" in msg):
+        return "ObjectIdentifier without object { }", where
+    m = re.search(r"macro '\w+' takes (\d+) parameter\(s\) but (\d+) were given", msg)
+    if m:
+        if re.search(r",\s*\)", line):
+            return "macro call with an empty last argument ', )'", where
+        return "macro called with the wrong number of arguments", where
+    m = re.search(r"undeclared identifier '(\w+)'", msg)
+    if m:
+        name = m.group(1)
+        text = masked(lookup.file_text(loc["file"])) if lookup else ""
+        head = "\n".join(text.splitlines()[:loc["line"] - 1])
+        if line.strip() == name and re.search(rf"#\s*local\s+{re.escape(name)}\b", head):
+            return "macro returning one of its #local identifiers (the identifier alone before #end)", where
+        return "undeclared identifier", where
+    m = re.search(r"in (\w+) but found", msg) or re.search(r"expected an? (\w+) item but found", msg)
+    if m and label is not None:
+        return f"{m.group(1)} {{ {label} }}", where
+    m = re.search(r"expected an object in '(\w+)' but found", msg)
+    if m and label is not None:
+        return f"{m.group(1)} {{ {label} }}", where
+    m = re.search(r"expected an? (\w+) pattern or modifier but found", msg)
+    if m and label is not None:
+        return f"{m.group(1)} {{ ... {label} }}", where
+    generic = msg
+    if token is not None:
+        generic = generic.replace(f"'{token}'", f"'{label}'")
+    generic = re.sub(r"'[A-Za-z_]\w*'", lambda t: "'" + token_label(t.group(0)[1:-1], lookup) + "'", generic)
+    generic = re.sub(r"(?<![\w'])\d+(\.\d+)?(?![\w'])", "<n>", generic)
+    return generic, where
+
+
+def silent_group(rec):
+    """A silent difference's group: the scene-text hints on gamma and #version."""
+    h = [x for x in hints(rec) if x.startswith(("assumed_gamma", "#version", "no assumed_gamma"))]
+    return "; ".join(h) or "no gamma or #version hint (assumed_gamma 1, #version 3.7)"
+
+
+def grouped(records, key):
+    """[(group, [records])] worst group first: the most scenes, then by name."""
+    groups = {}
+    for r in records:
+        groups.setdefault(key(r), []).append(r)
+    return sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0]))
+
+
+PARSE_FLOOR = 0.05  # seconds: below this in wardray, a parse-time ratio is noise (POV-Ray reports milliseconds)
+
+
+def mb(kb):
+    return "" if kb is None else f"{kb / 1024:.0f}"
+
+
+def ratio(a, b):
+    return None if a is None or b is None or b <= 0 else a / b
+
+
+def resource_outliers(records):
+    """[(record, reasons)] of scenes where wardray takes more than twice POV-Ray's parse time (wardray's at least
+    PARSE_FLOOR s) or more than twice its peak memory, or times out while POV-Ray renders; worst first."""
+    out = []
+    for r in records:
+        if r["povray"]["status"] != "ok":
+            continue
+        p, w = r["povray"].get("resources") or {}, r["wardray"].get("resources") or {}
+        reasons = []
+        if r["wardray"]["status"] == "timeout":
+            reasons.append(f"wardray timed out after {TIMEOUT} s")
+        pr = ratio(w.get("parse"), p.get("parse") if p.get("parse") else 0.001)
+        if pr is not None and pr > 2 and w["parse"] >= PARSE_FLOOR:
+            reasons.append(f"parse {pr:.1f}x")
+        mr = ratio(w.get("peak_kb"), p.get("peak_kb"))
+        if mr is not None and mr > 2:
+            reasons.append(f"memory {mr:.1f}x")
+        if reasons:
+            out.append((r, reasons))
+
+    def worst(item):
+        r, _ = item
+        p, w = r["povray"].get("resources") or {}, r["wardray"].get("resources") or {}
+        timeout = r["wardray"]["status"] == "timeout"
+        return (not timeout, -max(ratio(w.get("parse"), max(p.get("parse") or 0, 0.001)) or 0,
+                                  ratio(w.get("peak_kb"), p.get("peak_kb")) or 0), r["scene"])
+    return sorted(out, key=worst)
+
+
+def corpus_sections(records, lookup_for, memory_limit=None):
+    """The corpus report's own sections: why scenes do not parse, silent differences by hint, and parse time and
+    peak memory against POV-Ray's. `lookup_for(record)` gives the SourceLookup of the scene's repository."""
+    lines = []
+    ok_pov = [r for r in records if r["povray"]["status"] == "ok"]
+    blocked = [r for r in records if r["category"] == "blocked"]
+    parsed = [r for r in ok_pov if r["wardray"]["status"] == "ok"]
+    lines += ["## Why scenes do not parse", "",
+              f"{len(parsed)} of the {len(ok_pov)} scenes POV-Ray renders ({pct(len(parsed) / max(len(ok_pov), 1), 0)}) "
+              f"parse and render in wardray; {len(blocked)} are blocked. They are grouped by the construct named by "
+              "wardray's first error (its message and the token it names, a declared identifier by its kind, and "
+              "the source line it points at), worst group first; the example is the group's first scene and the "
+              "error's location (`r<NN>/` the repository, then the file's path in it).", "",
+              "| construct | scenes | example scene | at |", "|---|---:|---|---|"]
+    for group, rs in grouped(blocked, lambda r: failure_group(r, lookup_for(r))[0]):
+        first = sorted(rs, key=lambda r: r["scene"])[0]
+        where = failure_group(first, lookup_for(first))[1]
+        if where and not where.startswith("<"):
+            where = first["scene"].split("/", 1)[0] + "/" + where
+        lines.append(f"| {cell(group)} | {len(rs)} | `{cell(first['scene'])}` | {('`' + cell(where) + '`') if where else ''} |")
+    lines.append("")
+
+    silent = sorted((r for r in records if r["category"] == "differ-silently"), key=severity)
+    lines += ["## Silent differences by hint", "",
+              f"{len(silent)} scenes differ silently, grouped by what the scene text says about gamma "
+              "(`assumed_gamma`, `#version`; wardray does not apply POV-Ray's gamma model yet), worst group first; "
+              "the example is the group's worst scene.", "",
+              "| hints | scenes | example scene | its rRMSE |", "|---|---:|---|---:|"]
+    for group, rs in grouped(silent, silent_group):
+        first = sorted(rs, key=severity)[0]
+        lines.append(f"| {cell(group)} | {len(rs)} | `{cell(first['scene'])}` | {pct(first['metrics']['rrmse'])} |")
+    lines.append("")
+
+    timed = [r for r in ok_pov if r["wardray"]["status"] == "ok" and (r["povray"].get("resources") or {}).get(
+        "peak_kb") and (r["wardray"].get("resources") or {}).get("peak_kb")]
+    both_parse = [r for r in timed if r["wardray"]["status"] == "ok" and r["povray"]["resources"].get("parse")
+                  is not None and r["wardray"]["resources"].get("parse") is not None]
+
+    def median(xs):
+        xs = sorted(xs)
+        return xs[len(xs) // 2] if xs else None
+
+    mem = median([r["wardray"]["resources"]["peak_kb"] / r["povray"]["resources"]["peak_kb"] for r in timed])
+    parse_w = sum(r["wardray"]["resources"]["parse"] for r in both_parse)
+    parse_p = sum(r["povray"]["resources"]["parse"] for r in both_parse)
+    outliers = resource_outliers(records)
+    n_parse = sum(any(x.startswith("parse") for x in why) for _, why in outliers)
+    n_mem = sum(any(x.startswith("memory") for x in why) for _, why in outliers)
+    n_timeout = sum(any("timed out" in x for x in why) for _, why in outliers)
+    lines += ["## Parse time and peak memory against POV-Ray", "",
+              "Each process run under `/usr/bin/time -f '%e %M'` (wall seconds, peak resident memory) while "
+              "rendering the census's 120x90 image with one thread; parse time as each program reports it "
+              "(POV-Ray's statistics \"Parse Time\", wardray's `--stats` `phases.parse`). Single runs, two scenes "
+              "at once on a shared machine: ratios, not benchmarks. Peak memory is the whole process's (parse and "
+              f"render); wardray's address space is bounded at {info_gb(memory_limit)} so a runaway parse fails instead "
+              "of exhausting the machine.", "",
+              f"- Scenes both render, measured: {len(timed)}; median peak-memory ratio wardray/POV-Ray "
+              f"{mem:.2f}." if mem is not None else "- No scene with both measured.",
+              f"- Parse time summed over the {len(both_parse)} scenes both parse: POV-Ray {parse_p:.2f} s, wardray "
+              f"{parse_w:.2f} s.",
+              f"- More than twice POV-Ray's parse time (wardray's at least {PARSE_FLOOR:g} s): {n_parse} scenes; "
+              f"more than twice its peak memory: {n_mem}; wardray timed out where POV-Ray rendered: {n_timeout}.",
+              ""]
+    if outliers:
+        lines += ["| scene | POV-Ray parse s | wardray parse s | POV-Ray peak MB | wardray peak MB | POV-Ray wall s | "
+                  "wardray wall s | why listed |", "|---|---:|---:|---:|---:|---:|---:|---|"]
+        for r, why in outliers:
+            p, w = r["povray"].get("resources") or {}, r["wardray"].get("resources") or {}
+            lines.append(f"| `{cell(r['scene'])}` | {fmt3(p.get('parse'))} | {fmt3(w.get('parse'))} | "
+                         f"{mb(p.get('peak_kb'))} | {mb(w.get('peak_kb'))} | {secs(r['povray'].get('seconds'))} | "
+                         f"{secs(r['wardray'].get('seconds'))} | {cell(', '.join(why))} |")
+        lines.append("")
+    return lines
+
+
+def fmt3(x):
+    return "" if x is None else f"{x:.3f}"
+
+
+def info_gb(limit):
+    return f"{limit / 2**30:g} GiB" if limit else "no limit"
+
+
 def totals(records):
     counts = {c: 0 for c in CATEGORIES}
     for rec in records:
@@ -649,22 +1135,24 @@ def headline_numbers(records):
     return len(clean), sum(r["category"] == "match" for r in clean)
 
 
-def write_report(path, records, missing, info):
+def write_report(path, records, missing, info, extra=()):
+    """The report; `extra`, lines of more sections, goes before the table of every scene."""
     records = sorted(records, key=lambda r: r["scene"])
     counts = totals(records)
     stochastic = [r for r in records if r.get("stochastic")]
     clean, clean_match = headline_numbers(records)
     lines = [
-        "# Render census: POV-Ray's example scenes, POV-Ray 3.7 against wardray",
+        info.get("title", "# Render census: POV-Ray's example scenes, POV-Ray 3.7 against wardray"),
         "",
         f"Produced by `{info['command']}` on {info['date']}. {info['runtime']}",
         "",
         f"- wardray: {info['commit']}, binary `{info['wardray']}` (sha256 {info['digest'][:12]}).",
         f"- POV-Ray: {info['povray']}.",
-        f"- Scenes: the {info['total']} `.pov` files under `{info['examples']}` (Debian's povray-examples).",
+        info.get("scenes_line", f"- Scenes: the {info['total']} `.pov` files under `{info['examples']}` (Debian's "
+                 "povray-examples)."),
         f"- Each scene rendered by both programs at {SIZE[0]}x{SIZE[1]}, `-A`, linear HDR (`+FH`), one thread each "
         f"(`+WT1`), {info['jobs']} scenes at a time, each program bounded at {TIMEOUT} s, in a scratch copy of the "
-        "scene's folder. Scenes with an `.ini` beside them are rendered without it (one frame, clock 0, "
+        f"{info.get('scratch', 'scene' + chr(39) + 's folder')}. Scenes with an `.ini` beside them are rendered without it (one frame, clock 0, "
         "frame_number 0) by both; where POV-Ray fails that way (the portfolio), it renders the .ini's first frame "
         "(`scene.ini +SF<n> +EF<n>`, the census's options after it), and wardray, which reads no .ini and has no "
         "animation options, gets only the .ini's `Declare=` values; such scenes carry a note.",
@@ -743,6 +1231,7 @@ def write_report(path, records, missing, info):
             lines.append(f"| {cell(f)} | {n} | {alone.get(f, 0)} |")
         lines.append("")
 
+    lines += list(extra)
     lines += ["## Every scene", "",
               "| scene | parse | not rendered | rRMSE | bad | NaN/Inf | POV-Ray s | wardray s | stochastic | "
               "category | reason |",
@@ -863,7 +1352,10 @@ def shown_path(path):
         return str(path)
 
 
-def find_scenes(examples, patterns):
+def find_scenes(examples, patterns, corpus=None):
+    if corpus:
+        return [s for s in corpus.scenes() if not patterns or any(
+            fnmatch.fnmatch(corpus.rel(s), p) or fnmatch.fnmatch(corpus.path(s), p) for p in patterns)]
     scenes = sorted(examples.rglob("*.pov"), key=lambda p: p.relative_to(examples).as_posix())
     if patterns:
         scenes = [s for s in scenes if any(fnmatch.fnmatch(s.relative_to(examples).as_posix(), p)
@@ -876,8 +1368,15 @@ def main():
     ap.add_argument("wardray", help="the wardray binary, e.g. build/wardray")
     ap.add_argument("--povray", default="povray")
     ap.add_argument("--examples", default=str(EXAMPLES), help=f"the example scenes (default {EXAMPLES})")
-    ap.add_argument("--results", default=str(ROOT / "build" / "census"), help="cache, images and contact sheet")
-    ap.add_argument("--out", default=str(ROOT / "docs" / "reports" / "census.md"))
+    ap.add_argument("--corpus", metavar="ROOT", help="another corpus of scenes, listed by --manifest, instead of "
+                    "the examples (issue 23's scenes from the wild)")
+    ap.add_argument("--manifest", metavar="TSV", help="with --corpus: its MANIFEST.tsv (default ROOT/MANIFEST.tsv)")
+    ap.add_argument("--memory-limit", type=float, default=8.0, metavar="GIB",
+                    help="with --corpus: wardray's address space, GiB (default 8; 0 for none)")
+    ap.add_argument("--results", help="cache, images and contact sheet (default build/census, with --corpus "
+                    "build/census-<corpus folder name>)")
+    ap.add_argument("--out", "--report", dest="out", help="the report (default docs/reports/census.md, with "
+                    "--corpus docs/reports/<corpus folder name>.md)")
     ap.add_argument("--jobs", type=int, default=2, help="scenes rendered at once, one thread each (default 2)")
     ap.add_argument("--scenes", action="append", metavar="GLOB",
                     help="only scenes whose path below the examples matches (repeatable), e.g. 'objects/*'")
@@ -889,13 +1388,32 @@ def main():
     args = ap.parse_args()
 
     examples = pathlib.Path(args.examples)
+    corpus = None
+    if args.corpus:
+        corpus = Manifest(args.corpus, args.manifest or pathlib.Path(args.corpus) / "MANIFEST.tsv")
+        name = corpus.root.name
+        args.results = args.results or str(ROOT / "build" / f"census-{name}")
+        args.out = args.out or str(ROOT / "docs" / "reports" / f"{name}.md")
+    elif args.manifest:
+        ap.error("--manifest needs --corpus")
+    args.results = args.results or str(ROOT / "build" / "census")
+    args.out = args.out or str(ROOT / "docs" / "reports" / "census.md")
+    memory_limit = int(args.memory_limit * 2**30) if corpus and args.memory_limit > 0 else None
     ward = renderers.Wardray(args.wardray)
     pov = renderers.PovRay(args.povray)
 
+    def work_root(results):
+        # POV-Ray reads only below /tmp and its current folder: a corpus is rendered from copies below /tmp.
+        if not corpus:
+            return None
+        tag = hashlib.sha256(str(pathlib.Path(results).resolve()).encode()).hexdigest()[:8]
+        return pathlib.Path(tempfile.gettempdir()) / f"wardray-census-{corpus.root.name}-{tag}"
+
     if args.check:
         with tempfile.TemporaryDirectory(prefix="census-check-") as tmp:
-            census = Census(ward, pov, tmp, examples)
-            scenes = [examples / s for s in args.check]
+            census = Census(ward, pov, tmp, examples, corpus=corpus, work_root=work_root(tmp),
+                            memory_limit=memory_limit)
+            scenes = [examples / s for s in args.check] if not corpus else find_scenes(examples, args.check, corpus)
             failed = 0
             with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
                 for scene, rec in zip(scenes, pool.map(census.measure, scenes)):
@@ -912,12 +1430,15 @@ def main():
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:
         sys.exit(f"census: another census is running on {results}")
-    shutil.rmtree(results / "work", ignore_errors=True)  # scratch folders of renders an interrupt cut short
-    census = Census(ward, pov, results, examples)
+    census = Census(ward, pov, results, examples, corpus=corpus, work_root=work_root(results),
+                    memory_limit=memory_limit)
+    # Scratch folders of renders an interrupt cut short.
+    shutil.rmtree(census.work_root, ignore_errors=True)
+    census.work_root.mkdir(parents=True)
     jsonl = results / "results.jsonl"  # appended to; a scene's last line wins, so --fresh needs no deletion
     cached = load_results(jsonl)
-    all_scenes = find_scenes(examples, None)
-    chosen = find_scenes(examples, args.scenes)
+    all_scenes = find_scenes(examples, None, corpus)
+    chosen = find_scenes(examples, args.scenes, corpus)
     todo = [s for s in chosen if args.fresh or
             cached.get(census.rel(s), {}).get("key") != census.keys(s)[1]]
     print(f"census: {len(chosen)} scenes, {len(chosen) - len(todo)} cached, {len(todo)} to render, "
@@ -992,7 +1513,32 @@ def main():
             "commit": wardray_commit(ward.exe), "wardray": str(shown), "digest": census.ward_digest,
             "povray": pov.version, "examples": str(examples), "total": len(all_scenes), "jobs": args.jobs,
             "sheet": shown_path(results / "index.html")}
-    write_report(pathlib.Path(args.out), current, missing, info)
+    extra = []
+    if corpus:
+        info.update(
+            title=f"# Render census of a corpus: {corpus.root.name}, POV-Ray 3.7 against wardray",
+            scenes_line=f"- Scenes: the {info['total']} scenes of `{corpus.manifest}` ({len(corpus.repos)} public "
+                        "repositories; the corpus is not committed), each named by a neutral id, `r<NN>/<path in "
+                        "its repository>`, the repositories numbered in the manifest's order. Figures only: "
+                        "nothing of the scenes is copied here.",
+            scratch="scene's whole repository below /tmp, rendered in the scene's folder (POV-Ray with "
+                    "`+L<that folder>`, as the census gives it)")
+        folders = {rid: corpus.root / folder for folder, rid in corpus.repos.items()}
+        lookups = {}
+
+        def lookup_for(rec):
+            rid = rec["scene"].split("/", 1)[0]
+            if rid not in lookups:
+                lookups[rid] = SourceLookup(folders.get(rid))
+            return lookups[rid]
+        for rec in current:
+            if rec["category"] == "blocked":
+                # The construct, not wardray's message, which quotes the scene's own names.
+                group, where = failure_group(rec, lookup_for(rec))
+                rec["reason"] = group + (f" at {where}" if where else "")
+        extra = corpus_sections(current, lookup_for, memory_limit)
+        census.work_root.rmdir() if census.work_root.is_dir() and not any(census.work_root.iterdir()) else None
+    write_report(pathlib.Path(args.out), current, missing, info, extra)
     write_sheet(results / "index.html", current, info)
     counts = totals(current)
     print(f"census: {bar.done} scenes rendered in {progress.format_seconds(elapsed)}; "

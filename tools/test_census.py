@@ -146,5 +146,156 @@ class OutputTest(unittest.TestCase):
             self.assertEqual(census.load_results(p), {"a.pov": {"scene": "a.pov", "key": "2"}})
 
 
+def blocked(message, file="s.pov", line=1, col=1, scene="r01/s.pov", status="error"):
+    rec = record(ward=status)
+    rec["scene"] = scene
+    rec["wardray"]["location"] = {"file": file, "line": line, "col": col, "message": message} if message else None
+    return rec
+
+
+class FailureGroupTest(unittest.TestCase):
+    """The grouping of parse failures by construct (a corpus's "why scenes do not parse")."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        d = pathlib.Path(self.tmp.name)
+        self.repo, self.lib = d / "repo", d / "lib"
+        (self.repo / "sub" / "inc").mkdir(parents=True)
+        self.lib.mkdir()
+        (self.lib / "textures.inc").write_text("#declare Jade =\n  pigment { rgb 1 }\n#declare Mirror = finish { }\n")
+        (self.repo / "s.pov").write_text(
+            "#declare Thing = union { sphere { 0, 1 } }\n"
+            "#undef Arr[2]\n"
+            '#include "x.inc";\n'
+            "#macro M(A, B) A #end\n"
+            "M(1, 2, )\n"
+            "#macro F()\n#for (I, 0, 2)\n  #local Sum = I;\n#end\n  Sum\n#end\n")
+        (self.repo / "sub" / "inc" / "a.inc").write_text('#include "inc/b.inc"\n')
+        (self.repo / "sub" / "inc" / "b.inc").write_text("\n")
+        self.look = census.SourceLookup(self.repo, self.lib)
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def group(self, *args, **kw):
+        return census.failure_group(blocked(*args, **kw), self.look)
+
+    def test_identifiers_are_named_by_their_declared_kind(self):
+        self.assertEqual(self.look.declared("Jade"), "pigment")
+        self.assertEqual(self.look.declared("Thing"), "object")
+        self.assertEqual(self.look.declared("M"), "macro")
+        self.assertIsNone(self.look.declared("Nowhere"))
+        self.assertEqual(self.group("expected pigment, finish, normal or a transform in texture but found 'Jade'",
+                                    line=9, col=17), ("texture { PigmentIdentifier }", "s.pov:9"))
+        self.assertEqual(self.group("expected pigment, finish, normal or a transform in texture but found 'Mirror'")[0],
+                         "texture { FinishIdentifier }")
+        self.assertEqual(self.group("expected pigment, finish, normal or a transform in texture but found "
+                                    "'no_bump_scale'")[0], "texture { no_bump_scale }")
+        self.assertEqual(self.group("expected a finish item but found 'ior'")[0], "finish { ior }")
+        self.assertEqual(self.group("'Thing' cannot stand alone here; use object { Thing } for declared objects")[0],
+                         "ObjectIdentifier without object { }")
+        self.assertEqual(self.group("expected an object modifier or '}' but found 'Thing'")[0],
+                         "ObjectIdentifier without object { }")
+
+    def test_constructs_found_from_the_source_line(self):
+        self.assertEqual(self.group("expected a statement but found '['", line=2, col=11)[0], "#undef A[i]")
+        self.assertEqual(self.group("expected a statement but found ';'", line=3, col=17)[0],
+                         "#include \"...\"; (a ';' after #include)")
+        self.assertEqual(self.group("macro 'M' takes 2 parameter(s) but 3 were given", line=5)[0],
+                         "macro call with an empty last argument ', )'")
+        self.assertEqual(self.group("undeclared identifier 'Sum'", line=10)[0],
+                         "macro returning one of its #local identifiers (the identifier alone before #end)")
+        self.assertEqual(self.group("undeclared identifier 'Other'", line=10)[0], "undeclared identifier")
+
+    def test_directives_and_keywords(self):
+        self.assertEqual(self.group("'declare' cannot start a statement")[0], "declare without #")
+        self.assertEqual(self.group("'now' is not supported yet")[0], "now")
+        self.assertEqual(self.group("'image_width' is a reserved word and cannot be declared")[0],
+                         "#declare of a reserved word (image_width)")
+
+    def test_nested_include_relative_to_the_scene_folder(self):
+        self.assertEqual(self.group("cannot open include file 'inc/b.inc': No such file or directory",
+                                    file="sub/inc/a.inc", scene="r01/sub/s.pov")[0],
+                         "nested #include path (relative to the scene's folder, not the including file's)")
+        self.assertEqual(self.group("cannot open include file 'gone.inc': No such file or directory",
+                                    scene="r01/s.pov")[0], "#include of a file not found")
+
+    def test_other_messages_are_normalised(self):
+        a = self.group("expected a float but found 'Foo' at 3 places")[0]
+        b = self.group("expected a float but found 'Bar' at 4 places")[0]
+        self.assertEqual(a, b)
+        self.assertEqual(a, "expected a float but found 'Identifier' at <n> places")
+        self.assertEqual(self.group(None, status="timeout")[0], "timed out after 60 s (parse or render)")
+        rec = blocked(None)
+        rec["wardray"].update(error="terminate called after throwing an instance of 'std::bad_alloc'", exit=-6)
+        self.assertEqual(census.failure_group(rec, self.look)[0], "out of memory (address space bounded)")
+        rec["wardray"].update(error=None)
+        self.assertEqual(census.failure_group(rec, self.look)[0], "crash (killed by SIGABRT)")
+
+    def test_groups_worst_first(self):
+        recs = [{"g": "b"}, {"g": "a"}, {"g": "b"}, {"g": "c"}]
+        self.assertEqual([(g, len(rs)) for g, rs in census.grouped(recs, lambda r: r["g"])],
+                         [("b", 2), ("a", 1), ("c", 1)])
+
+    def test_silent_groups_by_gamma_hints(self):
+        self.assertEqual(census.silent_group(record(rrmse=0.3, gamma=["2.2"], version="3.6")),
+                         "assumed_gamma 2.2; #version 3.6")
+        self.assertEqual(census.silent_group(record(rrmse=0.3, gamma=[], version=None)),
+                         "no assumed_gamma, no #version")
+        self.assertEqual(census.silent_group(record(rrmse=0.3)),
+                         "no gamma or #version hint (assumed_gamma 1, #version 3.7)")
+
+
+class CorpusTest(unittest.TestCase):
+    def test_manifest_ids_are_neutral(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            d = pathlib.Path(tmp)
+            for path in ("a+one/x/s.pov", "b+two/t.pov", "a+one/u.pov"):
+                (d / path).parent.mkdir(parents=True, exist_ok=True)
+                (d / path).write_text("")
+            (d / "M.tsv").write_text("path\trepository\tcommit\na+one/x/s.pov\ta/one\tc1\nb+two/t.pov\tb/two\tc2\n"
+                                     "a+one/u.pov\ta/one\tc1\n")
+            m = census.Manifest(d, d / "M.tsv")
+            self.assertEqual([m.rel(s) for s in m.scenes()], ["r01/x/s.pov", "r02/t.pov", "r01/u.pov"])
+            self.assertEqual(m.repo_folder(d / "a+one/x/s.pov"), (d / "a+one").resolve())
+            self.assertEqual(m.row(d / "b+two/t.pov")["commit"], "c2")
+            self.assertEqual([m.rel(s) for s in census.find_scenes(d, ["r01/*"], m)], ["r01/x/s.pov", "r01/u.pov"])
+
+    def test_resource_outliers(self):
+        def rec(scene, pp, wp, pm, wm, ward="ok"):
+            r = record(ward=ward)
+            r["scene"] = scene
+            r["povray"]["resources"] = {"parse": pp, "peak_kb": pm}
+            r["wardray"]["resources"] = {"parse": wp, "peak_kb": wm}
+            return r
+        recs = [rec("a", 1.0, 1.9, 100, 150), rec("b", 1.0, 3.0, 100, 100), rec("c", 0.001, 0.01, 100, 100),
+                rec("d", 1.0, 1.0, 100, 500), rec("e", 1.0, None, 100, None, ward="timeout")]
+        out = census.resource_outliers(recs)
+        self.assertEqual([(r["scene"], why) for r, why in out],
+                         [("e", ["wardray timed out after 60 s"]), ("d", ["memory 5.0x"]), ("b", ["parse 3.0x"])])
+
+    def test_time_file_and_parse_times(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            p = pathlib.Path(tmp) / "t.txt"
+            p.write_text("Command exited with non-zero status 1\n0.52 12345\n")
+            self.assertEqual(census.read_time_file(p), {"wall": 0.52, "peak_kb": 12345})
+            p.write_text("Command terminated by signal 6\n1.00 99\n")
+            self.assertEqual(census.read_time_file(p), {"signal": 6, "wall": 1.0, "peak_kb": 99})
+            self.assertEqual(census.read_time_file(pathlib.Path(tmp) / "none"), {})
+        self.assertEqual(census.povray_parse_seconds("  Parse Time:       0 hours  0 minutes  6 seconds (6.428 "
+                                                     "seconds)\n"), 6.428)
+        self.assertIsNone(census.povray_parse_seconds("nothing"))
+
+    def test_error_location_is_relative_to_the_repository(self):
+        out = "../inc/x.inc:227:5: error: undeclared identifier 'A'\nscene.pov:3:1: error: later\n"
+        self.assertEqual(census.error_location(out, "/tmp/w/repo", "/tmp/w/repo/Examples/One"),
+                         {"file": "Examples/inc/x.inc", "line": 227, "col": 5,
+                          "message": "undeclared identifier 'A'"})
+        out = "/usr/share/povray-3.7/include/shapes.inc:10:2: error: boom\n"
+        self.assertEqual(census.error_location(out, "/tmp/w/repo", "/tmp/w/repo")["file"],
+                         "<povray include>/shapes.inc")
+        self.assertIsNone(census.error_location("fine\n", "/tmp/w/repo", "/tmp/w/repo"))
+
+
 if __name__ == "__main__":
     unittest.main()
