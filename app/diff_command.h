@@ -1,4 +1,4 @@
-// `wardray diff A B`: image error as ../shared/docs/METRICS.md defines it, for people and scripts.
+// `wardray diff A B`: image error as docs/metrics.md defines it, for people and scripts.
 #pragma once
 
 #include <string>

@@ -106,7 +106,7 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
     }
 
     // Translational gradient (Ward & Heckbert 1992, translation gradient, in the occlusion-robust form of
-    // Křivánek, Gautron, Bouatouch & Pattanaik 2005, DESIGN.md's formula divided by π):
+    // Křivánek, Gautron, Bouatouch & Pattanaik 2005, docs/design.md's formula divided by π):
     // each wall between neighbouring cells moves at a rate set by the nearer of its two hit distances.
     for (int j = 1; j < m; ++j) {
         // Polar wall θ_j−: (1/π) sin θ cos² θ / min(r) · (L_j − L_{j−1}) · ∫u dφ.

@@ -1,4 +1,4 @@
-// Image metrics: the project's one definition of image error (../shared/docs/METRICS.md).
+// Image metrics: the project's one definition of image error (docs/metrics.md).
 #include "render/image_metrics.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Image metrics: rRMSE, bad-pixel fraction and non-finite pixels, exactly as ../shared/docs/METRICS.md defines them.
+// Image metrics: rRMSE, bad-pixel fraction and non-finite pixels, exactly as docs/metrics.md defines them.
 #pragma once
 
 #include <cstdint>

@@ -10,7 +10,7 @@
 
 Each scene is rendered by both programs at 120x90, `-A`, linear Radiance HDR (`+FH`), one thread each (`+WT1`),
 each bounded at 60 s, in a scratch copy of the scene's folder (POV-Ray writes only below its current folder, and
-scenes read the data files beside them). The two images are compared as ../shared/docs/METRICS.md says (rRMSE,
+scenes read the data files beside them). The two images are compared as docs/metrics.md says (rRMSE,
 bad-pixel fraction, non-finite pixels; POV-Ray is the reference) and each scene gets a category (see `classify`).
 Scenes run in parallel, `--jobs` of them (default 2, one thread each).
 
@@ -74,7 +74,7 @@ from povrewrite import RewriteError, find_blocks, mask_comments_and_strings  # n
 EXAMPLES = pathlib.Path("/usr/share/povray-3.7/scenes")
 SIZE = (120, 90)
 TIMEOUT = 60  # seconds, each renderer
-# METRICS.md: a match is rRMSE <= 1 % and bad pixels <= 0.5 %; issue 13: more than 2 % with no warning is silent.
+# docs/metrics.md: a match is rRMSE <= 1 % and bad pixels <= 0.5 %; issue 13: more than 2 % with no warning is silent.
 MATCH_RRMSE, MATCH_BAD, SILENT_RRMSE = 0.01, 0.005, 0.02
 # Stochastic scenes (radiosity, jitter, crand) are compared at their own settings, one render each: the tolerance.
 STOCHASTIC_RRMSE = 0.05
@@ -653,7 +653,7 @@ class Census:
 
 
 def compare(img, ref):
-    """METRICS.md's figures of wardray's image against POV-Ray's, with each image's non-finite pixels."""
+    """docs/metrics.md's figures of wardray's image against POV-Ray's, with each image's non-finite pixels."""
     m = gimetrics.image_error(img, ref)
     finite = np.isfinite(img).all(axis=2) & np.isfinite(ref).all(axis=2)
     if not np.isfinite(m["rrmse"]) and np.array_equal(img[finite], ref[finite]):
@@ -677,7 +677,7 @@ def srgb8(rgb):
 
 
 def difference8(img, ref):
-    """The difference as METRICS.md sees it: grey up to half brightness as |dY| approaches the bad-pixel threshold,
+    """The difference as docs/metrics.md sees it: grey up to half brightness as |dY| approaches the bad-pixel threshold,
     red for bad pixels (brighter the larger |dY| against the mean luminance), magenta for non-finite pixels."""
     finite = np.isfinite(img).all(axis=2) & np.isfinite(ref).all(axis=2)
     y_img = gimetrics.luminance(np.where(finite[..., None], img, 0.0))
@@ -1156,7 +1156,7 @@ def write_report(path, records, missing, info, extra=()):
         "frame_number 0) by both; where POV-Ray fails that way (the portfolio), it renders the .ini's first frame "
         "(`scene.ini +SF<n> +EF<n>`, the census's options after it), and wardray, which reads no .ini and has no "
         "animation options, gets only the .ini's `Declare=` values; such scenes carry a note.",
-        "- Compared as ../shared/docs/METRICS.md says, POV-Ray's image the reference: rRMSE, bad-pixel fraction, "
+        "- Compared as docs/metrics.md says, POV-Ray's image the reference: rRMSE, bad-pixel fraction, "
         "non-finite pixels.",
         f"- Categories: **match** rRMSE ≤ {pct(MATCH_RRMSE, 0)} and bad pixels ≤ {pct(MATCH_BAD, 1)}, no "
         "non-finite pixel; **differ-with-warning** not a match and wardray warned that a feature is not rendered "

@@ -4,7 +4,7 @@
 The scenes are gamma/ and the woods, stones and metals demos of incdemo/ that wardray renders with no "not rendered"
 warning. Each is rendered by both programs as PNG and as HDR, same size, same switches, one thread each. Reported
 per scene: the fraction of pixels whose every channel is within one level of POV-Ray's PNG, and the HDR rRMSE and
-bad-pixel fraction as ../shared/docs/METRICS.md defines them.
+bad-pixel fraction as docs/metrics.md defines them.
 
 usage: tools/gamma_parity.py WARDRAY [--size 160x120] [--switches "-A"] [--out DIR]
 exit status: 0 when every scene has at least 99 % of its PNG pixels within one level, 1 otherwise.

@@ -2,7 +2,7 @@
 """Renders every parity scene with POV-Ray and wardray, side by side, and writes docs/reports/parity.md.
 
 For each scene: both renderers write linear HDR at the same size with antialiasing off, 2 threads each;
-`wardray diff` gives rRMSE and bad pixels (../shared/docs/METRICS.md); whole-process wall times are the
+`wardray diff` gives rRMSE and bad pixels (docs/metrics.md); whole-process wall times are the
 median of N runs, the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...).
 
 usage: tools/parity_report.py [--wardray build/wardray] [--runs 3] [--width 320 --height 240]
@@ -77,7 +77,7 @@ def main():
         "",
         f"Produced by `tools/parity_report.py --runs {args.runs}`: each scene rendered by POV-Ray 3.7 and wardray at "
         f"{args.width}x{args.height}, antialiasing off, linear HDR, 2 threads each; rRMSE and bad pixels as "
-        "../shared/docs/METRICS.md defines them (POV-Ray is the reference); times are whole-process wall "
+        "docs/metrics.md defines them (POV-Ray is the reference); times are whole-process wall "
         f"clock, median of {args.runs} interleaved runs on the same machine. Targets: rRMSE <= 1 %, "
         "bad pixels <= 0.5 %, wardray no slower.",
         "",

@@ -3,7 +3,7 @@
 
 For each scene (POV-Ray's cornell.pov and the project's scenes/radiosity/*.pov):
   1. references: POV-Ray's converged render (the scene's radiosity block with count 1600, error_bound 0.1,
-     pretrace_end 0.01, nearest_count 20 set, as ../shared/docs/METRICS.md says) and wardray's reference
+     pretrace_end 0.01, nearest_count 20 set, as docs/metrics.md says) and wardray's reference
      mode (--gi=reference) at N and 2N paths per pixel, whose difference shows how converged it is;
      both are cached by the scene's text, the settings and the size, and the report says when a cache was used;
   2. parity: rRMSE and bad pixels of wardray's reference (2N) against POV-Ray's converged render;
@@ -138,7 +138,7 @@ def write_report(rows, args, out):
         "# Radiosity: wardray against POV-Ray 3.7",
         "",
         f"Produced by `tools/radiosity_report.py --size {w}x{h} --runs {args.runs} --paths {args.paths}` "
-        "(../shared/docs/METRICS.md: linear HDR, antialiasing off, 2 threads each, whole-process times, median of "
+        "(docs/metrics.md: linear HDR, antialiasing off, 2 threads each, whole-process times, median of "
         "the runs, the renderers' runs interleaved). Times are from a shared 2-core machine: read them as ratios.",
         "",
         "## Converged against converged",

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Renders a scene scaled by 1e-6 ... 1e6 with wardray and with POV-Ray and prints a Markdown table of each
-renderer's rRMSE against its own render at scale 1 (docs/METRICS.md's definitions, through `wardray diff`).
+renderer's rRMSE against its own render at scale 1 (docs/metrics.md's definitions, through `wardray diff`).
 
 The scene reads its scale from the float S (Declare=S=...), as scenes/stiff/scaled.pov does.
 

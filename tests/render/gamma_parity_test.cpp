@@ -1,5 +1,5 @@
 // Gamma parity with POV-Ray: small scenes with assumed_gamma other than 1, or none in a 3.6 scene, rendered by
-// both programs; the 8-bit PNGs must agree within one level and the linear HDR files as METRICS.md says.
+// both programs; the 8-bit PNGs must agree within one level and the linear HDR files as docs/metrics.md says.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

@@ -1,4 +1,4 @@
-// Parity with POV-Ray: the same .pov file rendered by both, compared as linear HDR (../shared/docs/METRICS.md).
+// Parity with POV-Ray: the same .pov file rendered by both, compared as linear HDR (docs/metrics.md).
 #include <gtest/gtest.h>
 
 #include <filesystem>

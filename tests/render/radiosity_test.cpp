@@ -251,7 +251,7 @@ TEST(Radiosity, SavedCacheIsReusedByTheNextRender) {
     EXPECT_NE(r.output.find("box.rca"), std::string::npos) << r.output;
 }
 
-// Converged against converged (METRICS.md): POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01,
+// Converged against converged (docs/metrics.md): POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01,
 // nearest_count 20 against the reference mode. About a minute of POV-Ray, so in the slow tier.
 TEST(RadiositySlow, ReferenceMatchesConvergedPovRay) {
     const fs::path dir = fresh_dir("povray_converged");

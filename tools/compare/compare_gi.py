@@ -4,7 +4,7 @@
 For every scene of the list, each renderer renders the scene over a ladder of radiosity quality settings
 (tools/compare/ladder.json; every radiosity block of the scene's global_settings is overridden in a wrapper
 scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 threads each, N runs per point.
-Each image is compared (rRMSE, bad pixels; ../shared/docs/METRICS.md) with the converged reference of its own
+Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
 renderer: POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01, nearest_count 20; wardray's brute-force
 `--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
 changes the image by less than 0.5 % rRMSE. References are cached (build/compare-cache). Writes
@@ -66,7 +66,7 @@ def next_rays(rays, change, tolerance, max_rays):
 
 def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, name):
     """wardray's converged image: brute force with enough rays that a second seed changes the image by less than
-    the tolerance (METRICS.md); without a seed option, that halving the rays does."""
+    the tolerance (docs/metrics.md); without a seed option, that halving the rays does."""
     if ward.gi_mode == "off":
         image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work,
                                               f"wardray --gi=off image of {name}")

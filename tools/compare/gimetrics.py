@@ -1,4 +1,4 @@
-"""Image errors as ../shared/docs/METRICS.md defines them, and the time at which an error curve reaches a target."""
+"""Image errors as docs/metrics.md defines them, and the time at which an error curve reaches a target."""
 import math
 
 import numpy as np
@@ -33,7 +33,7 @@ def image_error(image, reference):
     """rRMSE, bad-pixel fraction and the count of non-finite pixels of `image` against `reference`.
 
     Pixels that are NaN or infinite in either image are counted and left out of the two figures; any of them is a
-    failure whatever the figures say (METRICS.md)."""
+    failure whatever the figures say (docs/metrics.md)."""
     if image.shape != reference.shape:
         raise ValueError(f"image {image.shape} and reference {reference.shape} differ in size")
     finite = np.isfinite(image).all(axis=2) & np.isfinite(reference).all(axis=2)

@@ -193,7 +193,7 @@ def markdown(data, plot_dir):
         "`global_settings`, everything else stays as the scene has it; wardray follows the same block). "
         f"Times are whole-process wall clock, the median of {data['runs']} run{'s' if data['runs'] != 1 else ''}, "
         "the two renderers' runs interleaved "
-        "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (../shared/docs/METRICS.md) are "
+        "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (docs/metrics.md) are "
         "taken against the converged reference of its own renderer: POV-Ray's at "
         + ", ".join(f"`{k} {v}`" for k, v in data["references"]["povray_reference"].items())
         + "; wardray's is its brute-force mode (`--gi=reference`, no cache) with the rays per pixel raised until "
