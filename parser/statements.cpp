@@ -85,6 +85,12 @@ void transform_textures(Object& o, bool own_texture, const Transform& tr) {
 
 void Parser::place_object(ObjectValue ov) {
     for (ObjectPart& part : ov.parts) {
+        // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
+        // its bounds; CSG, polynomials, text and quadrics keep them.
+        const Shape& shape = part.object.shape;
+        if (!ov.compound && !std::holds_alternative<Csg>(shape) && !std::holds_alternative<Quartic>(shape) &&
+            !std::holds_alternative<Text>(shape) && !std::holds_alternative<Quadric>(shape))
+            part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
         m_scene.objects.push_back(std::move(part.object));
@@ -278,8 +284,17 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
                 }
             }
         } else if (w == "bounded_by") {
-            // Bounds are accepted and not needed for correctness: the renderer builds its own.
+            // POV-Ray compat: the object is tested only on rays that meet its bounds, so a bound smaller than the
+            // object cuts it (see place_object for the top-level objects whose bounds POV-Ray drops). Stored
+            // relative to each part, as clips are: for a union the test is the same on every part.
             bounded_by = parse_object_list(t, nullptr);
+            for (ObjectPart& part : ov.parts) {
+                const Transform to_local = part.object.transform.inverse();
+                for (Object bound : bounded_by) {
+                    bound.transform = bound.transform.then(to_local);
+                    part.object.bounded_by.push_back(std::move(bound));
+                }
+            }
         } else if (w == "open") {
             for (ObjectPart& part : ov.parts) {
                 if (auto* c = std::get_if<Cylinder>(&part.object.shape)) c->open = true;
