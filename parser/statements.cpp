@@ -303,7 +303,10 @@ void Parser::parse_object_modifiers(ObjectValue& ov, bool compound) {
                 if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
             }
         } else if (w == "hollow") {
-            parse_bool_optional();
+            // POV-Ray compat: `hollow` on a CSG sets it on the children too; the interior rays see is the
+            // top-level object's here, so setting it on every part is the same.
+            const bool hollow = parse_bool_optional();
+            for (ObjectPart& part : ov.parts) part.object.interior.hollow = hollow;
         } else if (w == "sturm" || w == "split_union" || w == "cutaway_textures") {
             if (w == "split_union") parse_bool_optional();
         } else if (w == "double_illuminate") {
@@ -495,8 +498,10 @@ Light Parser::parse_light_body(const Token& kw) {
             light.orient = true;
         } else if (w == "area_illumination") {
             if (parse_bool_optional()) warn_unsupported(t, "area_illumination");
-        } else if (w == "media_interaction" || w == "media_attenuation") {
-            parse_bool_optional();
+        } else if (w == "media_interaction") {
+            light.media_interaction = parse_bool_optional();
+        } else if (w == "media_attenuation") {
+            light.media_attenuation = parse_bool_optional();
         } else if (w == "looks_like" || w == "projected_through" || w == "photons") {
             warn_unsupported(t, w);
             skip_block(t);

@@ -144,6 +144,29 @@ TEST(DirectLighting, EmissionAddsPigmentTimesEmission) {
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.2, 1e-12);
 }
 
+TEST(DirectLighting, FogDimsLightsWithMediaAttenuationAndFillsOnlyHollowObjects) {
+    // Black fog of distance 5: the camera ray (1 unit) keeps exp(-1/5); a light 10 units away with
+    // media_attenuation is dimmed by exp(-10/5) more (POV-Ray's ComputeShadowMedia).
+    scene::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({0, 10, 0}));
+    scene::Fog fog;
+    fog.distance = 5.0;
+    scene.fogs.push_back(fog);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-0.2), 1e-9);
+    scene.lights[0].media_attenuation = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-2.2), 1e-9);
+    scene.lights[0].media_interaction = false;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-0.2), 1e-9);
+    scene.lights[0].media_interaction = true;
+    // Inside a non-hollow sphere (around the camera, the floor point and the light) no ray passes fog.
+    scene::Object shell;
+    shell.shape = scene::Sphere{{0, 0, 0}, 100.0};
+    scene.objects.push_back(shell);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+    scene.objects[1].interior.hollow = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-2.2), 1e-9);
+}
+
 TEST(DirectLighting, MissIsBackground) {
     scene::Scene scene;
     scene.background = {0.1, 0.2, 0.3};
