@@ -136,7 +136,8 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
         // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
         to_light = normalize(light.position - light.point_at);
         distance = dot(light.position - p, to_light);
-        if (distance <= 0.0) return {};
+        // A cylinder light lights nothing behind it (Attenuate_Light); a parallel light does, see below.
+        if (distance <= 0.0 && light.type == Type::Cylinder) return {};
     } else {
         const Vec3 d = light.position - p;
         distance = length(d);
@@ -170,14 +171,16 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
         if (light.radius > 0.0 && d > light.radius)
             attenuation *= smooth_ramp(0.0, 1.0 - light.radius / light.falloff, closeness);
     }
-    if (light.fade_distance > 0.0 && light.fade_power > 0.0) {
+    if (light.fade_distance > 0.0 && light.fade_power > 0.0 && distance > 0.0) {
         // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); no inverse-square law otherwise.
         attenuation *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
     }
     if (attenuation <= 0.0) return {};
 
     const Vec3 colour = light.color.rgb() * attenuation;
-    if (light.shadowless) return colour;
+    // POV-Ray compat: a point past a parallel light's plane is lit too; its shadow ray has negative length and
+    // meets nothing.
+    if (light.shadowless || distance <= 0.0) return colour;
     const media::Medium* fog = light.media_attenuation && light.media_interaction ? m_fog.get() : nullptr;
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)

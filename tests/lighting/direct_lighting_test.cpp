@@ -94,6 +94,22 @@ TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
     EXPECT_NEAR(radiance_at(scene, 7.0, 3.0), expected, 1e-9);
 }
 
+
+TEST(DirectLighting, ParallelLightLightsPointsPastItsPlaneWithoutShadows) {
+    // POV-Ray compat: the light shines up (+y) from its plane y = -0.5, below the floor, which it still lights.
+    scene::Scene scene = floor_scene();
+    scene::Light light = point_light({0, -0.5, 0});
+    light.type = scene::Light::Type::Parallel;
+    light.point_at = {0, -1.5, 0};
+    scene.lights.push_back(light);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+    // A blocker between floor and camera, past the plane too, casts no shadow.
+    scene::Object blocker;
+    blocker.shape = scene::Sphere{{0, 0.5, 0}, 0.1};
+    blocker.no_image = true;
+    scene.objects.push_back(blocker);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+}
 TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
     scene::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, 4, 0}));
