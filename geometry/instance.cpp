@@ -127,6 +127,15 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         if (local && local->empty()) local = Bounds{local->lower, local->lower};
         if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
+    if (!object.bounded_by.empty()) {
+        auto bounds = std::make_shared<std::vector<ShapeInstance>>();
+        for (const scene::Object& b : object.bounded_by) {
+            auto bi = create(b, index);
+            if (!bi) return std::nullopt;
+            bounds->push_back(std::move(*bi));
+        }
+        inst.m_bounds = std::move(bounds);
+    }
     const auto* sphere = std::get_if<SphereShape>(&inst.m_shape);
     if (sphere && !inst.m_clips) {
         inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
@@ -144,9 +153,10 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
                                          double t_max) const {
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d.
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    SurfaceHits hits;
+    if (m_bounds && !ray_in_bounds(local)) return hits;
     const SurfaceHits object_hits =
         std::visit([&](const auto& s) { return s.intersect_all(local, t_min, t_max); }, m_shape);
-    SurfaceHits hits;
     for (const SurfaceHit& h : object_hits) {
         if (m_clips) {
             const Vec3 p = local.origin + h.t * local.direction;
@@ -159,6 +169,16 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
         hits.push({h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object});
     }
     return hits;
+}
+
+bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
+    // POV-Ray compat (Ray_In_Bound): the whole ray counts, from MIN_ISECT_DEPTH (1e-4 along the unit direction) on,
+    // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
+    const double t_start = 1e-4 / length(m_transform.vector(ray.direction));
+    for (const ShapeInstance& b : *m_bounds)
+        if (!b.inside(ray.origin) && b.intersect_all(ray.origin, ray.direction, t_start, INFINITY).empty())
+            return false;
+    return true;
 }
 
 std::optional<Hit> ShapeInstance::nearest(const Vec3& origin, const Vec3& direction, double t_min,

@@ -66,17 +66,21 @@ public:
     const Transform& transform() const { return m_transform; }
     /// The shape in object space.
     const AnyShape& shape() const { return m_shape; }
-    /// True when the object is a mesh without clipping, which Embree can trace as native triangles.
-    bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips; }
+    /// True when the object is a mesh without clipping or bounds, which Embree can trace as native triangles.
+    bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
 
 private:
     ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index);
+    /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.
+    bool ray_in_bounds(const LocalRay& ray) const;
 
     AnyShape m_shape;
     Transform m_transform;
     std::optional<Bounds> m_world_bounds;
     std::optional<Bounds> m_region_bounds;
     std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point
+    /// `bounded_by`, in object space: POV-Ray compat, the shape is hit only by rays that meet (or start in) all.
+    std::shared_ptr<const std::vector<ShapeInstance>> m_bounds;
     const scene::Object* m_object = nullptr;
     std::uint32_t m_index = 0;
     bool m_inverse = false;

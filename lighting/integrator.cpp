@@ -23,6 +23,12 @@ void InteriorStack::push(std::uint32_t o) {
     if (size < kMax) objects[size++] = o;
 }
 
+bool hollow_ray(const scene::Scene& scene, const InteriorStack& interiors) {
+    for (int i = 0; i < interiors.size; ++i)
+        if (!scene.objects[interiors.objects[i]].interior.hollow) return false;
+    return true;
+}
+
 bool InteriorStack::remove(std::uint32_t o) {
     for (int i = size - 1; i >= 0; --i) {
         if (objects[i] != o) continue;
@@ -98,7 +104,9 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     } else {
         colour = m_sky.radiance(direction);
     }
-    if (m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    // POV-Ray compat: fog fills only hollow objects; a ray inside a non-hollow one passes no fog.
+    if (m_atmosphere && hollow_ray(m_scene, state.interiors))
+        colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
     return colour;
 }
 

@@ -9,6 +9,7 @@
 #include "cache/hemisphere_sampler.h"
 #include "core/constants.h"
 #include "geometry/scene_geometry.h"
+#include "media/atmosphere.h"
 #include "media/transmittance.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -60,7 +61,10 @@ bool object_opaque(const scene::Object& o) {
 }  // namespace
 
 LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry)
-    : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator) {
+    : m_scene(scene),
+      m_geometry(geometry),
+      m_noise_generator(scene.global.noise_generator),
+      m_fog(media::make_atmosphere(scene)) {
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
     for (const scene::Object& o : scene.objects) {
@@ -87,7 +91,14 @@ Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) 
 }
 
 Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                                 TraceContext& ctx) const {
+                                 const media::Medium* fog, TraceContext& ctx) const {
+    // POV-Ray compat (ComputeShadowMedia): with media_attenuation, fog dims each stretch of the shadow ray that is
+    // inside no non-hollow object.
+    auto fog_over = [&](double from, double to) {
+        if (fog && to > from && hollow_ray(m_scene, interiors))
+            return fog->transmittance(media::Segment{p + dir * from, dir, to - from});
+        return Vec3{1.0, 1.0, 1.0};
+    };
     // POV-Ray walks the shadow ray through every surface it crosses, multiplying their filter colours and the
     // fade of the interiors it leaves.
     Vec3 filter{1.0, 1.0, 1.0};
@@ -100,6 +111,7 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
         const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
         if (!hit) break;
         if (m_opaque[hit->object]) return {};
+        filter = filter * fog_over(t_origin, hit->t);
         const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
         filter = filter * texture_filter(object.texture, hit->position);
         const scene::Interior& interior = m_scene.objects[hit->object].interior;
@@ -112,7 +124,7 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
         t_origin = hit->t;
         t0 = hit->t + m_geometry.self_intersection_offset(hit->position);
     }
-    return filter;
+    return filter * fog_over(t_origin, distance);
 }
 
 Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n,
@@ -124,7 +136,8 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
         // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
         to_light = normalize(light.position - light.point_at);
         distance = dot(light.position - p, to_light);
-        if (distance <= 0.0) return {};
+        // A cylinder light lights nothing behind it (Attenuate_Light); a parallel light does, see below.
+        if (distance <= 0.0 && light.type == Type::Cylinder) return {};
     } else {
         const Vec3 d = light.position - p;
         distance = length(d);
@@ -158,23 +171,26 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
         if (light.radius > 0.0 && d > light.radius)
             attenuation *= smooth_ramp(0.0, 1.0 - light.radius / light.falloff, closeness);
     }
-    if (light.fade_distance > 0.0 && light.fade_power > 0.0) {
+    if (light.fade_distance > 0.0 && light.fade_power > 0.0 && distance > 0.0) {
         // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); no inverse-square law otherwise.
         attenuation *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
     }
     if (attenuation <= 0.0) return {};
 
     const Vec3 colour = light.color.rgb() * attenuation;
-    if (light.shadowless) return colour;
+    // POV-Ray compat: a point past a parallel light's plane is lit too; its shadow ray has negative length and
+    // meets nothing.
+    if (light.shadowless || distance <= 0.0) return colour;
+    const media::Medium* fog = light.media_attenuation && light.media_interaction ? m_fog.get() : nullptr;
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)
-        return area_light_shadow(light, colour, p, interiors, ctx);
-    return colour * shadow_towards(p, to_light, distance, interiors, ctx);
+        return area_light_shadow(light, colour, p, interiors, fog, ctx);
+    return colour * shadow_towards(p, to_light, distance, interiors, fog, ctx);
 }
 
 Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                                  TraceContext& ctx) const {
-    if (m_any_transparent) return shadow_filter(p, dir, distance, interiors, ctx);
+                                  const media::Medium* fog, TraceContext& ctx) const {
+    if (m_any_transparent || fog) return shadow_filter(p, dir, distance, interiors, fog, ctx);
     const double offset = m_geometry.self_intersection_offset(p);
     geometry::Ray shadow{p, dir, offset, distance - offset, geometry::RayKind::Shadow};
     ++ctx.rays.shadow;
@@ -183,7 +199,8 @@ Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distanc
 }
 
 Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
-                                     const InteriorStack& interiors, TraceContext& ctx) const {
+                                     const InteriorStack& interiors, const media::Medium* fog,
+                                     TraceContext& ctx) const {
     const int n1 = light.area_size1;
     const int n2 = light.area_size2;
     Vec3 axis1 = light.area_axis1;
@@ -223,7 +240,8 @@ Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colo
         }
         const Vec3 d = light.position + offset - p;
         const double distance = length(d);
-        const Vec3 c = distance > 0.0 ? colour * shadow_towards(p, d / distance, distance, interiors, ctx) : colour;
+        const Vec3 c = distance > 0.0 ? colour * shadow_towards(p, d / distance, distance, interiors, fog, ctx)
+                                        : colour;
         grid[k] = c;
         known[k] = 1;
         return c;

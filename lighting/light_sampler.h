@@ -2,9 +2,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "lighting/trace_context.h"
+#include "media/medium.h"
 #include "scene/scene.h"
 
 namespace wardray::geometry {
@@ -31,16 +33,17 @@ private:
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
     Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                        TraceContext& ctx) const;
+                        const media::Medium* fog, TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
     Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
-                           const InteriorStack& interiors, TraceContext& ctx) const;
+                           const InteriorStack& interiors, const media::Medium* fog, TraceContext& ctx) const;
     /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
     /// of every surface it crosses). `interiors` are those of the ray that found `p` (POV-Ray starts the shadow
     /// ray with them and fades light crossing an interior).
+    /// `fog`, when the light has media_attenuation, dims the stretches outside non-hollow objects.
     Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                       TraceContext& ctx) const;
+                       const media::Medium* fog, TraceContext& ctx) const;
     /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
     Vec3 texture_filter(const scene::Texture& texture, const Vec3& p) const;
 
@@ -49,6 +52,7 @@ private:
     bool m_any_transparent = false;      ///< some object can let light through (filter or transmit somewhere)
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
+    std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
 };
 
 }  // namespace wardray::lighting

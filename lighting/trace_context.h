@@ -7,6 +7,10 @@
 
 #include "core/vec3.h"
 
+namespace wardray::scene {
+struct Scene;
+}  // namespace wardray::scene
+
 namespace wardray::cache {
 class TileCache;
 }  // namespace wardray::cache
@@ -60,6 +64,9 @@ struct InteriorStack {
     /// Leaves object `o`; false when the ray was not inside it.
     bool remove(std::uint32_t o);
 };
+
+/// POV-Ray's IsHollowRay: the ray is inside no object whose interior is not hollow (fog reaches it).
+bool hollow_ray(const scene::Scene& scene, const InteriorStack& interiors);
 
 /// What travels with a ray through the recursion: POV-Ray's trace level, weight (for adc_bailout) and interiors.
 struct RayState {

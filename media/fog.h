@@ -18,6 +18,8 @@ public:
     /// Attenuation exp(−length/distance) (at least each fog's transmit), filtered by its colour where it has
     /// filter; the rest of the light is the fog colour.
     Vec3 along_segment(const Vec3& colour, const Segment& segment) const override;
+    /// The same attenuation with no fog colour added (POV-Ray's ComputeFog on a shadow test ray).
+    Vec3 transmittance(const Segment& segment) const override;
 
 private:
     std::vector<scene::Fog> m_fogs;

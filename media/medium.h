@@ -18,6 +18,8 @@ public:
     virtual ~Medium() = default;
     /// The colour arriving at the segment's origin when `colour` leaves its far end.
     virtual Vec3 along_segment(const Vec3& colour, const Segment& segment) const = 0;
+    /// What passes along the segment without what the medium adds: POV-Ray's attenuation of shadow rays.
+    virtual Vec3 transmittance(const Segment& segment) const = 0;
 };
 
 }  // namespace wardray::media

@@ -260,10 +260,19 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                      }
                  }
              }},
-            // Bounds are accepted and not needed for correctness: the renderer builds its own.
+            // POV-Ray compat: the object is tested only on rays that meet its bounds, so a bound smaller than the
+            // object cuts it (SceneReader::place_object drops the bounds POV-Ray drops). Stored relative to each
+            // part, as clips are: for a union the test is the same on every part.
             {"bounded_by",
-             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState& state) {
+             [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
                  state.bounded_by = r.parse_object_list(kw, nullptr);
+                 for (ObjectPart& part : ov.parts) {
+                     const Transform to_local = part.object.transform.inverse();
+                     for (Object bound : state.bounded_by) {
+                         bound.transform = bound.transform.then(to_local);
+                         part.object.bounded_by.push_back(std::move(bound));
+                     }
+                 }
              }},
             {"open",
              [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
@@ -274,7 +283,13 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                      if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
                  }
              }},
-            {"hollow", [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
+            // POV-Ray compat: `hollow` on a CSG sets it on the children too; the interior rays see is the top-level
+            // object's here, so setting it on every part is the same.
+            {"hollow",
+             [](ObjectReader& r, ObjectValue& ov, const Token&, ModifierState&) {
+                 const bool hollow = r.parse_bool_optional();
+                 for (ObjectPart& part : ov.parts) part.object.interior.hollow = hollow;
+             }},
             {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
             {"split_union",
              [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
@@ -386,8 +401,10 @@ Light ObjectReader::parse_light_body(const Token& kw) {
              [](ObjectReader& r, Light&, const Token& kw) {
                  if (r.parse_bool_optional()) r.warn_unsupported(kw, "area_illumination");
              }},
-            {"media_interaction", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
-            {"media_attenuation", [](ObjectReader& r, Light&, const Token&) { r.parse_bool_optional(); }},
+            {"media_interaction",
+             [](ObjectReader& r, Light& l, const Token&) { l.media_interaction = r.parse_bool_optional(); }},
+            {"media_attenuation",
+             [](ObjectReader& r, Light& l, const Token&) { l.media_attenuation = r.parse_bool_optional(); }},
             {"looks_like", &skip_unsupported_light_item},
             {"projected_through", &skip_unsupported_light_item},
             {"photons", &skip_unsupported_light_item},

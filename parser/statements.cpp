@@ -115,6 +115,12 @@ void inherit_textures(Object& o) {
 
 void SceneReader::place_object(ObjectValue ov) {
     for (ObjectPart& part : ov.parts) {
+        // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
+        // its bounds; CSG, polynomials, text and quadrics keep them.
+        const Shape& shape = part.object.shape;
+        if (!ov.compound && !std::holds_alternative<Csg>(shape) && !std::holds_alternative<Quartic>(shape) &&
+            !std::holds_alternative<Text>(shape) && !std::holds_alternative<Quadric>(shape))
+            part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
         m_builder.add_object(std::move(part.object));

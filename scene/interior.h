@@ -11,6 +11,8 @@ struct Interior {
     double fade_distance = 0.0;
     double fade_power = 0.0;
     Color fade_color;
+    /// `hollow`: fog (and media) fill the object's inside; POV-Ray's default is not hollow.
+    bool hollow = false;
     bool operator==(const Interior&) const = default;
 };
 

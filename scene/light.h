@@ -45,6 +45,9 @@ struct Light {
     bool jitter = false;
     bool circular = false;
     bool orient = false;
+    /// `media_attenuation`: fog dims the light on its way (POV-Ray's default: off); `media_interaction` (on).
+    bool media_attenuation = false;
+    bool media_interaction = true;
     SourceLoc loc;
     bool operator==(const Light&) const = default;
 };

@@ -54,6 +54,8 @@ struct Object {
     bool no_radiosity = false;
     bool has_texture = false;  ///< the statement gave its own texture (else it takes its CSG parent's)
     std::vector<Object> clipped_by;  ///< clipping objects, placed relative to this object's transform
+    /// `bounded_by` objects, placed as clipped_by: POV-Ray tests the object only on rays that meet them all.
+    std::vector<Object> bounded_by;
     SourceLoc loc;
     bool operator==(const Object&) const = default;
 };

@@ -175,5 +175,29 @@ TEST(Csg, ClippedByKeepsOnlyTheSurfaceInsideTheClip) {
     EXPECT_NEAR(inst->world_bounds()->upper.z, 1.0, 1e-12);
 }
 
+TEST(Csg, BoundedByHidesTheShapeFromRaysThatMissTheBound) {
+    // POV-Ray compat (Ray_In_Bound): a unit sphere bounded by a sphere of radius 0.5 at the origin.
+    scene::Object obj = make_object(scene::Sphere{{0, 0, 0}, 1});
+    obj.bounded_by.push_back(make_object(scene::Sphere{{0, 0, 0}, 0.5}));
+    const auto inst = ShapeInstance::create(obj, 0);
+    ASSERT_TRUE(inst);
+    // Through the bound: both crossings count, also the ones outside the bound.
+    const SurfaceHits through = inst->intersect_all({0, 0, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_EQ(through.size(), 2u);
+    EXPECT_NEAR(through[0].t, 4.0, 1e-12);
+    // Past the bound (0.7 from the centre) the sphere is not seen although the ray crosses it.
+    EXPECT_TRUE(inst->intersect_all({0.7, 0, -5}, {0, 0, 1}, 0.0, 1e30).empty());
+    // A ray starting inside the bound sees it whatever its direction; one leaving the bound behind does not.
+    EXPECT_EQ(inst->intersect_all({0, 0.2, 0}, {1, 0, 0}, 0.0, 1e30).size(), 1u);
+    EXPECT_TRUE(inst->intersect_all({0, 0.7, 0}, {1, 0, 0}, 0.0, 1e30).empty());
+    // Bounds move with the object.
+    scene::Object moved = obj;
+    moved.transform = Transform::translation({3, 0, 0});
+    const auto moved_inst = ShapeInstance::create(moved, 0);
+    ASSERT_TRUE(moved_inst);
+    EXPECT_EQ(moved_inst->intersect_all({3, 0, -5}, {0, 0, 1}, 0.0, 1e30).size(), 2u);
+    EXPECT_TRUE(moved_inst->intersect_all({3.7, 0, -5}, {0, 0, 1}, 0.0, 1e30).empty());
+}
+
 }  // namespace
 }  // namespace wardray::geometry

@@ -94,6 +94,22 @@ TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
     EXPECT_NEAR(radiance_at(scene, 7.0, 3.0), expected, 1e-9);
 }
 
+
+TEST(DirectLighting, ParallelLightLightsPointsPastItsPlaneWithoutShadows) {
+    // POV-Ray compat: the light shines up (+y) from its plane y = -0.5, below the floor, which it still lights.
+    scene::Scene scene = floor_scene();
+    scene::Light light = point_light({0, -0.5, 0});
+    light.type = scene::Light::Type::Parallel;
+    light.point_at = {0, -1.5, 0};
+    scene.lights.push_back(light);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+    // A blocker between floor and camera, past the plane too, casts no shadow.
+    scene::Object blocker;
+    blocker.shape = scene::Sphere{{0, 0.5, 0}, 0.1};
+    blocker.no_image = true;
+    scene.objects.push_back(blocker);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+}
 TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
     scene::Scene scene = floor_scene();
     scene.lights.push_back(point_light({0, 4, 0}));
@@ -142,6 +158,29 @@ TEST(DirectLighting, EmissionAddsPigmentTimesEmission) {
     scene.objects[0].texture.pigment.color = {0.5, 0.5, 0.5};
     scene.objects[0].texture.finish.emission = {0.4, 0.4, 0.4};
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.2, 1e-12);
+}
+
+TEST(DirectLighting, FogDimsLightsWithMediaAttenuationAndFillsOnlyHollowObjects) {
+    // Black fog of distance 5: the camera ray (1 unit) keeps exp(-1/5); a light 10 units away with
+    // media_attenuation is dimmed by exp(-10/5) more (POV-Ray's ComputeShadowMedia).
+    scene::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({0, 10, 0}));
+    scene::Fog fog;
+    fog.distance = 5.0;
+    scene.fogs.push_back(fog);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-0.2), 1e-9);
+    scene.lights[0].media_attenuation = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-2.2), 1e-9);
+    scene.lights[0].media_interaction = false;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-0.2), 1e-9);
+    scene.lights[0].media_interaction = true;
+    // Inside a non-hollow sphere (around the camera, the floor point and the light) no ray passes fog.
+    scene::Object shell;
+    shell.shape = scene::Sphere{{0, 0, 0}, 100.0};
+    scene.objects.push_back(shell);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
+    scene.objects[1].interior.hollow = true;
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), std::exp(-2.2), 1e-9);
 }
 
 TEST(DirectLighting, MissIsBackground) {

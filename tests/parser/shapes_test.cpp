@@ -159,5 +159,22 @@ TEST(Mesh, OptionalCommasAndFaceIndicesFromVectorIdentifiers) {
     EXPECT_EQ(mesh.faces[2].v[2], 3);
 }
 
+TEST(BoundedBy, TopLevelCheapShapesLoseTheirBoundsPolynomialsAndCsgKeepThem) {
+    // POV-Ray compat (Link_To_Frame): only CSG, polynomials, text and quadrics keep a top-level bounded_by.
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }
+        quartic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,-1>
+                  bounded_by { sphere { 0, 0.5 } } translate x }
+        union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -1, 1 } } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_TRUE(s.objects[0].bounded_by.empty());
+    ASSERT_EQ(s.objects[1].bounded_by.size(), 1u);
+    // Stored relative to the object: the later translate moves both.
+    EXPECT_EQ(s.objects[1].bounded_by[0].transform.point({0, 0, 0}).x, 0.0);
+    EXPECT_EQ(s.objects[2].bounded_by.size(), 1u);
+    EXPECT_EQ(s.objects[3].bounded_by.size(), 1u);
+}
+
 }  // namespace
 }  // namespace wardray::parser
