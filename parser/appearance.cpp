@@ -126,7 +126,8 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
          [](AppearanceReader& r, Finish& f, const Token&) { f.conserve_energy = r.parse_bool_optional(); }},
         {"crand",
          [](AppearanceReader& r, Finish&, const Token& kw) {
-             r.warn_once(kw, "crand is ignored (POV-Ray 3.7 renders without it unless asked)");
+             // POV-Ray 3.7 adds a random amount to each sample's colour; wardray leaves it out, so say so.
+             r.warn_unsupported(kw, "finish crand");
              r.parse_float();
          }},
         {"irid",
