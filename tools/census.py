@@ -172,6 +172,21 @@ def gamma_facts(scene_text, texts):
     return gammas, (v.group(1) if v else None)
 
 
+def known_reasons(path=None):
+    """Scene -> the reason it differs, from tools/census_reasons.tsv (found by looking and measuring)."""
+    path = path or pathlib.Path(__file__).resolve().parent / "census_reasons.tsv"
+    out = {}
+    if path.exists():
+        for line in path.read_text().splitlines():
+            if line.strip() and not line.startswith("#") and "\t" in line:
+                scene, reason = line.split("\t", 1)
+                out[scene.strip()] = reason.strip()
+    return out
+
+
+KNOWN_REASONS = known_reasons()
+
+
 def hints(rec):
     """Likely causes of a difference found in the scene text (wardray does not apply POV-Ray's gamma model yet)."""
     out = []
@@ -232,6 +247,8 @@ def classify(rec):
     if features:
         return "differ-with-warning", "not rendered: " + ", ".join(features)
     reason = "; ".join(hints(rec)) or "no hint in the scene text"
+    if rec.get("scene") in KNOWN_REASONS:
+        reason = "known: " + KNOWN_REASONS[rec["scene"]] + "; " + reason
     if not finite or m["rrmse"] > silent_rrmse:
         return "differ-silently", reason
     return "differ-small", reason

@@ -69,6 +69,14 @@ class ClassifyTest(unittest.TestCase):
                          "no assumed_gamma, no #version")
         self.assertEqual(census.classify(record(rrmse=0.3))[1], "no hint in the scene text")
 
+    def test_a_known_reason_names_the_difference_and_keeps_it_silent(self):
+        rec = record(rrmse=0.3)
+        rec["scene"] = "language/trace.pov"
+        category, reason = census.classify(rec)
+        self.assertEqual(category, "differ-silently")
+        self.assertTrue(reason.startswith("known: the text the scene prints"), reason)
+        self.assertIn("language/trace.pov", census.known_reasons())
+
 
 class SceneTextTest(unittest.TestCase):
     def test_stochastic_features(self):
