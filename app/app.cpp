@@ -7,6 +7,7 @@
 
 #include "app/diff_command.h"
 #include "app/options.h"
+#include "app/process_limits.h"
 #include "app/run.h"
 #include "app/stats.h"
 #include "core/diagnostics.h"
@@ -86,7 +87,8 @@ int run_scene(Options options, const std::string& argv0, Clock::time_point start
     if (!write_outputs(*job, scene, illumination, frame.result)) return kExitScene;
     const PhaseTimes times{loaded->seconds, built->seconds, frame.seconds, seconds_since(write_start)};
     if (job->options.stats &&
-        !write_stats(*job->options.stats, *job, scene, illumination, frame.result, times, start))
+        !write_stats(*job->options.stats, *job, scene, illumination, frame.result, times,
+                     PeakMemory{loaded->peak_bytes, built->peak_bytes, peak_resident_bytes()}, start))
         return kExitScene;
     if (job->options.verbose)
         std::cerr << "wardray: wrote " << job->output.string() << " (" << job->options.width << "x"

@@ -51,4 +51,10 @@ void limit_heap_to_machine_memory() {
     setrlimit(RLIMIT_DATA, &limit);
 }
 
+std::size_t peak_resident_bytes() {
+    rusage usage{};
+    if (getrusage(RUSAGE_SELF, &usage) != 0 || usage.ru_maxrss < 0) return 0;
+    return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
+}
+
 }  // namespace wardray::app

@@ -209,7 +209,7 @@ std::optional<LoadedScene> load_scene(const Options& options) {
     const double seconds = seconds_since(start);
     for (const Diagnostic& d : parse.diagnostics) std::cerr << format_diagnostic(d);
     if (!parse.ok()) return std::nullopt;
-    return LoadedScene{std::move(*parse.scene), seconds};
+    return LoadedScene{std::move(*parse.scene), seconds, peak_resident_bytes()};
 }
 
 std::optional<BuiltGeometry> build_geometry(const scene::Scene& scene) {
@@ -222,6 +222,7 @@ std::optional<BuiltGeometry> build_geometry(const scene::Scene& scene) {
         return std::nullopt;
     }
     built.seconds = seconds_since(start);
+    built.peak_bytes = peak_resident_bytes();
     return built;
 }
 

@@ -41,20 +41,22 @@ std::optional<int> refuse_job(const Job& job);
 /// a partial image removed on a signal, and the heap bounded by the machine's memory.
 std::unique_ptr<tbb::global_control> prepare_process(const Options& options);
 
-/// A parsed scene, and how long parsing took.
+/// A parsed scene, how long parsing took and the process's peak resident bytes when it ended.
 struct LoadedScene {
     scene::Scene scene;
     double seconds = 0.0;
+    std::size_t peak_bytes = 0;
 };
 
 /// Parses the scene file with the options' include folders, declares and guard rails; prints every diagnostic and
 /// is empty when the scene has errors.
 std::optional<LoadedScene> load_scene(const Options& options);
 
-/// The scene's geometry (one Embree scene), and how long building it took.
+/// The scene's geometry (one Embree scene), how long building it took and the peak resident bytes after it.
 struct BuiltGeometry {
     std::unique_ptr<geometry::SceneGeometry> geometry;
     double seconds = 0.0;
+    std::size_t peak_bytes = 0;
 };
 
 /// Builds the geometry; empty (with a message) when it cannot be built.

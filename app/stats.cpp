@@ -40,7 +40,7 @@ nlohmann::json cache_stats(const cache::IrradianceCache* irradiance_cache, const
 
 bool write_stats(const std::filesystem::path& path, const Job& job, const scene::Scene& scene,
                  const Illumination& illumination, const render::RenderResult& result, const PhaseTimes& times,
-                 Clock::time_point run_start) {
+                 const PeakMemory& memory, Clock::time_point run_start) {
     const Options& options = job.options;
     nlohmann::json stats;
     stats["scene"] = options.scene.string();
@@ -58,6 +58,7 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
     }
     stats["phases"] = {{"parse", times.parse}, {"build", times.build}, {"pretrace", pretrace_seconds},
                        {"render", times.render - pretrace_seconds}, {"write", times.write}};
+    stats["peak_memory_bytes"] = {{"parse", memory.parse}, {"build", memory.build}, {"total", memory.total}};
     stats["passes"] = passes;
     stats["total_seconds"] = seconds_since(run_start);
     stats["rays"] = {{"camera", result.rays.camera},

@@ -15,9 +15,16 @@ struct PhaseTimes {
     double write = 0.0;
 };
 
+/// The process's peak resident memory at the end of each phase, in bytes: the parser's memory is the first.
+struct PeakMemory {
+    std::size_t parse = 0;
+    std::size_t build = 0;
+    std::size_t total = 0;
+};
+
 /// Writes the statistics of a finished run to `path`; false (with a message) when the file cannot be written.
 bool write_stats(const std::filesystem::path& path, const Job& job, const scene::Scene& scene,
                  const Illumination& illumination, const render::RenderResult& result, const PhaseTimes& times,
-                 Clock::time_point run_start);
+                 const PeakMemory& memory, Clock::time_point run_start);
 
 }  // namespace wardray::app

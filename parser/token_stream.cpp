@@ -1,4 +1,5 @@
 // Token stream: reading tokens through the directive layer, symbol scopes, and include/macro frames.
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -133,10 +134,15 @@ const Value* TokenStream::lookup(const std::string& name) {
     if (const auto deferred = m_deferred_warnings.find(name); deferred != m_deferred_warnings.end()) {
         const std::vector<Diagnostic> warnings = deferred->second;
         for (const Diagnostic& d : warnings) {
-            if (!m_declaring.empty())
-                m_declaring.back().push_back(d);
-            else
+            if (m_declaring.empty()) {
                 emit_feature_warning(d);
+                continue;
+            }
+            // Each feature once: an identifier looked up several times, or redeclared from its own value,
+            // would otherwise multiply its warnings with every declaration (exponentially in a fractal).
+            std::vector<Diagnostic>& pending = m_declaring.back();
+            const auto same = [&](const Diagnostic& p) { return p.message == d.message; };
+            if (std::none_of(pending.begin(), pending.end(), same)) pending.push_back(d);
         }
     }
     Value* slot = find_slot(name);

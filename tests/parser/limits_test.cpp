@@ -106,5 +106,22 @@ TEST(Limits, SingularMatricesAsPovRayTreatsThem) {
     EXPECT_EQ(r.diagnostics[0].loc.column, 15u);
 }
 
+// An object redeclared from its own value inherits the warnings of what it holds once per declaration; collecting
+// them once per lookup multiplied them with every redeclaration, so this parse never finished (arosFractal.pov).
+TEST(Limits, RedeclaredObjectKeepsOneCopyOfItsWarnings) {
+    const Scene s = test::parse_ok(R"(
+        #declare Ring = torus { 1, 0.1 material { texture { pigment { rgb 1 } } } }
+        #declare U = object { Ring }
+        #for (I, 1, 40)
+          #declare U = union { object { U } object { Ring translate I * x } }
+        #end
+        object { U }
+    )");
+    ASSERT_EQ(s.objects.size(), 41u);
+    std::size_t material_warnings = 0;
+    for (const Diagnostic& d : s.warnings) material_warnings += d.message == "material is not rendered yet";
+    EXPECT_EQ(material_warnings, 1u);
+}
+
 }  // namespace
 }  // namespace wardray::parser
