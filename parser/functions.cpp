@@ -317,7 +317,7 @@ Numeric Evaluator::parse_function(const Token& name) {
     if (f == "sum" || f == "prod")
         fail(name, "'" + f + "' can only be used inside a function body, e.g. function(n) { " + f + "(i, 1, n, i) }");
     static const char* const unsupported[] = {"eval_pigment", "bitwise_and", "bitwise_or", "bitwise_xor",
-                                              "datetime", "now"};
+                                              "datetime"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");
