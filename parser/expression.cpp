@@ -161,11 +161,13 @@ bool Evaluator::parse_bool_optional() {
 
 Numeric Evaluator::parse_conditional(bool allow_less) {
     const Token at = peek();
+    const std::uint64_t divisions_by_zero = m_divisions_by_zero;
     Numeric c = parse_logical(allow_less);
     if (!is_punct(peek_expr(), "?")) {
         // Every expression ends here: an infinity or NaN (1e999, pow(10, 400), 0 * 1e999) stops at its source
-        // instead of reaching the renderer as a silently skipped object or a NaN pixel.
-        for (int i = 0; i < c.n; ++i)
+        // instead of reaching the renderer as a silently skipped object or a NaN pixel. A division by zero has
+        // been warned about and goes on, as in POV-Ray.
+        for (int i = 0; i < c.n && m_divisions_by_zero == divisions_by_zero; ++i)
             if (!std::isfinite(c.v[i]))
                 fail(at, "this expression's value is not a finite number (it overflows or has no value)");
         return c;
@@ -257,7 +259,10 @@ Numeric Evaluator::parse_multiplicative(std::optional<Numeric> first) {
             bool by_zero = false;
             for (int i = 0; i < pb.n; ++i) by_zero |= pb.v[i] == 0.0;
             // POV-Ray compat: dividing by exactly zero warns and gives a huge positive value, whatever the sign.
-            if (by_zero) warn(o, "Divide by zero.");
+            if (by_zero) {
+                warn(o, "Divide by zero.");
+                ++m_divisions_by_zero;
+            }
             a = combine(a, b, +[](double x, double y) { return y == 0.0 ? HUGE_VAL : x / y; });
         }
     }

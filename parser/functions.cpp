@@ -313,11 +313,20 @@ Numeric Evaluator::parse_function(const Token& name) {
         return Numeric::vector3(
             m_options.vector_turbulence(vector_arg(args[3]), octaves, scalar_arg(args[1]), scalar_arg(args[0])));
     }
+    if (f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
+        // POV-Ray compat: each argument is truncated to an int, then all are combined left to right.
+        const auto args = arg_list(1, SIZE_MAX);
+        int bits = static_cast<int>(scalar_arg(args[0]));
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            const int b = static_cast<int>(scalar_arg(args[i]));
+            bits = f == "bitwise_and" ? (bits & b) : f == "bitwise_or" ? (bits | b) : (bits ^ b);
+        }
+        return Numeric::scalar(bits);
+    }
     // POV-Ray compat: sum() and prod() exist only in the function language.
     if (f == "sum" || f == "prod")
         fail(name, "'" + f + "' can only be used inside a function body, e.g. function(n) { " + f + "(i, 1, n, i) }");
-    static const char* const unsupported[] = {"eval_pigment", "bitwise_and", "bitwise_or", "bitwise_xor",
-                                              "datetime"};
+    static const char* const unsupported[] = {"eval_pigment", "datetime"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");

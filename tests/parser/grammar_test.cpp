@@ -112,6 +112,12 @@ TEST(Grammar, DivisionByZeroWarnsAndGivesAHugeValue) {
     EXPECT_TRUE(has_warning(s, "Divide by zero."));
 }
 
+TEST(Grammar, BitwiseFunctionsTruncateToInts) {
+    parse_ok(R"(
+        #if (bitwise_and(12.7, 10) != 8 | bitwise_or(1, 2, 4) != 7 | bitwise_xor(6, 3) != 5) #error "bits" #end
+    )");
+}
+
 TEST(Grammar, NowCountsDaysSince2000) {
     // 2024-01-01 is 8766 days after 2000-01-01; a scene read today is later than that.
     parse_ok("#if (now < 8766 | now > 80000) #error \"now is not in days since 2000\" #end");
