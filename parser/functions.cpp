@@ -110,6 +110,11 @@ std::string Evaluator::parse_string() {
         invoke_macro(t, m->second);
         return parse_string();
     }
+    // POV-Ray compat: the identifier's value is taken before the token after it is read, since that token may be
+    // the #end of the macro whose #local it is (`#macro M() #local S = "a"; S #end`).
+    std::optional<std::string> held;
+    if (const Value* found = lookup(w); found && std::holds_alternative<std::string>(*found))
+        held = std::get<std::string>(*found);
     if (is_punct(peek_expr(), "[") && t.file == m_file && m_pos > 0 &&
         m_files[m_file]->tokens[m_pos - 1].column == t.column && m_files[m_file]->tokens[m_pos - 1].line == t.line) {
         --m_pos;  // the identifier was just read from this file: read it again as an array element
@@ -118,6 +123,7 @@ std::string Evaluator::parse_string() {
         if (const auto* s = std::get_if<std::string>(&*element)) return *s;
         fail(t, "expected a string but this element of '" + w + "' is " + value_kind_name(*element));
     }
+    if (held) return *held;
     const Value* v = lookup(w);
     if (v == nullptr) fail_undeclared(t);
     if (const auto* s = std::get_if<std::string>(v)) return *s;

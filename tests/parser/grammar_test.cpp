@@ -182,6 +182,20 @@ TEST(Grammar, DeclareAndIncludeWithoutHashWarn) {
     EXPECT_TRUE(has_warning(*r.scene, "Should have '#' before 'include'."));
 }
 
+TEST(Grammar, MacroGivesOneOfItsLocalsStandingBeforeItsEnd) {
+    parse_ok(R"(
+        #macro Name(A) #local R = concat(A, "x"); R #end
+        #macro Next(A) #local R = A + 1; R #end
+        #macro Pair(A) #local R = array[2] { A, A }; R #end
+        #declare R = "outer";
+        #declare S = Name("a");
+        #declare T = concat(Name("b"), "!");
+        #declare N = Next(1);
+        #declare P = Pair(3);
+        #if (strcmp(S, "ax") != 0 | strcmp(T, "bx!") != 0 | N != 2 | P[1] != 3) #error "macro value" #end
+    )");
+}
+
 TEST(Grammar, MacroCallTakesACommaAfterItsLastArgument) {
     const Scene s = parse_ok(R"(
         #macro Place(R, X) sphere { X * x, R } #end
