@@ -7,9 +7,11 @@
 
 namespace wardray::parser {
 
-Color AppearanceReader::parse_color() {
-    Color c;
-    bool any = false;
+Color AppearanceReader::parse_color() { return read_color(Color{}, false); }
+
+Color AppearanceReader::parse_color_modifiers(Color c) { return read_color(c, true); }
+
+Color AppearanceReader::read_color(Color c, bool any) {
     while (true) {
         const Token t = any ? peek_expr() : peek();
         const std::string_view w = t.text;
@@ -141,6 +143,26 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
                  else r.fail(t, "expected thickness or turbulence in irid but found " + describe_token(t));
              }
          }},
+        // POV-Ray compat: POV-Ray 3.1's interior items inside a finish, read by 3.7 with these warnings.
+        {"ior",
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.legacy_ior = r.parse_float();
+             r.warn(kw, "Index of refraction value should be specified in 'interior{...}' statement.");
+         }},
+        {"caustics",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             r.parse_float();
+             r.warn(kw, "Caustics value should be specified in 'interior{...}' statement.");
+             r.warn_unsupported(kw, "caustics");
+         }},
+        {"refraction",
+         [](AppearanceReader& r, Finish&, const Token& kw) {
+             const double amount = r.parse_float();
+             r.warn(kw, "Refraction value unnecessary to turn on refraction. To attenuate, the fade_power and "
+                        "fade_distance keywords should be specified in 'interior{...}' statement.");
+             // POV-Ray scales the refracted light by this value (Old_Refract); 1 changes nothing.
+             if (amount != 1.0) r.warn_unsupported(kw, "refraction other than 1");
+         }},
         {"subsurface",
          [](AppearanceReader& r, Finish&, const Token& kw) {
              r.warn_unsupported(kw, kw.text);
@@ -216,6 +238,7 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             tx = *std::get<Boxed<Texture>>(*v);
         }
     }
+    parse_texture_part_identifiers(tx);
     while (true) {
         expand_macros();
         const Token t = peek();
@@ -242,7 +265,10 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         }
         if (tx.map_pattern.type != Pattern::Type::None && parse_pattern_modifier(t, tx.map_pattern)) continue;
         next();
-        if (t.text == "pigment") {
+        if (t.text == "no_bump_scale") {
+            // POV-Ray's DONT_SCALE_BUMPS flag: the bumps would grow with the texture's scale; wardray keeps their size.
+            warn_unsupported(t, "no_bump_scale");
+        } else if (t.text == "pigment") {
             tx.pigment = parse_pigment_body(t);
         } else if (t.text == "finish") {
             tx.finish = parse_finish_body(t);
@@ -269,6 +295,29 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
             fail(t, "expected pigment, finish, normal or a transform in texture but found '" + t.text + "'");
         }
+    }
+}
+
+void AppearanceReader::parse_texture_part_identifiers(Texture& tx) {
+    // POV-Ray compat: a plain texture may begin with pigment, normal and finish identifiers standing alone, in any
+    // order (`texture { Jade finish { F } }`), a concession POV-Ray keeps from its first versions (Parse_Texture).
+    if (tx.map_pattern.type != Pattern::Type::None || !tx.texture_map.empty()) return;
+    while (true) {
+        expand_macros();
+        const Token& t = peek();
+        if (t.kind != TokenKind::Identifier) return;
+        const Value* v = lookup(t.text);
+        if (v == nullptr || m_macros.count(t.text)) return;
+        if (const auto* p = std::get_if<Boxed<Pigment>>(v)) {
+            tx.pigment = **p;
+        } else if (const auto* n = std::get_if<Boxed<Normal>>(v)) {
+            tx.normal = **n;
+        } else if (const auto* f = std::get_if<Boxed<Finish>>(v)) {
+            tx.finish = **f;
+        } else {
+            return;
+        }
+        next();
     }
 }
 
@@ -327,6 +376,12 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
         } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples") {
             warn_unsupported(t, "interior " + t.text);
             parse_float();
+        } else if (t.text == "refraction") {
+            // POV-Ray compat: still read, with POV-Ray's warning; it scales the refracted light (1 changes nothing).
+            const double amount = parse_float();
+            warn(t, "Refraction value unnecessary to turn on refraction. To attenuate, the fade_power and "
+                    "fade_distance keywords should be specified in 'interior{...}' statement.");
+            if (amount != 1.0) warn_unsupported(t, "refraction other than 1");
         } else if (t.text == "media") {
             warn_unsupported(t, "media");
             skip_block(t);

@@ -16,6 +16,8 @@ protected:
     using Evaluator::Evaluator;
 
     Color parse_color() final;
+    /// Reads the items that may follow a colour expression (`filter .5`, `red 1`, ...) into `c`.
+    Color parse_color_modifiers(Color c);
     /// Reads `finish { ... }` after its keyword.
     Finish parse_finish_body(const Token& kw);
     /// Reads one finish item `item` (already consumed) into `f`.
@@ -26,6 +28,8 @@ protected:
     Texture parse_texture_body(const Token& kw);
     /// Reads texture items up to `close` ('}' of a texture block or ']' of a texture_map entry).
     void parse_texture_items(Texture& tx, const Token& kw, const char* close);
+    /// Reads the pigment, normal and finish identifiers that may open a plain texture's items.
+    void parse_texture_part_identifiers(Texture& tx);
     /// Reads `interior { ... }` after its keyword.
     Interior parse_interior_body(const Token& kw);
     /// Reads `sky_sphere { ... }` after its keyword.
@@ -49,6 +53,9 @@ protected:
     virtual int parse_pattern_keyword(const Token& t, Pattern& pat) = 0;
     /// Reads one pattern modifier; false when `t` is none (the pattern reader's).
     virtual bool parse_pattern_modifier(const Token& t, Pattern& pat) = 0;
+
+    /// Reads a colour's keywords and components into `c`; `any` when a colour was already read.
+    Color read_color(Color c, bool any);
 
     /// A texture made of the current #default pigment and finish.
     Texture default_texture() const {

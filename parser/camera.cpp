@@ -19,8 +19,12 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
     // angle, then look_at, then the orthographic sizing, then the transformations.
     if (spec.angle) {
         const double angle = *spec.angle;
-        if (spec.type == Camera::Type::Perspective && !spec.other_projection && (angle >= 180.0 || angle <= 0.0)) {
-            error = "camera angle must be greater than 0 and smaller than 180 degrees";
+        // POV-Ray compat: angle 0 leaves the direction as it is; only a negative angle or 180 and more are errors.
+        const bool planar = !spec.other_projection;  // perspective and orthographic
+        if (angle < 0.0) {
+            error = "Negative viewing angle.";
+        } else if (planar && angle >= 180.0) {
+            error = "Viewing angle has to be smaller than 180 degrees.";
         } else if (angle > 0.0 && angle < 180.0) {
             // direction_length = 0.5 * right_length / tan(angle / 2)
             const double half = angle * std::numbers::pi / 360.0;

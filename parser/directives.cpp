@@ -119,11 +119,20 @@ void Preprocessor::run_directive(const Token& tok) {
         {"undef",
          [](Preprocessor& p, const Token&) {
              const Token id = p.expect_identifier();
+             if (p.is_punct(p.peek_expr(), "[")) {
+                 // `#undef A[i]`: the element becomes uninitialised again (POV-Ray's Remove_Symbol).
+                 Value* target = p.lookup_mutable(id.text);
+                 auto* array = target ? std::get_if<std::shared_ptr<ArrayValue>>(target) : nullptr;
+                 if (array == nullptr) p.fail(id, "'" + id.text + "' is not an array");
+                 const std::shared_ptr<ArrayValue> keep = *array;
+                 keep->elements[p.parse_array_index(*keep, id)].reset();
+                 return;
+             }
              p.before_rebinding(id.text);
              bool erased = false;
              for (auto it = p.m_scopes.rbegin(); it != p.m_scopes.rend() && !erased; ++it)
                  erased = it->erase(id.text) > 0;
-             if (!erased) p.m_macros.erase(id.text);
+             if (!erased && p.m_macros.erase(id.text) == 0) p.warn(id, "Attempt to undef unknown identifier");
          }},
         {"if", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
         {"ifdef", [](Preprocessor& p, const Token& t) { p.directive_if(t); }},
@@ -188,7 +197,7 @@ void Preprocessor::directive_declare(const Token& tok, bool local) {
         parse_string();
     }
     const Token id = expect_identifier();
-    if (is_keyword(id.text)) {
+    if (is_keyword(id.text) && !is_predeclared_identifier(id.text)) {
         // Reported, then the declaration is read and dropped so the error does not cascade.
         report(make_diagnostic(Severity::Error, id, "'" + id.text + "' is a reserved word and cannot be declared"));
         expect("=");
@@ -458,25 +467,26 @@ void Preprocessor::directive_include(const Token& tok) {
         throw FatalError{};
     }
     const std::filesystem::path requested(name);
-    const std::vector<std::filesystem::path> candidates = search_candidates(requested, ".inc");
+    const std::vector<SearchCandidate> candidates = search_candidates(requested, ".inc");
     std::optional<std::uint32_t> index;
     std::string error = "No such file or directory";
-    const std::size_t per_name = requested.has_extension() ? candidates.size() : candidates.size() / 2;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
+    for (const SearchCandidate& c : candidates) {
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(candidates[i], ec)) continue;
+        if (!std::filesystem::is_regular_file(c.path, ec)) continue;
         // A library file is one found through the library paths, or beside the library file including it.
-        const bool own_folder = !requested.is_absolute() && i % per_name == 0;
-        const bool library = own_folder ? m_files[m_file]->library : !requested.is_absolute();
-        index = load_file(candidates[i], library, error);
-        if (index) break;
+        index = load_file(c.path, c.library, error);
+        if (!index) continue;
+        if (c.beyond_povray)
+            warn(name_tok, "'" + name + "' is found only beside the file including it, where POV-Ray does not look "
+                           "(it looks in the current folder and the library paths)");
+        break;
     }
     if (!index) {
         Diagnostic d = make_diagnostic(Severity::Error, name_tok, "cannot open include file '" + name + "': " + error);
         std::string searched;
         std::vector<std::string> folders;
         for (const auto& c : candidates) {
-            const std::string folder = c.parent_path().empty() ? "." : c.parent_path().string();
+            const std::string folder = c.path.parent_path().empty() ? "." : c.path.parent_path().string();
             if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
         }
         for (const auto& f : folders) searched += (searched.empty() ? "" : ", ") + f;

@@ -91,6 +91,7 @@ protected:
     virtual Color parse_color() = 0;
 
     std::vector<std::uint32_t> m_rand_streams;  ///< states of the streams seed() created
+    std::uint64_t m_divisions_by_zero = 0;       ///< divisions by zero so far (each warned about)
 };
 
 }  // namespace wardray::parser

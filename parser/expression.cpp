@@ -1,5 +1,6 @@
 // Expressions: floats, vectors and colours with POV-Ray's precedence, constants and array elements.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,14 @@
 namespace wardray::parser {
 
 namespace {
+
+/// POV-Ray 3.7's `now`: the time in days (with a fraction) since 2000-01-01 00:00 UTC.
+double days_since_2000() {
+    using namespace std::chrono;
+    const sys_days y2k = year{2000} / January / 1;
+    const auto elapsed = duration_cast<microseconds>(system_clock::now() - y2k);
+    return static_cast<double>(elapsed.count()) * 1e-6 / (24.0 * 60.0 * 60.0);
+}
 
 // POV-Ray compat: '=' and '!=' compare with this tolerance.
 constexpr double k_epsilon = kPovEpsilon;  // POV-Ray's EPSILON
@@ -152,11 +161,13 @@ bool Evaluator::parse_bool_optional() {
 
 Numeric Evaluator::parse_conditional(bool allow_less) {
     const Token at = peek();
+    const std::uint64_t divisions_by_zero = m_divisions_by_zero;
     Numeric c = parse_logical(allow_less);
     if (!is_punct(peek_expr(), "?")) {
         // Every expression ends here: an infinity or NaN (1e999, pow(10, 400), 0 * 1e999) stops at its source
-        // instead of reaching the renderer as a silently skipped object or a NaN pixel.
-        for (int i = 0; i < c.n; ++i)
+        // instead of reaching the renderer as a silently skipped object or a NaN pixel. A division by zero has
+        // been warned about and goes on, as in POV-Ray.
+        for (int i = 0; i < c.n && m_divisions_by_zero == divisions_by_zero; ++i)
             if (!std::isfinite(c.v[i]))
                 fail(at, "this expression's value is not a finite number (it overflows or has no value)");
         return c;
@@ -245,9 +256,14 @@ Numeric Evaluator::parse_multiplicative(std::optional<Numeric> first) {
             a = combine(a, b, +[](double x, double y) { return x * y; });
         } else {
             const Numeric pb = b.promoted(std::max(a.n, b.n));
-            for (int i = 0; i < pb.n; ++i)
-                if (pb.v[i] == 0.0) fail(o, "division by zero");
-            a = combine(a, b, +[](double x, double y) { return x / y; });
+            bool by_zero = false;
+            for (int i = 0; i < pb.n; ++i) by_zero |= pb.v[i] == 0.0;
+            // POV-Ray compat: dividing by exactly zero warns and gives a huge positive value, whatever the sign.
+            if (by_zero) {
+                warn(o, "Divide by zero.");
+                ++m_divisions_by_zero;
+            }
+            a = combine(a, b, +[](double x, double y) { return y == 0.0 ? HUGE_VAL : x / y; });
         }
     }
 }
@@ -352,6 +368,7 @@ std::optional<Numeric> Evaluator::builtin_constant(const Token& t) {
         {"image_width", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_width); }},
         {"image_height", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_height); }},
         {"version", [](const Evaluator& e) { return Numeric::scalar(e.m_version); }},
+        {"now", [](const Evaluator&) { return Numeric::scalar(days_since_2000()); }},
     };
     if (const Constant* constant = constants.find(t.text)) return (*constant)(*this);
     return std::nullopt;

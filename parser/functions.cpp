@@ -110,6 +110,11 @@ std::string Evaluator::parse_string() {
         invoke_macro(t, m->second);
         return parse_string();
     }
+    // POV-Ray compat: the identifier's value is taken before the token after it is read, since that token may be
+    // the #end of the macro whose #local it is (`#macro M() #local S = "a"; S #end`).
+    std::optional<std::string> held;
+    if (const Value* found = lookup(w); found && std::holds_alternative<std::string>(*found))
+        held = std::get<std::string>(*found);
     if (is_punct(peek_expr(), "[") && t.file == m_file && m_pos > 0 &&
         m_files[m_file]->tokens[m_pos - 1].column == t.column && m_files[m_file]->tokens[m_pos - 1].line == t.line) {
         --m_pos;  // the identifier was just read from this file: read it again as an array element
@@ -118,6 +123,7 @@ std::string Evaluator::parse_string() {
         if (const auto* s = std::get_if<std::string>(&*element)) return *s;
         fail(t, "expected a string but this element of '" + w + "' is " + value_kind_name(*element));
     }
+    if (held) return *held;
     const Value* v = lookup(w);
     if (v == nullptr) fail_undeclared(t);
     if (const auto* s = std::get_if<std::string>(v)) return *s;
@@ -313,11 +319,20 @@ Numeric Evaluator::parse_function(const Token& name) {
         return Numeric::vector3(
             m_options.vector_turbulence(vector_arg(args[3]), octaves, scalar_arg(args[1]), scalar_arg(args[0])));
     }
+    if (f == "bitwise_and" || f == "bitwise_or" || f == "bitwise_xor") {
+        // POV-Ray compat: each argument is truncated to an int, then all are combined left to right.
+        const auto args = arg_list(1, SIZE_MAX);
+        int bits = static_cast<int>(scalar_arg(args[0]));
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            const int b = static_cast<int>(scalar_arg(args[i]));
+            bits = f == "bitwise_and" ? (bits & b) : f == "bitwise_or" ? (bits | b) : (bits ^ b);
+        }
+        return Numeric::scalar(bits);
+    }
     // POV-Ray compat: sum() and prod() exist only in the function language.
     if (f == "sum" || f == "prod")
         fail(name, "'" + f + "' can only be used inside a function body, e.g. function(n) { " + f + "(i, 1, n, i) }");
-    static const char* const unsupported[] = {"eval_pigment", "bitwise_and", "bitwise_or", "bitwise_xor",
-                                              "datetime", "now"};
+    static const char* const unsupported[] = {"eval_pigment", "datetime"};
     for (const char* u : unsupported)
         if (f == u) fail(name, "'" + f + "' is not supported yet");
     fail(name, "expected a float or vector expression but found keyword '" + f + "'");

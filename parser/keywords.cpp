@@ -112,6 +112,15 @@ bool is_keyword(std::string_view word) {
     return set.count(word) > 0;
 }
 
+bool is_predeclared_identifier(std::string_view word) {
+    // POV-Ray compat: these come from the front end as declarations (simplefrontend.h, animationprocessing.cpp),
+    // not from the reserved word table; clock and clock_on are reserved words.
+    static const std::unordered_set<std::string_view> set = {"image_width",   "image_height",  "clock_delta",
+                                                             "initial_clock", "final_clock",   "initial_frame",
+                                                             "final_frame",   "frame_number"};
+    return set.count(word) > 0;
+}
+
 bool is_unsupported_object(std::string_view word) {
     static const auto set = make_set({&k_unsupported_objects});
     return set.count(word) > 0;

@@ -10,6 +10,9 @@ namespace wardray::parser {
 const std::vector<std::string_view>& all_keywords();
 /// True for reserved words (identifiers that cannot be user names).
 bool is_keyword(std::string_view word);
+/// True for the floats POV-Ray's front end declares before the scene (image_width, frame_number, ...): reserved here,
+/// but a scene may declare them anew, as POV-Ray lets it.
+bool is_predeclared_identifier(std::string_view word);
 /// Object kinds that are valid POV-Ray but not drawn yet (the drawn ones are WARDRAY_SHAPES); skipped with a warning.
 bool is_unsupported_object(std::string_view word);
 /// Other block statements that are valid POV-Ray but not rendered yet (fog, normal, interior, ...).

@@ -15,7 +15,9 @@ class ObjectReader : public AppearanceReader {
 protected:
     using AppearanceReader::AppearanceReader;
 
-    /// Reads an object after its keyword `kw`.
+    /// True when `t` starts an object: an object keyword, or a declared object's identifier standing alone.
+    bool is_object_start(const Token& t);
+    /// Reads an object after its keyword `kw`, or the copy of the declared object `kw` names.
     ObjectValue parse_object(const Token& kw);
     /// Reads an object's modifiers up to its '}'; `compound` for CSG, whose children come first.
     void parse_object_modifiers(ObjectValue& ov, bool compound);

@@ -60,9 +60,22 @@ void ObjectReader::parse_area_light(Light& light) {
     light.area_size2 = static_cast<int>(n2);
 }
 
+bool ObjectReader::is_object_start(const Token& t) {
+    if (is_object_keyword(t)) return true;
+    if (t.kind != TokenKind::Identifier || is_keyword(t.text) || m_macros.count(t.text)) return false;
+    const Value* v = lookup(t.text);
+    return v != nullptr && std::holds_alternative<Boxed<ObjectValue>>(*v);
+}
+
 ObjectValue ObjectReader::parse_object(const Token& kw) {
     const NestingGuard guard(*this, kw);
     const TokenText& w = kw.text;
+    if (!is_object_keyword(kw)) {
+        // POV-Ray compat: a declared object's identifier alone is that object, without modifiers (Parse_Object).
+        const Value* v = lookup(w);
+        if (v == nullptr) fail_undeclared(kw);
+        return *std::get<Boxed<ObjectValue>>(*v);
+    }
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
         warn_unsupported(kw, w);
         skip_block(kw);
@@ -130,7 +143,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         while (true) {
             expand_macros();
             const Token& t = peek();
-            if (is_object_keyword(t)) {
+            if (is_object_start(t)) {
                 const Token child_kw = next();
                 ObjectValue child = parse_object(child_kw);
                 if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
@@ -149,7 +162,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         while (true) {
             expand_macros();
             const Token& t = peek();
-            if (is_object_keyword(t)) {
+            if (is_object_start(t)) {
                 const Token child_kw = next();
                 ObjectValue child = parse_object(child_kw);
                 for (ObjectPart& part : child.parts) {

@@ -234,7 +234,8 @@ std::vector<ColorMapEntry> Parser::parse_color_map(const Token& kw) {
                 map.push_back({map_value(e.v[0]), to});
             } else {
                 if (e.n > 5) fail(at, "a colour has at most 5 components");
-                map.push_back({map_value(value), e.to_color()});
+                // POV-Ray compat: the expression may be followed by colour items (`[0.5 Red filter 0.5]`).
+                map.push_back({map_value(value), parse_color_modifiers(e.to_color())});
             }
         }
         expect("]");
@@ -281,11 +282,14 @@ void Parser::parse_pigment_list(Pigment& p, int count) {
     std::vector<ColorMapEntry> defaults = default_color_map(p.pattern.type);
     p.color_map.clear();
     p.pigment_map.clear();
+    // POV-Ray compat: a macro call may stand for an entry (`hexagon M(1), M(2), M(3)` with M giving a pigment).
+    expand_macros();
     if (is_word(peek(), "pigment")) {
         for (int i = 0; i < count && is_word(peek(), "pigment"); ++i) {
             const Token kw = next();
             p.pigment_map.push_back({static_cast<double>(i), parse_pigment_body(kw)});
             accept(",");
+            expand_macros();
         }
         for (int i = static_cast<int>(p.pigment_map.size()); i < count; ++i) {
             Pigment fill = m_default_pigment;
@@ -376,6 +380,12 @@ Normal Parser::parse_normal_body(const Token& kw) {
     expect("{");
     Normal n;
     n.loc = make_diagnostic(Severity::Note, kw, "").loc;
+    parse_normal_start(n);
+    parse_normal_items(n, kw, "}");
+    return n;
+}
+
+void Parser::parse_normal_start(Normal& n) {
     expand_macros();
     const Token& first = peek();
     if (first.kind == TokenKind::Identifier) {
@@ -397,8 +407,6 @@ Normal Parser::parse_normal_body(const Token& kw) {
             n.loc = loc;
         }
     }
-    parse_normal_items(n, kw, "}");
-    return n;
 }
 
 void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
@@ -437,6 +445,8 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
                 NormalMapEntry e;
                 e.value = map_value(parse_float());
                 accept(",");
+                // POV-Ray compat: an entry is a normal's body, so it may start with a normal identifier.
+                parse_normal_start(e.normal);
                 parse_normal_items(e.normal, open, "]");
                 n.normal_map.push_back(std::move(e));
             }

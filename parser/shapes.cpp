@@ -276,10 +276,10 @@ Text Parser::parse_text_parameters(const Token& kw) {
 
     // POV-Ray compat: fonts are searched like include files, and ".ttf" is tried for a name without extension.
     const std::filesystem::path requested(name);
-    const std::vector<std::filesystem::path> candidates = search_candidates(requested, ".ttf");
     std::shared_ptr<TrueTypeFont> font;
     std::string error = "No such file or directory";
-    for (const auto& c : candidates) {
+    for (const SearchCandidate& candidate : search_candidates(requested, ".ttf")) {
+        const std::filesystem::path& c = candidate.path;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(c, ec)) continue;
         const std::string key = std::filesystem::weakly_canonical(c, ec).string();
@@ -570,6 +570,12 @@ std::vector<Object> Parser::parse_object_list(const Token& kw, const std::vector
     std::vector<Object> list;
     while (true) {
         expand_macros();
+        Transform tr;
+        if (!list.empty() && parse_transform_item(peek(), tr)) {
+            // POV-Ray compat: transforms after the objects move all of them (Parse_Bound_Clip).
+            for (Object& o : list) o.transform = o.transform.then(tr);
+            continue;
+        }
         const Token t = next();
         if (is_punct(t, "}")) return list;
         if (bounded_by != nullptr && is_word(t, "bounded_by")) {
@@ -577,7 +583,7 @@ std::vector<Object> Parser::parse_object_list(const Token& kw, const std::vector
             list.insert(list.end(), bounded_by->begin(), bounded_by->end());
         } else if (bounded_by == nullptr && is_word(t, "clipped_by")) {
             // `bounded_by { clipped_by }`: bounds are only an optimisation, nothing to record.
-        } else if (is_object_keyword(t)) {
+        } else if (is_object_start(t)) {
             ObjectValue child = parse_object(t);
             if (auto o = as_single_object(child)) list.push_back(std::move(*o));
         } else {

@@ -1,6 +1,7 @@
 // SourceStream: reading and lexing source files, the include search order, and diagnostics with their notes.
 #include "parser/source_stream.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -173,20 +174,38 @@ void SourceStream::lex_file(std::uint32_t index, bool first) {
     }
 }
 
-std::vector<std::filesystem::path> SourceStream::search_candidates(const std::filesystem::path& requested,
-                                                            const char* extension) const {
-    // Search order: the reading file's folder, then the library paths in order.
-    std::vector<std::filesystem::path> candidates;
+std::vector<SourceStream::SearchCandidate> SourceStream::search_candidates(const std::filesystem::path& requested,
+                                                                        const char* extension) const {
+    namespace fs = std::filesystem;
+    std::vector<SearchCandidate> candidates;
     if (requested.is_absolute()) {
-        candidates.push_back(requested);
+        candidates.push_back({requested, false, false});
     } else {
-        candidates.push_back(std::filesystem::path(m_files[m_file]->path).parent_path() / requested);
-        for (const auto& dir : m_options.library_paths) candidates.push_back(dir / requested);
+        // POV-Ray compat: POV-Ray looks in the current folder, then in its library paths in order (its front end's
+        // FindFilePath), for the scene and for every file it includes, however deep. The scene's folder comes next
+        // (POV-Ray is run from there); the reading file's own folder, which POV-Ray never searches, comes last.
+        std::vector<fs::path> seen;
+        auto add = [&](const fs::path& folder, bool library, bool beyond) {
+            std::error_code ec;
+            const fs::path key = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, ec);
+            if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;
+            seen.push_back(key);
+            candidates.push_back({folder.empty() ? requested : folder / requested, library, beyond});
+        };
+        add(fs::path(), false, false);
+        add(fs::path(m_files.front()->path).parent_path(), false, false);
+        for (const auto& dir : m_options.library_paths) add(dir, true, false);
+        const SourceFile& reading = *m_files[m_file];
+        add(fs::path(reading.path).parent_path(), reading.library, !reading.library);
     }
     if (!requested.has_extension()) {
         // POV-Ray compat: a name without extension is also tried with the usual one.
         const std::size_t n = candidates.size();
-        for (std::size_t i = 0; i < n; ++i) candidates.push_back(candidates[i].string() + extension);
+        for (std::size_t i = 0; i < n; ++i) {
+            SearchCandidate c = candidates[i];
+            c.path += extension;
+            candidates.push_back(std::move(c));
+        }
     }
     return candidates;
 }

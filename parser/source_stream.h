@@ -85,10 +85,18 @@ protected:
     /// Reads and lexes a file once (a second #include of it reuses the tokens); `library` marks a file found
     /// through the library paths.
     std::optional<std::uint32_t> load_file(const std::filesystem::path& path, bool library, std::string& error);
-    /// Where a file named in the scene is looked for, in order: the reading file's folder, then the library paths;
-    /// a name without extension is then tried with `extension` in the same places.
-    std::vector<std::filesystem::path> search_candidates(const std::filesystem::path& requested,
-                                                         const char* extension) const;
+    /// One place a file named in the scene may be: its path, whether it counts as a library file, and whether only
+    /// wardray looks there (POV-Ray would not find it).
+    struct SearchCandidate {
+        std::filesystem::path path;
+        bool library = false;
+        bool beyond_povray = false;
+    };
+    /// Where a file named in the scene is looked for, in POV-Ray's order: the current folder, the scene's folder,
+    /// the library paths; then the reading file's folder. A name without extension is then tried with
+    /// `extension` in the same places.
+    std::vector<SearchCandidate> search_candidates(const std::filesystem::path& requested,
+                                                   const char* extension) const;
 
     /// A diagnostic at `at` with the source line and the include/macro notes.
     Diagnostic make_diagnostic(Severity s, const Token& at, std::string message) const;

@@ -10,6 +10,10 @@ namespace wardray::parser {
 
 void SceneReader::parse_statement() {
     const Token t = next();
+    // POV-Ray compat: a float, vector or colour #declare takes a second ';' (Parse_RValue's, then Parse_Declare's),
+    // even one after the end of the file it stands in (`#include "a.inc";` where a.inc ends with one).
+    if (is_punct(t, ";") && m_tokens_taken == m_numeric_declare_semicolon + 1 && m_numeric_declare_semicolon > 0)
+        return;
     if (t.kind != TokenKind::Identifier) {
         fail(t, t.kind == TokenKind::EndOfFile ? "unexpected end of file"
                                                : "expected a statement but found '" + t.text + "'");
@@ -43,10 +47,24 @@ void SceneReader::parse_statement() {
          }},
         {"sky_sphere", [](SceneReader& r, const Token& kw) { r.m_builder.set_sky_sphere(r.parse_sky_sphere(kw)); }},
         {"fog", [](SceneReader& r, const Token& kw) { r.m_builder.add_fog(r.parse_fog(kw)); }},
+        // POV-Ray compat: the 3.1 forms without '#', read with POV-Ray's warnings.
+        {"declare",
+         [](SceneReader& r, const Token& kw) {
+             r.warn(kw, "Should have '#' before 'declare'.");
+             if (r.m_version >= 3.5)
+                 r.warn(kw, "'declare' should be changed to '#declare'. Future versions may not support 'declare' "
+                            "and may require '#declare'.");
+             r.directive_declare(kw, false);
+         }},
+        {"include",
+         [](SceneReader& r, const Token& kw) {
+             r.warn(kw, "Should have '#' before 'include'.");
+             r.directive_include(kw);
+         }},
     };
     if (const Statement* statement = statements.find(w)) {
         (*statement)(*this, t);
-    } else if (is_object_keyword(t)) {
+    } else if (is_object_start(t)) {
         place_object(parse_object(t));
     } else if (is_unsupported_block(w)) {
         warn_unsupported(t, w);
@@ -111,6 +129,16 @@ void inherit_textures(Object& o) {
     }
 }
 
+// POV-Ray compat: an `ior` given in a plain texture's finish (3.1 syntax) becomes the object's interior ior, down
+// the tree, once the textures are inherited (Post_Process).
+void promote_finish_ior(Object& o) {
+    const Texture& tx = o.texture;
+    if (tx.map_pattern.type == Pattern::Type::None && tx.texture_map.empty() && tx.finish.legacy_ior >= 0.0)
+        o.interior.ior = tx.finish.legacy_ior;
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) promote_finish_ior(child);
+}
+
 }  // namespace
 
 void SceneReader::place_object(ObjectValue ov) {
@@ -123,6 +151,7 @@ void SceneReader::place_object(ObjectValue ov) {
             part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
+        promote_finish_ior(part.object);
         m_builder.add_object(std::move(part.object));
     }
     for (Light& l : ov.lights) m_builder.add_light(std::move(l));

@@ -48,6 +48,7 @@ const Token& TokenStream::peek_expr() {
 Token TokenStream::next() {
     Token t = peek();
     if (t.kind != TokenKind::EndOfFile) ++m_pos;
+    ++m_tokens_taken;
     if (t.kind == TokenKind::Punct) {
         if (t.text == "{") {
             ++m_brace_depth;
@@ -96,6 +97,7 @@ Token TokenStream::expect_identifier() {
 void TokenStream::accept_semicolon_after_declare(const Value& v, const Token& where) {
     if (is_punct(peek_expr(), ";")) {
         next();
+        if (std::holds_alternative<Numeric>(v)) m_numeric_declare_semicolon = m_tokens_taken;
         return;
     }
     // POV-Ray compat: 3.5+ wants ';' after float, vector and colour declarations.
@@ -256,7 +258,11 @@ void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
                 args.emplace_back();
             else
                 args.emplace_back(parse_rvalue());
-            if (accept(",")) continue;
+            if (accept(",")) {
+                // POV-Ray compat: a comma may follow the last argument (`M(A, B, )`), as every comma is optional.
+                if (args.size() == macro.params.size() && accept(")")) break;
+                continue;
+            }
             // POV-Ray compat: the comma between arguments may be left out (shapes.pov: `Center_Object(...) -y`).
             if (args.size() < macro.params.size() && !is_punct(peek(), ")")) continue;
             expect(")");

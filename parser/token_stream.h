@@ -52,7 +52,8 @@ protected:
     Token expect(std::string_view punct);
     /// Consumes an identifier or fails.
     Token expect_identifier();
-    /// Takes the ';' after a declaration; warns when a numeric declaration lacks it (3.5+).
+    /// Takes the ';' after a declaration; warns when a numeric declaration lacks it (3.5+). A second ';' may follow
+    /// a numeric one (see m_numeric_declare_semicolon).
     void accept_semicolon_after_declare(const Value& v, const Token& where);
     /// True when `t` starts a string expression (a string, a string function or a string identifier).
     bool starts_string(const Token& t);
@@ -106,6 +107,10 @@ protected:
     std::unordered_map<std::string, Macro> m_macros;
     std::vector<std::unordered_map<std::string, Value>> m_scopes;
     std::uint64_t m_loop_iterations = 0;
+    /// Tokens consumed so far by next().
+    std::uint64_t m_tokens_taken = 0;
+    /// m_tokens_taken when the ';' ending a float, vector or colour declaration was consumed.
+    std::uint64_t m_numeric_declare_semicolon = 0;
     /// Identifiers whose #declare failed: their uses are not errors again.
     std::set<std::string> m_failed_declarations;
     /// Deferred declarations being evaluated (nested when one reads another): their stream ends at its own end.

@@ -149,8 +149,9 @@ TEST(Golden, OperatorOnAPigment) {
 }
 
 TEST(Golden, DivisionByZero) {
-    EXPECT_EQ(first_diagnostic("#declare A = 1 / (2 - 2);\n"),
-              "test.pov:1:16: error: division by zero\n"
+    // POV-Ray compat: a warning, not an error (the #error ends the parse so that the diagnostics are kept).
+    EXPECT_EQ(first_diagnostic("#declare A = 1 / (2 - 2);\n#error \"stop\"\n"),
+              "test.pov:1:16: warning: Divide by zero.\n"
               "    1 | #declare A = 1 / (2 - 2);\n"
               "      |                ^\n");
 }

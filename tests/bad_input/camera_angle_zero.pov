@@ -1,2 +1,0 @@
-camera { location <0, 0, -3> look_at 0 angle 0 }
-sphere { 0, 1 pigment { rgb 1 } }

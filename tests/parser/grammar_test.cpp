@@ -1,0 +1,228 @@
+// Tests of the grammar POV-Ray 3.7 accepts beyond its example scenes: identifiers standing alone where POV-Ray
+// takes them, its 3.1-era forms (read with its warnings), and its rules for includes, macros and directives.
+#include <string>
+
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+using test::parse_ok;
+using test::TempDir;
+
+bool has_warning(const Scene& s, const std::string& text) {
+    for (const Diagnostic& d : s.warnings)
+        if (d.message.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST(Grammar, TextureTakesPigmentNormalAndFinishIdentifiers) {
+    const Scene s = parse_ok(R"(
+        #declare P = pigment { rgb <1, 0, 0> }
+        #declare F = finish { ambient 0.3 }
+        #declare N = normal { bumps 0.25 }
+        sphere { 0, 1 texture { P N F scale 2 } }
+        sphere { 0, 1 texture { F finish { diffuse 0.2 } } }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Texture& a = s.objects[0].texture;
+    EXPECT_EQ(a.pigment.color.r, 1.0);
+    EXPECT_EQ(a.finish.ambient.r, 0.3);
+    EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
+    EXPECT_EQ(a.normal.amount, 0.25);
+    // A finish block after a finish identifier starts from the default finish again, as in POV-Ray.
+    EXPECT_EQ(s.objects[1].texture.finish.diffuse, 0.2);
+}
+
+TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
+    const Scene s = parse_ok(R"(
+        #declare N = normal { dents 0.75 }
+        sphere { 0, 1 pigment { rgb 1 } normal { gradient x normal_map { [0 N] [1 N scale 2] } } }
+    )");
+    const Normal& n = s.objects[0].texture.normal;
+    ASSERT_EQ(n.normal_map.size(), 2u);
+    EXPECT_EQ(n.normal_map[0].normal.amount, 0.75);
+    EXPECT_EQ(n.normal_map[1].normal.pattern.type, Pattern::Type::Dents);
+}
+
+TEST(Grammar, NoBumpScaleInATextureIsReadWithAWarning) {
+    const Scene s = parse_ok("sphere { 0, 1 texture { pigment { rgb 1 } normal { bumps } scale 8 no_bump_scale } }");
+    EXPECT_TRUE(has_warning(s, "no_bump_scale is not rendered yet"));
+}
+
+TEST(Grammar, FinishIorMovesIntoTheInterior) {
+    const Scene s = parse_ok(R"(
+        #declare Glass = finish { ior 1.5 refraction 1 phong 1 }
+        sphere { 0, 1 pigment { rgbf 1 } finish { Glass } }
+        union { sphere { 0, 1 } sphere { x, 1 } texture { pigment { rgbf 1 } finish { ior 1.33 } } }
+        sphere { 0, 1 pigment { rgbf 1 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].interior.ior, 1.5);
+    EXPECT_EQ(s.objects[1].interior.ior, 1.33);
+    EXPECT_EQ(s.objects[2].interior.ior, 1.33);
+    EXPECT_EQ(s.objects[3].interior.ior, 1.0);
+    EXPECT_TRUE(has_warning(s, "Index of refraction value should be specified in 'interior{...}' statement."));
+    EXPECT_TRUE(has_warning(s, "Refraction value unnecessary to turn on refraction."));
+}
+
+TEST(Grammar, FinishCausticsAndPartialRefractionWarn) {
+    const Scene s = parse_ok("sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 refraction 0.5 } }");
+    EXPECT_TRUE(has_warning(s, "Caustics value should be specified in 'interior{...}' statement."));
+    EXPECT_TRUE(has_warning(s, "refraction other than 1 is not rendered yet"));
+}
+
+TEST(Grammar, MacroGivingAPigmentIsAnEntryOfAListPattern) {
+    const Scene s = parse_ok(R"(
+        #macro Tile(C) pigment { rgb C } #end
+        sphere { 0, 1 pigment { hexagon Tile(<1, 0, 0>), Tile(<0, 1, 0>), Tile(<0, 0, 1>) } }
+    )");
+    const Pigment& p = s.objects[0].texture.pigment;
+    ASSERT_EQ(p.pigment_map.size(), 3u);
+    EXPECT_EQ(p.pigment_map[1].pigment.color.g, 1.0);
+    EXPECT_EQ(p.pigment_map[2].pigment.color.b, 1.0);
+}
+
+TEST(Grammar, ColorMapEntryTakesFilterAndTransmitAfterAnExpression) {
+    const Scene s = parse_ok(R"(
+        #declare Red = <1, 0, 0>;
+        sphere { 0, 1 pigment { gradient x color_map { [0 Red filter 0.5] [1 <0, 0, 1> transmit 0.25] } } }
+    )");
+    const auto& map = s.objects[0].texture.pigment.color_map;
+    ASSERT_EQ(map.size(), 2u);
+    EXPECT_EQ(map[0].color.r, 1.0);
+    EXPECT_EQ(map[0].color.filter, 0.5);
+    EXPECT_EQ(map[1].color.b, 1.0);
+    EXPECT_EQ(map[1].color.transmit, 0.25);
+}
+
+TEST(Grammar, CameraAngleZeroLeavesTheDirection) {
+    const Scene s = parse_ok("camera { location 0 direction 2 * z angle 0 }");
+    EXPECT_EQ(s.camera.direction.z, 2.0);
+    const ParseResult r = test::parse_fail("camera { location 0 angle -1 }");
+    EXPECT_NE(test::all_diagnostics(r).find("Negative viewing angle."), std::string::npos);
+}
+
+TEST(Grammar, DivisionByZeroWarnsAndGivesAHugeValue) {
+    const Scene s = parse_ok(R"(
+        #declare Clock = 0;
+        #declare A = -1 / Clock;
+        #if (A < 1e300) #error "not huge" #end
+    )");
+    EXPECT_TRUE(has_warning(s, "Divide by zero."));
+}
+
+TEST(Grammar, BitwiseFunctionsTruncateToInts) {
+    parse_ok(R"(
+        #if (bitwise_and(12.7, 10) != 8 | bitwise_or(1, 2, 4) != 7 | bitwise_xor(6, 3) != 5) #error "bits" #end
+    )");
+}
+
+TEST(Grammar, NowCountsDaysSince2000) {
+    // 2024-01-01 is 8766 days after 2000-01-01; a scene read today is later than that.
+    parse_ok("#if (now < 8766 | now > 80000) #error \"now is not in days since 2000\" #end");
+}
+
+TEST(Grammar, FrontEndIdentifiersCanBeDeclaredAnew) {
+    parse_ok(R"(
+        #declare image_width = 1920;
+        #declare frame_number = 7;
+        #if (image_width != 1920 | frame_number != 7) #error "not redeclared" #end
+    )");
+    const ParseResult r = test::parse_fail("#declare clock = 1;\n");
+    EXPECT_NE(test::all_diagnostics(r).find("'clock' is a reserved word"), std::string::npos);
+}
+
+TEST(Grammar, UndefOfAnArrayElement) {
+    parse_ok(R"(
+        #declare A = array[2] { 1, 2 }
+        #undef A[1]
+        #ifdef (A[1]) #error "still defined" #end
+        #declare A[1] = pigment { rgb 1 }
+        #ifndef (A[1]) #error "not defined again" #end
+    )");
+}
+
+TEST(Grammar, DeclaredObjectStandsAloneAsAnObject) {
+    const Scene s = parse_ok(R"(
+        #declare Ball = sphere { 0, 1 pigment { rgb 1 } }
+        #declare Cut = box { -1, 1 }
+        Ball
+        union { Ball sphere { x, 1 } translate y }
+        sphere { 0, 2 clipped_by { Cut scale 0.5 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[2].transform.point({1, 0, 0}), (Vec3{1, 1, 0}));
+    ASSERT_EQ(s.objects[3].clipped_by.size(), 1u);
+    EXPECT_EQ(s.objects[3].clipped_by[0].transform.point({1, 1, 1}), (Vec3{0.5, 0.5, 0.5}));
+}
+
+TEST(Grammar, FloatDeclarationTakesASecondSemicolonEvenAfterItsFile) {
+    TempDir dir;
+    dir.write("floats.inc", "#declare R = 2;\n");
+    dir.write("pigments.inc", "#declare P = pigment { rgb 1 }\n");
+    const auto ok = dir.write("ok.pov", "global_settings { assumed_gamma 1 }\n#include \"floats.inc\";\n"
+                                        "#declare S = 1;;\nsphere { 0, R + S }\n");
+    const ParseResult r = parse_file(ok, test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    // POV-Ray compat: after another kind of declaration the ';' is an error, as in POV-Ray.
+    const auto bad = dir.write("bad.pov", "global_settings { assumed_gamma 1 }\n#include \"pigments.inc\";\n");
+    EXPECT_FALSE(parse_file(bad, test::default_options()).ok());
+}
+
+TEST(Grammar, DeclareAndIncludeWithoutHashWarn) {
+    TempDir dir;
+    dir.write("r.inc", "#declare R = 3;\n");
+    const auto main = dir.write("s.pov", "global_settings { assumed_gamma 1 }\ninclude \"r.inc\"\n"
+                                         "declare Ball = sphere { 0, R }\nobject { Ball }\n");
+    const ParseResult r = parse_file(main, test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(r.scene->objects.size(), 1u);
+    EXPECT_TRUE(has_warning(*r.scene, "Should have '#' before 'declare'."));
+    EXPECT_TRUE(has_warning(*r.scene, "Should have '#' before 'include'."));
+}
+
+TEST(Grammar, MacroGivesOneOfItsLocalsStandingBeforeItsEnd) {
+    parse_ok(R"(
+        #macro Name(A) #local R = concat(A, "x"); R #end
+        #macro Next(A) #local R = A + 1; R #end
+        #macro Pair(A) #local R = array[2] { A, A }; R #end
+        #declare R = "outer";
+        #declare S = Name("a");
+        #declare T = concat(Name("b"), "!");
+        #declare N = Next(1);
+        #declare P = Pair(3);
+        #if (strcmp(S, "ax") != 0 | strcmp(T, "bx!") != 0 | N != 2 | P[1] != 3) #error "macro value" #end
+    )");
+}
+
+TEST(Grammar, MacroCallTakesACommaAfterItsLastArgument) {
+    const Scene s = parse_ok(R"(
+        #macro Place(R, X) sphere { X * x, R } #end
+        Place(1, 2, )
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+}
+
+TEST(Grammar, NestedIncludeIsFoundFromTheSceneFolder) {
+    TempDir dir;
+    dir.write("scene/parts/a.inc", "#include \"parts/b.inc\"\n#include \"c.inc\"\n");
+    dir.write("scene/parts/b.inc", "#declare B = 1;\n");
+    dir.write("scene/parts/c.inc", "#declare C = 2;\n");
+    dir.write("scene/c.inc", "#declare C = 3;\n");
+    const auto main = dir.write("scene/s.pov", "global_settings { assumed_gamma 1 }\n#include \"parts/a.inc\"\n"
+                                               "sphere { 0, B + C }\n");
+    ParseResult r = parse_file(main, test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    // POV-Ray finds c.inc in the scene's folder (its current folder), not beside a.inc.
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 4.0);
+    // Found only beside the including file, a file is read, with a warning that POV-Ray would not find it.
+    std::filesystem::remove(dir.path() / "scene/c.inc");
+    r = parse_file(main, test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 3.0);
+    EXPECT_TRUE(has_warning(*r.scene, "'c.inc' is found only beside the file including it"));
+}
+
+}  // namespace
+}  // namespace wardray::parser
