@@ -31,17 +31,6 @@ bool parse_double(std::string_view text, double& out) {
     return end == s.c_str() + s.size() && std::isfinite(out);
 }
 
-bool starts_with_ci(std::string_view s, std::string_view prefix) {
-    if (s.size() < prefix.size()) return false;
-    for (std::size_t i = 0; i < prefix.size(); ++i)
-        if (std::toupper(static_cast<unsigned char>(s[i])) != std::toupper(static_cast<unsigned char>(prefix[i])))
-            return false;
-    return true;
-}
-
-bool equals_ci(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && starts_with_ci(a, b);
-}
 
 std::filesystem::path to_path(std::string_view text) {
     return std::filesystem::path(std::string(text));
@@ -171,10 +160,7 @@ Why set_gamma(std::string_view text, GammaCurve& out) {
         out = GammaCurve::power_law(g);
         return std::nullopt;
     }
-    if (text.size() == 4 && std::tolower(static_cast<unsigned char>(text[0])) == 's' &&
-        std::tolower(static_cast<unsigned char>(text[1])) == 'r' &&
-        std::tolower(static_cast<unsigned char>(text[2])) == 'g' &&
-        std::tolower(static_cast<unsigned char>(text[3])) == 'b') {
+    if (equals_ci(text, "srgb")) {
         out = GammaCurve::srgb();
         return std::nullopt;
     }
@@ -310,6 +296,18 @@ constexpr OptionSpec kOptions[] = {
 };
 
 }  // namespace
+
+bool starts_with_ci(std::string_view s, std::string_view prefix) {
+    if (s.size() < prefix.size()) return false;
+    for (std::size_t i = 0; i < prefix.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(s[i])) != std::toupper(static_cast<unsigned char>(prefix[i])))
+            return false;
+    return true;
+}
+
+bool equals_ci(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && starts_with_ci(a, b);
+}
 
 std::span<const OptionSpec> option_table() {
     return kOptions;

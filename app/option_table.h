@@ -48,6 +48,11 @@ struct OptionSpec {
 /// Every option, in --help order: POV-Ray's switches first, then wardray's long options.
 std::span<const OptionSpec> option_table();
 
+/// Whether `s` begins with `prefix`, ignoring ASCII case (POV-Ray's switches and INI keys ignore it).
+bool starts_with_ci(std::string_view s, std::string_view prefix);
+/// Whether `a` and `b` are equal, ignoring ASCII case.
+bool equals_ci(std::string_view a, std::string_view b);
+
 /// The entry whose switch letters begin `body` (the switch without its sign), the longest such; an entry of kind
 /// None matches only its letters exactly. Case-insensitive, as in POV-Ray. Null when none does.
 const OptionSpec* find_switch(std::string_view body);

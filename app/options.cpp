@@ -10,20 +10,12 @@ namespace wardray::app {
 
 namespace {
 
-bool starts_with_ci(std::string_view s, std::string_view prefix) {
-    if (s.size() < prefix.size()) return false;
-    for (std::size_t i = 0; i < prefix.size(); ++i)
-        if (std::toupper(static_cast<unsigned char>(s[i])) != std::toupper(static_cast<unsigned char>(prefix[i])))
-            return false;
-    return true;
-}
-
 // POV-Ray's INI booleans: on/off, true/false, yes/no, 1/0, in any case.
 std::optional<bool> parse_ini_bool(std::string_view text) {
     for (const char* yes : {"on", "true", "yes", "1"})
-        if (text.size() == std::string_view(yes).size() && starts_with_ci(text, yes)) return true;
+        if (equals_ci(text, yes)) return true;
     for (const char* no : {"off", "false", "no", "0"})
-        if (text.size() == std::string_view(no).size() && starts_with_ci(text, no)) return false;
+        if (equals_ci(text, no)) return false;
     return std::nullopt;
 }
 
