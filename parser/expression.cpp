@@ -99,6 +99,12 @@ Value Evaluator::parse_rvalue() {
             Value element = *take_array_element();
             const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
             if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
+            // An element of an array of functions followed by '(' is a call, the first operand of an expression.
+            if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&element);
+                f != nullptr && is_punct(peek(), "(")) {
+                const std::shared_ptr<const UserFunction> keep = *f;
+                return parse_additive(call_user_function(t, *keep));
+            }
             return element;
         }
         if (w == "function") return parse_user_function(next());
@@ -427,6 +433,11 @@ Numeric Evaluator::parse_primary() {
     }
     if (auto element = take_array_element()) {
         if (const auto* n = std::get_if<Numeric>(&*element)) return *n;
+        // POV-Ray compat: an array of functions is called element by element, `F[i](x, y)`.
+        if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&*element)) {
+            const std::shared_ptr<const UserFunction> keep = *f;
+            return call_user_function(t, *keep);
+        }
         fail(t, "expected a float or vector but this element of '" + t.text + "' is " + value_kind_name(*element));
     }
     if (const Value* v = lookup(t.text)) {

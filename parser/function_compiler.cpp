@@ -231,8 +231,14 @@ private:
         }
         if (m_p.is_array_element_next()) {
             const Value element = *m_p.take_array_element();
+            // POV-Ray compat: an element of an array of functions is called like a declared function.
+            if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&element)) {
+                const std::shared_ptr<const UserFunction> keep = *f;
+                call_user(t, *keep);
+                return;
+            }
             const auto* n = std::get_if<Numeric>(&element);
-            if (n == nullptr) m_p.fail(t, "this element of '" + w + "' is not a float");
+            if (n == nullptr) m_p.fail(t, "this element of '" + w + "' is neither a float nor a function");
             declared_numeric(t, *n);
             return;
         }

@@ -224,5 +224,23 @@ TEST(Grammar, NestedIncludeIsFoundFromTheSceneFolder) {
     EXPECT_TRUE(has_warning(*r.scene, "'c.inc' is found only beside the file including it"));
 }
 
+TEST(Grammar, AnElementOfAnArrayOfFunctionsIsCalled) {
+    // Scenes from the wild keep functions in arrays and call them as F[i](x, y), at parse time and in functions.
+    const Scene s = parse_ok(R"(
+        #declare F = array[2];
+        #declare F[0] = function(x) { x * 2 }
+        #declare F[1] = function(x, y) { x + y + 10 }
+        #declare G = function(x) { F[0](x) + F[1](x, 1) }
+        #declare H = F[0](4) + 1;
+        sphere { 0, F[1](5, 0) }
+        sphere { 0, G(3) }
+        sphere { 0, H }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[2].shape).radius, 9.0);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 15.0);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[1].shape).radius, 6.0 + 14.0);
+}
+
 }  // namespace
 }  // namespace wardray::parser
