@@ -1,6 +1,7 @@
 // ObjectReader: object statements (shapes, CSG, declared objects), their modifiers, transforms and lights.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,9 @@ protected:
     bool is_object_start(const Token& t);
     /// Reads an object after its keyword `kw`, or the copy of the declared object `kw` names.
     ObjectValue parse_object(const Token& kw);
+    /// Reads a CSG block's child statements and light sources up to its modifiers: each child object goes to
+    /// `take_child`, the lights (the children's too) to `ov`.
+    void read_csg_children(ObjectValue& ov, const std::function<void(ObjectValue& child)>& take_child);
     /// Reads an object's modifiers up to its '}'; `compound` for CSG, whose children come first.
     void parse_object_modifiers(ObjectValue& ov, bool compound);
     /// What one object's modifiers have read so far, which later modifiers depend on.

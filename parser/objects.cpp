@@ -140,49 +140,43 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         // A real CSG node: each child statement becomes one child object (a union node when it has several parts).
         Csg csg;
         csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
-        while (true) {
-            expand_macros();
-            const Token& t = peek();
-            if (is_object_start(t)) {
-                const Token child_kw = next();
-                ObjectValue child = parse_object(child_kw);
-                if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
-                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
-            } else if (is_word(t, "light_source")) {
-                const Token lkw = next();
-                ov.lights.push_back(parse_light_body(lkw));
-            } else {
-                break;
-            }
-        }
+        read_csg_children(ov, [&](ObjectValue& child) {
+            if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
+        });
         add_shape(std::move(csg));
     } else {
         // union: children first, then the union's own modifiers.
         ov.compound = true;
-        while (true) {
-            expand_macros();
-            const Token& t = peek();
-            if (is_object_start(t)) {
-                const Token child_kw = next();
-                ObjectValue child = parse_object(child_kw);
-                for (ObjectPart& part : child.parts) {
-                    if (!part.has_texture && child.texture) {
-                        part.object.texture = *child.texture;
-                        part.has_texture = true;
-                    }
-                    ov.parts.push_back(std::move(part));
+        read_csg_children(ov, [&](ObjectValue& child) {
+            for (ObjectPart& part : child.parts) {
+                if (!part.has_texture && child.texture) {
+                    part.object.texture = *child.texture;
+                    part.has_texture = true;
                 }
-                for (Light& l : child.lights) ov.lights.push_back(std::move(l));
-            } else if (is_word(t, "light_source")) {
-                const Token lkw = next();
-                ov.lights.push_back(parse_light_body(lkw));
-            } else {
-                break;
+                ov.parts.push_back(std::move(part));
             }
-        }
+        });
     }
     parse_object_modifiers(ov, ov.compound);
     return ov;
+}
+
+void ObjectReader::read_csg_children(ObjectValue& ov, const std::function<void(ObjectValue& child)>& take_child) {
+    while (true) {
+        expand_macros();
+        const Token& t = peek();
+        if (is_object_start(t)) {
+            const Token child_kw = next();
+            ObjectValue child = parse_object(child_kw);
+            take_child(child);
+            for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+        } else if (is_word(t, "light_source")) {
+            const Token lkw = next();
+            ov.lights.push_back(parse_light_body(lkw));
+        } else {
+            return;
+        }
+    }
 }
 
 Texture& ObjectReader::texture_to_modify(ObjectValue& ov) {
