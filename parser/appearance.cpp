@@ -176,10 +176,10 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
     fail(item, "expected a finish item but found '" + item.text + "'");
 }
 
-Finish AppearanceReader::parse_finish_body(const Token& kw) {
+Finish AppearanceReader::parse_finish_body(const Token& kw, const Finish* base) {
     expect("{");
     m_finish_albedo = 0;
-    Finish f = m_default_finish;
+    Finish f = base ? *base : m_default_finish;
     f.loc = make_diagnostic(Severity::Note, kw, "").loc;
     expand_macros();
     if (is_array_element_next()) {
@@ -269,11 +269,11 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             // POV-Ray's DONT_SCALE_BUMPS flag: the bumps would grow with the texture's scale; wardray keeps their size.
             warn_unsupported(t, "no_bump_scale");
         } else if (t.text == "pigment") {
-            tx.pigment = parse_pigment_body(t);
+            top_layer(tx).pigment = parse_pigment_body(t, &top_layer(tx).pigment);
         } else if (t.text == "finish") {
-            tx.finish = parse_finish_body(t);
+            top_layer(tx).finish = parse_finish_body(t, &top_layer(tx).finish);
         } else if (t.text == "normal") {
-            tx.normal = parse_normal_body(t);
+            top_layer(tx).normal = parse_normal_body(t, &top_layer(tx).normal);
         } else if (t.text == "texture_map") {
             expect("{");
             tx.texture_map.clear();
@@ -309,11 +309,11 @@ void AppearanceReader::parse_texture_part_identifiers(Texture& tx) {
         const Value* v = lookup(t.text);
         if (v == nullptr || m_macros.count(t.text)) return;
         if (const auto* p = std::get_if<Boxed<Pigment>>(v)) {
-            tx.pigment = **p;
+            top_layer(tx).pigment = **p;
         } else if (const auto* n = std::get_if<Boxed<Normal>>(v)) {
-            tx.normal = **n;
+            top_layer(tx).normal = **n;
         } else if (const auto* f = std::get_if<Boxed<Finish>>(v)) {
-            tx.finish = **f;
+            top_layer(tx).finish = **f;
         } else {
             return;
         }

@@ -18,8 +18,9 @@ protected:
     Color parse_color() final;
     /// Reads the items that may follow a colour expression (`filter .5`, `red 1`, ...) into `c`.
     Color parse_color_modifiers(Color c);
-    /// Reads `finish { ... }` after its keyword.
-    Finish parse_finish_body(const Token& kw);
+    /// Reads `finish { ... }` after its keyword. POV-Ray modifies the finish in place: the items change `base`
+    /// (the finish of the texture being modified) when given, else the default finish.
+    Finish parse_finish_body(const Token& kw, const Finish* base = nullptr);
     /// Reads one finish item `item` (already consumed) into `f`.
     void parse_finish_item(Finish& f, const Token& item);
     /// Reads `reflection { ... }` into the finish.
@@ -39,9 +40,9 @@ protected:
     void directive_default(const Token& tok) final;
 
     /// Reads `pigment { ... }` after its keyword (the pattern reader's).
-    virtual Pigment parse_pigment_body(const Token& kw) = 0;
+    virtual Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) = 0;
     /// Reads `normal { ... }` after its keyword (the pattern reader's).
-    virtual Normal parse_normal_body(const Token& kw) = 0;
+    virtual Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) = 0;
     /// Reads a colour map after its keyword (the pattern reader's).
     virtual std::vector<ColorMapEntry> parse_color_map(const Token& kw) = 0;
     /// True when `t` can start a float, vector or colour expression (the pattern reader's).

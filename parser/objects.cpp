@@ -222,11 +222,13 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
         static const KeywordTable<Modifier> modifiers = {
             {"pigment",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
-                 r.texture_to_modify(ov).pigment = r.parse_pigment_body(kw);
+                 Texture& top = top_layer(r.texture_to_modify(ov));
+                 top.pigment = r.parse_pigment_body(kw, &top.pigment);
              }},
             {"finish",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
-                 r.texture_to_modify(ov).finish = r.parse_finish_body(kw);
+                 Texture& top = top_layer(r.texture_to_modify(ov));
+                 top.finish = r.parse_finish_body(kw, &top.finish);
              }},
             {"texture",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
@@ -310,7 +312,8 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
              }},
             {"normal",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
-                 r.texture_to_modify(ov).normal = r.parse_normal_body(kw);
+                 Texture& top = top_layer(r.texture_to_modify(ov));
+                 top.normal = r.parse_normal_body(kw, &top.normal);
              }},
             {"interior",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {

@@ -68,8 +68,8 @@ private:
     void parse_pigment_list(Pigment& p, int count);
     /// Reads pigment items up to `close` ('}' of a pigment block or ']' of a pigment_map entry).
     void parse_pigment_items(Pigment& p, const Token& kw, const char* close);
-    Pigment parse_pigment_body(const Token& kw) final;
-    Normal parse_normal_body(const Token& kw) final;
+    Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) final;
+    Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) final;
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);
     /// Reads normal items up to `close`.

@@ -267,9 +267,11 @@ bool Parser::parse_pigment_start(Pigment& p) {
     return false;
 }
 
-Pigment Parser::parse_pigment_body(const Token& kw) {
+Pigment Parser::parse_pigment_body(const Token& kw, const Pigment* base) {
+    // POV-Ray's Parse_Pigment modifies the pigment in place: with `base` (the pigment of a texture being
+    // modified, `texture { T_Stone1 pigment { octaves 3 } }`) the items change it, else the default pigment.
     expect("{");
-    Pigment p = m_default_pigment;
+    Pigment p = base ? *base : m_default_pigment;
     p.loc = make_diagnostic(Severity::Note, kw, "").loc;
     parse_pigment_start(p);
     parse_pigment_items(p, kw, "}");
@@ -376,9 +378,10 @@ std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {
     return map;
 }
 
-Normal Parser::parse_normal_body(const Token& kw) {
+Normal Parser::parse_normal_body(const Token& kw, const Normal* base) {
+    // In place like the pigment (POV-Ray's Parse_Tnormal), from `base` when given.
     expect("{");
-    Normal n;
+    Normal n = base ? *base : Normal{};
     n.loc = make_diagnostic(Severity::Note, kw, "").loc;
     parse_normal_start(n);
     parse_normal_items(n, kw, "}");

@@ -181,6 +181,10 @@ struct TextureMapEntry {
     bool operator==(const TextureMapEntry&) const = default;
 };
 
+/// The layer that pigment, normal and finish statements after a texture identifier modify: POV-Ray keeps layers
+/// as a list headed by the last one listed, the top, and modifies the head (Parse_Texture, Parse_Object_Mods).
+inline Texture& top_layer(Texture& t) { return t.layers.empty() ? t : t.layers.back(); }
+
 /// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
 /// by `tr`. Map entries are evaluated in their parent's pattern space and are left alone.
 inline void transform_texture(Texture& t, const Transform& tr) {

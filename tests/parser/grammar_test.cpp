@@ -30,8 +30,55 @@ TEST(Grammar, TextureTakesPigmentNormalAndFinishIdentifiers) {
     EXPECT_EQ(a.finish.ambient.r, 0.3);
     EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
     EXPECT_EQ(a.normal.amount, 0.25);
-    // A finish block after a finish identifier starts from the default finish again, as in POV-Ray.
+    // A finish block after a finish identifier modifies that finish in place, as POV-Ray's Parse_Finish does.
     EXPECT_EQ(s.objects[1].texture.finish.diffuse, 0.2);
+    EXPECT_EQ(s.objects[1].texture.finish.ambient.r, 0.3);
+}
+
+TEST(Grammar, FinishAfterALayeredTextureModifiesItsTopLayerInPlace) {
+    // POV-Ray keeps a layered texture as a list headed by its last (top) layer; a pigment, normal or finish after
+    // the identifier, in the texture or on the object, changes that layer only, and a finish block changes the
+    // layer's own finish rather than starting from the default (norm_acc.pov's `texture { T_Wood35 finish {..} }`).
+    const Scene s = parse_ok(R"(
+        #declare T = texture { pigment { rgb <1, 0.5, 0.1> } finish { phong 0.5 } }
+                     texture { pigment { rgbt <0.2, 0.2, 1, 0.5> } finish { specular 0.4 } }
+        sphere { 0, 1 texture { T finish { diffuse 0 ambient 1 } } }
+        sphere { 0, 1 texture { T } finish { ambient 0.5 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Texture& a = s.objects[0].texture;
+    ASSERT_EQ(a.layers.size(), 1u);
+    EXPECT_EQ(a.finish.ambient.r, 0.1);
+    EXPECT_EQ(a.finish.phong, 0.5);
+    EXPECT_EQ(a.layers[0].finish.ambient.r, 1.0);
+    EXPECT_EQ(a.layers[0].finish.diffuse, 0.0);
+    EXPECT_EQ(a.layers[0].finish.specular, 0.4);
+    const Texture& b = s.objects[1].texture;
+    ASSERT_EQ(b.layers.size(), 1u);
+    EXPECT_EQ(b.finish.ambient.r, 0.1);
+    EXPECT_EQ(b.layers[0].finish.ambient.r, 0.5);
+    EXPECT_EQ(b.layers[0].finish.specular, 0.4);
+}
+
+TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
+    // POV-Ray's Parse_Pigment and Parse_Tnormal change the texture's pigment and normal in place (ballbox1.pov's
+    // `texture { T_Stone1 pigment { octaves 3 rotate 90*z } }` keeps T_Stone1's granite and its colour map).
+    const Scene s = parse_ok(R"(
+        #declare T = texture { pigment { granite turbulence 0.5 color_map { [0 rgb 0] [1 rgb 1] } } normal { bumps 0.3 } }
+        sphere { 0, 1 texture { T pigment { octaves 3 } normal { scale 2 } } }
+        sphere { 0, 1 texture { T } pigment { rgb <1, 0, 0> } }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    const Texture& a = s.objects[0].texture;
+    EXPECT_EQ(a.pigment.pattern.type, Pattern::Type::Granite);
+    ASSERT_TRUE(a.pigment.pattern.turbulence.has_value());
+    EXPECT_EQ(a.pigment.pattern.turbulence->octaves, 3);
+    EXPECT_EQ(a.pigment.pattern.turbulence->amount.x, 0.5);
+    EXPECT_EQ(a.pigment.color_map.size(), 2u);
+    EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
+    EXPECT_EQ(a.normal.amount, 0.3);
+    EXPECT_TRUE(s.objects[1].texture.pigment.is_solid());
+    EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
 }
 
 TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
