@@ -177,6 +177,34 @@ std::optional<UsageError> apply_ini_setting(std::string_view key, std::string_vi
     return std::nullopt;
 }
 
+namespace {
+
+// The entries --help has no line for (second spellings, POV-Ray's front-end settings), each named once.
+std::string also_accepted(const std::string& help) {
+    std::string text = "Also read (POV-Ray's display, console and bounding settings, ignored; the others warn unless "
+                       "at their\nneutral value):";
+    std::size_t column = text.size() - text.rfind('\n') - 1;
+    for (const OptionSpec& spec : option_table()) {
+        if (!spec.usage.empty()) continue;
+        std::string name = !spec.letters.empty() ? "+" + std::string(spec.letters)
+                           : !spec.ini_key.empty() ? std::string(spec.ini_key) : std::string(spec.ini_flag);
+        if (!spec.letters.empty() && !spec.ini_flag.empty()) name += " " + std::string(spec.ini_flag);
+        if (!spec.letters.empty() && !spec.ini_key.empty()) name += " " + std::string(spec.ini_key);
+        if (help.find(std::string(spec.letters.empty() ? spec.ini_key : spec.letters) + "n") != std::string::npos &&
+            !spec.letters.empty())
+            continue;  // named on a neighbour's line ("+KFIn, +KFFn")
+        if (column + name.size() + 1 > 118) {
+            text += "\n ";
+            column = 1;
+        }
+        text += " " + name;
+        column += name.size() + 1;
+    }
+    return text + "\n";
+}
+
+}  // namespace
+
 std::string usage_text() {
     // Each entry's usage, then its help from this column on; continuation lines start at the same column.
     constexpr std::size_t kHelpColumn = 34;
@@ -189,6 +217,7 @@ std::string usage_text() {
         for (const char c : spec.help) line += c == '\n' ? "\n" + std::string(kHelpColumn, ' ') : std::string(1, c);
         text += line + "\n";
     }
+    text += also_accepted(text);
     text += "With no scene, renders the bundled default scene.\n";
     return text;
 }
