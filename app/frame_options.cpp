@@ -94,13 +94,13 @@ constexpr OptionSpec kFrameOptions[] = {
      .set = [](U u, Options& o) { return set_frame(u.value, o.animation.initial_frame); }},
     {.letters = "KFF", .ini_key = "Final_Frame", .kind = K::Value,
      .set = [](U u, Options& o) { return set_frame(u.value, o.animation.final_frame); }},
-    {.letters = "KI", .ini_key = "Initial_Clock", .kind = K::Value, .usage = "+KIa, +KFb",
-     .help = "clock from a (0) at the first frame to b (1) at the last",
+    {.letters = "KI", .ini_key = "Initial_Clock", .kind = K::Value, .usage = "+KIn, +KFn",
+     .help = "clock from n (0) at the first frame to m (1) at the last",
      .set = [](U u, Options& o) { return set_number(u.value, "expected a clock value", o.animation.initial_clock); }},
     {.letters = "KF", .ini_key = "Final_Clock", .kind = K::Value,
      .set = [](U u, Options& o) { return set_number(u.value, "expected a clock value", o.animation.final_clock); }},
     {.letters = "KC", .ini_flag = "Cyclic_Animation", .kind = K::Flag, .usage = "+KC",
-     .help = "cyclic: the last frame stops one clock step short of b",
+     .help = "cyclic: the last frame stops one clock step short of m",
      .set = [](U u, Options& o) {
          o.animation.cyclic = u.sign.value_or(true);
          return u.value.empty() ? Why{} : Why{"takes no value"};
