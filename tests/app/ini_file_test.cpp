@@ -5,6 +5,7 @@
 
 #include <fstream>
 
+#include "app/app.h"
 #include "app/options.h"
 
 namespace wardray::app {
@@ -116,6 +117,17 @@ TEST(IniFile, BadKeysAndValuesAreErrorsAtTheirLine) {
               std::string::npos);
     const UsageError absent = parse_error({"/nonexistent/none.ini"});
     EXPECT_NE(absent.message.find("cannot read the INI file"), std::string::npos);
+}
+
+TEST(IniFile, AMistakeInAnIniFileIsExitStatusOneAndWritesNothing) {
+    const fs::path ini = write_ini("stops.ini", "Output_File_Name=" +
+                                                    (fs::path(WARDRAY_TEST_OUTPUT_DIR) / "ini_files" / "none.png").string() +
+                                                    "\nWidth=-3\n");
+    testing::internal::CaptureStderr();
+    EXPECT_EQ(run({ini.string()}, "wardray"), kExitScene);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(err, ini.string() + ":2: error: invalid 'Width=-3': expected a size in pixels, 1..65536\n");
+    EXPECT_FALSE(fs::exists(fs::path(WARDRAY_TEST_OUTPUT_DIR) / "ini_files" / "none.png"));
 }
 
 TEST(IniFile, DisplayKeysAreQuietAndUnsupportedOnesWarn) {
