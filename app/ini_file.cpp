@@ -10,6 +10,8 @@ namespace wardray::app {
 
 namespace {
 
+const std::filesystem::path kPovrayIniDir = "/usr/share/povray-3.7/ini";
+
 std::string_view trim(std::string_view s) {
     const auto first = s.find_first_not_of(" \t\r\n");
     if (first == std::string_view::npos) return {};
@@ -74,6 +76,11 @@ std::variant<IniFile, std::string> read_ini_file(std::string_view argument) {
     }
     IniFile ini;
     ini.path = std::filesystem::path(std::string(name));
+    // POV-Ray compat: an INI file not found as named is looked for in POV-Ray's ini folder (quickres.ini, ...).
+    std::error_code ec;
+    if (ini.path.is_relative() && !std::filesystem::exists(ini.path, ec) &&
+        std::filesystem::is_regular_file(kPovrayIniDir / ini.path, ec))
+        ini.path = kPovrayIniDir / ini.path;
     std::ifstream in(ini.path);
     if (!in) return ini.path.string() + ": error: cannot read the INI file";
     const auto error_at = [&](int number, const char* message) {

@@ -32,7 +32,8 @@ struct IniFile {
 /// Whether a command-line argument names an INI file: `scene.ini` or `scene.ini[Section]` (any case of .ini).
 bool is_ini_argument(std::string_view argument);
 
-/// Reads `scene.ini` or `scene.ini[Section]`; on failure the message, starting with the file (and line, for a
+/// Reads `scene.ini` or `scene.ini[Section]` (a relative name not found is looked for in POV-Ray's ini folder,
+/// /usr/share/povray-3.7/ini, as POV-Ray does with its library path); on failure the message, starting with the file (and line, for a
 /// line that cannot be read): "scene.ini:3: error: ...", or "scene.ini: error: no section [Big]".
 std::variant<IniFile, std::string> read_ini_file(std::string_view argument);
 

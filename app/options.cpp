@@ -186,21 +186,22 @@ std::string also_accepted(const std::string& help) {
     std::size_t column = text.size() - text.rfind('\n') - 1;
     for (const OptionSpec& spec : option_table()) {
         if (!spec.usage.empty()) continue;
-        std::string name = !spec.letters.empty() ? "+" + std::string(spec.letters)
-                           : !spec.ini_key.empty() ? std::string(spec.ini_key) : std::string(spec.ini_flag);
-        if (!spec.letters.empty() && !spec.ini_flag.empty()) name += " " + std::string(spec.ini_flag);
-        if (!spec.letters.empty() && !spec.ini_key.empty()) name += " " + std::string(spec.ini_key);
-        if (help.find(std::string(spec.letters.empty() ? spec.ini_key : spec.letters) + "n") != std::string::npos &&
-            !spec.letters.empty())
-            continue;  // named on a neighbour's line ("+KFIn, +KFFn")
+        std::string name;
+        if (!spec.letters.empty()) {
+            std::string shown = std::string(spec.letters);
+            if (help.find(shown.append("n")) != std::string::npos) continue;  // on a neighbour's line ("+KFFn")
+            name.append("+").append(spec.letters);
+        }
+        for (const std::string_view key : {spec.ini_flag, spec.ini_key})
+            if (!key.empty()) name.append(name.empty() ? "" : " ").append(key);
         if (column + name.size() + 1 > 118) {
-            text += "\n ";
+            text.append("\n ");
             column = 1;
         }
-        text += " " + name;
+        text.append(" ").append(name);
         column += name.size() + 1;
     }
-    return text + "\n";
+    return text.append("\n");
 }
 
 }  // namespace

@@ -163,6 +163,14 @@ TEST(IniFile, AnimationAndPartialRenderKeysMatchTheirSwitches) {
     EXPECT_EQ(from_ini.render_block_size, 16);
 }
 
+TEST(IniFile, PovRaysIniFolderIsSearched) {
+    if (!fs::is_regular_file("/usr/share/povray-3.7/ini/quickres.ini")) GTEST_SKIP() << "no POV-Ray ini folder";
+    const Options o = parse_ok({"quickres.ini[256x144,16:9 AA 0.3]"});
+    EXPECT_EQ(o.width, 256);
+    EXPECT_EQ(o.height, 144);
+    EXPECT_TRUE(o.antialias);
+}
+
 TEST(IniFile, ArgumentsEndingInIniAreIniFiles) {
     EXPECT_TRUE(is_ini_argument("scene.ini"));
     EXPECT_TRUE(is_ini_argument("dir/Scene.INI[Section 1]"));
