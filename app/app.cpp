@@ -65,34 +65,51 @@ void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint
     }
 }
 
-// One scene from its file to its image: each step prints why it fails, and this returns the exit status.
-int run_scene(Options options, const std::string& argv0, Clock::time_point start) {
-    const std::optional<Job> job = resolve_job(std::move(options), argv0);
-    if (!job) return kExitScene;
-    if (const std::optional<int> refused = refuse_job(*job)) return *refused;
-    const auto thread_limit = prepare_process(job->options);
-    const std::optional<LoadedScene> loaded = load_scene(job->options);
+// One frame of the job from its file to its image: each step prints why it fails; returns the exit status.
+int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start) {
+    const std::optional<LoadedScene> loaded = load_scene(job.options, frame.clock);
     if (!loaded) return kExitScene;
     const scene::Scene& scene = loaded->scene;
-    if (job->options.check_only) {
+    if (job.options.check_only) {
         describe_scene(scene, std::cout);
         return kExitOk;
     }
     const std::optional<BuiltGeometry> built = build_geometry(scene);
     if (!built) return kExitScene;
     warn_skipped_objects(scene, built->geometry->skipped_objects());
-    const Illumination illumination = build_illumination(scene, *built->geometry, job->options);
-    const RenderedFrame frame = render_frame(scene, illumination, job->options);
+    const Illumination illumination = build_illumination(scene, *built->geometry, job.options);
+    const RenderedFrame rendered = render_frame(scene, illumination, job.options, job.region);
     const auto write_start = Clock::now();
-    if (!write_outputs(*job, scene, illumination, frame.result)) return kExitScene;
-    const PhaseTimes times{loaded->seconds, built->seconds, frame.seconds, seconds_since(write_start)};
-    if (job->options.stats &&
-        !write_stats(*job->options.stats, *job, scene, illumination, frame.result, times,
+    Job frame_job = job;
+    frame_job.output = frame.output;
+    if (!write_outputs(frame_job, scene, illumination, rendered.result)) return kExitScene;
+    const PhaseTimes times{loaded->seconds, built->seconds, rendered.seconds, seconds_since(write_start)};
+    if (job.options.stats &&
+        !write_stats(*job.options.stats, frame_job, scene, illumination, rendered.result, times,
                      PeakMemory{loaded->peak_bytes, built->peak_bytes, peak_resident_bytes()}, start))
         return kExitScene;
-    if (job->options.verbose)
-        std::cerr << "wardray: wrote " << job->output.string() << " (" << job->options.width << "x"
-                  << job->options.height << ") in " << seconds_since(start) << " s\n";
+    if (job.options.verbose)
+        std::cerr << "wardray: wrote " << frame.output.string() << " (" << job.options.width << "x"
+                  << job.options.height << ") in " << seconds_since(start) << " s\n";
+    return kExitOk;
+}
+
+// One scene, each frame of it parsed afresh (POV-Ray compat); +C skips the frames whose image already exists.
+int run_scene(Options options, const std::string& argv0, Clock::time_point start) {
+    const std::optional<Job> job = resolve_job(std::move(options), argv0);
+    if (!job) return kExitScene;
+    if (const std::optional<int> refused = refuse_job(*job)) return *refused;
+    const auto thread_limit = prepare_process(job->options);
+    for (const Frame& frame : job->frames) {
+        std::error_code ec;
+        if (job->options.continue_trace && !job->options.check_only && std::filesystem::exists(frame.output, ec)) {
+            if (job->options.verbose) std::cerr << "wardray: " << frame.output.string() << " exists; kept (+C)\n";
+            continue;
+        }
+        const Clock::time_point frame_start = &frame == &job->frames.front() ? start : Clock::now();
+        if (const int status = render_one_frame(*job, frame, frame_start); status != kExitOk) return status;
+        if (job->options.check_only) break;
+    }
     return kExitOk;
 }
 
@@ -104,10 +121,15 @@ int run(const std::vector<std::string>& args, const std::string& argv0) {
         return run_diff_command(std::vector<std::string>(args.begin() + 1, args.end()));
     auto parsed = parse_command_line(args);
     if (auto* error = std::get_if<UsageError>(&parsed)) {
+        if (error->in_file) {  // a mistake in an INI file: its file:line, and no usage text
+            std::cerr << error->message << "\n";
+            return kExitScene;
+        }
         std::cerr << "wardray: " << error->message << "\n" << usage_text();
         return kExitUsage;
     }
     Options options = std::get<Options>(parsed);
+    for (const std::string& warning : options.warnings) std::cerr << warning << "\n";
     if (options.show_help) {
         std::cout << usage_text();
         return kExitOk;

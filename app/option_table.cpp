@@ -1,11 +1,14 @@
 // The option table: one entry per option; the command line, INI settings and --help all read it.
 #include "app/option_table.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <iterator>
+#include <vector>
 
 namespace wardray::app {
 
@@ -15,21 +18,6 @@ using Why = std::optional<std::string>;
 
 // Image sizes beyond this are refused before any memory is asked for (64k x 64k is 48 GiB of film).
 constexpr int kMaxImageSide = 65536;
-
-bool parse_int(std::string_view text, int& out) {
-    if (text.empty()) return false;
-    const char* end = text.data() + text.size();
-    auto [ptr, ec] = std::from_chars(text.data(), end, out);
-    return ec == std::errc() && ptr == end;
-}
-
-bool parse_double(std::string_view text, double& out) {
-    if (text.empty()) return false;
-    const std::string s(text);
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size() && std::isfinite(out);
-}
 
 
 std::filesystem::path to_path(std::string_view text) {
@@ -297,6 +285,29 @@ constexpr OptionSpec kOptions[] = {
 
 }  // namespace
 
+bool parse_int(std::string_view text, int& out) {
+    if (text.empty()) return false;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, out);
+    return ec == std::errc() && ptr == end;
+}
+
+bool parse_double(std::string_view text, double& out) {
+    if (text.empty()) return false;
+    const std::string s(text);
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size() && std::isfinite(out);
+}
+
+std::optional<bool> parse_ini_bool(std::string_view text) {
+    for (const char* yes : {"on", "true", "yes", "1"})
+        if (equals_ci(text, yes)) return true;
+    for (const char* no : {"off", "false", "no", "0"})
+        if (equals_ci(text, no)) return false;
+    return std::nullopt;
+}
+
 bool starts_with_ci(std::string_view s, std::string_view prefix) {
     if (s.size() < prefix.size()) return false;
     for (std::size_t i = 0; i < prefix.size(); ++i)
@@ -310,12 +321,25 @@ bool equals_ci(std::string_view a, std::string_view b) {
 }
 
 std::span<const OptionSpec> option_table() {
-    return kOptions;
+    // POV-Ray's switches and keys (kOptions up to its first long-only entry), the frame table's, then the long
+    // options; built once.
+    static const std::vector<OptionSpec> all = [] {
+        const auto is_long_only = [](const OptionSpec& spec) {
+            return spec.letters.empty() && spec.ini_key.empty() && spec.ini_flag.empty();
+        };
+        const auto first_long = std::find_if(std::begin(kOptions), std::end(kOptions), is_long_only);
+        std::vector<OptionSpec> v(std::begin(kOptions), first_long);
+        const std::span<const OptionSpec> frames = frame_option_table();
+        v.insert(v.end(), frames.begin(), frames.end());
+        v.insert(v.end(), first_long, std::end(kOptions));
+        return v;
+    }();
+    return all;
 }
 
 const OptionSpec* find_switch(std::string_view body) {
     const OptionSpec* best = nullptr;
-    for (const OptionSpec& spec : kOptions) {
+    for (const OptionSpec& spec : option_table()) {
         if (spec.letters.empty() || !starts_with_ci(body, spec.letters)) continue;
         if (spec.kind == ValueKind::None && body.size() != spec.letters.size()) continue;
         if (!best || spec.letters.size() > best->letters.size()) best = &spec;
@@ -324,13 +348,13 @@ const OptionSpec* find_switch(std::string_view body) {
 }
 
 const OptionSpec* find_long_option(std::string_view name) {
-    for (const OptionSpec& spec : kOptions)
+    for (const OptionSpec& spec : option_table())
         if (!name.empty() && (spec.long_name == name || spec.short_name == name)) return &spec;
     return nullptr;
 }
 
 const OptionSpec* find_ini_key(std::string_view key, bool& is_flag_key) {
-    for (const OptionSpec& spec : kOptions) {
+    for (const OptionSpec& spec : option_table()) {
         if (!spec.ini_key.empty() && equals_ci(key, spec.ini_key)) {
             is_flag_key = false;
             return &spec;

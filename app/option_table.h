@@ -48,6 +48,17 @@ struct OptionSpec {
 /// Every option, in --help order: POV-Ray's switches first, then wardray's long options.
 std::span<const OptionSpec> option_table();
 
+/// POV-Ray's animation, partial-render and front-end switches and keys (app/frame_options.cpp), which
+/// option_table() lists after the other POV-Ray switches. An entry with no usage is not shown by --help.
+std::span<const OptionSpec> frame_option_table();
+
+/// A whole decimal integer / a finite number, the whole text and nothing else.
+bool parse_int(std::string_view text, int& out);
+bool parse_double(std::string_view text, double& out);
+
+/// POV-Ray's INI booleans: on/off, true/false, yes/no, 1/0, in any case; empty when `text` is none of them.
+std::optional<bool> parse_ini_bool(std::string_view text);
+
 /// Whether `s` begins with `prefix`, ignoring ASCII case (POV-Ray's switches and INI keys ignore it).
 bool starts_with_ci(std::string_view s, std::string_view prefix);
 /// Whether `a` and `b` are equal, ignoring ASCII case.

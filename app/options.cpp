@@ -4,20 +4,12 @@
 #include <algorithm>
 #include <cctype>
 
+#include "app/ini_file.h"
 #include "app/option_table.h"
 
 namespace wardray::app {
 
 namespace {
-
-// POV-Ray's INI booleans: on/off, true/false, yes/no, 1/0, in any case.
-std::optional<bool> parse_ini_bool(std::string_view text) {
-    for (const char* yes : {"on", "true", "yes", "1"})
-        if (equals_ci(text, yes)) return true;
-    for (const char* no : {"off", "false", "no", "0"})
-        if (equals_ci(text, no)) return false;
-    return std::nullopt;
-}
 
 // One POV-Ray switch: `plus` is its sign, `body` what follows the sign ("W320", "WT2", "A0.3", "FN").
 std::optional<UsageError> apply_switch(bool plus, std::string_view body, Options& o) {
@@ -79,10 +71,70 @@ std::optional<UsageError> apply_ini_argument(const std::string& arg, const Optio
     return std::nullopt;
 }
 
+// INI files that name INI files: this deep at most.
+constexpr int kMaxIniDepth = 10;
+
+std::optional<UsageError> apply_ini_file(std::string_view argument, Options& o, int depth);
+
+// An INI file's `Key=Value` (empty values change nothing, as in POV-Ray); the reason when it is refused.
+std::optional<std::string> apply_ini_key(std::string_view key, std::string_view value, Options& o) {
+    bool is_flag_key = false;
+    const OptionSpec* spec = find_ini_key(key, is_flag_key);
+    if (!spec) return "unknown INI key '" + std::string(key) + "'";
+    if (value.empty()) return std::nullopt;
+    if (auto why = apply_ini_value(*spec, is_flag_key, value, o))
+        return "invalid '" + std::string(key) + "=" + std::string(value) + "': " + *why;
+    return std::nullopt;
+}
+
+// One line of an INI file; errors and the warnings it adds carry `where` ("scene.ini:3: ").
+std::optional<UsageError> apply_ini_line(const IniLine& line, const std::string& where, Options& o, int depth) {
+    auto error = [&](const std::string& message) { return UsageError{where + "error: " + message, true}; };
+    switch (line.kind) {
+        case IniLine::Kind::IniFile:
+            return apply_ini_file(line.value, o, depth + 1);
+        case IniLine::Kind::Setting:
+            if (auto why = apply_ini_key(line.key, line.value, o)) return error(*why);
+            return std::nullopt;
+        case IniLine::Kind::Switches:
+            for (const std::string& word : split_ini_words(line.value)) {
+                if (word.size() >= 2 && (word[0] == '+' || word[0] == '-')) {
+                    if (auto e = apply_switch(word[0] == '+', std::string_view(word).substr(1), o))
+                        return error(e->message);
+                } else if (const auto eq = word.find('='); eq != std::string::npos && eq > 0) {
+                    if (auto why = apply_ini_key(word.substr(0, eq), word.substr(eq + 1), o)) return error(*why);
+                } else {
+                    return error("expected a switch (+X or -X) or KEY=VALUE, not '" + word + "'");
+                }
+            }
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+// `scene.ini` or `scene.ini[Section]`: every line that applies, in order, so later settings win.
+std::optional<UsageError> apply_ini_file(std::string_view argument, Options& o, int depth) {
+    if (depth > kMaxIniDepth)
+        return UsageError{std::string(argument) + ": error: INI files name each other more than 10 deep", true};
+    auto read = read_ini_file(argument);
+    if (const std::string* message = std::get_if<std::string>(&read)) return UsageError{*message, true};
+    const IniFile& ini = std::get<IniFile>(read);
+    for (const IniLine& line : ini.lines) {
+        const std::string where = ini.path.string() + ":" + std::to_string(line.line) + ": ";
+        const std::size_t warnings_before = o.warnings.size();
+        if (auto error = apply_ini_line(line, where, o, depth)) return error;
+        for (std::size_t i = warnings_before; i < o.warnings.size(); ++i)
+            if (o.warnings[i].find(": warning: ") == std::string::npos)
+                o.warnings[i] = where + "warning: " + o.warnings[i];
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::variant<Options, UsageError> parse_command_line(const std::vector<std::string>& args) {
     Options o;
+    bool scene_argument = false;  // the scene named by a plain argument (once only; +I may replace it)
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
         auto next = [&]() -> std::optional<std::string> {
@@ -91,20 +143,27 @@ std::variant<Options, UsageError> parse_command_line(const std::vector<std::stri
         };
         std::optional<UsageError> error;
         bool is_flag_key = false;
+        const std::size_t warnings_before = o.warnings.size();
         if (arg.rfind("--", 0) == 0 || find_long_option(arg)) {
             error = apply_long_option(arg, o, next);
         } else if (const OptionSpec* spec = ini_argument_spec(arg, is_flag_key)) {
             error = apply_ini_argument(arg, *spec, is_flag_key, o);
         } else if (arg.size() >= 2 && (arg[0] == '+' || arg[0] == '-')) {
             error = apply_switch(arg[0] == '+', std::string_view(arg).substr(1), o);
+        } else if (is_ini_argument(arg)) {
+            error = apply_ini_file(arg, o, 0);
         } else if (!arg.empty()) {
             // The scene, given once: as the first plain argument or with +I.
-            if (!o.scene.empty()) return UsageError{"more than one scene given ('" + arg + "')"};
+            if (scene_argument) return UsageError{"more than one scene given ('" + arg + "')"};
+            scene_argument = true;
             o.scene = arg;
         } else {
             error = UsageError{"empty argument"};
         }
         if (error) return *error;
+        for (std::size_t w = warnings_before; w < o.warnings.size(); ++w)
+            if (o.warnings[w].find(": warning: ") == std::string::npos)
+                o.warnings[w] = "wardray: warning: " + o.warnings[w];
     }
     return o;
 }
@@ -118,17 +177,48 @@ std::optional<UsageError> apply_ini_setting(std::string_view key, std::string_vi
     return std::nullopt;
 }
 
+namespace {
+
+// The entries --help has no line for (second spellings, POV-Ray's front-end settings), each named once.
+std::string also_accepted(const std::string& help) {
+    std::string text = "Also read (POV-Ray's display, console and bounding settings, ignored; the others warn unless "
+                       "at their\nneutral value):";
+    std::size_t column = text.size() - text.rfind('\n') - 1;
+    for (const OptionSpec& spec : option_table()) {
+        if (!spec.usage.empty()) continue;
+        std::string name;
+        if (!spec.letters.empty()) {
+            std::string shown = std::string(spec.letters);
+            if (help.find(shown.append("n")) != std::string::npos) continue;  // on a neighbour's line ("+KFFn")
+            name.append("+").append(spec.letters);
+        }
+        for (const std::string_view key : {spec.ini_flag, spec.ini_key})
+            if (!key.empty()) name.append(name.empty() ? "" : " ").append(key);
+        if (column + name.size() + 1 > 118) {
+            text.append("\n ");
+            column = 1;
+        }
+        text.append(" ").append(name);
+        column += name.size() + 1;
+    }
+    return text.append("\n");
+}
+
+}  // namespace
+
 std::string usage_text() {
     // Each entry's usage, then its help from this column on; continuation lines start at the same column.
     constexpr std::size_t kHelpColumn = 34;
-    std::string text = "usage: wardray [scene.pov | +Iscene.pov] [options]\n"
+    std::string text = "usage: wardray [scene.pov | +Iscene.pov] [settings.ini[Section] ...] [options]\n"
                        "       wardray diff IMAGE REFERENCE [--json] [-o DIFFERENCE.png]\n";
     for (const OptionSpec& spec : option_table()) {
+        if (spec.usage.empty()) continue;  // a second spelling listed with the first, or accepted silently
         std::string line = "  " + std::string(spec.usage);
         line.resize(std::max(line.size() + 2, kHelpColumn), ' ');
         for (const char c : spec.help) line += c == '\n' ? "\n" + std::string(kHelpColumn, ' ') : std::string(1, c);
         text += line + "\n";
     }
+    text += also_accepted(text);
     text += "With no scene, renders the bundled default scene.\n";
     return text;
 }

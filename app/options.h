@@ -16,6 +16,27 @@
 
 namespace wardray::app {
 
+/// POV-Ray's animation settings as given (+KFI, +KFF, +KI, +KF, +KC, +SF, +EF, +K); app/animation.h makes frames.
+struct AnimationOptions {
+    std::optional<int> initial_frame;  ///< +KFI; with +KFF unset, no animation unless one of them is given
+    std::optional<int> final_frame;    ///< +KFF
+    double initial_clock = 0.0;        ///< +KI
+    double final_clock = 1.0;          ///< +KF
+    bool cyclic = false;               ///< +KC: the last frame is one step short of final_clock
+    std::optional<int> subset_start;   ///< +SF: the first frame rendered
+    std::optional<int> subset_end;     ///< +EF: the last frame rendered
+    std::optional<double> clock;       ///< +K / Clock=: a still image's clock
+
+    friend bool operator==(const AnimationOptions&, const AnimationOptions&) = default;
+};
+
+/// +SR/+ER/+SC/+EC as written: a fraction of the image or a 1-based pixel number (app/partial_render.h).
+struct RegionOptions {
+    std::optional<double> start_row, end_row, start_column, end_column;
+
+    friend bool operator==(const RegionOptions&, const RegionOptions&) = default;
+};
+
 /// Everything the command line (or an INI setting) can set. Defaults are POV-Ray's.
 struct Options {
     std::filesystem::path scene;                    ///< empty: the bundled default scene
@@ -55,6 +76,15 @@ struct Options {
     std::optional<std::uint64_t> max_array_size;
     std::optional<std::uint64_t> max_string_length;
     std::optional<std::uint64_t> max_memory_file;
+    AnimationOptions animation;
+    RegionOptions region;
+    bool continue_trace = false;  ///< +C: frames whose image already exists are not rendered again
+    bool output_alpha = false;    ///< +UA: the image gets an alpha channel (background transparent)
+    int quality = 9;              ///< +Q
+    int render_block_size = 32;   ///< +BS: POV-Ray's render block, the unit of antialiasing decisions
+    /// Settings read and not used ("Create_Ini is not supported; ignored"), each with its file:line, printed when
+    /// the run starts.
+    std::vector<std::string> warnings;
     bool check_only = false;
     bool verbose = false;
     bool show_help = false;
@@ -67,6 +97,8 @@ struct Options {
 /// What went wrong with the command line: a message for stderr; the caller exits with status 2.
 struct UsageError {
     std::string message;
+    /// The mistake is in an INI file (the message starts with its file:line): exit status 1, no usage text.
+    bool in_file = false;
 };
 
 /// Parses argv[1..]; the result is either options or a usage error.

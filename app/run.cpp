@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/app.h"
+#include "app/partial_render.h"
 #include "app/process_limits.h"
 #include "camera/camera.h"
 #include "geometry/object_query.h"
@@ -43,8 +44,9 @@ std::optional<fs::path> find_default_scene(const std::string& argv0) {
 }
 
 // What the parser is told: include folders, declares, file access, guard rails, and the hooks it calls back.
-parser::ParseOptions parse_options_for(const Options& options) {
+parser::ParseOptions parse_options_for(const Options& options, const parser::ParseOptions::FrameClock& clock) {
     parser::ParseOptions parse_options;
+    parse_options.animation = clock;
     parse_options.library_paths.push_back(kPovrayIncludeDir);
     for (const fs::path& p : options.library_paths) parse_options.library_paths.push_back(p);
     parse_options.declares = options.declares;
@@ -171,6 +173,18 @@ std::optional<Job> resolve_job(Options options, const std::string& argv0) {
                        : render::ImageFormat::Png);
     job.output = options.output.value_or(options.scene.stem().string() + render::extension_of(job.format));
     if (job.output.extension().empty()) job.output += render::extension_of(job.format);
+    auto frames = plan_frames(options.animation, job.output);
+    if (const std::string* why = std::get_if<std::string>(&frames)) {
+        std::cerr << "wardray: error: animation: " << *why << "\n";
+        return std::nullopt;
+    }
+    job.frames = std::move(std::get<std::vector<Frame>>(frames));
+    auto region = resolve_region(options.region, options.width, options.height);
+    if (const std::string* why = std::get_if<std::string>(&region)) {
+        std::cerr << "wardray: error: partial render: " << *why << "\n";
+        return std::nullopt;
+    }
+    job.region = std::get<std::optional<render::PixelRegion>>(region);
     job.options = std::move(options);
     return job;
 }
@@ -203,9 +217,9 @@ std::unique_ptr<tbb::global_control> prepare_process(const Options& options) {
     return thread_limit;
 }
 
-std::optional<LoadedScene> load_scene(const Options& options) {
+std::optional<LoadedScene> load_scene(const Options& options, const parser::ParseOptions::FrameClock& clock) {
     const auto start = Clock::now();
-    parser::ParseResult parse = parser::parse_file(options.scene, parse_options_for(options));
+    parser::ParseResult parse = parser::parse_file(options.scene, parse_options_for(options, clock));
     const double seconds = seconds_since(start);
     for (const Diagnostic& d : parse.diagnostics) std::cerr << format_diagnostic(d);
     if (!parse.ok()) return std::nullopt;
@@ -247,12 +261,15 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     return illumination;
 }
 
-RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options) {
+RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options,
+                           const std::optional<render::PixelRegion>& region) {
     ProgressLine progress(isatty(STDERR_FILENO) != 0);
     const auto start = Clock::now();
     render::RenderSettings settings;
     settings.width = options.width;
     settings.height = options.height;
+    settings.tile_size = options.render_block_size;
+    settings.region = region;
     // POV-Ray compat: antialiasing compares colours after decoding the working gamma (not when gamma is off).
     const double antialias_gamma =
         scene.global.gamma_handling

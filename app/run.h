@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "app/animation.h"
 #include "app/options.h"
 #include "cache/irradiance_cache.h"
 #include "geometry/scene_geometry.h"
@@ -29,9 +30,12 @@ struct Job {
     Options options;
     std::filesystem::path output;  ///< POV-Ray's default: the scene's name with the format's extension
     render::ImageFormat format = render::ImageFormat::Png;
+    std::vector<Frame> frames;     ///< one for a still; an animation's frames, each with its own output
+    std::optional<render::PixelRegion> region;  ///< a partial render's pixels; empty: the whole image
 };
 
-/// Fills in the bundled default scene and the output file; empty (with a message) when there is no default scene.
+/// Fills in the bundled default scene, the output file, the frames and the partial render's region; empty (with
+/// a message) when there is no default scene or the animation or region options name no frame or pixel.
 std::optional<Job> resolve_job(Options options, const std::string& argv0);
 
 /// The exit status when the job must not start: its output is the scene file, or its image cannot fit in memory.
@@ -48,9 +52,9 @@ struct LoadedScene {
     std::size_t peak_bytes = 0;
 };
 
-/// Parses the scene file with the options' include folders, declares and guard rails; prints every diagnostic and
-/// is empty when the scene has errors.
-std::optional<LoadedScene> load_scene(const Options& options);
+/// Parses the scene file with the options' include folders, declares and guard rails and the frame's clock values;
+/// prints every diagnostic and is empty when the scene has errors.
+std::optional<LoadedScene> load_scene(const Options& options, const parser::ParseOptions::FrameClock& clock = {});
 
 /// The scene's geometry (one Embree scene), how long building it took and the peak resident bytes after it.
 struct BuiltGeometry {
@@ -80,8 +84,9 @@ struct RenderedFrame {
     double seconds = 0.0;
 };
 
-/// Renders the image, with a progress line when stderr is a terminal.
-RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options);
+/// Renders the image (only `region`'s pixels when there is one), with a progress line when stderr is a terminal.
+RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options,
+                           const std::optional<render::PixelRegion>& region = std::nullopt);
 
 /// Writes the image, the --aov images and the radiosity file (+RFO); false (with a message) when one fails.
 bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination& illumination,

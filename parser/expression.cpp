@@ -327,7 +327,6 @@ std::optional<Numeric> Evaluator::builtin_constant(const Token& t) {
     using Constant = Numeric (*)(const Evaluator&);
     auto one = [](const Evaluator&) { return Numeric::scalar(1.0); };
     auto zero = [](const Evaluator&) { return Numeric::scalar(0.0); };
-    auto clock = [](const Evaluator& e) { return Numeric::scalar(e.m_options.clock); };
     static const KeywordTable<Constant> constants = {
         {"pi", [](const Evaluator&) { return Numeric::scalar(std::numbers::pi); }},
         // tau (2 pi) is POV-Ray 3.8's; 3.7 does not reserve the word, so a scene's own tau is found first.
@@ -362,15 +361,15 @@ std::optional<Numeric> Evaluator::builtin_constant(const Token& t) {
              r.v = {0.0, 1.0, 0, 0, 0};
              return r;
          }},
-        {"clock", clock},
-        // POV-Ray compat: a still image has clock_delta 0 (povray 3.7 prints 0 for it without an animation).
-        {"clock_delta", zero},
-        {"clock_on", zero},
-        {"frame_number", zero},
-        {"initial_frame", zero},
-        {"final_frame", zero},
-        {"initial_clock", clock},
-        {"final_clock", clock},
+        // POV-Ray compat: a still image has all of these 0 but clock (+K); the app fills them in per frame.
+        {"clock", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.clock); }},
+        {"clock_delta", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.clock_delta); }},
+        {"clock_on", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.clock_on ? 1.0 : 0.0); }},
+        {"frame_number", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.frame_number); }},
+        {"initial_frame", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.initial_frame); }},
+        {"final_frame", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.final_frame); }},
+        {"initial_clock", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.initial_clock); }},
+        {"final_clock", [](const Evaluator& e) { return Numeric::scalar(e.m_options.animation.final_clock); }},
         {"image_width", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_width); }},
         {"image_height", [](const Evaluator& e) { return Numeric::scalar(e.m_options.image_height); }},
         {"version", [](const Evaluator& e) { return Numeric::scalar(e.m_version); }},

@@ -25,7 +25,18 @@ struct ParseOptions {
     /// Image size, for image_width and image_height.
     int image_width = 320;
     int image_height = 240;
-    double clock = 0.0;
+    /// The animation values the front end declares (POV-Ray's names); all 0 for a still image.
+    struct FrameClock {
+        double clock = 0.0;
+        double clock_delta = 0.0;
+        bool clock_on = false;  ///< an animation, or a clock given for a still (+K)
+        double frame_number = 0.0;
+        double initial_frame = 0.0;
+        double final_frame = 0.0;
+        double initial_clock = 0.0;
+        double final_clock = 0.0;
+    };
+    FrameClock animation;
     std::size_t max_errors = 20;
     /// Receives the text of #debug (and #render, #statistics) as POV-Ray prints it on its console; null
     /// discards it.

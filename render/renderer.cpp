@@ -187,6 +187,16 @@ std::vector<std::vector<int>> tile_waves(int tiles_x, int tiles_y) {
     return waves;
 }
 
+/// Keeps, in each wave, only the tiles that overlap `region` (a partial render); empty waves go.
+void keep_region_tiles(std::vector<std::vector<int>>& waves, const PixelRegion& region, int tiles_x, int tile_size) {
+    auto overlaps = [&](int tile) {
+        const int x0 = (tile % tiles_x) * tile_size, y0 = (tile / tiles_x) * tile_size;
+        return x0 < region.x1 && x0 + tile_size > region.x0 && y0 < region.y1 && y0 + tile_size > region.y0;
+    };
+    for (std::vector<int>& wave : waves) std::erase_if(wave, [&](int tile) { return !overlaps(tile); });
+    std::erase_if(waves, [](const std::vector<int>& wave) { return wave.empty(); });
+}
+
 /// A uniform number in [0, 1) from a pretrace position and pass, so pretrace jitter is the same on every run.
 double pretrace_jitter(int pass, double x, double y, int axis) {
     const Vec3 j = jitter_at(x + 0.25 * axis, y + 1024.0 * pass);
@@ -228,9 +238,12 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         waves.emplace_back(tile_count);
         for (int t = 0; t < tile_count; ++t) waves[0][t] = t;
     }
+    if (settings.region) keep_region_tiles(waves, *settings.region, tiles_x, settings.tile_size);
+    std::size_t tiles_rendered = 0;
+    for (const std::vector<int>& wave : waves) tiles_rendered += wave.size();
     std::vector<double> sizes;
     if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
-    const double total_work = static_cast<double>(tile_count) * (sizes.size() + 1);
+    const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1);
     std::atomic<int> tiles_done{0};
     std::mutex progress_mutex;
     auto tile_done = [&]() {
@@ -292,6 +305,12 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     });
     result.passes.push_back(
         {"final", 1.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - final_start).count()});
+    if (settings.region) {
+        // The whole tiles the region touches were rendered; POV-Ray writes the pixels outside it black.
+        for (int y = 0; y < settings.height; ++y)
+            for (int x = 0; x < settings.width; ++x)
+                if (!settings.region->contains(x, y)) result.film.set_pixel(x, y, Vec3{});
+    }
     for (const TileCounters& t : tile_counters) {
         result.rays += t.trace.rays;
         result.non_finite_pixels += t.non_finite;

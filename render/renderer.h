@@ -27,9 +27,21 @@ struct AntialiasSettings {
     double gamma = 2.5;      ///< +AG2.5: neighbours are compared as pow(c, 1/gamma)
 };
 
+/// A rectangle of pixels, [x0, x1) × [y0, y1), rows from the top.
+struct PixelRegion {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    bool contains(int x, int y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+    friend bool operator==(const PixelRegion&, const PixelRegion&) = default;
+};
+
 struct RenderSettings {
     int width = 320;
     int height = 240;
+    /// A partial render (+SR/+ER/+SC/+EC): only these pixels, the rest of the film black. The tiles it touches are
+    /// rendered whole, so each pixel is the one the full render makes (byte for byte without radiosity, whose cache
+    /// depends on what was traced before).
+    std::optional<PixelRegion> region;
     int tile_size = 32;  ///< POV-Ray's render block size; antialiasing decisions are made per block
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass

@@ -23,9 +23,9 @@ difference), worst first.
 
 Scenes with an `.ini` beside them (animations, the portfolio, benchmark, desk) are rendered without it, as
 `povray scene.pov` would: one frame, clock 0, frame_number 0, in both programs alike. Where POV-Ray fails that
-way (the portfolio scenes index arrays by frame_number), it renders the .ini's first frame instead (`scene.ini
-+SF<n> +EF<n>` before the census's own options, which win); wardray reads no .ini and has no animation options,
-so it gets only the .ini's `Declare=` values, and the scene carries a note saying so.
+way (the portfolio scenes index arrays by frame_number), both programs render the .ini's first frame instead, the
+same way (`scene.ini +SF<n> +EF<n>` before the census's own options, which win), and the scene carries a note
+saying so.
 
 With `--corpus ROOT --manifest MANIFEST.tsv`, the scenes are the manifest's rows instead (`path` below ROOT, whose
 first folder is the scene's repository, `repository`, `commit`), with their own results folder (default
@@ -108,8 +108,8 @@ def scene_files(scene):
 def read_ini(path):
     """What the census takes from a scene's .ini: its first frame, that frame's clock and its declarations.
 
-    POV-Ray renders that one frame of the .ini (the portfolio scenes index arrays by frame_number and fail
-    without it); wardray reads no .ini and has no animation options, so it gets only the declarations."""
+    Both programs render that one frame through the .ini (the portfolio scenes index arrays by frame_number and
+    fail without it); the declarations are kept for the record."""
     ini = {"file": path.name, "frame": 1, "clock": 0.0, "declares": []}
     for raw in path.read_text(errors="replace").splitlines():
         line = raw.split(";", 1)[0].strip()
@@ -136,8 +136,7 @@ def read_ini(path):
 
 
 def ini_note(ini):
-    return (f"POV-Ray rendered frame {ini['frame']} of {ini['file']} (clock {ini['clock']:g}); wardray reads no "
-            ".ini and has no animation options (frame_number 0)")
+    return f"both rendered frame {ini['frame']} of {ini['file']} (clock {ini['clock']:g}) through the .ini"
 
 
 def stochastic_features(texts):
@@ -609,10 +608,17 @@ class Census:
 
     def wardray_render(self, scene, image, ini):
         root, work = self.scratch(scene, ".wardray")
-        cmd = self.wardray_command(scene.name, "census.hdr", ini["declares"] if ini else ())
+        cmd = self.wardray_command(scene.name, "census.hdr")
+        if ini:
+            # As POV-Ray got it: the .ini first, so the census's options after it win; one frame of its animation.
+            cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
         if self.timed:
             cmd += ["--stats", str(root / "stats.json")]
         r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)
+        # An animation frame is written as census<frame number>.hdr.
+        written = sorted(work.glob("census*.hdr"))
+        if written and not (work / "census.hdr").exists():
+            written[0].rename(work / "census.hdr")
         output = r["stdout"] + "\n" + r["stderr"]
         error, features, warnings = wardray_diagnostics(output)
         result = {"exit": r["rc"], "seconds": r["seconds"], "features": features, "warnings": warnings[:20],

@@ -131,12 +131,25 @@ TEST(Expression, Constants) {
     ParseOptions o = test::default_options();
     o.image_width = 640;
     o.image_height = 480;
-    o.clock = 0.25;
+    o.animation.clock = 0.25;
     const Scene s = parse_ok("sphere { <image_width, image_height, clock>, version }", o);
     ASSERT_EQ(s.objects.size(), 1u);
     EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center, (Vec3{640, 480, 0.25}));
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 3.7);
     EXPECT_DOUBLE_EQ(eval_float("clock_delta"), 0.0);
+    EXPECT_DOUBLE_EQ(eval_float("initial_clock + final_clock + frame_number + clock_on"), 0.0);
+}
+
+// The animation values come from the front end, frame by frame (here frame 3 of 2..4, clock 0..1).
+TEST(Expression, AnimationValues) {
+    ParseOptions o = test::default_options();
+    o.animation = {.clock = 0.5, .clock_delta = 0.5, .clock_on = true, .frame_number = 3, .initial_frame = 2,
+                   .final_frame = 4, .initial_clock = 0, .final_clock = 1};
+    const Scene s = parse_ok(
+        "sphere { <clock + clock_delta, clock_on * frame_number, initial_frame * final_frame>, final_clock + 1 }", o);
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(std::get<Sphere>(s.objects[0].shape).center, (Vec3{1.0, 3.0, 8.0}));
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 2.0);
 }
 
 TEST(Expression, Strings) {

@@ -65,7 +65,7 @@ TEST(Cli, HelpAndVersionExitZero) {
 
 TEST(Cli, BadSwitchesExitTwoWithUsage) {
     const fs::path dir = work_dir("bad_switch");
-    for (const char* args : {"+Q9", "--frobnicate", "+W0", "--gi=fast", "+FT", "--threads"}) {
+    for (const char* args : {"+ZZ9", "+Q12", "--frobnicate", "+W0", "--gi=fast", "+FT", "--threads", "+SRx"}) {
         const auto r = wardray(args, dir);
         EXPECT_EQ(r.exit_status, 2) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("usage: wardray"), std::string::npos) << args;

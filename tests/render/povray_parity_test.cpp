@@ -24,6 +24,7 @@ struct ParityCase {
     std::string name;
     fs::path scene;
     std::string switches = "-A";  ///< given to both renderers
+    std::string frame;            ///< an animation's frame: both write povray<frame>.hdr, wardray<frame>.hdr
 };
 
 // Names the case in test output instead of dumping its bytes.
@@ -35,7 +36,15 @@ std::vector<ParityCase> parity_scenes() {
     std::vector<ParityCase> cases{{"default", root / "scenes" / "default.pov"},
                                   {"default_antialiased", root / "scenes" / "default.pov", "+A0.1 +R3 -J"},
                                   {"transforms_antialiased", root / "scenes" / "parity" / "transforms.pov",
-                                   "+A0.0 +R2 -J"}};
+                                   "+A0.0 +R2 -J"},
+                                  // Frame 4 of 2..6, clock 0.5..2.5: the values each frame gets and its name.
+                                  {"animation_frame", root / "scenes" / "parity" / "animation.pov",
+                                   "-A +KFI2 +KFF6 +KI0.5 +KF2.5 +SF4 +EF4", "4"},
+                                  {"animation_cyclic", root / "scenes" / "parity" / "animation.pov",
+                                   "-A +KFF10 +KC +SF10 +EF10", "10"},
+                                  // A partial render: the full-size image with the rest black, as POV-Ray writes it.
+                                  {"partial_render", root / "scenes" / "parity" / "transforms.pov",
+                                   "+A0.0 +R2 -J +SR0.25 +ER150 +SC37 +EC0.8"}};
     std::vector<fs::path> parity;
     for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
         if (e.path().extension() == ".pov") parity.push_back(e.path());
@@ -63,6 +72,8 @@ TEST_P(PovrayParity, DirectLightMatchesPovRay) {
     const auto ours = run_command(
         shell_quote(WARDRAY_BINARY) + " +I" + scene + " +Owardray.hdr +FH -D +WT2 " + c.switches + size, dir.string());
     ASSERT_EQ(ours.exit_status, 0) << "wardray failed:\n" << ours.output;
+    for (const char* name : {"povray", "wardray"})
+        if (!c.frame.empty()) fs::rename(dir / (name + c.frame + ".hdr"), dir / (std::string(name) + ".hdr"));
 
     std::string error;
     const auto reference = render::read_image(dir / "povray.hdr", error);
