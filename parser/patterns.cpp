@@ -379,9 +379,10 @@ std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {
 }
 
 Normal Parser::parse_normal_body(const Token& kw, const Normal* base) {
-    // In place like the pigment (POV-Ray's Parse_Tnormal), from `base` when given.
+    // In place like the pigment (POV-Ray's Parse_Tnormal), from `base` when it is a normal. A texture without one
+    // has none in POV-Ray (a null Tnormal), so the transforms its object went through do not reach a new normal.
     expect("{");
-    Normal n = base ? *base : Normal{};
+    Normal n = base && base->pattern.type != PType::None ? *base : Normal{};
     n.loc = make_diagnostic(Severity::Note, kw, "").loc;
     parse_normal_start(n);
     parse_normal_items(n, kw, "}");

@@ -67,8 +67,9 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
         #declare T = texture { pigment { granite turbulence 0.5 color_map { [0 rgb 0] [1 rgb 1] } } normal { bumps 0.3 } }
         sphere { 0, 1 texture { T pigment { octaves 3 } normal { scale 2 } } }
         sphere { 0, 1 texture { T } pigment { rgb <1, 0, 0> } }
+        plane { y, 0 pigment { rgb 1 } translate 5*x normal { bumps 0.5 } }
     )");
-    ASSERT_EQ(s.objects.size(), 2u);
+    ASSERT_EQ(s.objects.size(), 3u);
     const Texture& a = s.objects[0].texture;
     EXPECT_EQ(a.pigment.pattern.type, Pattern::Type::Granite);
     ASSERT_TRUE(a.pigment.pattern.turbulence.has_value());
@@ -79,6 +80,9 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
     EXPECT_EQ(a.normal.amount, 0.3);
     EXPECT_TRUE(s.objects[1].texture.pigment.is_solid());
     EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
+    // A texture with no normal has none to modify: the new one does not take the object's earlier translate
+    // (caustic2.pov's water surface).
+    EXPECT_TRUE(s.objects[2].texture.normal.pattern.transform.is_identity());
 }
 
 TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
