@@ -112,6 +112,7 @@ private:
     media::Sky m_sky;
     std::unique_ptr<const media::Medium> m_atmosphere;  ///< null when the scene has no fog
     std::unique_ptr<const media::Rainbows> m_rainbows;  ///< null when the scene has no rainbow
+    bool m_volume_on_gathers = false;  ///< radiosity `media on`: gather rays see fog and rainbows too
     bool m_ambient_is_light = true;
     int m_noise_generator = 2;
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them

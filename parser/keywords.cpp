@@ -55,8 +55,9 @@ const std::vector<std::string_view> k_patterns = {
 const std::vector<std::string_view> k_handled = {
     "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",
     "angle", "aperture", "area_illumination", "area_light", "asin", "asinh", "assumed_gamma", "atan", "atan2",
-    "atanh", "background", "blue", "blur_samples", "brightness", "brilliance", "camera", "charset", "fog",
-    "sky_sphere", "rainbow", "chr", "circular", "clock", "clock_delta", "clock_on", "color", "colour", "concat", "confidence",
+    "atanh", "background", "blue", "blur_samples", "brightness", "brilliance", "camera", "charset",
+    "chr", "circular", "clock", "clock_delta", "clock_on", "color", "colour", "concat", "confidence",
+    "fog", "rainbow", "sky_sphere",
     "conserve_energy", "cos", "cosh", "count", "crand", "declare", "defined", "degrees", "diffuse",
     "direction", "div", "double_illuminate", "emission", "error_bound", "exp", "exponent", "fade_distance",
     "fade_power", "falloff", "false", "file_exists", "filter", "final_clock", "final_frame", "finish",

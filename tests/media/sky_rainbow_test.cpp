@@ -39,7 +39,7 @@ scene::Scene two_layer_sky(bool legacy) {
 
 TEST(Sky, LayersLikeATextureInPovRay37) {
     // Top: opacity .4 → (1,.5,0)·.4·emission; its filter colour (1,.5,0)·.4 + .2 = (.6,.4,.2).
-    // Bottom: opacity .5 → (.5,.5,1)·.5·(.6,.4,.2)·emission; then filter (.5,.5,.5)·(.6,.4,.2) lets the background in.
+    // Bottom: opacity .5 → (.5,.5,1)·.5·(.6,.4,.2)·emission; its filter (.5,.5,.5)·(.6,.4,.2) passes the background.
     const Vec3 e{2.0, 1.0, 1.0};
     const Vec3 top = Vec3{1.0, 0.5, 0.0} * 0.4 * e;
     const Vec3 f1{0.6, 0.4, 0.2};
