@@ -6,9 +6,11 @@
 #include <cmath>
 #include <numbers>
 
+#include "cache/hemisphere_sampler.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
+#include "media/fog.h"
 #include "texture/noise.h"
 
 namespace wardray::lighting {
@@ -47,6 +49,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
       m_lights(scene, geometry),
       m_sky(scene),
       m_atmosphere(media::make_atmosphere(scene)) {
+    m_volume_on_gathers = scene.global.radiosity.has_value() && scene.global.radiosity->media;
+    if (!scene.rainbows.empty())
+        m_rainbows = std::make_unique<const media::Rainbows>(scene.rainbows, scene.global.noise_generator);
     // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
     // `#version 3.6` (or older) still gets it.
     m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
@@ -104,9 +109,16 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     } else {
         colour = m_sky.radiance(direction);
     }
-    // POV-Ray compat: fog fills only hollow objects; a ray inside a non-hollow one passes no fog.
-    if (m_atmosphere && hollow_ray(m_scene, state.interiors))
-        colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    // POV-Ray compat: rainbows and fog fill only hollow objects, so a ray inside a non-hollow one passes neither;
+    // nor does a radiosity gather ray, or anything it leads to, unless the radiosity block says `media on`.
+    const bool volume = !state.gather_ray || m_volume_on_gathers;
+    if ((m_rainbows || m_atmosphere) && volume && hollow_ray(m_scene, state.interiors)) {
+        // POV-Ray's TraceRay: the rainbow first (its jitter drawn from the ray), then the fog.
+        if (m_rainbows)
+            colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
+                                       cache::seed_from(ray.origin, direction, 0x5241494E));
+        if (m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    }
     return colour;
 }
 

@@ -12,6 +12,7 @@
 #include "lighting/light_sampler.h"
 #include "lighting/trace_context.h"
 #include "media/medium.h"
+#include "media/rainbow.h"
 #include "media/sky.h"
 #include "scene/scene.h"
 
@@ -110,6 +111,8 @@ private:
     std::unique_ptr<const IndirectLight> m_indirect;  ///< null without a radiosity block or with --gi=off
     media::Sky m_sky;
     std::unique_ptr<const media::Medium> m_atmosphere;  ///< null when the scene has no fog
+    std::unique_ptr<const media::Rainbows> m_rainbows;  ///< null when the scene has no rainbow
+    bool m_volume_on_gathers = false;  ///< radiosity `media on`: gather rays see fog and rainbows too
     bool m_ambient_is_light = true;
     int m_noise_generator = 2;
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them

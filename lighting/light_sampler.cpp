@@ -64,7 +64,8 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
     : m_scene(scene),
       m_geometry(geometry),
       m_noise_generator(scene.global.noise_generator),
-      m_fog(media::make_atmosphere(scene)) {
+      m_fog(media::make_atmosphere(scene)),
+      m_volume_on_gathers(scene.global.radiosity.has_value() && scene.global.radiosity->media) {
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
     for (const scene::Object& o : scene.objects) {
@@ -181,7 +182,9 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
     // POV-Ray compat: a point past a parallel light's plane is lit too; its shadow ray has negative length and
     // meets nothing.
     if (light.shadowless || distance <= 0.0) return colour;
-    const media::Medium* fog = light.media_attenuation && light.media_interaction ? m_fog.get() : nullptr;
+    // POV-Ray compat: on a gather ray's path (area_lights false) fog dims no light unless radiosity says media on.
+    const bool volume = area_lights || m_volume_on_gathers;
+    const media::Medium* fog = light.media_attenuation && light.media_interaction && volume ? m_fog.get() : nullptr;
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)
         return area_light_shadow(light, colour, p, interiors, fog, ctx);

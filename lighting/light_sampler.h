@@ -24,8 +24,8 @@ public:
 
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
-    /// `area_lights` false an area light counts as a point light at its centre. `to_light` receives the unit
-    /// direction towards the light.
+    /// `area_lights` false (on a gather ray's path) an area light counts as a point light at its centre. `to_light`
+    /// receives the unit direction towards the light.
     Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
                         bool area_lights, Vec3& to_light, TraceContext& ctx) const;
 
@@ -53,6 +53,7 @@ private:
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
+    bool m_volume_on_gathers = false;  ///< radiosity `media on`: fog dims lights on gather paths too
 };
 
 }  // namespace wardray::lighting

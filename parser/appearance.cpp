@@ -1,4 +1,4 @@
-// Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, sky sphere, fog, #default.
+// Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, #default.
 #include <cmath>
 
 #include "parser/keyword_table.h"
@@ -388,69 +388,6 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
         } else {
             if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
             fail(t, "expected ior, fade_distance, fade_power or fade_color in interior but found '" + t.text + "'");
-        }
-    }
-}
-
-SkySphere AppearanceReader::parse_sky_sphere(const Token& kw) {
-    expect("{");
-    SkySphere sky;
-    expand_macros();
-    if (const Token& first = peek(); first.kind == TokenKind::Identifier && !is_keyword(first.text)) {
-        // A declared sky_sphere: identifiers of this kind are not stored yet (warned where declared).
-        const Value* v = lookup(first.text);
-        if (v == nullptr) fail_undeclared(first);
-        if (!std::holds_alternative<Unsupported>(*v)) fail(first, "'" + first.text + "' is not a sky_sphere");
-        next();
-    }
-    while (true) {
-        expand_macros();
-        const Token t = peek();
-        Transform tr;
-        if (parse_transform_item(t, tr)) {
-            sky.transform = sky.transform.then(tr);
-            continue;
-        }
-        next();
-        if (is_punct(t, "}")) break;
-        if (is_word(t, "pigment")) {
-            sky.pigments.push_back(parse_pigment_body(t));
-        } else if (is_word(t, "emission")) {
-            sky.emission = parse_color();
-        } else {
-            fail(t, "expected pigment, emission or a transform in sky_sphere but found " + describe_token(t));
-        }
-    }
-    if (sky.pigments.empty()) warn(kw, "sky_sphere without a pigment");
-    return sky;
-}
-
-Fog AppearanceReader::parse_fog(const Token& kw) {
-    expect("{");
-    Fog fog;
-    fog.loc = make_diagnostic(Severity::Note, kw, "").loc;
-    while (true) {
-        expand_macros();
-        const Token t = peek();
-        Transform ignored;
-        if (parse_transform_item(t, ignored)) continue;  // only ground fog uses its transform
-        if (starts_value(t)) {
-            fog.color = parse_color();
-            continue;
-        }
-        next();
-        if (is_punct(t, "}")) return fog;
-        if (is_word(t, "distance")) {
-            fog.distance = parse_float();
-        } else if (is_word(t, "fog_type")) {
-            if (static_cast<int>(parse_float()) != 1) warn_unsupported(t, "ground fog (fog_type 2)");
-        } else if (is_word(t, "turbulence") || is_word(t, "fog_offset") || is_word(t, "fog_alt") ||
-                   is_word(t, "turb_depth") || is_word(t, "up") || is_word(t, "octaves") || is_word(t, "omega") ||
-                   is_word(t, "lambda")) {
-            warn_unsupported(t, "fog " + t.text);
-            parse_numeric();
-        } else {
-            fail(t, "expected distance, a colour or fog_type in fog but found " + describe_token(t));
         }
     }
 }

@@ -1,4 +1,4 @@
-// AppearanceReader: colours, finishes, textures, interiors, the sky sphere and fog, and the #default texture.
+// AppearanceReader: colours, finishes, textures, interiors, the sky sphere, fog and rainbow, and #default.
 #pragma once
 
 #include <optional>
@@ -37,6 +37,11 @@ protected:
     SkySphere parse_sky_sphere(const Token& kw);
     /// Reads `fog { ... }` after its keyword.
     Fog parse_fog(const Token& kw);
+    /// Reads `rainbow { ... }` after its keyword.
+    Rainbow parse_rainbow(const Token& kw);
+    /// Reads the declared `T` that may open a sky_sphere, fog or rainbow block into `item`; false when none does.
+    template <typename T>
+    bool read_declared(T& item, const char* kind);
     void directive_default(const Token& tok) final;
 
     /// Reads `pigment { ... }` after its keyword (the pattern reader's).

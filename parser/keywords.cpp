@@ -40,7 +40,7 @@ const std::vector<std::string_view> k_unsupported_objects = {
     "poly", "polynomial", "ovus", "lemon", "intersection", "difference", "merge", "light_group"};
 
 const std::vector<std::string_view> k_unsupported_blocks = {
-    "fog", "sky_sphere", "rainbow", "media", "normal", "interior", "material",
+    "media", "normal", "interior", "material",
     "interior_texture", "photons", "color_map", "colour_map", "pigment_map", "normal_map", "texture_map",
     "slope_map", "density", "density_map", "function", "looks_like", "projected_through",
     "clipped_by", "bounded_by", "irid", "subsurface", "warp", "image_map", "bump_map", "material_map"};
@@ -57,6 +57,7 @@ const std::vector<std::string_view> k_handled = {
     "angle", "aperture", "area_illumination", "area_light", "asin", "asinh", "assumed_gamma", "atan", "atan2",
     "atanh", "background", "blue", "blur_samples", "brightness", "brilliance", "camera", "charset",
     "chr", "circular", "clock", "clock_delta", "clock_on", "color", "colour", "concat", "confidence",
+    "fog", "rainbow", "sky_sphere",
     "conserve_energy", "cos", "cosh", "count", "crand", "declare", "defined", "degrees", "diffuse",
     "direction", "div", "double_illuminate", "emission", "error_bound", "exp", "exponent", "fade_distance",
     "fade_power", "falloff", "false", "file_exists", "filter", "final_clock", "final_frame", "finish",

@@ -122,6 +122,7 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         ++m_errors;
     }
     result.diagnostics = std::move(m_diagnostics);
+    m_builder.set_legacy_sky(!(m_version_given && m_version >= 3.7));
     if (m_errors == 0) result.scene = m_builder.finish(path, m_version, std::move(m_warnings));
     return result;
 }

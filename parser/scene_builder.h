@@ -23,8 +23,16 @@ public:
     void set_background(const Color& color) { m_scene.background = color; }
     /// Sets the sky sphere; a later one replaces it.
     void set_sky_sphere(SkySphere sky) { m_scene.sky_sphere = std::move(sky); }
+    /// True once a sky_sphere statement was read.
+    bool has_sky_sphere() const { return m_scene.sky_sphere.has_value(); }
     /// Adds a fog layer.
     void add_fog(Fog fog) { m_scene.fogs.push_back(std::move(fog)); }
+    /// Adds a rainbow.
+    void add_rainbow(Rainbow rainbow) { m_scene.rainbows.push_back(std::move(rainbow)); }
+    /// POV-Ray compat: an effective #version below 3.7 (none given counts as 3.62) layers sky pigments the 3.6 way.
+    void set_legacy_sky(bool legacy) {
+        if (m_scene.sky_sphere) m_scene.sky_sphere->legacy_layering = legacy;
+    }
     /// The global settings, which global_settings blocks change item by item.
     GlobalSettings& global() { return m_scene.global; }
 

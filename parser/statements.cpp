@@ -45,8 +45,14 @@ void SceneReader::parse_statement() {
              r.m_builder.set_background(r.parse_color());
              r.expect("}");
          }},
-        {"sky_sphere", [](SceneReader& r, const Token& kw) { r.m_builder.set_sky_sphere(r.parse_sky_sphere(kw)); }},
+        {"sky_sphere",
+         [](SceneReader& r, const Token& kw) {
+             SkySphere sky = r.parse_sky_sphere(kw);
+             if (r.m_builder.has_sky_sphere()) r.warn(kw, "Only one sky-sphere allowed (last one will be used).");
+             r.m_builder.set_sky_sphere(std::move(sky));
+         }},
         {"fog", [](SceneReader& r, const Token& kw) { r.m_builder.add_fog(r.parse_fog(kw)); }},
+        {"rainbow", [](SceneReader& r, const Token& kw) { r.m_builder.add_rainbow(r.parse_rainbow(kw)); }},
         // POV-Ray compat: the 3.1 forms without '#', read with POV-Ray's warnings.
         {"declare",
          [](SceneReader& r, const Token& kw) {
@@ -97,6 +103,9 @@ std::optional<Value> SceneReader::parse_item_value(const Token& t) {
         {"color_map", [](SceneReader& r, const Token& kw) -> Value { return r.color_map_value(kw); }},
         {"colour_map", [](SceneReader& r, const Token& kw) -> Value { return r.color_map_value(kw); }},
         {"transform", [](SceneReader& r, const Token& kw) -> Value { return r.parse_transform_body(kw); }},
+        {"sky_sphere", [](SceneReader& r, const Token& kw) -> Value { return r.parse_sky_sphere(kw); }},
+        {"fog", [](SceneReader& r, const Token& kw) -> Value { return r.parse_fog(kw); }},
+        {"rainbow", [](SceneReader& r, const Token& kw) -> Value { return r.parse_rainbow(kw); }},
         {"camera", [](SceneReader& r, const Token& kw) -> Value { return r.parse_camera_body(kw); }},
         {"light_source",
          [](SceneReader& r, const Token& kw) -> Value {

@@ -29,6 +29,7 @@ struct Scene {
     Color background{0.0, 0.0, 0.0};
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;
     /// Features parsed but not rendered yet, and other warnings found while parsing.
     std::vector<Diagnostic> warnings;
 };

@@ -28,7 +28,7 @@ scene::Fog fog(double distance, const Color& c) {
 }
 
 TEST(ConstantFog, BlendsTowardTheFogColourByExpOfDepthOverDistance) {
-    const ConstantFog medium({fog(2.0, {0.5, 0.25, 1.0})});
+    const Fogs medium({fog(2.0, {0.5, 0.25, 1.0})}, 2);
     const Vec3 behind{1.0, 1.0, 0.0};
     const double a = std::exp(-1.0);  // depth 2 at distance 2
     expect_near(medium.along_segment(behind, Segment{{}, {0, 0, 1}, 2.0}),
@@ -40,10 +40,10 @@ TEST(ConstantFog, BlendsTowardTheFogColourByExpOfDepthOverDistance) {
 }
 
 TEST(ConstantFog, TransmitBoundsTheAttenuationAndZeroDistanceIsNoFog) {
-    const ConstantFog thin({fog(1.0, {1.0, 1.0, 1.0, 0.0, 0.75})});
+    const Fogs thin({fog(1.0, {1.0, 1.0, 1.0, 0.0, 0.75})}, 2);
     // exp(−100) is below transmit 0.75, so 0.75 of the light behind passes.
     expect_near(thin.along_segment({0, 0, 0}, Segment{{}, {1, 0, 0}, 100.0}), Vec3{0.25, 0.25, 0.25});
-    const ConstantFog none({fog(0.0, {1.0, 0.0, 0.0})});
+    const Fogs none({fog(0.0, {1.0, 0.0, 0.0})}, 2);
     expect_near(none.along_segment({0.3, 0.3, 0.3}, Segment{{}, {1, 0, 0}, 5.0}), Vec3{0.3, 0.3, 0.3});
 }
 

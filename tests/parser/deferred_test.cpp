@@ -147,7 +147,7 @@ TEST(DeferredDeclarations, ExampleScenesDescribeTheSameScene) {
         EXPECT_TRUE(a.objects == b.objects) << entry.path();
         EXPECT_TRUE(a.lights == b.lights && a.camera == b.camera) << entry.path();
         EXPECT_TRUE(a.global == b.global && a.background == b.background) << entry.path();
-        EXPECT_TRUE(a.sky_sphere == b.sky_sphere && a.fogs == b.fogs) << entry.path();
+        EXPECT_TRUE(a.sky_sphere == b.sky_sphere && a.fogs == b.fogs && a.rainbows == b.rainbows) << entry.path();
         ++compared;
     }
     EXPECT_GE(compared, 200u);

@@ -162,6 +162,26 @@ TEST(Cli, SameImageForAnyThreadCount) {
     EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
 }
 
+TEST(Cli, FogAndAJitteredRainbowGiveTheSameImageForAnyThreadCount) {
+    // Ground fog with turbulence, a constant fog and a rainbow whose jitter draws a number per ray.
+    const fs::path dir = work_dir("threads_fog");
+    write_file(dir / "fog.pov", R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 1, -6> look_at <0, 2, 0> angle 90 }
+light_source { <3, 5, -4> color rgb 1 media_attenuation on }
+background { rgb <0.3, 0.4, 0.8> }
+fog { fog_type 2 distance 5 color rgb 0.9 fog_offset 0.5 fog_alt 0.5 turbulence 0.8 }
+fog { distance 50 color rgbf <0.5, 0.5, 1, 0.5> }
+rainbow { angle 30 width 8 direction <0, -0.2, 1> jitter 0.2
+          color_map { [0 rgbf <1, 0, 0, 0.5>] [0.5 rgbf <0, 1, 0, 0.5>] [1 rgbf <0, 0, 1, 0.5>] } }
+plane { y, 0 pigment { rgb 0.8 } }
+sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.3, 0.2> } }
+)");
+    ASSERT_EQ(wardray("fog.pov +W96 +H72 +FH +A0.1 +WT1 -o one.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("fog.pov +W96 +H72 +FH +A0.1 +WT2 -o two.hdr", dir).exit_status, 0);
+    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
+}
+
 TEST(Cli, ParseTimeGeometryQueriesAndDebugOutputMatchPovRay) {
     // POV-Ray 3.7 prints: P=1.0000,4.0000,6.0000 N=0.0000,1.0000,0.0000 in=1 lo=-1.000,0.000,2.000 ...
     const fs::path dir = work_dir("queries");

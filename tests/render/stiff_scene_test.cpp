@@ -1,5 +1,5 @@
-// Stiff and extreme scenes under direct lighting: scale invariance from 1e-6 to 1e6, degenerate and sliver
-// triangles, coincident surfaces, grazing lights, light colours across twelve decades, a camera inside a solid.
+// Stiff and extreme scenes under direct lighting: scale invariance from 1e-6 to 1e6 (and of fog), degenerate and
+// sliver triangles, coincident surfaces, grazing lights, light colours across twelve decades, a camera inside a solid.
 // Every render must be finite and match the picture the scene's geometry implies.
 #include <gtest/gtest.h>
 
@@ -119,6 +119,20 @@ TEST_P(ScaleInvariance, RadiosityMatchesScaleOne) {
     std::ostringstream name;
     name << "radiosity_scale_" << s;
     EXPECT_LE(rrmse(name.str(), scaled.film, reference.film, 0.01), 0.01) << "S = " << s;
+}
+
+// Fog, ground fog and its turbulence scaled with the scene (scenes/stiff/scaled_fog.pov): within 1 %.
+TEST(Stiff, FogScaledWithItsSceneMatchesScaleOne) {
+    const Rendered reference = render_text(scaled_scene("scaled_fog.pov"), {{"S", 1.0}});
+    ASSERT_EQ(reference.non_finite, 0u);
+    ASSERT_GT(max_channel(reference.film), 0.1);
+    for (const double s : {1e-4, 1e4}) {
+        const Rendered scaled = render_text(scaled_scene("scaled_fog.pov"), {{"S", s}});
+        EXPECT_EQ(scaled.non_finite, 0u);
+        std::ostringstream name;
+        name << "fog_scale_" << s;
+        EXPECT_LE(rrmse(name.str(), scaled.film, reference.film, 0.01), 0.01) << "S = " << s;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Stiff, ScaleInvariance, ::testing::Values(1e-6, 1e-3, 1e3, 1e6),
