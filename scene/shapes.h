@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "core/transform.h"
 #include "core/vec3.h"
 
 namespace wardray::scene {
@@ -63,6 +64,24 @@ struct Torus {
     double major = 1.0;
     double minor = 0.25;
     bool operator==(const Torus&) const = default;
+};
+
+/// POV-Ray's `blob { [threshold T] component s, r, <c> | sphere { <c>, r, [strength] s [transforms] } |
+/// cylinder { <a>, <b>, r, [strength] s [transforms] } ... [sturm] [hierarchy] }`: the surface where the summed
+/// densities s (1 - d²/r²)² (d: distance to the centre, or to the segment a-b) equal T; inside where above it.
+struct Blob {
+    struct Component {
+        bool cylinder = false;
+        Vec3 a;  ///< the centre, or the cylinder's first end
+        Vec3 b;  ///< the cylinder's second end
+        double radius = 1.0;
+        double strength = 1.0;
+        Transform transform;  ///< the component's own transforms, in the blob's space
+        bool operator==(const Component&) const = default;
+    };
+    double threshold = 1.0;
+    std::vector<Component> components;  ///< in the order POV-Ray keeps them: the last written first
+    bool operator==(const Blob&) const = default;
 };
 
 /// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
@@ -186,6 +205,7 @@ struct Text {
     X(cone, Cone)                     \
     X(disc, Disc)                     \
     X(torus, Torus)                   \
+    X(blob, Blob)                     \
     X(triangle, Mesh)                 \
     X(smooth_triangle, Mesh)          \
     X(mesh, Mesh)                     \

@@ -223,6 +223,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"cone", "cone { 0, 1, y, 0.5 }"},
     {"disc", "disc { 0, y, 1 }"},
     {"torus", "torus { 1, 0.25 }"},
+    {"blob", "blob { threshold 0.5 sphere { 0, 1, 1 } }"},
     {"triangle", "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }"},
     {"smooth_triangle", "smooth_triangle { <0, 0, 0>, y, <1, 0, 0>, y, <0, 0, 1>, y }"},
     {"mesh", "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } }"},
