@@ -84,6 +84,21 @@ struct Blob {
     bool operator==(const Blob&) const = default;
 };
 
+/// POV-Ray's `bicubic_patch { type 0|1 [flatness f] [u_steps n] [v_steps n] <p00>, ..., <p33> }`: the Bézier
+/// patch of 16 control points (row i runs along u), which POV-Ray tessellates after every transform: subpatches
+/// split in half until flat within `flatness` or `u_steps`/`v_steps` halvings deep, two smooth triangles each.
+struct BicubicPatch {
+    int type = 0;
+    double flatness = 0.0;
+    int u_steps = 0;
+    int v_steps = 0;
+    std::array<Vec3, 16> points{};
+    /// Every transform applied to the patch since it was read (its own and its CSG parents'), in order: POV-Ray
+    /// tessellates the transformed control points, so flatness is measured after it.
+    Transform placement;
+    bool operator==(const BicubicPatch&) const = default;
+};
+
 /// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
 struct Mesh {
     enum class Kind { Triangle, SmoothTriangle, Mesh, Mesh2 };
@@ -206,6 +221,7 @@ struct Text {
     X(disc, Disc)                     \
     X(torus, Torus)                   \
     X(blob, Blob)                     \
+    X(bicubic_patch, BicubicPatch)    \
     X(triangle, Mesh)                 \
     X(smooth_triangle, Mesh)          \
     X(mesh, Mesh)                     \
