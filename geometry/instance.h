@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "geometry/blob.h"
 #include "geometry/box.h"
 #include "geometry/cone.h"
 #include "geometry/csg.h"
@@ -28,7 +29,7 @@
 namespace wardray::geometry {
 
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
-using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, MeshShape,
+using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
                               TextShape, CsgShape>;
 

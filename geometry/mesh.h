@@ -26,6 +26,8 @@ public:
     static std::optional<MeshShape> create(const scene::Polygon& polygon);
     /// A linear-spline prism: side walls and triangulated caps, faces turned outward (prism.cpp).
     static std::optional<MeshShape> create(const scene::Prism& prism);
+    /// A bicubic patch tessellated as POV-Ray does, with its smooth normals (bicubic_patch.cpp).
+    static std::optional<MeshShape> create(const scene::BicubicPatch& patch);
 
     /// All crossings with t in (t_min, t_max), sorted.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

@@ -24,6 +24,13 @@ void transform_textures(Object& o, bool own_texture, const Transform& tr) {
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
 }
 
+// POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents'; it keeps them.
+void place_patches(Object& o, const Transform& tr) {
+    if (auto* patch = std::get_if<BicubicPatch>(&o.shape)) patch->placement = patch->placement.then(tr);
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) place_patches(child, tr);
+}
+
 /// Sets the flag `flag` (no_shadow, no_image, ...) on every part of the object.
 void set_flag(ObjectValue& ov, bool Object::*flag) {
     for (ObjectPart& part : ov.parts) part.object.*flag = true;
@@ -196,6 +203,7 @@ void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
     for (ObjectPart& part : ov.parts) {
         part.object.transform = part.object.transform.then(tr);
         transform_textures(part.object, part.has_texture, tr);
+        place_patches(part.object, tr);
     }
     if (ov.texture) transform_texture(*ov.texture, tr);
     for (Light& l : ov.lights) {

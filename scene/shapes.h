@@ -4,6 +4,7 @@
 #include <array>
 #include <vector>
 
+#include "core/transform.h"
 #include "core/vec3.h"
 
 namespace wardray::scene {
@@ -63,6 +64,39 @@ struct Torus {
     double major = 1.0;
     double minor = 0.25;
     bool operator==(const Torus&) const = default;
+};
+
+/// POV-Ray's `blob { [threshold T] component s, r, <c> | sphere { <c>, r, [strength] s [transforms] } |
+/// cylinder { <a>, <b>, r, [strength] s [transforms] } ... [sturm] [hierarchy] }`: the surface where the summed
+/// densities s (1 - d²/r²)² (d: distance to the centre, or to the segment a-b) equal T; inside where above it.
+struct Blob {
+    struct Component {
+        bool cylinder = false;
+        Vec3 a;  ///< the centre, or the cylinder's first end
+        Vec3 b;  ///< the cylinder's second end
+        double radius = 1.0;
+        double strength = 1.0;
+        Transform transform;  ///< the component's own transforms, in the blob's space
+        bool operator==(const Component&) const = default;
+    };
+    double threshold = 1.0;
+    std::vector<Component> components;  ///< in the order POV-Ray keeps them: the last written first
+    bool operator==(const Blob&) const = default;
+};
+
+/// POV-Ray's `bicubic_patch { type 0|1 [flatness f] [u_steps n] [v_steps n] <p00>, ..., <p33> }`: the Bézier
+/// patch of 16 control points (row i runs along u), which POV-Ray tessellates after every transform: subpatches
+/// split in half until flat within `flatness` or `u_steps`/`v_steps` halvings deep, two smooth triangles each.
+struct BicubicPatch {
+    int type = 0;
+    double flatness = 0.0;
+    int u_steps = 0;
+    int v_steps = 0;
+    std::array<Vec3, 16> points{};
+    /// Every transform applied to the patch since it was read (its own and its CSG parents'), in order: POV-Ray
+    /// tessellates the transformed control points, so flatness is measured after it.
+    Transform placement;
+    bool operator==(const BicubicPatch&) const = default;
 };
 
 /// Triangles: `triangle`, `smooth_triangle`, `mesh` and `mesh2` all become one list of faces.
@@ -186,6 +220,8 @@ struct Text {
     X(cone, Cone)                     \
     X(disc, Disc)                     \
     X(torus, Torus)                   \
+    X(blob, Blob)                     \
+    X(bicubic_patch, BicubicPatch)    \
     X(triangle, Mesh)                 \
     X(smooth_triangle, Mesh)          \
     X(mesh, Mesh)                     \

@@ -223,6 +223,9 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"cone", "cone { 0, 1, y, 0.5 }"},
     {"disc", "disc { 0, y, 1 }"},
     {"torus", "torus { 1, 0.25 }"},
+    {"blob", "blob { threshold 0.5 sphere { 0, 1, 1 } }"},
+    {"bicubic_patch", "bicubic_patch { type 1 u_steps 2 v_steps 2 <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,1>,"
+                      "<2,1,1>,<3,1,0>, <0,2,0>,<1,2,1>,<2,2,1>,<3,2,0>, <0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }"},
     {"triangle", "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }"},
     {"smooth_triangle", "smooth_triangle { <0, 0, 0>, y, <1, 0, 0>, y, <0, 0, 1>, y }"},
     {"mesh", "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } }"},

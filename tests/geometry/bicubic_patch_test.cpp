@@ -1,0 +1,104 @@
+// Tests of bicubic_patch tessellation: vertices on the Bézier surface with its normals, POV-Ray's subdivision
+// rules (steps, flatness, measured after the transforms), and hits on the triangles.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/instance.h"
+#include "parser/parse.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::make_object;
+
+// A height-field patch: x = 3u, y = 3v, z from the heights (Bézier curves reproduce linear functions).
+scene::BicubicPatch height_patch(int u_steps, int v_steps, double flatness) {
+    scene::BicubicPatch p;
+    p.type = 1;
+    p.u_steps = u_steps;
+    p.v_steps = v_steps;
+    p.flatness = flatness;
+    const double h[4][4] = {{0, 1, 0.5, 0}, {0.3, 2, 1, -0.5}, {0, 1.5, 0.2, 0.4}, {-0.2, 0.1, 0.8, 0}};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) p.points[4 * i + j] = {double(i), double(j), h[i][j]};
+    return p;
+}
+
+double bernstein(int i, double t) {
+    const double c[4] = {1, 3, 3, 1};
+    return c[i] * std::pow(t, i) * std::pow(1 - t, 3 - i);
+}
+
+double height(const scene::BicubicPatch& p, double u, double v) {
+    double z = 0.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) z += bernstein(i, u) * bernstein(j, v) * p.points[4 * i + j].z;
+    return z;
+}
+
+std::size_t face_count(const ShapeInstance& inst) { return std::get<MeshShape>(inst.shape()).faces().size(); }
+
+TEST(BicubicPatch, StepsHalveEachDirectionAndVerticesLieOnTheSurface) {
+    const scene::BicubicPatch p = height_patch(3, 2, 0.0);
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    EXPECT_EQ(face_count(*inst), 8u * 4u * 2u);
+    // A vertical ray through a corner of a subpatch meets the surface there, with the patch's own normal.
+    for (int i = 0; i <= 8; i += 3)
+        for (int j = 1; j <= 4; j += 2) {
+            const double u = i / 8.0, v = j / 4.0;
+            const auto hit = inst->nearest({3 * u + 1e-9, 3 * v + 1e-9, 10}, {0, 0, -1}, 0.0, 1e30);
+            ASSERT_TRUE(hit) << u << " " << v;
+            EXPECT_NEAR(10 - hit->t, height(p, u, v), 1e-6);
+            const double e = 1e-6;
+            const double zx = (height(p, u + e, v) - height(p, u - e, v)) / (2 * e) / 3.0;
+            const double zy = (height(p, u, v + e) - height(p, u, v - e)) / (2 * e) / 3.0;
+            const Vec3 exact = normalize(Vec3{-zx, -zy, 1});
+            EXPECT_NEAR(std::fabs(dot(hit->normal, exact)), 1.0, 1e-6) << u << " " << v;
+        }
+}
+
+TEST(BicubicPatch, FlatSubpatchesStopTheSubdivision) {
+    // A flat patch is two triangles at any depth; a curved one is too when flatness allows everything.
+    scene::BicubicPatch flat = height_patch(4, 4, 0.01);
+    for (Vec3& q : flat.points) q.z = 0.25 * q.x - 0.5 * q.y;
+    const auto plane = ShapeInstance::create(make_object(flat), 0);
+    ASSERT_TRUE(plane);
+    EXPECT_EQ(face_count(*plane), 2u);
+    const auto coarse = ShapeInstance::create(make_object(height_patch(4, 4, 1e9)), 0);
+    ASSERT_TRUE(coarse);
+    EXPECT_EQ(face_count(*coarse), 2u);
+    const auto fine = ShapeInstance::create(make_object(height_patch(4, 4, 0.01)), 0);
+    ASSERT_TRUE(fine);
+    EXPECT_GT(face_count(*fine), 2u);
+    EXPECT_LE(face_count(*fine), 512u);
+}
+
+TEST(BicubicPatch, FlatnessIsMeasuredAfterTheTransforms) {
+    // POV-Ray tessellates the transformed control points: a larger patch needs more subpatches to be as flat.
+    const std::string points =
+        "<0,0,0>,<1,0,1>,<2,0,0.5>,<3,0,0>, <0,1,0.3>,<1,1,2>,<2,1,1>,<3,1,-0.5>,"
+        " <0,2,0>,<1,2,1.5>,<2,2,0.2>,<3,2,0.4>, <0,3,-0.2>,<1,3,0.1>,<2,3,0.8>,<3,3,0>";
+    auto faces = [&](const std::string& modifiers) {
+        parser::ParseOptions options;
+        const auto r = parser::parse_string(
+            "union { bicubic_patch { type 1 flatness 0.05 u_steps 6 v_steps 6 " + points + " } sphere { 0, 1 } " +
+                modifiers + " }",
+            "patch.pov", options);
+        EXPECT_TRUE(r.ok());
+        // A union of one object may come back as that object, its transform carried over.
+        const scene::Object& top = r.scene->objects.at(0);
+        const auto* csg = std::get_if<scene::Csg>(&top.shape);
+        const auto inst = ShapeInstance::create(csg ? csg->children.at(0) : top, 0);
+        return inst ? face_count(*inst) : 0u;
+    };
+    const std::size_t small = faces(""), large = faces("scale 20");
+    EXPECT_GT(small, 2u);
+    EXPECT_GT(large, small);
+    EXPECT_EQ(faces("translate 5 rotate 30*y"), small);
+}
+
+}  // namespace
+}  // namespace wardray::geometry
