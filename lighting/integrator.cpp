@@ -74,6 +74,12 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         for (std::size_t o = 0; o < crossings.size(); ++o)
             if (crossings[o] % 2 == 1) m_camera_interiors.push(static_cast<std::uint32_t>(o));
     }
+    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
+    // documentation describes, since media and fog then leave the camera's stretch of every ray out.
+    if ((m_media || !scene.fogs.empty()) && !hollow_ray(scene, m_camera_interiors))
+        m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
+                                "expected.");
 }
 
 Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
@@ -104,6 +110,7 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     } else {
         colour = m_sky.radiance(direction);
     }
+    if (m_media) colour = apply_media(ray, direction, depth, hit.has_value(), state, colour, ctx);
     // POV-Ray compat: fog fills only hollow objects; a ray inside a non-hollow one passes no fog.
     if (m_atmosphere && hollow_ray(m_scene, state.interiors))
         colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});

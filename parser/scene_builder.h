@@ -25,6 +25,8 @@ public:
     void set_sky_sphere(SkySphere sky) { m_scene.sky_sphere = std::move(sky); }
     /// Adds a fog layer.
     void add_fog(Fog fog) { m_scene.fogs.push_back(std::move(fog)); }
+    /// A scene-level media block: part of the atmosphere.
+    void add_media(Media media) { m_scene.media.push_back(std::move(media)); }
     /// The global settings, which global_settings blocks change item by item.
     GlobalSettings& global() { return m_scene.global; }
 
