@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
@@ -71,8 +72,14 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
             ++crossings[hit->object];
             t0 = hit->t + geometry.self_intersection_offset(hit->position);
         }
-        for (std::size_t o = 0; o < crossings.size(); ++o)
-            if (crossings[o] % 2 == 1) m_camera_interiors.push(static_cast<std::uint32_t>(o));
+        // POV-Ray compat (InitRayContainerState): containment is its Inside test; an infinite plane is crossed
+        // once or never along the ray, so it is tested directly.
+        const geometry::ObjectQuery query;
+        for (std::size_t o = 0; o < crossings.size(); ++o) {
+            const bool plane = std::holds_alternative<scene::Plane>(scene.objects[o].shape);
+            if (plane ? query.inside(scene.objects[o], origin) : crossings[o] % 2 == 1)
+                m_camera_interiors.push(static_cast<std::uint32_t>(o));
+        }
     }
     if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the

@@ -151,13 +151,15 @@ bool cylinder_interval(const Segment& ray, const scene::Light& light, double& d1
     return true;
 }
 
+using Thresholds = ParticipatingMedia::Thresholds;
+
 // One ComputeMedia call: the media, the segment and what its samples need.
 class Walk {
 public:
-    Walk(const scene::Scene& scene, int noise, const MediaList& media, const Segment& segment, double depth,
-         const LightQuery* lights)
-        : m_scene(scene), m_noise(noise), m_media(media), m_ray(segment), m_depth(depth), m_lights(lights),
-          m_random(segment) {}
+    Walk(const scene::Scene& scene, const Thresholds& thresholds, int noise, const MediaList& media,
+         const Segment& segment, double depth, const LightQuery* lights)
+        : m_scene(scene), m_thresholds(thresholds), m_noise(noise), m_media(media), m_ray(segment), m_depth(depth),
+          m_lights(lights), m_random(segment) {}
 
     Vec3 run(const Vec3& colour);
 
@@ -173,6 +175,7 @@ private:
     double phase(const Vec3& to_light) const;
 
     const scene::Scene& m_scene;
+    const Thresholds& m_thresholds;
     int m_noise;
     const MediaList& m_media;
     Segment m_ray;
@@ -435,12 +438,7 @@ void Walk::regular(const scene::Media& im, bool all_constant) {
     }
     if (m_lights == nullptr || im.max_samples <= min_samples) return;
     // More samples until the variance is below the confidence threshold for the count so far.
-    std::vector<double> threshold(static_cast<std::size_t>(im.max_samples), 0.0);
-    if (im.max_samples > 1) {
-        double t = inverse_chi_square_tail(im.max_samples - 1, im.confidence);
-        t = t > 0.0 ? im.variance / t : im.variance * kPovEpsilon;
-        for (int i = 0; i < im.max_samples; ++i) threshold[i] = t * inverse_chi_square_tail(i + 1, im.confidence);
-    }
+    const std::vector<double>& threshold = m_thresholds.at(&im);
     auto variance = [](const Interval& iv) {
         const double n = 1.0 / iv.samples;
         return (iv.te2 * n - (iv.te * n) * (iv.te * n)) * n;
@@ -463,6 +461,18 @@ void Walk::regular(const scene::Media& im, bool all_constant) {
 ParticipatingMedia::ParticipatingMedia(const scene::Scene& scene)
     : m_scene(scene), m_noise_generator(scene.global.noise_generator) {
     m_atmosphere.add(scene.media);
+    // POV-Ray's Media::PostProcess: the variance below which methods 1 and 2 stop adding samples, per sample count.
+    auto thresholds = [&](const scene::Media& m) {
+        if (m.method == 3 || m.max_samples <= m.min_samples) return;
+        std::vector<double>& th = m_thresholds[&m];
+        th.assign(static_cast<std::size_t>(m.max_samples), 0.0);
+        double t = inverse_chi_square_tail(m.max_samples - 1, m.confidence);
+        t = t > 0.0 ? m.variance / t : m.variance * kPovEpsilon;
+        for (int i = 0; i < m.max_samples; ++i) th[i] = t * inverse_chi_square_tail(i + 1, m.confidence);
+    };
+    for (const scene::Media& m : scene.media) thresholds(m);
+    for (const scene::Object& o : scene.objects)
+        for (const scene::Media& m : o.interior.media) thresholds(m);
 }
 
 bool ParticipatingMedia::in_scene(const scene::Scene& scene) {
@@ -476,14 +486,14 @@ Vec3 ParticipatingMedia::along(const MediaList& media, const Segment& segment, c
                                const LightQuery& lights) const {
     if (media.empty()) return colour;
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
-    Walk walk(m_scene, m_noise_generator, media, segment, depth, &lights);
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, &lights);
     return walk.run(colour);
 }
 
 Vec3 ParticipatingMedia::transmittance(const MediaList& media, const Segment& segment) const {
     if (media.empty()) return {1.0, 1.0, 1.0};
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
-    Walk walk(m_scene, m_noise_generator, media, segment, depth, nullptr);
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr);
     return walk.run({1.0, 1.0, 1.0});
 }
 

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 #include "media/medium.h"
@@ -50,9 +51,13 @@ public:
     /// The scene-level media (the atmosphere); empty when the scene has none.
     const MediaList& atmosphere() const { return m_atmosphere; }
 
+    /// Per media of method 1 or 2 with more max than min samples: the variance threshold for each sample count.
+    using Thresholds = std::unordered_map<const scene::Media*, std::vector<double>>;
+
 private:
     const scene::Scene& m_scene;
     MediaList m_atmosphere;
+    Thresholds m_thresholds;
     int m_noise_generator = 2;
 };
 
