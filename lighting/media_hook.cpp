@@ -31,6 +31,9 @@ Vec3 Integrator::apply_media(const geometry::Ray& ray, const Vec3& direction, do
                              const RayState& state, const Vec3& colour, TraceContext& ctx) const {
     // POV-Ray compat: media fill only hollow objects; a ray inside a non-hollow one sees none.
     if (!hollow_ray(m_scene, state.interiors)) return colour;
+    // POV-Ray compat (GetRadiosityQualityFlags): gather rays' paths see media only with the radiosity block's
+    // `media on`.
+    if (state.gather_ray && !(m_scene.global.radiosity && m_scene.global.radiosity->media)) return colour;
     const MediaLights lights(m_scene, m_lights, state, ctx);
     const media::Segment segment{ray.origin, direction, depth};
     Vec3 c = colour;
