@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cache/hemisphere_sampler.h"
+#include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
@@ -76,9 +77,21 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
             ++crossings[hit->object];
             t0 = hit->t + geometry.self_intersection_offset(hit->position);
         }
-        for (std::size_t o = 0; o < crossings.size(); ++o)
-            if (crossings[o] % 2 == 1) m_camera_interiors.push(static_cast<std::uint32_t>(o));
+        // POV-Ray compat (InitRayContainerState): containment is its Inside test; an infinite plane is crossed
+        // once or never along the ray, so it is tested directly.
+        const geometry::ObjectQuery query;
+        for (std::size_t o = 0; o < crossings.size(); ++o) {
+            const bool plane = std::holds_alternative<scene::Plane>(scene.objects[o].shape);
+            if (plane ? query.inside(scene.objects[o], origin) : crossings[o] % 2 == 1)
+                m_camera_interiors.push(static_cast<std::uint32_t>(o));
+        }
     }
+    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
+    // documentation describes, since media and fog then leave the camera's stretch of every ray out.
+    if ((m_media || !scene.fogs.empty()) && !hollow_ray(scene, m_camera_interiors))
+        m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
+                                "expected.");
 }
 
 Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
@@ -109,16 +122,16 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     } else {
         colour = m_sky.radiance(direction);
     }
-    // POV-Ray compat: rainbows and fog fill only hollow objects, so a ray inside a non-hollow one passes neither;
-    // nor does a radiosity gather ray, or anything it leads to, unless the radiosity block says `media on`.
-    const bool volume = !state.gather_ray || m_volume_on_gathers;
-    if ((m_rainbows || m_atmosphere) && volume && hollow_ray(m_scene, state.interiors)) {
-        // POV-Ray's TraceRay: the rainbow first (its jitter drawn from the ray), then the fog.
-        if (m_rainbows)
-            colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
-                                       cache::seed_from(ray.origin, direction, 0x5241494E));
-        if (m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
-    }
+    // POV-Ray compat (TraceRay): on a ray through hollow space the rainbow (its jitter drawn from the ray), then the
+    // atmosphere's media, then fog; a ray inside a non-hollow object passes none of them, nor does a radiosity
+    // gather ray, or anything it leads to, unless the radiosity block says `media on` (apply_media checks its own).
+    const bool volume = (m_rainbows || m_atmosphere) && (!state.gather_ray || m_volume_on_gathers) &&
+                        hollow_ray(m_scene, state.interiors);
+    if (volume && m_rainbows)
+        colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
+                                   cache::seed_from(ray.origin, direction, 0x5241494E));
+    if (m_media) colour = apply_media(ray, direction, depth, hit.has_value(), state, colour, ctx);
+    if (volume && m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
     return colour;
 }
 

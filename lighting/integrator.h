@@ -13,6 +13,7 @@
 #include "lighting/trace_context.h"
 #include "media/medium.h"
 #include "media/rainbow.h"
+#include "media/participating_media.h"
 #include "media/sky.h"
 #include "scene/scene.h"
 
@@ -81,6 +82,10 @@ private:
     /// POV-Ray's GatherLight, for the indirect light: one gather ray traced from `p` along `dir`.
     Vec3 gather_radiance(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
                          TraceContext& ctx, double& distance) const override;
+    /// POV-Ray's media on one ray: the interiors' media (when the ray reached a surface) and then the atmosphere's,
+    /// each only on a ray inside no non-hollow object (media_hook.cpp).
+    Vec3 apply_media(const geometry::Ray& ray, const Vec3& direction, double depth, bool hit, const RayState& state,
+                     const Vec3& colour, TraceContext& ctx) const;
     /// The colour of the surface at `hit`, `depth` along the unit `direction`.
     Vec3 shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
                TraceContext& ctx) const;
@@ -113,6 +118,7 @@ private:
     std::unique_ptr<const media::Medium> m_atmosphere;  ///< null when the scene has no fog
     std::unique_ptr<const media::Rainbows> m_rainbows;  ///< null when the scene has no rainbow
     bool m_volume_on_gathers = false;  ///< radiosity `media on`: gather rays see fog and rainbows too
+    std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media
     bool m_ambient_is_light = true;
     int m_noise_generator = 2;
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them

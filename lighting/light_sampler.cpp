@@ -10,6 +10,7 @@
 #include "core/constants.h"
 #include "geometry/scene_geometry.h"
 #include "media/atmosphere.h"
+#include "media/participating_media.h"
 #include "media/transmittance.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -66,6 +67,7 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
       m_noise_generator(scene.global.noise_generator),
       m_fog(media::make_atmosphere(scene)),
       m_volume_on_gathers(scene.global.radiosity.has_value() && scene.global.radiosity->media) {
+    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
     for (const scene::Object& o : scene.objects) {
@@ -92,13 +94,16 @@ Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) 
 }
 
 Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                                 const media::Medium* fog, TraceContext& ctx) const {
+                                 ShadowAtmosphere fog, TraceContext& ctx) const {
     // POV-Ray compat (ComputeShadowMedia): with media_attenuation, fog dims each stretch of the shadow ray that is
     // inside no non-hollow object.
     auto fog_over = [&](double from, double to) {
-        if (fog && to > from && hollow_ray(m_scene, interiors))
-            return fog->transmittance(media::Segment{p + dir * from, dir, to - from});
-        return Vec3{1.0, 1.0, 1.0};
+        Vec3 t{1.0, 1.0, 1.0};
+        if (!fog.any() || !(to > from) || !hollow_ray(m_scene, interiors)) return t;
+        const media::Segment stretch{p + dir * from, dir, to - from};
+        if (fog.media) t = m_media->transmittance(m_media->atmosphere(), stretch);
+        if (fog.fog) t = t * fog.fog->transmittance(stretch);
+        return t;
     };
     // POV-Ray walks the shadow ray through every surface it crosses, multiplying their filter colours and the
     // fade of the interiors it leaves.
@@ -112,6 +117,15 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
         const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
         if (!hit) break;
         if (m_opaque[hit->object]) return {};
+        // POV-Ray compat (ComputeShadowColour): the media of the interiors the ray is in dim it, media_attenuation
+        // or not, when none of them is a non-hollow object.
+        if (m_media && interiors.size > 0 && hollow_ray(m_scene, interiors)) {
+            media::MediaList inside;
+            for (int i = 0; i < interiors.size; ++i) inside.add(m_scene.objects[interiors.objects[i]].interior.media);
+            if (!inside.empty())
+                filter = filter * m_media->transmittance(inside, media::Segment{p + dir * t_origin, dir,
+                                                                                 hit->t - t_origin});
+        }
         filter = filter * fog_over(t_origin, hit->t);
         const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
         filter = filter * texture_filter(object.texture, hit->position);
@@ -131,6 +145,16 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
 Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n,
                                   const InteriorStack& interiors, bool area_lights, Vec3& to_light,
                                   TraceContext& ctx) const {
+    return arriving(light, p, &n, interiors, area_lights, to_light, ctx);
+}
+
+Vec3 LightSampler::light_in_medium(const scene::Light& light, const Vec3& p, const InteriorStack& interiors,
+                                   bool area_lights, Vec3& to_light, TraceContext& ctx) const {
+    return arriving(light, p, nullptr, interiors, area_lights, to_light, ctx);
+}
+
+Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3* n, const InteriorStack& interiors,
+                            bool area_lights, Vec3& to_light, TraceContext& ctx) const {
     using Type = scene::Light::Type;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
@@ -146,7 +170,7 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
         to_light = d / distance;
     }
     // POV-Ray compat: lights at grazing angles below EPSILON do not reach the surface.
-    if (dot(n, to_light) < kPovEpsilon) return {};
+    if (n != nullptr && dot(*n, to_light) < kPovEpsilon) return {};
 
     double attenuation = 1.0;
     if (light.type == Type::Spot) {
@@ -182,9 +206,11 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
     // POV-Ray compat: a point past a parallel light's plane is lit too; its shadow ray has negative length and
     // meets nothing.
     if (light.shadowless || distance <= 0.0) return colour;
-    // POV-Ray compat: on a gather ray's path (area_lights false) fog dims no light unless radiosity says media on.
-    const bool volume = area_lights || m_volume_on_gathers;
-    const media::Medium* fog = light.media_attenuation && light.media_interaction && volume ? m_fog.get() : nullptr;
+    // POV-Ray compat (ComputeShadowMedia): fog and the atmosphere's media dim the light only with media_attenuation,
+    // and on a gather ray's path (area_lights false) only when the radiosity block says media on.
+    const bool attenuated = light.media_attenuation && light.media_interaction && (area_lights || m_volume_on_gathers);
+    const ShadowAtmosphere fog{attenuated ? m_fog.get() : nullptr,
+                               attenuated && m_media && !m_media->atmosphere().empty()};
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)
         return area_light_shadow(light, colour, p, interiors, fog, ctx);
@@ -192,8 +218,8 @@ Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, cons
 }
 
 Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                                  const media::Medium* fog, TraceContext& ctx) const {
-    if (m_any_transparent || fog) return shadow_filter(p, dir, distance, interiors, fog, ctx);
+                                  ShadowAtmosphere fog, TraceContext& ctx) const {
+    if (m_any_transparent || fog.any()) return shadow_filter(p, dir, distance, interiors, fog, ctx);
     const double offset = m_geometry.self_intersection_offset(p);
     geometry::Ray shadow{p, dir, offset, distance - offset, geometry::RayKind::Shadow};
     ++ctx.rays.shadow;
@@ -202,7 +228,7 @@ Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distanc
 }
 
 Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
-                                     const InteriorStack& interiors, const media::Medium* fog,
+                                     const InteriorStack& interiors, ShadowAtmosphere fog,
                                      TraceContext& ctx) const {
     const int n1 = light.area_size1;
     const int n2 = light.area_size2;

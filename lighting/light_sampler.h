@@ -7,6 +7,7 @@
 
 #include "lighting/trace_context.h"
 #include "media/medium.h"
+#include "media/participating_media.h"
 #include "scene/scene.h"
 
 namespace wardray::geometry {
@@ -14,6 +15,13 @@ class SceneGeometry;
 }  // namespace wardray::geometry
 
 namespace wardray::lighting {
+
+/// What dims a shadow ray between surfaces: the fog and, when `media`, the atmosphere's media.
+struct ShadowAtmosphere {
+    const media::Medium* fog = nullptr;
+    bool media = false;
+    bool any() const { return fog != nullptr || media; }
+};
 
 /// POV-Ray 3.7's light sources: attenuation (spot, cylinder, fade), filtered shadows and adaptive area lights.
 /// Stateless after construction; refers to the scene and its geometry, which must outlive it.
@@ -29,21 +37,29 @@ public:
     Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
                         bool area_lights, Vec3& to_light, TraceContext& ctx) const;
 
+    /// The light arriving at `p` inside a medium, as light_arriving without a surface to face (POV-Ray's TestShadow
+    /// for a media sample).
+    Vec3 light_in_medium(const scene::Light& light, const Vec3& p, const InteriorStack& interiors, bool area_lights,
+                         Vec3& to_light, TraceContext& ctx) const;
+
 private:
+    /// light_arriving, with the facing test only when there is a surface normal `n`.
+    Vec3 arriving(const scene::Light& light, const Vec3& p, const Vec3* n, const InteriorStack& interiors,
+                  bool area_lights, Vec3& to_light, TraceContext& ctx) const;
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
     Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                        const media::Medium* fog, TraceContext& ctx) const;
+                        ShadowAtmosphere fog, TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
     Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
-                           const InteriorStack& interiors, const media::Medium* fog, TraceContext& ctx) const;
+                           const InteriorStack& interiors, ShadowAtmosphere fog, TraceContext& ctx) const;
     /// Transmittance of the shadow ray from `p` along `dir` up to `distance` (POV-Ray multiplies the filter colour
     /// of every surface it crosses). `interiors` are those of the ray that found `p` (POV-Ray starts the shadow
     /// ray with them and fades light crossing an interior).
     /// `fog`, when the light has media_attenuation, dims the stretches outside non-hollow objects.
     Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                       const media::Medium* fog, TraceContext& ctx) const;
+                       ShadowAtmosphere fog, TraceContext& ctx) const;
     /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
     Vec3 texture_filter(const scene::Texture& texture, const Vec3& p) const;
 
@@ -54,6 +70,7 @@ private:
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
     bool m_volume_on_gathers = false;  ///< radiosity `media on`: fog dims lights on gather paths too
+    std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media
 };
 
 }  // namespace wardray::lighting

@@ -383,8 +383,7 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
                     "fade_distance keywords should be specified in 'interior{...}' statement.");
             if (amount != 1.0) warn_unsupported(t, "refraction other than 1");
         } else if (t.text == "media") {
-            warn_unsupported(t, "media");
-            skip_block(t);
+            in.media.push_back(parse_media_body(t));
         } else {
             if (!is_keyword(t.text) && lookup(t.text) == nullptr) fail_undeclared(t);
             fail(t, "expected ior, fade_distance, fade_power or fade_color in interior but found '" + t.text + "'");

@@ -33,6 +33,10 @@ protected:
     void parse_texture_part_identifiers(Texture& tx);
     /// Reads `interior { ... }` after its keyword.
     Interior parse_interior_body(const Token& kw);
+    /// Reads `media { ... }` after its keyword (media.cpp).
+    Media parse_media_body(const Token& kw);
+    /// Reads `scattering { type, colour ... }` into the media.
+    void parse_media_scattering(Media& m, const Token& kw);
     /// Reads `sky_sphere { ... }` after its keyword.
     SkySphere parse_sky_sphere(const Token& kw);
     /// Reads `fog { ... }` after its keyword.
@@ -46,6 +50,8 @@ protected:
 
     /// Reads `pigment { ... }` after its keyword (the pattern reader's).
     virtual Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) = 0;
+    /// Reads `density { ... }` after its keyword, a pigment that scales a media (the pattern reader's, media.cpp).
+    virtual Pigment parse_density_body(const Token& kw) = 0;
     /// Reads `normal { ... }` after its keyword (the pattern reader's).
     virtual Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) = 0;
     /// Reads a colour map after its keyword (the pattern reader's).

@@ -50,7 +50,7 @@ std::string describe_token(const Token& t) {
 
 const char* value_kind_name(const Value& v) {
     // By position in Value: a new alternative must be named here (Deferred, last, is never shown).
-    static_assert(std::variant_size_v<Value> == 19);
+    static_assert(std::variant_size_v<Value> == 20);
     switch (v.index()) {
         case 0: return "a number";
         case 1: return "a string";
@@ -69,6 +69,7 @@ const char* value_kind_name(const Value& v) {
         case 15: return "a sky_sphere";
         case 16: return "a fog";
         case 17: return "a rainbow";
+        case 18: return "a media";
         default: return "an unsupported item";
     }
 }

@@ -204,6 +204,8 @@ void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
         part.object.transform = part.object.transform.then(tr);
         transform_textures(part.object, part.has_texture, tr);
         place_patches(part.object, tr);
+        // POV-Ray compat (Transform_Interior): the interior's media move with the object.
+        for (Media& m : part.object.interior.media) transform_media(m, tr);
     }
     if (ov.texture) transform_texture(*ov.texture, tr);
     for (Light& l : ov.lights) {
@@ -326,7 +328,12 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
             {"interior",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
                  const Interior interior = r.parse_interior_body(kw);
-                 for (ObjectPart& part : ov.parts) part.object.interior = interior;
+                 // POV-Ray compat: `hollow` is the object's flag, kept whether it comes before or after.
+                 for (ObjectPart& part : ov.parts) {
+                     const bool hollow = part.object.interior.hollow;
+                     part.object.interior = interior;
+                     part.object.interior.hollow = hollow;
+                 }
              }},
             {"interior_texture", &skip_unsupported_modifier},
             {"material", &skip_unsupported_modifier},

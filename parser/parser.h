@@ -70,6 +70,7 @@ private:
     void parse_pigment_items(Pigment& p, const Token& kw, const char* close);
     Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) final;
     Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) final;
+    Pigment parse_density_body(const Token& kw) final;
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);
     /// Reads normal items up to `close`.

@@ -326,7 +326,8 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
                 p.pigment_map.clear();
                 continue;
             }
-            if (t.text == "pigment_map") {
+            // POV-Ray compat: a density's density_map is its pigment_map (entries are densities).
+            if (t.text == "pigment_map" || t.text == "density_map") {
                 next();
                 p.pigment_map = parse_pigment_map(t);
                 p.color_map.clear();

@@ -33,6 +33,8 @@ public:
     void set_legacy_sky(bool legacy) {
         if (m_scene.sky_sphere) m_scene.sky_sphere->legacy_layering = legacy;
     }
+    /// A scene-level media block: part of the atmosphere.
+    void add_media(Media media) { m_scene.media.push_back(std::move(media)); }
     /// The global settings, which global_settings blocks change item by item.
     GlobalSettings& global() { return m_scene.global; }
 

@@ -53,6 +53,7 @@ void SceneReader::parse_statement() {
          }},
         {"fog", [](SceneReader& r, const Token& kw) { r.m_builder.add_fog(r.parse_fog(kw)); }},
         {"rainbow", [](SceneReader& r, const Token& kw) { r.m_builder.add_rainbow(r.parse_rainbow(kw)); }},
+        {"media", [](SceneReader& r, const Token& kw) { r.m_builder.add_media(r.parse_media_body(kw)); }},
         // POV-Ray compat: the 3.1 forms without '#', read with POV-Ray's warnings.
         {"declare",
          [](SceneReader& r, const Token& kw) {
@@ -91,6 +92,8 @@ std::optional<Value> SceneReader::parse_item_value(const Token& t) {
         {"finish", [](SceneReader& r, const Token& kw) -> Value { return r.parse_finish_body(kw); }},
         {"normal", [](SceneReader& r, const Token& kw) -> Value { return r.parse_normal_body(kw); }},
         {"interior", [](SceneReader& r, const Token& kw) -> Value { return r.parse_interior_body(kw); }},
+        {"media", [](SceneReader& r, const Token& kw) -> Value { return r.parse_media_body(kw); }},
+        {"density", [](SceneReader& r, const Token& kw) -> Value { return r.parse_density_body(kw); }},
         {"texture",
          [](SceneReader& r, const Token& kw) -> Value {
              Texture tx = r.parse_texture_body(kw);

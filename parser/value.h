@@ -143,7 +143,7 @@ struct Deferred {
 using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
                            Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
                            std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Boxed<Normal>,
-                           Boxed<Spline>, Boxed<SkySphere>, Boxed<Fog>, Boxed<Rainbow>, Deferred>;
+                           Boxed<Spline>, Boxed<SkySphere>, Boxed<Fog>, Boxed<Rainbow>, Boxed<Media>, Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

@@ -1,7 +1,10 @@
-// Scene description, interiors: what is inside an object (index of refraction, fade).
+// Scene description, interiors: what is inside an object (index of refraction, fade, media).
 #pragma once
 
+#include <vector>
+
 #include "core/color.h"
+#include "scene/media.h"
 
 namespace wardray::scene {
 
@@ -13,6 +16,8 @@ struct Interior {
     Color fade_color;
     /// `hollow`: fog (and media) fill the object's inside; POV-Ray's default is not hollow.
     bool hollow = false;
+    /// `media { }` blocks inside the object, in their order (all of them act together).
+    std::vector<Media> media;
     bool operator==(const Interior&) const = default;
 };
 

@@ -11,6 +11,7 @@
 #include "scene/camera.h"
 #include "scene/interior.h"
 #include "scene/light.h"
+#include "scene/media.h"
 #include "scene/object.h"
 #include "scene/settings.h"
 #include "scene/shapes.h"
@@ -30,6 +31,8 @@ struct Scene {
     std::optional<SkySphere> sky_sphere;
     std::vector<Fog> fogs;
     std::vector<Rainbow> rainbows;
+    /// Scene-level `media { }` blocks: POV-Ray's atmosphere, filling everything outside non-hollow objects.
+    std::vector<Media> media;
     /// Features parsed but not rendered yet, and other warnings found while parsing.
     std::vector<Diagnostic> warnings;
 };

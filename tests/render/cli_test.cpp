@@ -182,6 +182,16 @@ sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.3, 0.2> } }
     EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
 }
 
+TEST(Cli, RandomMediaSamplingGivesTheSameImageForAnyThreadCount) {
+    // Method 1 and jittered method 3 draw random sample positions, seeded per ray, never from a shared generator.
+    const fs::path dir = work_dir("media_threads");
+    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "media_converged.pov", dir / "m.pov",
+                  fs::copy_options::overwrite_existing);
+    ASSERT_EQ(wardray("m.pov +W64 +H48 +FH +WT1 -o one.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("m.pov +W64 +H48 +FH +WT2 -o two.hdr", dir).exit_status, 0);
+    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
+}
+
 TEST(Cli, ParseTimeGeometryQueriesAndDebugOutputMatchPovRay) {
     // POV-Ray 3.7 prints: P=1.0000,4.0000,6.0000 N=0.0000,1.0000,0.0000 in=1 lo=-1.000,0.000,2.000 ...
     const fs::path dir = work_dir("queries");

@@ -1,0 +1,171 @@
+// Participating media against closed forms: transmittance and in-scattering of a homogeneous medium with isotropic
+// scattering, emission, the chi-square thresholds of methods 1 and 2, and the media block as parsed.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "media/participating_media.h"
+#include "parser/parse.h"
+
+namespace wardray::media {
+namespace {
+
+// Light of a fixed colour arriving everywhere from +y: what a point light far above an open medium delivers.
+class ConstantLight final : public LightQuery {
+public:
+    explicit ConstantLight(const Vec3& c) : m_colour(c) {}
+    Vec3 arriving(std::size_t, const Vec3&, Vec3& to_light) const override {
+        to_light = {0.0, 1.0, 0.0};
+        ++calls;
+        return m_colour;
+    }
+    mutable int calls = 0;
+
+private:
+    Vec3 m_colour;
+};
+
+scene::Scene scene_with(const scene::Media& m) {
+    scene::Scene s;
+    s.media.push_back(m);
+    scene::Light light;
+    light.position = {0.0, 1e6, 0.0};
+    s.lights.push_back(light);
+    return s;
+}
+
+const Segment kRay{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 4.0};
+
+TEST(ParticipatingMedia, HomogeneousAbsorptionTransmitsExpOfMinusSigmaTimesLength) {
+    scene::Media m;
+    m.absorption = {0.1, 0.2, 0.4};
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    const Vec3 t = media.transmittance(media.atmosphere(), kRay);
+    EXPECT_NEAR(t.x, std::exp(-0.4), 1e-12);
+    EXPECT_NEAR(t.y, std::exp(-0.8), 1e-12);
+    EXPECT_NEAR(t.z, std::exp(-1.6), 1e-12);
+}
+
+TEST(ParticipatingMedia, ExtinctionScalesHowMuchScatteringDims) {
+    scene::Media m;
+    m.scattering = {0.5, 0.5, 0.5};
+    m.extinction = 0.25;
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    EXPECT_NEAR(media.transmittance(media.atmosphere(), kRay).x, std::exp(-0.5 * 0.25 * 4.0), 1e-12);
+}
+
+// The single-scattering integral of a homogeneous medium lit by a constant light L with isotropic phase (POV-Ray's
+// normalisation: phase 1), over a segment of length d ending at a surface of radiance C:
+// C·exp(−σt d) + σs·L/σt·(1 − exp(−σt d)).
+double single_scattering(double sigma_s, double sigma_t, double light, double behind, double d) {
+    const double t = std::exp(-sigma_t * d);
+    return behind * t + sigma_s * light / sigma_t * (1.0 - t);
+}
+
+TEST(ParticipatingMedia, IsotropicScatteringConvergesToTheSingleScatteringIntegral) {
+    for (int method : {2, 3}) {
+        scene::Media m;
+        m.method = method;
+        m.scattering = {0.3, 0.3, 0.3};
+        m.absorption = {0.2, 0.2, 0.2};
+        m.intervals = 400;
+        m.min_samples = m.max_samples = 3;
+        const scene::Scene s = scene_with(m);
+        const ParticipatingMedia media(s);
+        const ConstantLight light({2.0, 2.0, 2.0});
+        const Vec3 c = media.along(media.atmosphere(), kRay, {0.5, 0.5, 0.5}, light);
+        const double expected = single_scattering(0.3, 0.5, 2.0, 0.5, 4.0);
+        EXPECT_NEAR(c.x, expected, 0.005 * expected) << "method " << method;
+        EXPECT_GT(light.calls, 400);
+    }
+}
+
+TEST(ParticipatingMedia, EmissionAloneAddsEmissionTimesLengthAndLightsAreNotAsked) {
+    scene::Media m;
+    m.emission = {0.25, 0.5, 1.0};
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    const ConstantLight light({1.0, 1.0, 1.0});
+    const Vec3 c = media.along(media.atmosphere(), kRay, {0.1, 0.1, 0.1}, light);
+    EXPECT_NEAR(c.x, 0.1 + 0.25 * 4.0, 1e-12);
+    EXPECT_NEAR(c.z, 0.1 + 1.0 * 4.0, 1e-12);
+    EXPECT_EQ(light.calls, 0);
+    // Without extinction a shadow ray passes unchanged.
+    EXPECT_EQ(media.transmittance(media.atmosphere(), kRay), (Vec3{1.0, 1.0, 1.0}));
+}
+
+TEST(ParticipatingMedia, ADensityScalesTheMediumWhereItIsEvaluated) {
+    // A density of 0.5 everywhere halves the optical depth.
+    scene::Media m;
+    m.absorption = {1.0, 1.0, 1.0};
+    scene::Pigment half;
+    half.color = {0.5, 0.5, 0.5};
+    m.densities.push_back(half);
+    m.densities.push_back(half);  // several densities multiply
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    EXPECT_NEAR(media.transmittance(media.atmosphere(), kRay).x, std::exp(-0.25 * 4.0), 1e-12);
+}
+
+TEST(ParticipatingMedia, OnlyASceneWithMediaHasAny) {
+    scene::Scene s;
+    EXPECT_FALSE(ParticipatingMedia::in_scene(s));
+    scene::Object o;
+    o.interior.media.emplace_back();
+    s.objects.push_back(o);
+    EXPECT_TRUE(ParticipatingMedia::in_scene(s));
+}
+
+TEST(ChiSquare, InverseTailMatchesTabulatedQuantiles) {
+    // Upper-tail quantiles of the chi-square distribution (standard tables).
+    EXPECT_NEAR(inverse_chi_square_tail(1.0, 0.95), 0.00393214, 1e-7);
+    EXPECT_NEAR(inverse_chi_square_tail(2.0, 0.9), 0.210721, 1e-6);
+    EXPECT_NEAR(inverse_chi_square_tail(10.0, 0.05), 18.307, 1e-3);
+    EXPECT_NEAR(inverse_chi_square_tail(100.0, 0.9), 82.3581, 1e-3);
+}
+
+TEST(MediaBlock, ParsesWithPovRaysDefaultsAndItsItems) {
+    parser::ParseOptions options;
+    const parser::ParseResult r = parser::parse_string(
+        "#version 3.7;\n"
+        "#declare D = density { spherical }\n"
+        "#declare M = media { emission 0.5 }\n"
+        "media { M scattering { 5, rgb 0.1 eccentricity 0.3 extinction 0.5 } }\n"
+        "sphere { 0, 1 hollow interior { media { method 2 intervals 4 samples 2, 8 density { D } density { rgb 0.5 } }"
+        " media { absorption 1 } } translate x }\n",
+        "media.pov", options);
+    ASSERT_TRUE(r.ok());
+    const scene::Scene& s = *r.scene;
+    ASSERT_EQ(s.media.size(), 1u);
+    const scene::Media& a = s.media[0];
+    EXPECT_EQ(a.method, 3);
+    EXPECT_EQ(a.intervals, 1);
+    EXPECT_EQ(a.min_samples, 10);
+    EXPECT_EQ(a.emission.r, 0.5);
+    EXPECT_EQ(a.scattering_type, 5);
+    EXPECT_EQ(a.eccentricity, 0.3);
+    EXPECT_EQ(a.extinction, 0.5);
+    ASSERT_EQ(s.objects.size(), 1u);
+    const scene::Interior& in = s.objects[0].interior;
+    EXPECT_TRUE(in.hollow);
+    ASSERT_EQ(in.media.size(), 2u);
+    EXPECT_EQ(in.media[0].method, 2);
+    EXPECT_EQ(in.media[0].max_samples, 8);
+    ASSERT_EQ(in.media[0].densities.size(), 2u);
+    // The object's translate moved the densities with it.
+    EXPECT_FALSE(in.media[0].densities[1].pattern.transform.is_identity());
+}
+
+TEST(MediaBlock, BadValuesAreErrorsAtTheirItem) {
+    parser::ParseOptions options;
+    for (const char* bad : {"media { method 4 }", "media { intervals 0 }", "media { samples 3, 2 }",
+                            "media { scattering { 1, rgb 1 eccentricity 0.5 } }", "media { aa_level 0 }"}) {
+        const parser::ParseResult r = parser::parse_string(bad, "bad.pov", options);
+        EXPECT_FALSE(r.ok()) << bad;
+    }
+}
+
+}  // namespace
+}  // namespace wardray::media
