@@ -35,7 +35,8 @@ bool readable_when_deferred(const Value& v) {
            std::holds_alternative<Boxed<Pigment>>(v) || std::holds_alternative<Boxed<Finish>>(v) ||
            std::holds_alternative<Boxed<Texture>>(v) || std::holds_alternative<Boxed<Transform>>(v) ||
            std::holds_alternative<Unsupported>(v) || std::holds_alternative<Boxed<Interior>>(v) ||
-           std::holds_alternative<Boxed<Normal>>(v) || std::holds_alternative<Deferred>(v);
+           std::holds_alternative<Boxed<Normal>>(v) || std::holds_alternative<Boxed<MaterialValue>>(v) ||
+           std::holds_alternative<Deferred>(v);
 }
 
 }  // namespace

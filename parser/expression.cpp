@@ -50,7 +50,7 @@ std::string describe_token(const Token& t) {
 
 const char* value_kind_name(const Value& v) {
     // By position in Value: a new alternative must be named here (Deferred, last, is never shown).
-    static_assert(std::variant_size_v<Value> == 16);
+    static_assert(std::variant_size_v<Value> == 17);
     switch (v.index()) {
         case 0: return "a number";
         case 1: return "a string";
@@ -66,6 +66,7 @@ const char* value_kind_name(const Value& v) {
         case 12: return "an interior";
         case 13: return "a normal";
         case 14: return "a spline";
+        case 15: return "a material";
         default: return "an unsupported item";
     }
 }
