@@ -9,6 +9,7 @@
 #include "cache/hemisphere_sampler.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
+#include "lighting/graininess.h"
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
 #include "media/fog.h"
@@ -25,6 +26,17 @@ bool InteriorStack::contains(std::uint32_t o) const {
 void InteriorStack::push(std::uint32_t o) {
     if (size < kMax) objects[size++] = o;
 }
+
+namespace {
+
+/// True when the surface `o` is in light group `group` (its lights light it).
+bool in_light_group(const scene::Object& o, int group) {
+    for (const int g : o.light_groups)
+        if (g == group) return true;
+    return false;
+}
+
+}  // namespace
 
 bool hollow_ray(const scene::Scene& scene, const InteriorStack& interiors) {
     for (int i = 0; i < interiors.size; ++i)
@@ -141,10 +153,14 @@ Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, 
     const Vec3& view_dir = s.direction;
     const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
     for (const scene::Light& light : m_scene.lights) {
+        // POV-Ray's ComputeDiffuseLight: the global lights unless the surface's light group turns them off, and
+        // the lights of the groups the surface is in.
+        if (light.group == 0 ? s.object->no_global_lights : !in_light_group(*s.object, light.group)) continue;
         Vec3 to_light;
         // POV-Ray compat (GetRadiosityQualityFlags): on a gather ray's path area lights are point lights.
         const Vec3 arriving =
-            m_lights.light_arriving(light, s.hit->position, n, *s.interiors, s.highlights, to_light, ctx);
+            m_lights.light_arriving(light, s.hit->position, n, *s.interiors, s.highlights,
+                                    s.object->double_illuminate, to_light, ctx);
         if (arriving == Vec3{}) continue;
         const double cos_i = dot(n, to_light);
         Vec3 light_colour;  // this light's diffuse and highlights
@@ -152,7 +168,9 @@ Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, 
         if (finish.diffuse > 0.0) {
             const double shape =
                 finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
-            light_colour += pigment * arriving * (finish.diffuse * opacity * shape);
+            double intensity = finish.diffuse * opacity * shape;
+            if (finish.crand > 0.0) intensity -= graininess(finish.crand, s.hit->position, light.position);
+            light_colour += pigment * arriving * intensity;
         }
         // POV-Ray compat: shadowless (fill) lights cause no highlights, nor does any light on a gather ray's path.
         if (light.shadowless || !s.highlights) {

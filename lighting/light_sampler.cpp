@@ -2,6 +2,8 @@
 // and its adaptive area lights.
 #include "lighting/light_sampler.h"
 
+#include "lighting/projected_through.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -53,6 +55,8 @@ bool texture_opaque(const scene::Texture& t) {
 
 bool object_opaque(const scene::Object& o) {
     if (!texture_opaque(o.texture)) return false;
+    for (const scene::Texture& inside : o.interior_texture)
+        if (!texture_opaque(inside)) return false;
     if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
         for (const scene::Object& child : csg->children)
             if (!object_opaque(child)) return false;
@@ -75,7 +79,10 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
         m_opaque.push_back(opaque ? 1 : 0);
         m_any_transparent = m_any_transparent || !opaque;
     }
+    m_projected = ProjectedThrough::for_lights(scene);
 }
+
+LightSampler::~LightSampler() = default;
 
 Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) const {
     if (!texture.texture_map.empty()) {
@@ -128,7 +135,9 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
         }
         filter = filter * fog_over(t_origin, hit->t);
         const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
-        filter = filter * texture_filter(object.texture, hit->position);
+        // POV-Ray compat (ComputeShadowTexture): a surface met from inside shows its interior texture.
+        const bool inside = !object.interior_texture.empty() && dot(hit->normal, dir) > 0.0;
+        filter = filter * texture_filter(inside ? object.interior_texture.front() : object.texture, hit->position);
         const scene::Interior& interior = m_scene.objects[hit->object].interior;
         if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
             std::fabs(interior.fade_distance) > kPovEpsilon)
@@ -143,9 +152,10 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
 }
 
 Vec3 LightSampler::light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n,
-                                  const InteriorStack& interiors, bool area_lights, Vec3& to_light,
-                                  TraceContext& ctx) const {
-    return arriving(light, p, &n, interiors, area_lights, to_light, ctx);
+                                  const InteriorStack& interiors, bool area_lights, bool both_sides,
+                                  Vec3& to_light, TraceContext& ctx) const {
+    // double_illuminate (`both_sides`): light behind the surface reaches it too, so no facing test.
+    return arriving(light, p, both_sides ? nullptr : &n, interiors, area_lights, to_light, ctx);
 }
 
 Vec3 LightSampler::light_in_medium(const scene::Light& light, const Vec3& p, const InteriorStack& interiors,
@@ -203,6 +213,12 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     if (attenuation <= 0.0) return {};
 
     const Vec3 colour = light.color.rgb() * attenuation;
+    if (!m_projected.empty() && !light.projected_through.empty()) {
+        // POV-Ray's TracePointLightShadowRay: only through the object, and shadows only on the way to it.
+        const std::ptrdiff_t i = &light - m_scene.lights.data();
+        const bool ours = i >= 0 && static_cast<std::size_t>(i) < m_projected.size() && m_projected[i];
+        if (ours && !m_projected[i]->shine_through(p, to_light, distance)) return {};
+    }
     // POV-Ray compat: a point past a parallel light's plane is lit too; its shadow ray has negative length and
     // meets nothing.
     if (light.shadowless || distance <= 0.0) return colour;

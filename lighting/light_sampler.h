@@ -22,6 +22,7 @@ struct ShadowAtmosphere {
     bool media = false;
     bool any() const { return fog != nullptr || media; }
 };
+class ProjectedThrough;
 
 /// POV-Ray 3.7's light sources: attenuation (spot, cylinder, fade), filtered shadows and adaptive area lights.
 /// Stateless after construction; refers to the scene and its geometry, which must outlive it.
@@ -29,13 +30,17 @@ class LightSampler {
 public:
     /// Notes which objects can let light through, so shadow rays look through only those.
     LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
+    ~LightSampler();
+    LightSampler(const LightSampler&) = delete;
+    LightSampler& operator=(const LightSampler&) = delete;
 
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
     /// `area_lights` false (on a gather ray's path) an area light counts as a point light at its centre. `to_light`
-    /// receives the unit direction towards the light.
+    /// receives the unit direction towards the light. `both_sides` (double_illuminate) lets light behind the
+    /// surface reach it too.
     Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
-                        bool area_lights, Vec3& to_light, TraceContext& ctx) const;
+                        bool area_lights, bool both_sides, Vec3& to_light, TraceContext& ctx) const;
 
     /// The light arriving at `p` inside a medium, as light_arriving without a surface to face (POV-Ray's TestShadow
     /// for a media sample).
@@ -71,6 +76,8 @@ private:
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
     bool m_volume_on_gathers = false;  ///< radiosity `media on`: fog dims lights on gather paths too
     std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media
+    /// Per light, the geometry of its projected_through object (null for the others); empty when no light has one.
+    std::vector<std::unique_ptr<const ProjectedThrough>> m_projected;
 };
 
 }  // namespace wardray::lighting

@@ -73,7 +73,9 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
     std::vector<const scene::Pattern*> warps;
-    return shade_texture(object.texture, s, warps, state, ctx);
+    // POV-Ray compat: a surface met from inside shows its interior texture, when it has one.
+    const bool inside = !object.interior_texture.empty() && dot(hit.normal, direction) > 0.0;
+    return shade_texture(inside ? object.interior_texture.front() : object.texture, s, warps, state, ctx);
 }
 
 Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
@@ -155,8 +157,11 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         if (f.reflection_metallic != 0.0)
             r.reflectivity = r.reflectivity * metallic_tint(pigment, f.reflection_metallic, cos_i);
 
-        // POV-Ray 3.7: the layer's own light is scaled by its opacity, 1 − filter − transmit.
-        const double opacity = 1.0 - pc.filter - pc.transmit;
+        // POV-Ray 3.7: the layer's own light is scaled by its opacity, 1 − filter − transmit. POV-Ray compat: in
+        // scenes of version 3.6 and older it is 1 − (filter · max(r, g, b) + transmit), the formula POV-Ray keeps
+        // for legacy scenes (ComputeLightedTexture).
+        const double opacity = m_scene.version < 3.7 ? 1.0 - (pc.filter * max3(pigment) + pc.transmit)
+                                                     : 1.0 - pc.filter - pc.transmit;
         Vec3 own = pigment * f.emission.rgb() * opacity;
         if (m_ambient_is_light) own += pigment * f.ambient.rgb() * m_scene.global.ambient_light.rgb() * opacity;
         if (gi_needed && f.diffuse != 0.0) {

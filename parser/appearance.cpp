@@ -126,12 +126,7 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
          }},
         {"conserve_energy",
          [](AppearanceReader& r, Finish& f, const Token&) { f.conserve_energy = r.parse_bool_optional(); }},
-        {"crand",
-         [](AppearanceReader& r, Finish&, const Token& kw) {
-             // POV-Ray 3.7 adds a random amount to each sample's colour; wardray leaves it out, so say so.
-             r.warn_unsupported(kw, "finish crand");
-             r.parse_float();
-         }},
+        {"crand", [](AppearanceReader& r, Finish& f, const Token&) { f.crand = r.parse_float(); }},
         {"irid",
          [](AppearanceReader& r, Finish& f, const Token&) {
              r.expect("{");

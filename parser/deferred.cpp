@@ -37,7 +37,7 @@ bool readable_when_deferred(const Value& v) {
            std::holds_alternative<Unsupported>(v) || std::holds_alternative<Boxed<Interior>>(v) ||
            std::holds_alternative<Boxed<Normal>>(v) || std::holds_alternative<Boxed<SkySphere>>(v) ||
            std::holds_alternative<Boxed<Fog>>(v) || std::holds_alternative<Boxed<Rainbow>>(v) ||
-           std::holds_alternative<Boxed<Media>>(v) ||
+           std::holds_alternative<Boxed<Media>>(v) || std::holds_alternative<Boxed<MaterialValue>>(v) ||
            std::holds_alternative<Deferred>(v);
 }
 

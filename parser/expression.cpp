@@ -50,7 +50,7 @@ std::string describe_token(const Token& t) {
 
 const char* value_kind_name(const Value& v) {
     // By position in Value: a new alternative must be named here (Deferred, last, is never shown).
-    static_assert(std::variant_size_v<Value> == 20);
+    static_assert(std::variant_size_v<Value> == 21);
     switch (v.index()) {
         case 0: return "a number";
         case 1: return "a string";
@@ -70,6 +70,7 @@ const char* value_kind_name(const Value& v) {
         case 16: return "a fog";
         case 17: return "a rainbow";
         case 18: return "a media";
+        case 19: return "a material";
         default: return "an unsupported item";
     }
 }

@@ -36,8 +36,31 @@ protected:
     void apply_transform(ObjectValue& ov, const Transform& tr);
     /// The texture a modifier of `ov` changes (its own, made from the default when it had none).
     Texture& texture_to_modify(ObjectValue& ov);
-    /// Reads `light_source { ... }` after its keyword.
-    Light parse_light_body(const Token& kw);
+    /// Reads `material { ... }` after its keyword (material.cpp).
+    MaterialValue parse_material_body(const Token& kw);
+    /// Gives `ov` a material's texture (as a texture statement would), interior texture and interior.
+    void apply_material(ObjectValue& ov, const MaterialValue& m, ModifierState& state);
+    /// Gives `ov` an interior texture: layered over its own, or to each part of a union that has none.
+    void add_interior_texture(ObjectValue& ov, const Texture& tx);
+    /// The `material`, `interior_texture` and `double_illuminate` modifiers (material.cpp).
+    static void read_material_modifier(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    static void read_interior_texture(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    static void read_double_illuminate(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    /// Reads `light_group { objects lights modifiers }` after its keyword (light_group.cpp): a union whose lights
+    /// light only its objects.
+    ObjectValue parse_light_group(const Token& kw);
+    /// Gives every light group of `ov` a number no other placed object uses (a declared group placed twice
+    /// becomes two groups, each lighting its own objects).
+    void renumber_light_groups(ObjectValue& ov);
+    /// Reads `light_source { ... }` after its keyword; its `looks_like` object goes to `looks` (where it is null,
+    /// the object is left out with a warning).
+    Light parse_light_body(const Token& kw, ObjectValue* looks = nullptr);
+    /// Reads `projected_through { object modifiers }` into the light (light_objects.cpp).
+    void read_projected_through(Light& light, const Token& kw);
+    /// Moves a light's position, point_at and projected_through object (not its area axes).
+    static void transform_light(Light& light, const Transform& tr);
+    /// Reads `looks_like { object modifiers }` (light_objects.cpp): the object, moved to the light, casting no shadow.
+    void read_looks_like(const Light& light, ObjectValue* looks, const Token& kw);
     /// Reads `area_light` axis1, axis2, size1, size2 (commas optional) into `light`.
     void parse_area_light(Light& light);
     /// A light item that is valid POV-Ray and not rendered yet: warns and skips its block.
@@ -51,6 +74,8 @@ protected:
     virtual void make_union_node(ObjectValue& ov) = 0;
     /// Reads `{ object ... }` (clipped_by, bounded_by) into Objects (the shape reader's).
     virtual std::vector<Object> parse_object_list(const Token& kw, const std::vector<Object>* bounded_by) = 0;
+
+    int m_light_group_count = 0;  ///< the light groups numbered so far (Light::group)
 };
 
 }  // namespace wardray::parser

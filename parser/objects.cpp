@@ -20,6 +20,7 @@ namespace {
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
 void transform_textures(Object& o, bool own_texture, const Transform& tr) {
     if (own_texture) transform_texture(o.texture, tr);
+    for (Texture& inside : o.interior_texture) transform_texture(inside, tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
 }
@@ -83,6 +84,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         if (v == nullptr) fail_undeclared(kw);
         return *std::get<Boxed<ObjectValue>>(*v);
     }
+    if (w == "light_group") return parse_light_group(kw);
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
         warn_unsupported(kw, w);
         skip_block(kw);
@@ -129,7 +131,8 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         if (is_object_keyword(id)) {
             ov = parse_object(id);
         } else if (is_word(id, "light_source")) {
-            ov.lights.push_back(parse_light_body(id));
+            Light light = parse_light_body(id, &ov);
+            ov.lights.push_back(std::move(light));
         } else if (id.kind == TokenKind::Identifier) {
             const Value* v = lookup(id.text);
             if (v == nullptr) fail_undeclared(id);
@@ -179,7 +182,9 @@ void ObjectReader::read_csg_children(ObjectValue& ov, const std::function<void(O
             for (Light& l : child.lights) ov.lights.push_back(std::move(l));
         } else if (is_word(t, "light_source")) {
             const Token lkw = next();
-            ov.lights.push_back(parse_light_body(lkw));
+            ObjectValue looks;
+            ov.lights.push_back(parse_light_body(lkw, &looks));
+            if (!looks.parts.empty()) take_child(looks);
         } else {
             return;
         }
@@ -208,10 +213,7 @@ void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
         for (Media& m : part.object.interior.media) transform_media(m, tr);
     }
     if (ov.texture) transform_texture(*ov.texture, tr);
-    for (Light& l : ov.lights) {
-        l.position = tr.point(l.position);
-        l.point_at = tr.point(l.point_at);
-    }
+    for (Light& l : ov.lights) transform_light(l, tr);
 }
 
 void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
@@ -313,8 +315,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
             {"split_union",
              [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
             {"cutaway_textures", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
-            {"double_illuminate",
-             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+            {"double_illuminate", &read_double_illuminate},
             {"radiosity",
              [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
                  r.warn_unsupported(kw, "object radiosity importance");
@@ -335,8 +336,8 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                      part.object.interior.hollow = hollow;
                  }
              }},
-            {"interior_texture", &skip_unsupported_modifier},
-            {"material", &skip_unsupported_modifier},
+            {"interior_texture", &read_interior_texture},
+            {"material", &read_material_modifier},
             {"photons", &skip_unsupported_modifier},
             {"uv_mapping",
              [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
@@ -352,7 +353,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
     }
 }
 
-Light ObjectReader::parse_light_body(const Token& kw) {
+Light ObjectReader::parse_light_body(const Token& kw, ObjectValue* looks) {
     expect("{");
     Light light;
     light.loc = make_diagnostic(Severity::Note, kw, "").loc;
@@ -361,9 +362,11 @@ Light ObjectReader::parse_light_body(const Token& kw) {
     const Value* ident = first.kind == TokenKind::Identifier ? lookup(first.text) : nullptr;
     const auto* boxed = ident ? std::get_if<Boxed<ObjectValue>>(ident) : nullptr;
     const ObjectValue* ov = boxed ? &**boxed : nullptr;
-    if (ov != nullptr && ov->lights.size() == 1 && ov->parts.empty()) {
+    if (ov != nullptr && ov->lights.size() == 1 && (ov->parts.empty() || looks != nullptr)) {
         next();
         light = ov->lights.front();
+        // A declared light brings its looks_like object.
+        for (const ObjectPart& part : ov->parts) looks->parts.push_back(part);
     } else {
         light.position = parse_vector();
         accept(",");
@@ -374,10 +377,10 @@ Light ObjectReader::parse_light_body(const Token& kw) {
         const Token t = peek();
         Transform tr;
         if (parse_transform_item(t, tr)) {
-            light.position = tr.point(light.position);
-            light.point_at = tr.point(light.point_at);
+            transform_light(light, tr);
             light.area_axis1 = tr.vector(light.area_axis1);
             light.area_axis2 = tr.vector(light.area_axis2);
+            if (looks != nullptr) apply_transform(*looks, tr);
             continue;
         }
         if (is_color_keyword(t)) {
@@ -385,9 +388,18 @@ Light ObjectReader::parse_light_body(const Token& kw) {
             continue;
         }
         next();
-        if (is_punct(t, "}")) return light;
+        if (is_punct(t, "}")) {
+            if (!light.projected_through.empty() && light.area)
+                warn(kw, "projected_through on an area light is approximated: the light's centre decides which "
+                         "points it reaches");
+            return light;
+        }
         const TokenText& w = t.text;
         if (t.kind != TokenKind::Identifier) fail(t, "expected a light_source item but found '" + w + "'");
+        if (w == "looks_like") {
+            read_looks_like(light, looks, t);
+            continue;
+        }
         using Item = void (*)(ObjectReader&, Light&, const Token&);
         static const KeywordTable<Item> items = {
             // POV-Ray compat: `spotlight` and `cylinder` reset radius, falloff and tightness to their own
@@ -430,8 +442,8 @@ Light ObjectReader::parse_light_body(const Token& kw) {
              [](ObjectReader& r, Light& l, const Token&) { l.media_interaction = r.parse_bool_optional(); }},
             {"media_attenuation",
              [](ObjectReader& r, Light& l, const Token&) { l.media_attenuation = r.parse_bool_optional(); }},
-            {"looks_like", &skip_unsupported_light_item},
-            {"projected_through", &skip_unsupported_light_item},
+            {"projected_through",
+             [](ObjectReader& r, Light& l, const Token& kw) { r.read_projected_through(l, kw); }},
             {"photons", &skip_unsupported_light_item},
         };
         if (const Item* item = items.find(w)) {

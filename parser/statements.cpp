@@ -35,7 +35,13 @@ void SceneReader::parse_statement() {
              if (!error.empty()) r.fail(kw, error);
              r.m_builder.set_camera(cam);
          }},
-        {"light_source", [](SceneReader& r, const Token& kw) { r.m_builder.add_light(r.parse_light_body(kw)); }},
+        {"light_source",
+         [](SceneReader& r, const Token& kw) {
+             ObjectValue ov;
+             Light light = r.parse_light_body(kw, &ov);
+             ov.lights.push_back(std::move(light));
+             r.place_object(std::move(ov));
+         }},
         // POV-Ray compat: the old `default { ... }` statement is #default.
         {"default", [](SceneReader& r, const Token& kw) { r.directive_default(kw); }},
         {"global_settings", [](SceneReader& r, const Token& kw) { r.parse_global_settings(kw); }},
@@ -94,6 +100,7 @@ std::optional<Value> SceneReader::parse_item_value(const Token& t) {
         {"interior", [](SceneReader& r, const Token& kw) -> Value { return r.parse_interior_body(kw); }},
         {"media", [](SceneReader& r, const Token& kw) -> Value { return r.parse_media_body(kw); }},
         {"density", [](SceneReader& r, const Token& kw) -> Value { return r.parse_density_body(kw); }},
+        {"material", [](SceneReader& r, const Token& kw) -> Value { return r.parse_material_body(kw); }},
         {"texture",
          [](SceneReader& r, const Token& kw) -> Value {
              Texture tx = r.parse_texture_body(kw);
@@ -113,7 +120,8 @@ std::optional<Value> SceneReader::parse_item_value(const Token& t) {
         {"light_source",
          [](SceneReader& r, const Token& kw) -> Value {
              ObjectValue ov;
-             ov.lights.push_back(r.parse_light_body(kw));
+             Light light = r.parse_light_body(kw, &ov);
+             ov.lights.push_back(std::move(light));
              return ov;
          }},
     };
@@ -137,6 +145,7 @@ void inherit_textures(Object& o) {
     if (csg == nullptr) return;
     for (Object& child : csg->children) {
         if (!child.has_texture) child.texture = o.texture;
+        if (child.interior_texture.empty()) child.interior_texture = o.interior_texture;
         inherit_textures(child);
     }
 }
@@ -154,6 +163,7 @@ void promote_finish_ior(Object& o) {
 }  // namespace
 
 void SceneReader::place_object(ObjectValue ov) {
+    renumber_light_groups(ov);
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.

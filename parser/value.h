@@ -94,6 +94,13 @@ struct CameraSpec {
 /// Returns an error message in `error` when the camera is degenerate (and leaves the vectors usable).
 Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning);
 
+/// A `material { texture interior_texture interior }`: what it gives the object it is put on.
+struct MaterialValue {
+    std::optional<Texture> texture;           ///< further texture statements are in its layers
+    std::optional<Texture> interior_texture;  ///< likewise
+    std::optional<Interior> interior;
+};
+
 /// A declared item of a kind not supported yet (material, media, ...), kept by name only.
 struct Unsupported {
     std::string what;
@@ -143,7 +150,8 @@ struct Deferred {
 using Value = std::variant<Numeric, std::string, Boxed<Pigment>, Boxed<Finish>, Boxed<Texture>, Boxed<ObjectValue>,
                            Boxed<Transform>, Boxed<CameraSpec>, Unsupported, std::shared_ptr<ArrayValue>,
                            std::shared_ptr<const UserFunction>, FileHandle, Boxed<Interior>, Boxed<Normal>,
-                           Boxed<Spline>, Boxed<SkySphere>, Boxed<Fog>, Boxed<Rainbow>, Boxed<Media>, Deferred>;
+                           Boxed<Spline>, Boxed<SkySphere>, Boxed<Fog>, Boxed<Rainbow>, Boxed<Media>,
+                           Boxed<MaterialValue>, Deferred>;
 
 /// An `array[N][M]...`: elements in row-major order, each empty until assigned.
 struct ArrayValue {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 #include "core/color.h"
 #include "core/diagnostics.h"
@@ -9,6 +10,8 @@
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
+
+struct Object;
 
 /// The light kinds, listed once: X(name, Enumerator). A point light is the default and has no keyword; each other
 /// name is the keyword that makes a light one. Light::Type and the names of light_type_name come from this list.
@@ -48,6 +51,12 @@ struct Light {
     /// `media_attenuation`: fog dims the light on its way (POV-Ray's default: off); `media_interaction` (on).
     bool media_attenuation = false;
     bool media_interaction = true;
+    /// 0: a global light, lighting every object but those of light groups without `global_lights`; else the
+    /// `light_group` it belongs to, and it lights only that group's objects (Object::light_groups).
+    int group = 0;
+    /// `projected_through { object }`, at most one: the light reaches only points that see it through this object
+    /// (placed in world space); shadows count only between the point and the object. Empty for most lights.
+    std::vector<Object> projected_through;
     SourceLoc loc;
     bool operator==(const Light&) const = default;
 };

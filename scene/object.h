@@ -53,6 +53,15 @@ struct Object {
     bool no_reflection = false;
     bool no_radiosity = false;
     bool has_texture = false;  ///< the statement gave its own texture (else it takes its CSG parent's)
+    /// `interior_texture`: at most one texture (its further layers in `layers`), seen where a ray meets the surface
+    /// from inside; empty when the object has none (then `texture` is seen from both sides).
+    std::vector<Texture> interior_texture;
+    /// `double_illuminate`: lights behind the surface light it too (POV-Ray's DOUBLE_ILLUMINATE_FLAG).
+    bool double_illuminate = false;
+    /// The light groups whose lights light this surface (scene::Light::group), innermost first.
+    std::vector<int> light_groups;
+    /// In a light_group without `global_lights`: the global lights do not light it (NO_GLOBAL_LIGHTS_FLAG).
+    bool no_global_lights = false;
     std::vector<Object> clipped_by;  ///< clipping objects, placed relative to this object's transform
     /// `bounded_by` objects, placed as clipped_by: POV-Ray tests the object only on rays that meet them all.
     std::vector<Object> bounded_by;

@@ -153,6 +153,7 @@ struct Finish {
     double irid = 0.0;  ///< thin-film interference amount (`irid { amount thickness turbulence }`)
     double irid_thickness = 0.0;
     double irid_turbulence = 0.0;
+    double crand = 0.0;  ///< graininess: a random part of each light's diffuse intensity taken off
     /// POV-Ray 3.1's `finish { ior }`, negative when not given: the object's interior takes it when the object is
     /// placed (POV-Ray's Post_Process), if the object's texture is a plain one.
     double legacy_ior = -1.0;

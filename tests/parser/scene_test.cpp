@@ -316,22 +316,6 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     EXPECT_EQ(s.warnings[0].loc.column, 9u);
 }
 
-TEST(Unsupported, LightGroupStandsWhereObjectsDo) {
-    // abyss.pov puts light groups inside a union; POV-Ray takes them wherever an object may stand.
-    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
-        union {
-          light_group { sphere { 0, 1 } light_source { <0, 10, 0> rgb 1 } global_lights on }
-          sphere { x, 2 }
-          translate y
-        }
-        light_group { sphere { 0, 3 } })",
-                                       "test.pov", test::default_options());
-    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
-    ASSERT_EQ(r.scene->objects.size(), 1u);
-    EXPECT_EQ(std::get<Sphere>(r.scene->objects[0].shape).radius, 2);
-    EXPECT_NE(test::all_diagnostics(r).find("light_group is not rendered yet"), std::string::npos);
-}
-
 TEST(Objects, OptionalCommasAndRelationsOnlyInParentheses) {
     const Scene s = parse_ok(R"(
         box { <-1, -1, -1> <1, 1, 1> }
@@ -437,13 +421,14 @@ TEST(GlobalSettings, RadiosityDefaultsAndMissingGammaWarning) {
     EXPECT_NE(r.scene->warnings[0].message.find("assumed_gamma"), std::string::npos);
 }
 
-TEST(Scene, IgnoredCrandIsSaidOncePerSceneAsNotRendered) {
-    // stones1.inc alone has a dozen `crand`: one warning says what the scene loses. POV-Ray 3.7 does apply
-    // crand (random per sample), so the picture differs and the warning is the standard "not rendered yet".
-    const Scene s = test::parse_ok("sphere { 0, 1 finish { crand 0.02 } }\nsphere { 0, 1 finish { crand 0.03 } }\n");
-    ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0].loc.line, 2u);  // after the assumed_gamma line parse_ok adds
-    EXPECT_EQ(s.warnings[0].message, "finish crand is not rendered yet");
+TEST(Scene, CrandIsReadIntoTheFinishWithoutAWarning) {
+    // POV-Ray 3.7 renders crand (lighting/graininess.h); the finish keeps its amount, and a declared finish too.
+    const Scene s = test::parse_ok("#declare F = finish { crand 0.02 }\n"
+                                   "sphere { 0, 1 finish { crand 0.03 } }\nsphere { 0, 1 finish { F } }\n");
+    EXPECT_TRUE(s.warnings.empty());
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.crand, 0.03);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.crand, 0.02);
 }
 
 TEST(Objects, MeshBlockCopiesADeclaredMesh) {

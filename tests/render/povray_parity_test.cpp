@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -30,6 +31,17 @@ struct ParityCase {
 // Names the case in test output instead of dumping its bytes.
 void PrintTo(const ParityCase& c, std::ostream* os) { *os << c.scene.string() << ' ' << c.switches; }
 
+// A parity scene renders with -A unless its first line says otherwise: `// parity switches: +A0.0 +R9 -J` (a
+// stochastic feature compared converged against converged).
+std::string parity_switches(const fs::path& scene) {
+    std::ifstream in(scene);
+    std::string first;
+    std::getline(in, first);
+    const std::string tag = "// parity switches:";
+    if (first.rfind(tag, 0) != 0) return "-A";
+    return first.substr(tag.size());
+}
+
 std::vector<ParityCase> parity_scenes() {
     const fs::path root(WARDRAY_SOURCE_DIR);
     // POV-Ray's antialiasing (method 1) with jitter off samples the same positions in both renderers.
@@ -49,7 +61,7 @@ std::vector<ParityCase> parity_scenes() {
     for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
         if (e.path().extension() == ".pov") parity.push_back(e.path());
     std::sort(parity.begin(), parity.end());
-    for (const fs::path& p : parity) cases.push_back({p.stem().string(), p});
+    for (const fs::path& p : parity) cases.push_back({p.stem().string(), p, parity_switches(p)});
     return cases;
 }
 

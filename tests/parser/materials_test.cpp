@@ -1,0 +1,113 @@
+// Materials, interior textures, double_illuminate and light groups as the parser reads them.
+#include <string>
+#include <vector>
+
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+using test::parse_ok;
+
+TEST(Objects, LightGroupStandsWhereObjectsDoAndLightsOnlyItsObjects) {
+    // abyss.pov puts light groups inside a union; POV-Ray takes them wherever an object may stand.
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        light_source { <0, 20, 0> rgb 1 }
+        union {
+          light_group { sphere { 0, 1 } light_source { <0, 10, 0> rgb 1 } global_lights on }
+          sphere { x, 2 }
+          translate y
+        }
+        light_group { sphere { 0, 3 } light_source { <0, 10, 0> rgb 1 } })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    const Scene& s = *r.scene;
+    EXPECT_TRUE(s.warnings.empty()) << test::all_diagnostics(r);
+    ASSERT_EQ(s.objects.size(), 3u);
+    ASSERT_EQ(s.lights.size(), 3u);
+    EXPECT_EQ(s.lights[0].group, 0);
+    EXPECT_NE(s.lights[1].group, 0);
+    EXPECT_NE(s.lights[2].group, 0);
+    EXPECT_NE(s.lights[1].group, s.lights[2].group);
+    EXPECT_EQ(s.lights[1].position, (Vec3{0, 11, 0}));  // the union's translate moves its group's light
+    // The first group's sphere: its group's light and, with global_lights on, the global one.
+    EXPECT_EQ(s.objects[0].light_groups, std::vector<int>{s.lights[1].group});
+    EXPECT_FALSE(s.objects[0].no_global_lights);
+    // The union's other sphere is in no group.
+    EXPECT_TRUE(s.objects[1].light_groups.empty());
+    EXPECT_FALSE(s.objects[1].no_global_lights);
+    // The second group, without global_lights: only its own light.
+    EXPECT_EQ(s.objects[2].light_groups, std::vector<int>{s.lights[2].group});
+    EXPECT_TRUE(s.objects[2].no_global_lights);
+}
+
+TEST(Objects, ADeclaredLightGroupPlacedTwiceIsTwoGroups) {
+    const Scene s = parse_ok(R"(
+        #declare G = light_group { sphere { 0, 1 } light_source { <0, 10, 0> rgb 1 } }
+        object { G translate -2*x }
+        object { G translate 2*x }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_NE(s.lights[0].group, s.lights[1].group);
+    EXPECT_EQ(s.objects[0].light_groups, std::vector<int>{s.lights[0].group});
+    EXPECT_EQ(s.objects[1].light_groups, std::vector<int>{s.lights[1].group});
+}
+
+TEST(Objects, MaterialGivesTextureInteriorTextureAndInterior) {
+    const Scene s = parse_ok(R"(
+        #declare M = material {
+          texture { pigment { rgb <1, 0, 0> } }
+          texture { pigment { rgbt <0, 1, 0, 0.5> } }
+          interior_texture { pigment { rgb <0, 0, 1> } }
+          interior { ior 1.5 }
+          translate x
+        }
+        sphere { 0, 1 material { M } }
+        sphere { 0, 1 pigment { rgb 1 } material { M scale 2 } }
+        box { 0, 1 texture { pigment { rgb 0.5 } } interior_texture { pigment { rgb 0.25 } } double_illuminate }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    EXPECT_TRUE(s.warnings.empty());
+    const Object& a = s.objects[0];
+    EXPECT_EQ(a.texture.pigment.color.r, 1.0);
+    ASSERT_EQ(a.texture.layers.size(), 1u);
+    EXPECT_EQ(a.texture.layers[0].pigment.color.g, 1.0);
+    ASSERT_EQ(a.interior_texture.size(), 1u);
+    EXPECT_EQ(a.interior_texture[0].pigment.color.b, 1.0);
+    EXPECT_EQ(a.interior.ior, 1.5);
+    EXPECT_FALSE(a.double_illuminate);
+    // A transform inside the material moves its textures only.
+    EXPECT_EQ(a.texture.pigment.pattern.transform.point(Vec3{}), (Vec3{1, 0, 0}));
+    const Object& b = s.objects[1];
+    EXPECT_EQ(b.interior.ior, 1.5);
+    ASSERT_EQ(b.interior_texture.size(), 1u);
+    const Object& c = s.objects[2];
+    ASSERT_EQ(c.interior_texture.size(), 1u);
+    EXPECT_EQ(c.interior_texture[0].pigment.color.r, 0.25);
+    EXPECT_EQ(c.texture.pigment.color.r, 0.5);
+    EXPECT_TRUE(c.double_illuminate);
+}
+
+TEST(Objects, MaterialFromAnArrayElement) {
+    // sample.inc (incdemo/glasses): `material { MArr[I] }`.
+    const Scene s = parse_ok(R"(
+        #declare MArr = array[2] { material { texture { pigment { rgb x } } },
+                                   material { texture { pigment { rgb y } } interior { ior 1.3 } } }
+        sphere { 0, 1 material { MArr[1] } }
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color.g, 1.0);
+    EXPECT_EQ(s.objects[0].interior.ior, 1.3);
+}
+
+TEST(Objects, MaterialRejectsWhatIsNotAMaterial) {
+    const ParseResult r = parse_string("global_settings { assumed_gamma 1 }\n#declare P = pigment { rgb 1 }\n"
+                                       "sphere { 0, 1 material { P } }\n",
+                                       "test.pov", test::default_options());
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(test::all_diagnostics(r).find("not a material"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wardray::parser
