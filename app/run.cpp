@@ -259,7 +259,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
             ? render::antialias_gamma_on_working_values(options.antialias_gamma, scene.global.assumed_gamma)
             : options.antialias_gamma;
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
-                          antialias_gamma};
+                          antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     RenderedFrame frame{render::render_image(
