@@ -14,6 +14,7 @@
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
+#include "render/film.h"
 #include "render/output_gamma.h"
 #include "texture/noise.h"
 
@@ -52,6 +53,17 @@ parser::ParseOptions parse_options_for(const Options& options) {
     parse_options.image_height = options.height;
     parse_options.read_paths = options.read_paths;
     parse_options.write_paths = options.write_paths;
+    // image_map files through the render layer's reader (OpenImageIO, loaded only when a scene has one).
+    parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
+        -> std::shared_ptr<const scene::ImageData> {
+        const std::optional<render::Film> film = render::read_image(file, error, &encoded);
+        if (!film) return nullptr;
+        auto image = std::make_shared<scene::ImageData>();
+        image->width = film->width();
+        image->height = film->height();
+        image->rgb = film->data();
+        return image;
+    };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
     if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;
     if (options.max_macro_depth) parse_options.max_macro_depth = *options.max_macro_depth;

@@ -35,7 +35,12 @@ std::vector<ParityCase> parity_scenes() {
     std::vector<ParityCase> cases{{"default", root / "scenes" / "default.pov"},
                                   {"default_antialiased", root / "scenes" / "default.pov", "+A0.1 +R3 -J"},
                                   {"transforms_antialiased", root / "scenes" / "parity" / "transforms.pov",
-                                   "+A0.0 +R2 -J"}};
+                                   "+A0.0 +R2 -J"},
+                                  // Method 2, recursive from the pixel corners, down to +R levels.
+                                  {"transforms_recursive_aa", root / "scenes" / "parity" / "transforms.pov",
+                                   "+A0.1 +AM2 +R3 -J"},
+                                  {"fisheye_recursive_aa", root / "scenes" / "parity" / "camera_fisheye.pov",
+                                   "+A0.1 +AM2 +R2 -J"}};
     std::vector<fs::path> parity;
     for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
         if (e.path().extension() == ".pov") parity.push_back(e.path());
