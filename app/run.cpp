@@ -56,9 +56,11 @@ parser::ParseOptions parse_options_for(const Options& options) {
     // image_map files through the render layer's reader (OpenImageIO, loaded only when a scene has one).
     parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
         -> std::shared_ptr<const scene::ImageData> {
-        const std::optional<render::Film> film = render::read_image(file, error, &encoded);
+        bool alpha = false;
+        const std::optional<render::Film> film = render::read_image(file, error, &encoded, &alpha);
         if (!film) return nullptr;
         auto image = std::make_shared<scene::ImageData>();
+        image->has_alpha = alpha;
         image->width = film->width();
         image->height = film->height();
         image->rgb = film->data();

@@ -39,11 +39,16 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
                       std::to_string(static_cast<int>(file_gamma ? file_gamma->kind : GammaCurve::Kind::Neutral)) +
                       '\n' + std::to_string(working.gamma) + std::to_string(handling) +
                       std::to_string(m_version >= 3.7);
-    if (auto it = m_images.find(key); it != m_images.end()) return it->second;
+    if (auto it = m_images.find(key); it != m_images.end()) {
+        if (it->second->has_alpha) warn_unsupported(at, "image_map alpha channel");
+        return it->second;
+    }
     bool encoded = false;
     std::string error;
     const std::shared_ptr<const ImageData> stored = m_options.read_image(found, encoded, error);
     if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
+    // POV-Ray takes transparency from an alpha channel; the reader does not return it.
+    if (stored->has_alpha) warn_unsupported(at, "image_map alpha channel");
     auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();

@@ -13,6 +13,7 @@ struct ImageData {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  ///< width * height * 3
+    bool has_alpha = false;  ///< the file has an alpha channel, which is not read
 };
 
 /// `image_map { png "file" map_type M interpolate I once filter all F transmit all T }` (POV-Ray 3.7).
