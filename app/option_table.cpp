@@ -155,9 +155,11 @@ Why set_gamma(std::string_view text, GammaCurve& out) {
     return "expected a positive gamma or sRGB";
 }
 
-// Only method 1 (adaptive, non-recursive) is implemented; method 2 is refused rather than faked.
-Why set_sampling_method(const OptionUse& use, Options&) {
-    if (use.value != "1") return "only sampling method 1 (+AM1) is supported so far";
+// POV-Ray 3.7's methods: 1 (adaptive, non-recursive) and 2 (adaptive, recursive); POV-Ray compat: 3.7 renders
+// +AM3 as method 2.
+Why set_sampling_method(const OptionUse& use, Options& o) {
+    if (use.value != "1" && use.value != "2" && use.value != "3") return "expected sampling method 1, 2 or 3";
+    o.sampling_method = use.value == "1" ? 1 : 2;
     return std::nullopt;
 }
 
@@ -216,8 +218,8 @@ constexpr OptionSpec kOptions[] = {
      .help = "antialiasing jitter (1), or none", .set = set_jitter},
     {.letters = "AG", .ini_key = "Antialias_Gamma", .kind = K::Value, .usage = "+AGn",
      .help = "antialiasing comparison gamma (2.5)", .set = set_antialias_gamma},
-    {.letters = "AM", .ini_key = "Sampling_Method", .kind = K::Value, .usage = "+AM1",
-     .help = "antialiasing sampling method (1, the only one)", .set = set_sampling_method},
+    {.letters = "AM", .ini_key = "Sampling_Method", .kind = K::Value, .usage = "+AMn",
+     .help = "antialiasing method: 1 non-recursive (default), 2 recursive (3 is 2)", .set = set_sampling_method},
     {.letters = "L", .ini_key = "Library_Path", .kind = K::Value, .usage = "+Lpath",
      .help = "add an #include search folder",
      .set = [](U u, Options& o) { return add_path(u.value, "expected a library folder", o.library_paths); }},

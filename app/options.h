@@ -49,6 +49,7 @@ struct Options {
     bool antialias = false;
     double antialias_threshold = 0.3;  ///< +A0.3
     int antialias_depth = 3;           ///< +R3
+    int sampling_method = 1;           ///< +AM1 or +AM2
     double jitter = 1.0;               ///< +J1.0, -J: 0
     double antialias_gamma = 2.5;      ///< +AG2.5
     GammaCurve file_gamma = GammaCurve::srgb();     ///< File_Gamma=: the PNG encoding (HDR and EXR stay linear)

@@ -15,6 +15,7 @@
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
+#include "render/film.h"
 #include "render/output_gamma.h"
 #include "texture/noise.h"
 
@@ -54,6 +55,19 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.image_height = options.height;
     parse_options.read_paths = options.read_paths;
     parse_options.write_paths = options.write_paths;
+    // image_map files through the render layer's reader (OpenImageIO, loaded only when a scene has one).
+    parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
+        -> std::shared_ptr<const scene::ImageData> {
+        bool alpha = false;
+        const std::optional<render::Film> film = render::read_image(file, error, &encoded, &alpha);
+        if (!film) return nullptr;
+        auto image = std::make_shared<scene::ImageData>();
+        image->has_alpha = alpha;
+        image->width = film->width();
+        image->height = film->height();
+        image->rgb = film->data();
+        return image;
+    };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
     if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;
     if (options.max_macro_depth) parse_options.max_macro_depth = *options.max_macro_depth;
@@ -276,7 +290,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
             ? render::antialias_gamma_on_working_values(options.antialias_gamma, scene.global.assumed_gamma)
             : options.antialias_gamma;
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
-                          antialias_gamma};
+                          antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     RenderedFrame frame{render::render_image(

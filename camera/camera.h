@@ -1,6 +1,9 @@
 // CameraModel: primary rays through pixels, as POV-Ray 3.7 places them.
 #pragma once
 
+#include <optional>
+
+#include "camera/projections.h"
 #include "geometry/scene_geometry.h"
 #include "scene/scene.h"
 
@@ -9,17 +12,29 @@ namespace wardray::camera {
 /// Makes the camera ray through an image position (pixel units, origin at the top-left corner).
 class CameraModel {
 public:
-    CameraModel(const scene::Camera& camera, int width, int height);
+    CameraModel(const scene::Camera& camera, int width, int height, int noise_generator = 2);
+    CameraModel(const CameraModel&) = delete;  // its frame points at its own copy of the camera
+    CameraModel& operator=(const CameraModel&) = delete;
 
-    /// The ray through image position (px, py); pixel (x, y)'s centre is (x + 0.5, y + 0.5).
-    geometry::Ray ray(double px, double py) const;
-    /// The image position (pixel units) where the world point `p` appears; false when it is behind the camera.
+    /// The ray through image position (px, py); pixel (x, y)'s centre is (x + 0.5, y + 0.5). Nothing where the
+    /// projection traces no ray (POV-Ray leaves such a sample black).
+    std::optional<geometry::Ray> ray(double px, double py) const;
+    /// The same through the lens point (lens_x, lens_y) of focal blur, each in [-0.5, 0.5] of the aperture's
+    /// half-width (POV-Ray's sample grid).
+    std::optional<geometry::Ray> ray(double px, double py, double lens_x, double lens_y) const;
+    /// The image position (pixel units) where the world point `p` appears; false when it is behind the camera
+    /// or the projection is not planar.
     bool project(const Vec3& p, double& px, double& py) const;
+    const scene::Camera& camera() const { return m_camera; }
 
 private:
+    std::optional<geometry::Ray> finish(ProjectedRay& r) const;
+
     scene::Camera m_camera;
-    double m_width;
-    double m_height;
+    Frame m_frame;
+    ProjectFn m_project;
+    int m_noise_generator;
+    Vec3 m_x_perp, m_y_perp;  ///< focal blur: the lens's axes, perpendicular to the direction of view
 };
 
 }  // namespace wardray::camera

@@ -33,6 +33,8 @@ double smooth_ramp(double low, double high, double x) {
 
 bool pigment_opaque(const scene::Pigment& p) {
     if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
+    // An image map lets light through with filter or transmit all, and where `once` leaves no image.
+    if (p.image_map) return !p.image_map->once && p.image_map->filter_all == 0.0 && p.image_map->transmit_all == 0.0;
     for (const auto& e : p.color_map)
         if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
     for (const auto& e : p.pigment_map)

@@ -14,27 +14,44 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
     cam.direction = spec.direction;
     cam.right = spec.right;
     cam.up = spec.up;
+    cam.cylinder = spec.cylinder;
+    cam.normal = spec.normal;
+    cam.aperture = spec.aperture;
+    cam.blur_samples = spec.blur_samples;
+    cam.blur_samples_min = spec.blur_samples_min;
+    cam.confidence = spec.confidence;
+    cam.variance = spec.variance;
+    // POV-Ray compat: without look_at and angle, the focal distance defaults to 1 whatever the direction's length.
+    double direction_length = 1.0;
 
     // POV-Ray compat: the 3.5+ camera applies its items in a fixed order whatever order they were written in:
     // angle, then look_at, then the orthographic sizing, then the transformations.
     if (spec.angle) {
         const double angle = *spec.angle;
         // POV-Ray compat: angle 0 leaves the direction as it is; only a negative angle or 180 and more are errors.
-        const bool planar = !spec.other_projection;  // perspective and orthographic
-        if (angle < 0.0) {
+        const bool planar = !spec.other_projection &&
+                            (spec.type == Camera::Type::Perspective || spec.type == Camera::Type::Orthographic);
+        if (spec.type == Camera::Type::Spherical) {
+            cam.h_angle = angle;
+            cam.v_angle = spec.v_angle.value_or(0.5 * angle);
+            if (angle < 0.0) error = "Negative horizontal angle not allowed.";
+            else if (cam.v_angle < 0.0) error = "Negative vertical angle not allowed.";
+        } else if (angle < 0.0) {
             error = "Negative viewing angle.";
         } else if (planar && angle >= 180.0) {
             error = "Viewing angle has to be smaller than 180 degrees.";
-        } else if (angle > 0.0 && angle < 180.0) {
+        } else if (planar && angle > 0.0) {
             // direction_length = 0.5 * right_length / tan(angle / 2)
             const double half = angle * std::numbers::pi / 360.0;
-            cam.direction = normalize(cam.direction) * (0.5 * length(cam.right) / std::tan(half));
+            direction_length = 0.5 * length(cam.right) / std::tan(half);
+            cam.direction = normalize(cam.direction) * direction_length;
         }
+        if (!planar) cam.angle = angle;
     }
 
     const Vec3 look_at = spec.look_at.value_or(spec.location + Vec3{0.0, 0.0, 1.0});
     if (spec.look_at) {
-        const double direction_length = length(cam.direction);
+        direction_length = length(cam.direction);
         const double up_length = length(cam.up);
         const double right_length = length(cam.right);
         // The sign of (up x direction) . right tells the handedness the user chose with `right`.
@@ -67,6 +84,10 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
             cam.up = cam.up * k;
         }
     }
+
+    // POV-Ray compat: the focal distance is measured before the camera's transformations, from its location.
+    cam.focal_distance = spec.focal_point ? length(*spec.focal_point - spec.location) : direction_length;
+    if (cam.focal_distance == 0.0) cam.focal_distance = 1.0;
 
     cam.location = spec.transform.point(cam.location);
     cam.direction = spec.transform.vector(cam.direction);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -78,6 +79,11 @@ struct ParseOptions {
     /// The lighting layer's vector turbulence (POV-Ray's DTurbulence) of point p with octaves, omega and lambda,
     /// for vturbulence(); when empty that function is an error.
     std::function<Vec3(const Vec3& p, int octaves, double omega, double lambda)> vector_turbulence;
+    /// The render layer's image reader, for image_map: RGB texels as the file stores them (8- and 16-bit values
+    /// scaled to [0, 1], `encoded` then set) or nothing with `error` set; when empty image_map is an error.
+    std::function<std::shared_ptr<const ImageData>(const std::filesystem::path& file, bool& encoded,
+                                                   std::string& error)>
+        read_image;
 };
 
 /// The outcome of a parse: a scene when there was no error, and every diagnostic in source order.

@@ -71,6 +71,11 @@ private:
     Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) final;
     Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) final;
     Pigment parse_density_body(const Token& kw) final;
+    /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
+    void parse_image_map(const Token& kw, Pigment& p);
+    /// An image file found like an include file, its texels in the working gamma; read once per gamma.
+    std::shared_ptr<const ImageData> read_image_file(const Token& at, const std::string& name,
+                                                     const std::optional<GammaCurve>& file_gamma);
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);
     /// Reads normal items up to `close`.
@@ -78,6 +83,8 @@ private:
 
     /// Fonts read so far, by resolved path; POV-Ray keeps each font's glyph cache for the whole scene.
     std::map<std::string, std::shared_ptr<TrueTypeFont>> m_fonts;
+    /// Images read so far, by resolved path and gamma.
+    std::map<std::string, std::shared_ptr<const ImageData>> m_images;
 };
 
 }  // namespace wardray::parser

@@ -338,6 +338,11 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
                 parse_color();
                 continue;
             }
+            if (t.text == "image_map") {
+                next();
+                parse_image_map(t, p);
+                continue;
+            }
             if (is_pattern_keyword(t.text) || is_unsupported_block(t.text)) {
                 warn_unsupported(t, "pigment pattern '" + t.text + "'");
                 // The rest of this pigment describes the pattern: skip it and keep the solid colour.
@@ -355,7 +360,8 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         p.color = parse_color();
         p.pattern.type = PType::None;
     }
-    if (!p.is_solid() && p.color_map.empty() && p.pigment_map.empty()) p.color_map = default_color_map(p.pattern.type);
+    if (!p.is_solid() && !p.image_map && p.color_map.empty() && p.pigment_map.empty())
+        p.color_map = default_color_map(p.pattern.type);
 }
 
 std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {

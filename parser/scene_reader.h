@@ -21,7 +21,7 @@ protected:
     CameraSpec parse_camera_body(const Token& kw);
     /// A camera projection that is valid POV-Ray and not rendered yet; true when it ends the block (mesh_camera).
     static bool other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
-    /// A focal blur item (not rendered yet): warns and reads its value.
+    /// A focal blur item: aperture, blur_samples, confidence, variance or focal_point.
     static bool focal_blur(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
     /// `assumed_gamma G | srgb`: the working gamma; POV-Ray compat: the first one stays in force.
     static void read_assumed_gamma(SceneReader& r, GlobalSettings& g, const Token& item);

@@ -198,11 +198,37 @@ bool SceneReader::other_projection(SceneReader& r, CameraSpec& spec, const Token
     return true;
 }
 
-bool SceneReader::focal_blur(SceneReader& r, CameraSpec&, const Token& item, const Token&) {
-    r.warn_unsupported(item, "focal blur");
-    if (item.text == "focal_point") r.parse_vector();
-    else r.parse_float();
-    if (item.text == "blur_samples" && r.accept(",")) r.parse_float();
+bool SceneReader::focal_blur(SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
+    using Item = void (*)(SceneReader&, CameraSpec&, const Token&);
+    static const KeywordTable<Item> items = {
+        {"aperture", [](SceneReader& r, CameraSpec& c, const Token&) { c.aperture = r.parse_float(); }},
+        {"focal_point", [](SceneReader& r, CameraSpec& c, const Token&) { c.focal_point = r.parse_vector(); }},
+        {"blur_samples",
+         [](SceneReader& r, CameraSpec& c, const Token& item) {
+             // POV-Ray compat: `blur_samples max` or `blur_samples min, max`.
+             const double first = r.parse_float();
+             if (first <= 0.0) r.fail(item, "Illegal number of focal blur samples.");
+             const bool two = r.accept(",") || r.starts_value(r.peek());
+             const int second = two ? static_cast<int>(r.parse_float()) : 0;
+             c.blur_samples_min = second == 0 ? 0 : static_cast<int>(first);
+             c.blur_samples = second == 0 ? static_cast<int>(first) : second;
+             if (c.blur_samples_min > c.blur_samples)
+                 r.fail(item, "Focal blur samples minimum must not be larger than maximum.");
+         }},
+        {"confidence",
+         [](SceneReader& r, CameraSpec& c, const Token& item) {
+             const double k = r.parse_float();
+             if (k > 0.0 && k < 1.0) c.confidence = k;
+             else r.warn(item, "Illegal confidence value. Default is used.");
+         }},
+        {"variance",
+         [](SceneReader& r, CameraSpec& c, const Token& item) {
+             const double k = r.parse_float();
+             if (k >= 0.0 && k <= 1.0) c.variance = k;
+             else r.warn(item, "Illegal variance value. Default is used.");
+         }},
+    };
+    (*items.find(item.text))(r, c, item);
     return false;
 }
 
@@ -255,19 +281,7 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
         // An item returns true when it ends the camera block.
         using Item = bool (*)(SceneReader&, CameraSpec&, const Token& item, const Token& kw);
         static const KeywordTable<Item> items = {
-            {"fisheye", &other_projection},
-            {"ultra_wide_angle", &other_projection},
-            {"omnimax", &other_projection},
-            {"panoramic", &other_projection},
-            {"spherical", &other_projection},
             {"mesh_camera", &other_projection},
-            {"cylinder",
-             [](SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
-                 r.warn_unsupported(item, "cylinder camera");
-                 c.other_projection = true;
-                 r.parse_float();
-                 return false;
-             }},
             {"location", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
                  c.location = r.parse_vector();
                  return false;
@@ -296,7 +310,9 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
              }},
             {"angle", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
                  c.angle = r.parse_float();
-                 if (r.accept(",")) r.parse_float();  // the vertical angle of the spherical camera
+                 // POV-Ray compat: the spherical camera's vertical angle follows, its comma optional.
+                 if (c.type == Camera::Type::Spherical && (r.accept(",") || r.starts_value(r.peek())))
+                     c.v_angle = r.parse_float();
                  return false;
              }},
             {"aperture", &focal_blur},
@@ -304,14 +320,19 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
             {"confidence", &focal_blur},
             {"variance", &focal_blur},
             {"focal_point", &focal_blur},
-            {"normal", [](SceneReader& r, CameraSpec&, const Token& item, const Token&) {
-                 r.warn_unsupported(item, "camera normal");
-                 r.skip_block(item);
+            {"normal", [](SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
+                 c.normal = r.parse_normal_body(item);
                  return false;
              }},
         };
         if (const auto type = find_kind(k_camera_keywords, w.view())) {
             spec.type = *type;  // a projection of WARDRAY_CAMERAS
+            if (spec.type == Camera::Type::Cylinder) {
+                const double n = parse_float();
+                spec.cylinder = static_cast<int>(n);
+                if (spec.cylinder < 1 || spec.cylinder > 4)
+                    fail(t, "Invalid cylinder camera type, valid are types 1 to 4.");
+            }
         } else if (const Item* item = items.find(w)) {
             if ((*item)(*this, spec, t, kw)) return spec;
         } else {

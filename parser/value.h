@@ -83,6 +83,15 @@ struct CameraSpec {
     Vec3 sky{0.0, 1.0, 0.0};
     std::optional<Vec3> look_at;
     std::optional<double> angle;
+    std::optional<double> v_angle;  ///< spherical: the second value of `angle`
+    int cylinder = 1;
+    std::optional<Normal> normal;
+    std::optional<Vec3> focal_point;
+    double aperture = 0.0;
+    int blur_samples = 0;
+    int blur_samples_min = 0;
+    double confidence = 0.9;
+    double variance = 1.0 / 10000.0;
     bool had_up = false;
     bool had_right = false;
     bool other_projection = false;  ///< a projection not rendered yet (its angle is not checked)

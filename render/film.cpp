@@ -168,7 +168,7 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
     });
 }
 
-std::optional<Film> read_image(const std::filesystem::path& path, std::string& error) {
+std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha) {
     const OiioReader* reader = oiio_reader(error);
     if (!reader) return std::nullopt;
     int width = 0, height = 0, encoded = 0;
@@ -183,11 +183,13 @@ std::optional<Film> read_image(const std::filesystem::path& path, std::string& e
         for (int x = 0; x < width; ++x) {
             const float* p = &pixels[(static_cast<std::size_t>(y) * width + x) * 3];
             Vec3 rgb{p[0], p[1], p[2]};
-            if (encoded) rgb = {srgb_decode(rgb.x), srgb_decode(rgb.y), srgb_decode(rgb.z)};
+            if ((encoded & 1) && !stored) rgb = {srgb_decode(rgb.x), srgb_decode(rgb.y), srgb_decode(rgb.z)};
             film.set_pixel(x, y, rgb);
         }
     }
     reader->release(pixels);
+    if (stored) *stored = (encoded & 1) != 0;
+    if (alpha) *alpha = (encoded & 2) != 0;
     return film;
 }
 

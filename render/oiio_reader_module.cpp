@@ -18,7 +18,8 @@ void set_error(char* error, std::size_t size, const std::string& message) {
 }  // namespace
 
 /// Reads `path` as float RGB rows from the top; `*pixels` is malloc'd (free with wardray_oiio_free).
-/// `*encoded` is set when the file stores 8- or 16-bit values (to be decoded from sRGB). Returns 1 on success.
+/// `*encoded` has bit 0 set when the file stores 8- or 16-bit values (to be decoded from sRGB) and bit 1 when it has
+/// an alpha channel (which is not returned). Returns 1 on success.
 extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int* encoded, float** pixels,
                                  char* error, std::size_t error_size) {
     try {
@@ -44,7 +45,9 @@ extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int*
             for (int c = 0; c < 3; ++c) rgb[3 * i + c] = all[i * channels + (c < channels ? c : 0)];
         *width = spec.width;
         *height = spec.height;
-        *encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+        const bool integer =
+            spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
+        *encoded = (integer ? 1 : 0) | (spec.alpha_channel >= 0 || channels == 4 || channels == 2 ? 2 : 0);
         *pixels = rgb;
         return 1;
     } catch (const std::exception& e) {

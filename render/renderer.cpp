@@ -13,75 +13,12 @@
 
 #include "cache/irradiance_cache.h"
 #include "camera/camera.h"
+#include "camera/focal_blur.h"
+#include "render/sampler.h"
 
 namespace wardray::render {
 
 namespace {
-
-/// What one tile adds to the totals, and the trace context its rays carry.
-struct TileCounters {
-    lighting::TraceContext trace;
-    std::uint64_t non_finite = 0;
-    std::uint64_t supersampled = 0;
-};
-
-/// Traces and shades one image position, keeping NaN and infinity out of the picture.
-class Sampler {
-public:
-    Sampler(const camera::CameraModel& camera, const lighting::Integrator& integrator, TileCounters& counters,
-            Film* irradiance = nullptr)
-        : m_camera(camera), m_integrator(integrator), m_counters(counters), m_irradiance(irradiance) {}
-
-    /// Pixel (x, y)'s centre sample, which also fills the irradiance film when there is one.
-    Vec3 centre(int x, int y) const {
-        lighting::TraceContext& ctx = m_counters.trace;
-        ctx.capture_irradiance = m_irradiance != nullptr;
-        ctx.captured = false;
-        const Vec3 c = (*this)(x + 0.5, y + 0.5);
-        if (m_irradiance)
-            m_irradiance->set_pixel(x, y, ctx.captured && is_finite(ctx.irradiance) ? ctx.irradiance : Vec3{});
-        ctx.capture_irradiance = false;
-        return c;
-    }
-
-    Vec3 operator()(double px, double py) const {
-        Vec3 c = m_integrator.trace_camera_ray(m_camera.ray(px, py), m_counters.trace);
-        if (!is_finite(c)) {
-            ++m_counters.non_finite;
-            c = Vec3{};
-        }
-        return c;
-    }
-
-private:
-    const camera::CameraModel& m_camera;
-    const lighting::Integrator& m_integrator;
-    TileCounters& m_counters;
-    Film* m_irradiance;
-};
-
-// A jitter offset in [-0.5, 0.5) from a sample position: the same position always jitters the same way,
-// so antialiased images are repeatable (POV-Ray's jitter is a fixed function of position too).
-Vec3 jitter_at(double x, double y) {
-    auto hash = [](std::uint64_t v) {
-        v ^= v >> 33;
-        v *= 0xFF51AFD7ED558CCDull;
-        v ^= v >> 33;
-        v *= 0xC4CEB9FE1A85EC53ull;
-        return v ^ (v >> 33);
-    };
-    const std::uint64_t h = hash(std::bit_cast<std::uint64_t>(x) ^ hash(std::bit_cast<std::uint64_t>(y)));
-    return {static_cast<double>(h >> 40) / double(1 << 24) - 0.5,
-            static_cast<double>((h >> 16) & 0xFFFFFF) / double(1 << 24) - 0.5, 0.0};
-}
-
-// POV-Ray's antialiasing distance: summed absolute difference of gamma-encoded channels.
-double encoded_distance(const Vec3& a, const Vec3& b, double gamma) {
-    double d = 0.0;
-    for (int c = 0; c < 3; ++c)
-        d += std::fabs(std::pow(std::max(a[c], 0.0), 1.0 / gamma) - std::pow(std::max(b[c], 0.0), 1.0 / gamma));
-    return d;
-}
 
 // Averages a depth x depth grid of (jittered) samples over pixel (x, y) with its centre sample `centre`:
 // (centre + Σ samples) / (depth² + 1), as POV-Ray's method 1 does.
@@ -221,7 +158,10 @@ std::vector<double> pretrace_sizes(const scene::RadiositySettings& rs, int width
 RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
     RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt};
-    const camera::CameraModel camera(scene.camera, settings.width, settings.height);
+    const camera::CameraModel camera(scene.camera, settings.width, settings.height, scene.global.noise_generator);
+    // Focal blur only when the camera asks for it: a scene without it pays nothing.
+    std::optional<camera::FocalBlur> blur;
+    if (scene.camera.focal_blur()) blur.emplace(scene.camera);
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
     const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
     const int tile_count = tiles_x * tiles_y;
@@ -284,7 +224,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                 for (double x = std::ceil((x0 - 0.5) / size) * size; x < x1; x += size) {
                     const double px = x + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 0) + 0.5;
                     const double py = y + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 1) + 0.5;
-                    integrator.trace_camera_ray(camera.ray(px, py), ctx);
+                    if (const auto ray = camera.ray(px, py)) integrator.trace_camera_ray(*ray, ctx);
                 }
             }
         });
@@ -294,9 +234,11 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
 
     const auto final_start = std::chrono::steady_clock::now();
     run_pass(true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
-        const Sampler sample(camera, integrator, tile_counters[tile],
+        const Sampler sample(camera, blur ? &*blur : nullptr, integrator, tile_counters[tile],
                              result.irradiance ? &*result.irradiance : nullptr);
-        if (settings.antialias.enabled) {
+        if (settings.antialias.enabled && settings.antialias.method == 2) {
+            render_block_recursive(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
+        } else if (settings.antialias.enabled) {
             render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
         } else {
             for (int y = y0; y < y1; ++y)

@@ -18,13 +18,15 @@ class IrradianceCache;
 
 namespace wardray::render {
 
-/// POV-Ray's adaptive non-recursive supersampling (+A, sampling method 1) and its parameters.
+/// POV-Ray's adaptive supersampling (+A) and its parameters: method 1 (non-recursive) or 2 (recursive).
 struct AntialiasSettings {
     bool enabled = false;
     double threshold = 0.3;  ///< +A0.3: summed RGB difference of gamma-encoded neighbours that triggers it
-    int depth = 3;           ///< +R3: a supersampled pixel gets depth x depth extra samples
+    int depth = 3;           ///< +R3: method 1 gives a supersampled pixel depth x depth extra samples; method 2
+                             ///< splits it into quarters up to depth - 1 times
     double jitter = 1.0;     ///< +J1.0; 0 turns jitter off
     double gamma = 2.5;      ///< +AG2.5: neighbours are compared as pow(c, 1/gamma)
+    int method = 1;          ///< +AM1 or +AM2
 };
 
 /// A rectangle of pixels, [x0, x1) × [y0, y1), rows from the top.

@@ -6,14 +6,21 @@
 #include "core/diagnostics.h"
 #include "core/vec3.h"
 #include "scene/kind_list.h"
+#include "scene/texture.h"
 
 namespace wardray::scene {
 
 /// The camera projections the renderer draws, listed once: X(keyword, Enumerator). Camera::Type, the parser's
 /// camera keywords and reserved words come from this list.
-#define WARDRAY_CAMERAS(X)      \
-    X(perspective, Perspective) \
-    X(orthographic, Orthographic)
+#define WARDRAY_CAMERAS(X)              \
+    X(perspective, Perspective)         \
+    X(orthographic, Orthographic)       \
+    X(fisheye, Fisheye)                 \
+    X(ultra_wide_angle, UltraWideAngle) \
+    X(omnimax, Omnimax)                 \
+    X(panoramic, Panoramic)             \
+    X(cylinder, Cylinder)               \
+    X(spherical, Spherical)
 
 /// The camera, resolved by the parser to POV-Ray's final vectors (after look_at, angle, sky and transforms).
 struct Camera {
@@ -26,7 +33,21 @@ struct Camera {
     Vec3 direction{0.0, 0.0, 1.0};  ///< from location to the centre of the image plane
     Vec3 right{1.33, 0.0, 0.0};     ///< full width of the image plane
     Vec3 up{0.0, 1.0, 0.0};         ///< full height of the image plane
+    double angle = 90.0;            ///< `angle`: the field of view of fisheye, ultra_wide_angle and cylinder
+    double h_angle = 360.0;         ///< spherical: `angle H, V`, the horizontal field of view
+    double v_angle = 180.0;         ///< spherical: the vertical field of view (H / 2 when not given)
+    int cylinder = 1;               ///< `cylinder N`: which of POV-Ray's four cylindrical projections
+    std::optional<Normal> normal;   ///< camera `normal { ... }`: perturbs every camera ray's direction
+    /// Focal blur: `aperture`, `blur_samples [min,] max`, `confidence`, `variance`, `focal_point`.
+    double aperture = 0.0;
+    int blur_samples = 0;
+    int blur_samples_min = 0;
+    double confidence = 0.9;
+    double variance = 1.0 / 10000.0;
+    double focal_distance = 1.0;    ///< from location to the plane in focus, along direction
     SourceLoc loc;
+    /// True when POV-Ray blurs: an aperture and a number of samples.
+    bool focal_blur() const { return aperture != 0.0 && blur_samples > 0; }
     bool operator==(const Camera&) const = default;
 };
 

@@ -8,6 +8,7 @@
 #include "core/diagnostics.h"
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "scene/image_map.h"
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
@@ -99,10 +100,11 @@ struct Pigment {
     Pattern pattern;
     std::vector<ColorMapEntry> color_map;
     std::vector<PigmentMapEntry> pigment_map;
+    std::optional<ImageMap> image_map;  ///< an image_map pigment (its transform and warps in `pattern`)
     SourceLoc loc;
 
-    /// True for a plain colour: no pattern to evaluate.
-    bool is_solid() const { return pattern.type == Pattern::Type::None; }
+    /// True for a plain colour: no pattern or image to evaluate.
+    bool is_solid() const { return pattern.type == Pattern::Type::None && !image_map; }
     bool operator==(const Pigment&) const = default;
 };
 

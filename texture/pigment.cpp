@@ -1,12 +1,14 @@
 // Pigment evaluation: pattern value, then colour-map or pigment-map lookup with linear blending (POV-Ray 3.7).
 #include "texture/pigment.h"
 
+#include "texture/image_map.h"
 #include "texture/pattern.h"
 
 namespace wardray::texture {
 
 Color evaluate_patterned_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator) {
     const Vec3 tp = warp_point(pigment.pattern, p);
+    if (pigment.image_map) return image_map_color(*pigment.image_map, tp);
     const double value = pattern_value(pigment.pattern, tp, noise_generator);
     if (!pigment.pigment_map.empty()) {
         // POV-Ray compat: map entries are evaluated at the parent's warped point (they live in its space).

@@ -56,7 +56,12 @@ std::vector<ParityCase> parity_scenes() {
                                    "-A +KFF10 +KC +SF10 +EF10", "10"},
                                   // A partial render: the full-size image with the rest black, as POV-Ray writes it.
                                   {"partial_render", root / "scenes" / "parity" / "transforms.pov",
-                                   "+A0.0 +R2 -J +SR0.25 +ER150 +SC37 +EC0.8"}};
+                                   "+A0.0 +R2 -J +SR0.25 +ER150 +SC37 +EC0.8"},
+                                  // Method 2, recursive from the pixel corners, down to +R levels.
+                                  {"transforms_recursive_aa", root / "scenes" / "parity" / "transforms.pov",
+                                   "+A0.1 +AM2 +R3 -J"},
+                                  {"fisheye_recursive_aa", root / "scenes" / "parity" / "camera_fisheye.pov",
+                                   "+A0.1 +AM2 +R2 -J"}};
     std::vector<fs::path> parity;
     for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
         if (e.path().extension() == ".pov") parity.push_back(e.path());

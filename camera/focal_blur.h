@@ -1,0 +1,32 @@
+// FocalBlur: POV-Ray 3.7's focal blur, a pixel's rays spread over the aperture until their colours settle.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "camera/camera.h"
+
+namespace wardray::camera {
+
+/// The samples of focal blur for one camera: how many rays per batch, and when a pixel has enough.
+class FocalBlur {
+public:
+    explicit FocalBlur(const scene::Camera& camera);
+
+    /// The colour at image position (px, py): rays through jittered positions within the pixel and points of
+    /// the aperture, traced by `trace`, in POV-Ray's batches until the confidence test passes or blur_samples
+    /// are spent. The positions depend only on (px, py), so the image is the same for any thread count.
+    Vec3 sample(const CameraModel& camera, const std::function<Vec3(const geometry::Ray&)>& trace, double px,
+                double py) const;
+
+private:
+    int m_samples;
+    int m_min_samples;
+    std::vector<double> m_threshold;  ///< the variance below which n + 1 samples are enough
+    std::vector<int> m_batches;       ///< the batch sizes before the default of 4
+};
+
+/// The inverse of the complemented chi-square distribution: the x with P(χ²(df) > x) = y (Cephes' chdtri).
+double inverse_chi_square_complement(double df, double y);
+
+}  // namespace wardray::camera

@@ -1,0 +1,77 @@
+// image_map: texels placed, decoded and interpolated as POV-Ray 3.7's image maps do, on a 2 x 2 test image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "parser/parse.h"
+#include "texture/pigment.h"
+
+namespace wardray::lighting {
+namespace {
+
+// Rows from the top: red-ish and green over blue and white, stored as 8-bit (encoded) values.
+std::shared_ptr<const scene::ImageData> two_by_two(const std::filesystem::path&, bool& encoded, std::string&) {
+    auto image = std::make_shared<scene::ImageData>();
+    image->width = 2;
+    image->height = 2;
+    image->rgb = {0.5f, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    encoded = true;
+    return image;
+}
+
+scene::Pigment image_pigment(const std::string& items) {
+    parser::ParseOptions options;
+    options.read_image = two_by_two;
+    // The file must exist for the search; the scene itself serves.
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+        "/scenes/default.pov\" " + items + " } } }",
+        "test.pov", options);
+    EXPECT_TRUE(r.ok());
+    for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
+    return r.ok() ? r.scene->objects.at(0).texture.pigment : scene::Pigment{};
+}
+
+TEST(ImageMap, PlanarPlacesTheTopRowAtTheTopAndDecodesGamma) {
+    const scene::Pigment p = image_pigment("gamma 2.2");
+    const Color top_left = texture::evaluate_pigment(p, {0.25, 0.75, 0.0}, 2);
+    EXPECT_NEAR(top_left.r, std::pow(0.5, 2.2), 1e-6);
+    EXPECT_NEAR(top_left.g, 0.0, 1e-9);
+    const Color bottom_right = texture::evaluate_pigment(p, {0.75, 0.25, 0.0}, 2);
+    EXPECT_NEAR(bottom_right.b, 1.0, 1e-9);
+    // It repeats: one unit to the right is the same texel.
+    EXPECT_NEAR(texture::evaluate_pigment(p, {1.25, 0.75, 0.0}, 2).r, top_left.r, 1e-9);
+}
+
+TEST(ImageMap, WithoutGammaAnEightBitFileIsSrgb) {
+    const scene::Pigment p = image_pigment("");
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.25, 0.75, 0.0}, 2).r, GammaCurve::srgb().decode(0.5), 1e-6);
+}
+
+TEST(ImageMap, BilinearAtTheCentreAveragesTheFourTexels) {
+    const scene::Pigment p = image_pigment("gamma 1.0 interpolate 2");
+    const Color c = texture::evaluate_pigment(p, {0.5, 0.5, 0.0}, 2);
+    EXPECT_NEAR(c.r, (0.5 + 0 + 0 + 1) / 4.0, 1e-6);
+    EXPECT_NEAR(c.g, (0 + 1 + 0 + 1) / 4.0, 1e-6);
+    EXPECT_NEAR(c.b, (0 + 0 + 1 + 1) / 4.0, 1e-6);
+}
+
+TEST(ImageMap, OnceIsClearOutsideAndFilterTransmitAllAdd) {
+    const scene::Pigment p = image_pigment("once filter all 0.25 transmit all 0.5");
+    const Color outside = texture::evaluate_pigment(p, {1.5, 0.5, 0.0}, 2);
+    EXPECT_DOUBLE_EQ(outside.transmit, 1.0);
+    const Color inside = texture::evaluate_pigment(p, {0.75, 0.75, 0.0}, 2);
+    EXPECT_DOUBLE_EQ(inside.filter, 0.25);
+    EXPECT_DOUBLE_EQ(inside.transmit, 0.5);
+}
+
+TEST(ImageMap, SphericalMapsLatitudeUp) {
+    const scene::Pigment p = image_pigment("gamma 1.0 map_type 1");
+    // 45 degrees of longitude is the left column; near the north pole the top row, near the south the bottom.
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, 1.0, 0.1}, 2).r, 0.5, 1e-6);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).b, 1.0, 1e-6);
+    EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).r, 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace wardray::lighting

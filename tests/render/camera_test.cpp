@@ -1,0 +1,127 @@
+// Cameras: each projection's rays against the geometry POV-Ray's CreateCameraRay gives them, and focal blur.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "camera/camera.h"
+#include "camera/focal_blur.h"
+
+namespace wardray::camera {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+scene::Camera looking_along_z(scene::Camera::Type type) {
+    scene::Camera c;
+    c.type = type;
+    c.location = {0.0, 0.0, 0.0};
+    c.direction = {0.0, 0.0, 1.0};
+    c.right = {1.0, 0.0, 0.0};
+    c.up = {0.0, 1.0, 0.0};
+    return c;
+}
+
+void expect_near(const Vec3& a, const Vec3& b) {
+    EXPECT_NEAR(a.x, b.x, 1e-9);
+    EXPECT_NEAR(a.y, b.y, 1e-9);
+    EXPECT_NEAR(a.z, b.z, 1e-9);
+}
+
+TEST(Cameras, FisheyeAngleFromTheAxisGrowsWithTheRadius) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Fisheye);
+    c.angle = 180.0;
+    const CameraModel cam(c, 100, 100);
+    expect_near(cam.ray(50.0, 50.0)->direction, {0.0, 0.0, 1.0});
+    // The right edge of the circle looks 90 degrees off the axis, half way out 45 degrees.
+    expect_near(cam.ray(100.0, 50.0)->direction, {1.0, 0.0, 0.0});
+    expect_near(cam.ray(50.0, 25.0)->direction, {0.0, std::sqrt(0.5), std::sqrt(0.5)});
+    EXPECT_FALSE(cam.ray(2.0, 2.0).has_value());  // outside the circle no ray is traced
+}
+
+TEST(Cameras, PanoramicSweepsHalfATurnAcross) {
+    const CameraModel cam(looking_along_z(scene::Camera::Type::Panoramic), 200, 100);
+    expect_near(cam.ray(0.0, 50.0)->direction, {-1.0, 0.0, 0.0});
+    expect_near(cam.ray(100.0, 50.0)->direction, {0.0, 0.0, 1.0});
+    // A quarter of the way up from the centre the elevation is 45 degrees: tan = 1.
+    expect_near(cam.ray(100.0, 25.0)->direction, normalize(Vec3{0.0, 1.0, 1.0}));
+}
+
+TEST(Cameras, SphericalMapsLongitudeAndLatitude) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Spherical);
+    c.h_angle = 360.0;
+    c.v_angle = 180.0;
+    const CameraModel cam(c, 360, 180);
+    // 90 pixels right of the centre is 90 degrees of longitude; 45 pixels up, 45 degrees of latitude.
+    const Vec3 side = cam.ray(270.0, 90.0)->direction;
+    EXPECT_NEAR(std::fabs(side.x), 1.0, 1e-9);
+    EXPECT_NEAR(side.z, 0.0, 1e-9);
+    expect_near(cam.ray(180.0, 45.0)->direction, {0.0, std::sqrt(0.5), std::sqrt(0.5)});
+}
+
+TEST(Cameras, UltraWideAngleTurnsByTheAngleAcross) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::UltraWideAngle);
+    c.angle = 180.0;
+    const CameraModel cam(c, 100, 100);
+    // The right edge is half the angle, 90 degrees, off the axis.
+    expect_near(cam.ray(100.0, 50.0)->direction, {1.0, 0.0, 0.0});
+}
+
+TEST(Cameras, CylinderThreeMovesTheOriginUpTheAxis) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Cylinder);
+    c.cylinder = 3;
+    c.angle = 90.0;
+    c.up = {0.0, 2.0, 0.0};
+    const CameraModel cam(c, 100, 100);
+    const geometry::Ray top = *cam.ray(50.0, 0.0);
+    expect_near(top.origin, {0.0, 1.0, 0.0});  // half the up vector's length
+    expect_near(top.direction, {0.0, 0.0, 1.0});
+    const geometry::Ray right = *cam.ray(100.0, 50.0);
+    expect_near(right.direction, {std::sin(kPi / 4.0), 0.0, std::cos(kPi / 4.0)});
+}
+
+TEST(Cameras, FocalBlurKeepsThePointInFocusFixed) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Perspective);
+    c.aperture = 2.0;
+    c.blur_samples = 10;
+    c.focal_distance = 5.0;
+    const CameraModel cam(c, 100, 100);
+    for (const double lx : {-0.5, 0.0, 0.3}) {
+        const geometry::Ray r = *cam.ray(70.0, 40.0, lx, 0.2);
+        // Every lens point's ray passes through the pinhole ray's point at depth 5.
+        const Vec3 focus = Vec3{0.2, 0.1, 1.0} * 5.0;
+        const Vec3 to_focus = focus - r.origin;
+        expect_near(normalize(to_focus), r.direction);
+    }
+}
+
+TEST(Cameras, InverseChiSquareMatchesClosedForms) {
+    // Two degrees of freedom: P(X > x) = exp(-x / 2); one: P(X > 2.705543) = 0.1.
+    EXPECT_NEAR(inverse_chi_square_complement(2.0, 0.9), -2.0 * std::log(0.9), 1e-9);
+    EXPECT_NEAR(inverse_chi_square_complement(2.0, 0.05), -2.0 * std::log(0.05), 1e-9);
+    EXPECT_NEAR(inverse_chi_square_complement(1.0, 0.1), 2.705543, 1e-5);
+}
+
+TEST(Cameras, FocalBlurIsTheSameForTheSamePosition) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Perspective);
+    c.aperture = 1.0;
+    c.blur_samples = 20;
+    c.variance = 0.0;
+    const CameraModel cam(c, 100, 100);
+    const FocalBlur blur(c);
+    int rays = 0;
+    auto trace = [&](const geometry::Ray& r) {
+        ++rays;
+        return Vec3{r.origin.x, r.origin.y, 1.0};
+    };
+    const Vec3 a = blur.sample(cam, trace, 10.5, 20.5);
+    EXPECT_EQ(rays, 20);  // variance 0: every sample is taken
+    const Vec3 b = blur.sample(cam, trace, 10.5, 20.5);
+    EXPECT_EQ(a, b);
+    // The lens points average to about the lens centre.
+    EXPECT_NEAR(a.x, 0.0, 0.1);
+    EXPECT_NEAR(a.y, 0.0, 0.1);
+}
+
+}  // namespace
+}  // namespace wardray::camera
