@@ -59,6 +59,11 @@ private:
     void skip_to_close(const Token& kw, const char* close, std::size_t depth) final;
     int parse_pattern_keyword(const Token& t, Pattern& pat) final;
     bool parse_pattern_modifier(const Token& t, Pattern& pat) final;
+    // --- pattern parameters and warps (pattern_params.cpp) ---
+    int parse_pattern_parameters(const Token& t, Pattern& pat);
+    bool parse_pattern_extra(const Token& t, Pattern& pat);
+    void parse_warp(const Token& kw, Pattern& pat);
+    void check_black_hole(const Token& at, Warp& w);
     std::vector<ColorMapEntry> parse_color_map(const Token& kw) final;
     /// Reads a pigment map after its keyword.
     std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw);

@@ -111,7 +111,7 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
             pat.frequency = 0.0;
             return 2;
         default:
-            break;
+            return parse_pattern_parameters(t, pat);
     }
     return 0;
 }
@@ -147,10 +147,10 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         turb().octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
     } else if (w == "omega") {
         next();
-        turb().omega = parse_float();
+        turb().omega = static_cast<float>(parse_float());  // POV-Ray compat: single precision
     } else if (w == "lambda") {
         next();
-        turb().lambda = parse_float();
+        turb().lambda = static_cast<float>(parse_float());
     } else if (w == "frequency") {
         next();
         pat.frequency = parse_float();
@@ -186,10 +186,8 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         pat.crackle_solid = true;
     } else if (w == "no_bump_scale") {
         next();
-    } else if (w == "warp") {
-        next();
-        warn_unsupported(t, "warp");
-        skip_block(t);
+    } else if (parse_pattern_extra(t, pat)) {
+        return true;
     } else {
         return false;
     }
