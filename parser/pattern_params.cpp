@@ -157,7 +157,7 @@ void Parser::parse_warp(const Token& kw, Pattern& pat) {
         }
     } else if (is_word(t, "planar")) {
         w.type = WType::Planar;
-        if (starts_value(peek())) {
+        if (!is_punct(peek(), "}")) {
             w.orientation = normalize(parse_vector());
             accept(",");
             w.plane_offset = parse_float();

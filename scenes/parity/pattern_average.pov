@@ -27,11 +27,11 @@ Ball(0, 1) pigment { rgb <0.6, 0.8, 0.6> } normal { average normal_map {
 Ball(1, 1) texture { average texture_map {
     [1 pigment { rgb <1, 0.3, 0.1> } finish { Fin }]
     [1 pigment { granite color_map { [0 rgb 0] [1 rgb 1] } } normal { bumps 0.5 scale 0.2 } finish { Fin }]
-    [2 pigment { rgb <0.2, 0.3, 0.9> } finish { ambient 0.1 diffuse 0.5 specular 0.6 }] } }
+    [2 pigment { rgb <0.2, 0.3, 0.9> } finish { ambient 0.1 diffuse 0.5 specular 0.6 }] } } }
 Ball(2, 1) texture { average texture_map {
     [1 pigment { checker rgb 1, rgb <0.3, 0.3, 0.6> scale 0.3 } finish { Fin }]
-    [1 pigment { rgbt <0.9, 0.9, 0.2, 0.7> } finish { Fin }] } scale 1.3 }
+    [1 pigment { rgbt <0.9, 0.9, 0.2, 0.7> } finish { Fin }] } scale 1.3 } }
 Ball(3, 1) texture { average texture_map {
     [1 pigment { radial frequency 8 color_map { [0 rgb 1] [1 rgb <0.9, 0.1, 0.1>] } } finish { Fin }]
     [3 pigment { onion color_map { [0 rgb <0.1, 0.5, 0.9>] [1 rgb 1] } scale 0.3 } finish { Fin }] }
-    rotate x * -60 }
+    rotate x * -60 } }

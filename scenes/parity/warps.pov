@@ -26,4 +26,4 @@ Ball(0, 2) pigment { marble color_map { Map } turbulence 0.5 warp { turbulence 0
 Ball(1, 2) pigment { agate color_map { Map } scale 0.6 warp { repeat y * 0.25 flip y } rotate z * 20 warp { turbulence 0.2 } } finish { Fin } }
 Ball(2, 2) pigment { rgb 0.8 } normal { bumps 0.8 scale 0.1 warp { black_hole 0, 0.5 strength 2 } } finish { Fin } }
 Ball(3, 2) pigment { rgb 0.8 } normal { gradient x 0.8 scale 0.2 warp { cylindrical } rotate x * 90 } finish { Fin } }
-Ball(4, 2) texture { checker texture { pigment { rgb 1 } finish { Fin } } texture { pigment { rgb <0.8, 0.3, 0.1> } finish { Fin } } scale 0.15 warp { repeat z * 0.3 } warp { black_hole 0, 0.5 } }
+Ball(4, 2) texture { checker texture { pigment { rgb 1 } finish { Fin } } texture { pigment { rgb <0.8, 0.3, 0.1> } finish { Fin } } scale 0.15 warp { repeat z * 0.3 } warp { black_hole 0, 0.5 } } }
