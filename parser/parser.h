@@ -64,9 +64,10 @@ private:
     bool parse_pattern_extra(const Token& t, Pattern& pat);
     void parse_warp(const Token& kw, Pattern& pat);
     void check_black_hole(const Token& at, Warp& w);
+    std::vector<SlopeMapEntry> parse_slope_map();
     std::vector<ColorMapEntry> parse_color_map(const Token& kw) final;
     /// Reads a pigment map after its keyword.
-    std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw);
+    std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw, bool optional_values = false);
     /// Takes a leading pigment identifier or array element, when one comes next.
     bool parse_pigment_start(Pigment& p);
     /// Reads the list of `count` colours or pigments after a list pattern (checker, brick, hexagon).

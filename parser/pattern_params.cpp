@@ -2,6 +2,7 @@
 // interior, control0, control1) and `warp { ... }` blocks, read as POV-Ray 3.7's Parse_Pattern and Parse_Warp do.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/constants.h"
 #include "parser/parser.h"
@@ -44,6 +45,9 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
                 accept(",");
             }
             pat.fractal_iterations = static_cast<int>(parse_float());
+            return 0;
+        case PType::PigmentPattern:
+            pat.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
             return 0;
         case PType::Quilted:
             pat.control0 = pat.control1 = 1.0;
@@ -178,6 +182,24 @@ void Parser::parse_warp(const Token& kw, Pattern& pat) {
         pat.transform = Transform{};
     }
     pat.warps.insert(pat.warps.begin(), w);
+}
+
+std::vector<SlopeMapEntry> Parser::parse_slope_map() {
+    // `slope_map { [value <height, slope>] ... }` (POV-Ray's SLOPE_TYPE blend map).
+    expect("{");
+    std::vector<SlopeMapEntry> map;
+    while (!accept("}")) {
+        const Token open = expect("[");
+        SlopeMapEntry e;
+        e.value = static_cast<double>(static_cast<float>(parse_float()));
+        accept(",");
+        const Numeric hs = parse_numeric();
+        e.height = hs.v[0];
+        e.slope = hs.n > 1 ? hs.v[1] : hs.v[0];
+        expect("]");
+        map.push_back(e);
+    }
+    return map;
 }
 
 void Parser::check_black_hole(const Token& at, Warp& w) {

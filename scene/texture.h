@@ -1,6 +1,7 @@
 // Scene description, textures: patterns, pigments, normals, finishes and textures with their maps.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -85,7 +86,13 @@ struct Warp {
     X(magnet, Magnet)             \
     X(quilted, Quilted)           \
     X(spiral1, Spiral1)           \
-    X(spiral2, Spiral2)
+    X(spiral2, Spiral2)           \
+    X(square, Square)             \
+    X(triangular, Triangular)     \
+    X(cubic, Cubic)               \
+    X(pigment_pattern, PigmentPattern)
+
+struct Pigment;
 
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
 /// texture maps).
@@ -121,6 +128,7 @@ struct Pattern {
     double control0 = 1.0;  ///< quilted
     double control1 = 1.0;
     int arms = 0;           ///< spiral1, spiral2
+    std::shared_ptr<const Pigment> pigment;  ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
@@ -164,12 +172,21 @@ struct PigmentMapEntry {
 
 struct NormalMapEntry;
 
+/// One `[value <height, slope>]` entry of a normal's slope_map.
+struct SlopeMapEntry {
+    double value = 0.0;
+    double height = 0.0;
+    double slope = 0.0;
+    bool operator==(const SlopeMapEntry&) const = default;
+};
+
 /// A normal perturbation: a pattern whose slope tilts the shading normal, scaled by `bump_size`.
 struct Normal {
     Pattern pattern;        ///< None: the normal is not perturbed
     double amount = 0.5;    ///< bump_size, or the float after the pattern name
     double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
     std::vector<NormalMapEntry> normal_map;
+    std::vector<SlopeMapEntry> slope_map;  ///< reshapes the pattern's value before its slope is taken
     SourceLoc loc;
     bool operator==(const Normal&) const = default;
 };

@@ -69,6 +69,20 @@ Vec3 normal_only_offset(const scene::Normal& normal, const Vec3& p, int generato
     }
 }
 
+// POV-Ray's Do_Slope_Map: the height at `value`, a Hermite cubic between the entries' heights and slopes.
+double slope_map_value(const std::vector<scene::SlopeMapEntry>& map, double value) {
+    const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+    const scene::SlopeMapEntry& cur = map[m.cur];
+    if (m.prev == m.cur) return cur.height;
+    const scene::SlopeMapEntry& prev = map[m.prev];
+    const double t = (value - prev.value) / (cur.value - prev.value);
+    const double tt = t * t, ttt = tt * t;
+    double rv = ttt * (prev.slope + cur.slope + 2.0 * (prev.height - cur.height));
+    rv += -tt * (2.0 * prev.slope + cur.slope + 3.0 * (prev.height - cur.height));
+    rv += t * prev.slope + prev.height;
+    return rv;
+}
+
 }  // namespace
 
 Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator) {
@@ -108,7 +122,8 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
         // POV-Ray compat: the slope of any other pattern from four samples, scaled by −5 (its fudge factor).
         const double amount = normal.amount * -5.0 * (0.02 / normal.delta);
         for (const Vec3& dir : kPyramid) {
-            const double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            if (!normal.slope_map.empty()) v = slope_map_value(normal.slope_map, v);
             local += dir * (v * amount);
         }
     }

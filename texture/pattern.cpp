@@ -9,6 +9,7 @@
 #include "core/constants.h"
 #include "texture/fractal.h"
 #include "texture/noise.h"
+#include "texture/pattern_blocks.h"
 
 namespace wardray::texture {
 

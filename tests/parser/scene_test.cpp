@@ -1,5 +1,6 @@
 // Tests of scene statements: camera resolution, lights, objects, textures, unions, global settings, warnings.
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "parser/keywords.h"
@@ -495,7 +496,12 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         SCOPED_TRACE(std::string(keyword));
         EXPECT_TRUE(is_keyword(keyword));
         EXPECT_FALSE(is_pattern_keyword(keyword));
-        const std::string pattern = std::string(keyword) + (keyword == "gradient" ? " y" : "");
+        // The patterns that need parameters get a sample of them.
+        static const std::map<std::string_view, const char*> parameters = {
+            {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
+            {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}};
+        const auto sample = parameters.find(keyword);
+        const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
                                  " } }\nsphere { 0, 1 texture { " + pattern +
                                  " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");
