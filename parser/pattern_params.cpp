@@ -47,7 +47,7 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
             pat.fractal_iterations = static_cast<int>(parse_float());
             return 0;
         case PType::PigmentPattern:
-            pat.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
+            pat.pigment.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
             return 0;
         case PType::Quilted:
             pat.control0 = pat.control1 = 1.0;

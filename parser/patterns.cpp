@@ -15,7 +15,8 @@ using PType = Pattern::Type;
 
 ColorMapEntry entry(double v, double r, double g, double b) { return {v, Color{r, g, b, 0.0, 0.0}}; }
 
-// POV-Ray compat: map positions are single-precision floats in POV-Ray.
+// POV-Ray compat: map positions (and frequency, phase, poly_wave's exponent, bump_size, accuracy) are
+// single-precision floats in POV-Ray.
 double map_value(double v) { return static_cast<double>(static_cast<float>(v)); }
 
 std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
@@ -148,7 +149,7 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         if (w != name) continue;
         next();
         pat.wave = wave;
-        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = parse_float();
+        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = map_value(parse_float());
         return true;
     }
     if (w == "turbulence") {
@@ -166,10 +167,10 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         turb().lambda = static_cast<float>(parse_float());
     } else if (w == "frequency") {
         next();
-        pat.frequency = parse_float();
+        pat.frequency = map_value(parse_float());  // POV-Ray compat: frequency and phase are single precision
     } else if (w == "phase") {
         next();
-        pat.phase = parse_float();
+        pat.phase = map_value(parse_float());
     } else if (w == "noise_generator") {
         next();
         const int g = static_cast<int>(parse_float());
@@ -442,15 +443,15 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
             }
             // POV-Ray compat: an optional bump amount follows the pattern.
             accept(",");
-            if (starts_value(peek())) n.amount = parse_float();
+            if (starts_value(peek())) n.amount = map_value(parse_float());
             continue;
         }
         if (parse_pattern_modifier(t, n.pattern)) continue;
         next();
         if (t.text == "bump_size") {
-            n.amount = parse_float();
+            n.amount = map_value(parse_float());  // POV-Ray compat: bump_size and accuracy are single precision
         } else if (t.text == "accuracy") {
-            n.delta = parse_float();
+            n.delta = map_value(parse_float());
         } else if (t.text == "normal_map") {
             expect("{");
             n.normal_map.clear();

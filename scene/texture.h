@@ -94,6 +94,12 @@ struct Warp {
 
 struct Pigment;
 
+/// A pigment held by a pattern (pigment_pattern), shared between copies and compared by value.
+struct PigmentRef {
+    std::shared_ptr<const Pigment> pigment;
+    bool operator==(const PigmentRef& other) const;
+};
+
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
 /// texture maps).
 struct Pattern {
@@ -128,7 +134,7 @@ struct Pattern {
     double control0 = 1.0;  ///< quilted
     double control1 = 1.0;
     int arms = 0;           ///< spiral1, spiral2
-    std::shared_ptr<const Pigment> pigment;  ///< pigment_pattern: the pigment whose grey level is the value
+    PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
@@ -162,6 +168,10 @@ struct Pigment {
     bool is_solid() const { return pattern.type == Pattern::Type::None; }
     bool operator==(const Pigment&) const = default;
 };
+
+inline bool PigmentRef::operator==(const PigmentRef& other) const {
+    return pigment == other.pigment || (pigment && other.pigment && *pigment == *other.pigment);
+}
 
 /// One `[value pigment]` entry of a pigment map.
 struct PigmentMapEntry {

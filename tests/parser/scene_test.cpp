@@ -301,7 +301,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     const Scene s = parse_ok(R"(
         julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15 }
         julia_fractal { <0.1, 0, 0, 0> }
-        sphere { 0, 1 pigment { mandel 20 } }
+        sphere { 0, 1 pigment { tiling 1 } }
         rainbow { angle 42.5 width 5 distance 1.0e7 direction <-0.2, -0.2, 1> }
         #declare Thing = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 1, 1>, 1 }
         object { Thing }
@@ -311,7 +311,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
     const std::vector<std::string> expected = {"julia_fractal is not rendered yet",
-                                               "pigment pattern 'mandel' is not rendered yet",
+                                               "pigment pattern 'tiling' is not rendered yet",
                                                "rainbow is not rendered yet", "sphere_sweep is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
