@@ -92,6 +92,9 @@ private:
     /// POV-Ray's ComputeOneTextureColour: a texture_map blends the lit colours of its entries.
     Vec3 shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
                        const RayState& state, TraceContext& ctx) const;
+    /// POV-Ray's ComputeAverageTextureColours: an `average` texture_map's entries weighted by their values.
+    Vec3 shade_average(const scene::Texture& texture, const Surface& s, std::vector<const scene::Pattern*>& warps,
+                       const RayState& state, TraceContext& ctx) const;
     /// POV-Ray's ComputeLightedTexture: the layers of a plain texture, then refraction and reflection.
     Vec3 shade_layers(const scene::Texture& texture, const Surface& s, const std::vector<const scene::Pattern*>& warps,
                       const RayState& state, TraceContext& ctx) const;

@@ -89,6 +89,16 @@ LightSampler::~LightSampler() = default;
 Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) const {
     if (!texture.texture_map.empty()) {
         const Vec3 tp = texture::warp_point(texture.map_pattern, p);
+        if (texture.map_pattern.type == scene::Pattern::Type::Average) {
+            // POV-Ray's ComputeAverageTextureColours in a shadow: the entries' filters, weighted by map value.
+            Vec3 sum;
+            float total = 0.0f;
+            for (const auto& e : texture.texture_map) {
+                sum += texture_filter(e.texture, tp) * e.value;
+                total += static_cast<float>(e.value);
+            }
+            return sum / static_cast<double>(total);
+        }
         const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
         const auto& map = texture.texture_map;
         const texture::MapLookup m =

@@ -84,8 +84,9 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
     // texture_map: each entry is lit on its own at the map's warped point, and the colours are blended.
     const scene::Pattern& pattern = texture.map_pattern;
     s.p_texture = texture::warp_point(pattern, s.p_texture);
-    const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator);
     const auto& map = texture.texture_map;
+    if (pattern.type == scene::Pattern::Type::Average) return shade_average(texture, s, warps, state, ctx);
+    const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator);
     const texture::MapLookup m =
         texture::search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
     warps.push_back(&pattern);
@@ -96,6 +97,21 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
     }
     warps.pop_back();
     return colour;
+}
+
+Vec3 Integrator::shade_average(const scene::Texture& texture, const Surface& s,
+                               std::vector<const scene::Pattern*>& warps, const RayState& state,
+                               TraceContext& ctx) const {
+    // POV-Ray's ComputeAverageTextureColours: the entries lit on their own, weighted by their map values.
+    warps.push_back(&texture.map_pattern);
+    Vec3 sum;
+    float total = 0.0f;
+    for (const scene::TextureMapEntry& e : texture.texture_map) {
+        sum += shade_texture(e.texture, s, warps, state, ctx) * e.value;
+        total += static_cast<float>(e.value);
+    }
+    warps.pop_back();
+    return sum / static_cast<double>(total);
 }
 
 Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,

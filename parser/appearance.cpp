@@ -275,7 +275,9 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             while (!accept("}")) {
                 const Token open = expect("[");
                 TextureMapEntry e;
-                e.value = static_cast<double>(static_cast<float>(parse_float()));
+                // POV-Ray compat: an average map's weights may be left out (1 each).
+                const bool weighted = tx.map_pattern.type != Pattern::Type::Average || starts_value(peek());
+                e.value = weighted ? static_cast<double>(static_cast<float>(parse_float())) : 1.0;
                 accept(",");
                 e.texture = default_texture();
                 parse_texture_items(e.texture, open, "]");

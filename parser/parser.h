@@ -59,9 +59,15 @@ private:
     void skip_to_close(const Token& kw, const char* close, std::size_t depth) final;
     int parse_pattern_keyword(const Token& t, Pattern& pat) final;
     bool parse_pattern_modifier(const Token& t, Pattern& pat) final;
+    // --- pattern parameters and warps (pattern_params.cpp) ---
+    int parse_pattern_parameters(const Token& t, Pattern& pat);
+    bool parse_pattern_extra(const Token& t, Pattern& pat);
+    void parse_warp(const Token& kw, Pattern& pat);
+    void check_black_hole(const Token& at, Warp& w);
+    std::vector<SlopeMapEntry> parse_slope_map();
     std::vector<ColorMapEntry> parse_color_map(const Token& kw) final;
     /// Reads a pigment map after its keyword.
-    std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw);
+    std::vector<PigmentMapEntry> parse_pigment_map(const Token& kw, bool optional_values = false);
     /// Takes a leading pigment identifier or array element, when one comes next.
     bool parse_pigment_start(Pigment& p);
     /// Reads the list of `count` colours or pigments after a list pattern (checker, brick, hexagon).

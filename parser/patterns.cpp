@@ -15,7 +15,8 @@ using PType = Pattern::Type;
 
 ColorMapEntry entry(double v, double r, double g, double b) { return {v, Color{r, g, b, 0.0, 0.0}}; }
 
-// POV-Ray compat: map positions are single-precision floats in POV-Ray.
+// POV-Ray compat: map positions (and frequency, phase, poly_wave's exponent, bump_size, accuracy) are
+// single-precision floats in POV-Ray.
 double map_value(double v) { return static_cast<double>(static_cast<float>(v)); }
 
 std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
@@ -37,6 +38,12 @@ std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
             return {entry(0.0, 0.9, 0.8, 0.8), entry(0.9, 0.9, 0.08, 0.08), entry(0.9, 0, 0, 0)};
         case PType::Hexagon:
             return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0), entry(2.0, 1, 0, 0)};
+        case PType::Square:
+        case PType::Triangular:
+        case PType::Cubic:
+            // POV-Ray compat: all three take cubic's six colours (square the first four).
+            return {entry(0, 1, 0, 0), entry(1, 0, 1, 0), entry(2, 0, 0, 1),
+                    entry(3, 1, 1, 0), entry(4, 0, 1, 1), entry(5, 1, 0, 1)};
         case PType::Checker:
             // POV-Ray compat: checker takes the first two of hexagon's colours.
             return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0)};
@@ -103,6 +110,13 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
         case PType::Hexagon:
             pat.frequency = 0.0;
             return 3;
+        case PType::Square:
+            pat.frequency = 0.0;
+            return 4;
+        case PType::Triangular:
+        case PType::Cubic:
+            pat.frequency = 0.0;
+            return 6;
         case PType::Brick:
             if (previous != PType::Brick) {
                 pat.brick_size = {8.0, 3.0, 4.5};
@@ -111,7 +125,7 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
             pat.frequency = 0.0;
             return 2;
         default:
-            break;
+            return parse_pattern_parameters(t, pat);
     }
     return 0;
 }
@@ -135,7 +149,7 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         if (w != name) continue;
         next();
         pat.wave = wave;
-        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = parse_float();
+        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = map_value(parse_float());
         return true;
     }
     if (w == "turbulence") {
@@ -147,16 +161,16 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         turb().octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
     } else if (w == "omega") {
         next();
-        turb().omega = parse_float();
+        turb().omega = static_cast<float>(parse_float());  // POV-Ray compat: single precision
     } else if (w == "lambda") {
         next();
-        turb().lambda = parse_float();
+        turb().lambda = static_cast<float>(parse_float());
     } else if (w == "frequency") {
         next();
-        pat.frequency = parse_float();
+        pat.frequency = map_value(parse_float());  // POV-Ray compat: frequency and phase are single precision
     } else if (w == "phase") {
         next();
-        pat.phase = parse_float();
+        pat.phase = map_value(parse_float());
     } else if (w == "noise_generator") {
         next();
         const int g = static_cast<int>(parse_float());
@@ -186,10 +200,8 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         pat.crackle_solid = true;
     } else if (w == "no_bump_scale") {
         next();
-    } else if (w == "warp") {
-        next();
-        warn_unsupported(t, "warp");
-        skip_block(t);
+    } else if (parse_pattern_extra(t, pat)) {
+        return true;
     } else {
         return false;
     }
@@ -303,7 +315,9 @@ void Parser::parse_pigment_list(Pigment& p, int count) {
         p.color_map.push_back({static_cast<double>(i), parse_color()});
         accept(",");
     }
-    for (int i = static_cast<int>(p.color_map.size()); i < count; ++i) p.color_map.push_back(defaults[i]);
+    // POV-Ray compat (Parse_Blend_List): a missing entry takes the default map's colour at value i.
+    for (int i = static_cast<int>(p.color_map.size()); i < count; ++i)
+        p.color_map.push_back({static_cast<double>(i), defaults[i].color});
 }
 
 void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close) {
@@ -329,7 +343,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
             // POV-Ray compat: a density's density_map is its pigment_map (entries are densities).
             if (t.text == "pigment_map" || t.text == "density_map") {
                 next();
-                p.pigment_map = parse_pigment_map(t);
+                p.pigment_map = parse_pigment_map(t, p.pattern.type == PType::Average);
                 p.color_map.clear();
                 continue;
             }
@@ -364,7 +378,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         p.color_map = default_color_map(p.pattern.type);
 }
 
-std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {
+std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw, bool optional_values) {
     expect("{");
     std::vector<PigmentMapEntry> map;
     while (true) {
@@ -373,7 +387,8 @@ std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw) {
         if (is_punct(t, "}")) break;
         if (!is_punct(t, "[")) fail(t, "expected '[' or '}' in pigment_map but found " + describe_token(t));
         PigmentMapEntry e;
-        e.value = map_value(parse_float());
+        // POV-Ray compat: an average map's weights may be left out (1 each).
+        e.value = optional_values && !starts_value(peek()) ? 1.0 : map_value(parse_float());
         accept(",");
         e.pigment = m_default_pigment;
         e.pigment.loc = make_diagnostic(Severity::Note, t, "").loc;
@@ -439,30 +454,34 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
             }
             // POV-Ray compat: an optional bump amount follows the pattern.
             accept(",");
-            if (starts_value(peek())) n.amount = parse_float();
+            if (starts_value(peek())) n.amount = map_value(parse_float());
             continue;
         }
         if (parse_pattern_modifier(t, n.pattern)) continue;
         next();
         if (t.text == "bump_size") {
-            n.amount = parse_float();
+            n.amount = map_value(parse_float());  // POV-Ray compat: bump_size and accuracy are single precision
         } else if (t.text == "accuracy") {
-            n.delta = parse_float();
+            n.delta = map_value(parse_float());
         } else if (t.text == "normal_map") {
             expect("{");
             n.normal_map.clear();
+            n.slope_map.clear();
             while (!accept("}")) {
                 const Token open = expect("[");
                 NormalMapEntry e;
-                e.value = map_value(parse_float());
+                const bool weighted = n.pattern.type != PType::Average || starts_value(peek());
+                e.value = weighted ? map_value(parse_float()) : 1.0;
                 accept(",");
                 // POV-Ray compat: an entry is a normal's body, so it may start with a normal identifier.
                 parse_normal_start(e.normal);
                 parse_normal_items(e.normal, open, "]");
                 n.normal_map.push_back(std::move(e));
             }
-        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text) || t.text == "bump_map" ||
-                   t.text == "slope_map") {
+        } else if (t.text == "slope_map") {
+            n.slope_map = parse_slope_map();
+            n.normal_map.clear();
+        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text) || t.text == "bump_map") {
             warn_unsupported(t, "normal pattern '" + t.text + "'");
             n = Normal{};
             skip_to_close(kw, close, depth);

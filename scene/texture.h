@@ -1,6 +1,7 @@
 // Scene description, textures: patterns, pigments, normals, finishes and textures with their maps.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -23,6 +24,33 @@ struct Turbulence {
     double omega = 0.5;
     double lambda = 2.0;
     bool operator==(const Turbulence&) const = default;
+};
+
+/// One `warp { ... }` of a pattern, or a transform given after one (POV-Ray's WARP list entries).
+struct Warp {
+    enum class Type { Transform, Turbulence, Repeat, BlackHole, Cylindrical, Spherical, Toroidal, Planar, Cubic };
+    Type type = Type::Transform;
+    Transform transform;    ///< Transform: pattern space to the enclosing space
+    Turbulence turbulence;  ///< Turbulence
+    int axis = 0;           ///< repeat: the axis (0, 1, 2) and the block width along it
+    double width = 0.0;
+    Vec3 offset;            ///< repeat: offset per block
+    Vec3 flip{1.0, 1.0, 1.0};  ///< repeat: -1 on the flipped axes
+    Vec3 center;            ///< black_hole
+    double radius = 1.0;
+    double strength = 1.0;
+    double falloff = 2.0;
+    bool inverse = false;
+    int hole_type = 0;
+    bool repeat = false;    ///< black_hole repeat: the repeat vector and its turbulence (uncertainty)
+    Vec3 repeat_vector;
+    bool uncertain = false;
+    Vec3 uncertainty;
+    Vec3 orientation{0.0, 0.0, 1.0};  ///< cylindrical, spherical, toroidal, planar
+    double dist_exp = 0.0;
+    double major_radius = 1.0;  ///< toroidal
+    double plane_offset = 0.0;  ///< planar
+    bool operator==(const Warp&) const = default;
 };
 
 /// The patterns the renderer evaluates, listed once: X(keyword, Enumerator). Pattern::Type, the parser's pattern
@@ -52,7 +80,26 @@ struct Turbulence {
     X(boxed, Boxed)               \
     X(spherical, Spherical)       \
     X(planar, Planar)             \
-    X(cylindrical, Cylindrical)
+    X(cylindrical, Cylindrical)   \
+    X(average, Average)           \
+    X(mandel, Mandel)             \
+    X(julia, Julia)               \
+    X(magnet, Magnet)             \
+    X(quilted, Quilted)           \
+    X(spiral1, Spiral1)           \
+    X(spiral2, Spiral2)           \
+    X(square, Square)             \
+    X(triangular, Triangular)     \
+    X(cubic, Cubic)               \
+    X(pigment_pattern, PigmentPattern)
+
+struct Pigment;
+
+/// A pigment held by a pattern (pigment_pattern), shared between copies and compared by value.
+struct PigmentRef {
+    std::shared_ptr<const Pigment> pigment;
+    bool operator==(const PigmentRef& other) const;
+};
 
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
 /// texture maps).
@@ -75,8 +122,24 @@ struct Pattern {
     double crackle_metric = 2.0;
     double crackle_offset = 0.0;
     bool crackle_solid = false;
+    int fractal_iterations = 0;  ///< mandel, julia, magnet
+    int fractal_exponent = 2;    ///< mandel and julia: 2 to 33
+    double julia_re = 0.0;       ///< julia and magnet julia: the complex parameter
+    double julia_im = 0.0;
+    int magnet_type = 1;         ///< magnet 1 or 2
+    bool magnet_julia = false;   ///< magnet N julia (true) or magnet N mandel
+    int exterior_type = 1;
+    double exterior_factor = 1.0;
+    int interior_type = 0;
+    double interior_factor = 1.0;
+    double control0 = 1.0;  ///< quilted
+    double control1 = 1.0;
+    int arms = 0;           ///< spiral1, spiral2
+    PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
+    /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
+    std::vector<Warp> warps;
     bool operator==(const Pattern&) const = default;
 };
 
@@ -108,6 +171,10 @@ struct Pigment {
     bool operator==(const Pigment&) const = default;
 };
 
+inline bool PigmentRef::operator==(const PigmentRef& other) const {
+    return pigment == other.pigment || (pigment && other.pigment && *pigment == *other.pigment);
+}
+
 /// One `[value pigment]` entry of a pigment map.
 struct PigmentMapEntry {
     double value = 0.0;
@@ -117,12 +184,21 @@ struct PigmentMapEntry {
 
 struct NormalMapEntry;
 
+/// One `[value <height, slope>]` entry of a normal's slope_map.
+struct SlopeMapEntry {
+    double value = 0.0;
+    double height = 0.0;
+    double slope = 0.0;
+    bool operator==(const SlopeMapEntry&) const = default;
+};
+
 /// A normal perturbation: a pattern whose slope tilts the shading normal, scaled by `bump_size`.
 struct Normal {
     Pattern pattern;        ///< None: the normal is not perturbed
     double amount = 0.5;    ///< bump_size, or the float after the pattern name
     double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
     std::vector<NormalMapEntry> normal_map;
+    std::vector<SlopeMapEntry> slope_map;  ///< reshapes the pattern's value before its slope is taken
     SourceLoc loc;
     bool operator==(const Normal&) const = default;
 };

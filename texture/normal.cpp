@@ -20,7 +20,8 @@ constexpr Vec3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
                               {0.0, 1.0, 0.0}};
 
 bool is_normal_only(Type t) {
-    return t == Type::Bumps || t == Type::Dents || t == Type::Ripples || t == Type::Waves || t == Type::Wrinkles;
+    return t == Type::Bumps || t == Type::Dents || t == Type::Ripples || t == Type::Waves || t == Type::Wrinkles ||
+           t == Type::Quilted;
 }
 
 // The special normal patterns add a vector to the (pattern-space) normal directly.
@@ -42,6 +43,8 @@ Vec3 normal_only_offset(const scene::Normal& normal, const Vec3& p, int generato
             }
             return sum * normal.amount;
         }
+        case Type::Quilted:
+            return quilted_offset(pat, p) * normal.amount;
         case Type::Ripples:
         case Type::Waves: {
             const std::vector<WaveSource>& sources = wave_sources();
@@ -66,28 +69,39 @@ Vec3 normal_only_offset(const scene::Normal& normal, const Vec3& p, int generato
     }
 }
 
+// POV-Ray's Do_Slope_Map: the height at `value`, a Hermite cubic between the entries' heights and slopes.
+double slope_map_value(const std::vector<scene::SlopeMapEntry>& map, double value) {
+    const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+    const scene::SlopeMapEntry& cur = map[m.cur];
+    if (m.prev == m.cur) return cur.height;
+    const scene::SlopeMapEntry& prev = map[m.prev];
+    const double t = (value - prev.value) / (cur.value - prev.value);
+    const double tt = t * t, ttt = tt * t;
+    double rv = ttt * (prev.slope + cur.slope + 2.0 * (prev.height - cur.height));
+    rv += -tt * (2.0 * prev.slope + cur.slope + 3.0 * (prev.height - cur.height));
+    rv += t * prev.slope + prev.height;
+    return rv;
+}
+
 }  // namespace
-
-Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n) {
-    if (pattern.transform.is_identity()) return normalize(n);
-    // Normals go into pattern space with the transpose of the pattern→world matrix.
-    const auto& m = pattern.transform.matrix();
-    const Vec3 u = normalize(n);
-    const Vec3 t{m[0][0] * u.x + m[1][0] * u.y + m[2][0] * u.z, m[0][1] * u.x + m[1][1] * u.y + m[2][1] * u.z,
-                 m[0][2] * u.x + m[1][2] * u.y + m[2][2] * u.z};
-    return normalize(t);
-}
-
-Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n) {
-    if (pattern.transform.is_identity()) return normalize(n);
-    return normalize(pattern.transform.normal(normalize(n)));
-}
 
 Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator) {
     const scene::Pattern& pat = normal.pattern;
     if (pat.type == Type::None) return n;
     const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
     const Vec3 tp = warp_point(pat, p);
+    if (pat.type == Type::Average && !normal.normal_map.empty()) {
+        // POV-Ray's Do_Average_Normals: each entry perturbs the pattern-space normal; the results are weighted by
+        // their map values (summed in single precision).
+        const Vec3 local = warp_normal(pat, n);
+        Vec3 sum;
+        float total = 0.0f;
+        for (const scene::NormalMapEntry& e : normal.normal_map) {
+            sum += perturb_normal(e.normal, local, tp, noise_generator) * e.value;
+            total += static_cast<float>(e.value);
+        }
+        return unwarp_normal(pat, sum / static_cast<double>(total));
+    }
     if (!normal.normal_map.empty()) {
         // normal_map: the entries perturb the normal in this pattern's space and the results are blended.
         const double value = pattern_value(pat, tp, noise_generator);
@@ -108,7 +122,8 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
         // POV-Ray compat: the slope of any other pattern from four samples, scaled by −5 (its fudge factor).
         const double amount = normal.amount * -5.0 * (0.02 / normal.delta);
         for (const Vec3& dir : kPyramid) {
-            const double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            if (!normal.slope_map.empty()) v = slope_map_value(normal.slope_map, v);
             local += dir * (v * amount);
         }
     }

@@ -7,7 +7,9 @@
 #include <numbers>
 
 #include "core/constants.h"
+#include "texture/fractal.h"
 #include "texture/noise.h"
+#include "texture/pattern_blocks.h"
 
 namespace wardray::texture {
 
@@ -281,20 +283,53 @@ double cylindrical_pattern(const scene::Pattern& pat, const Vec3& p, int generat
     return clip_density(std::sqrt(p.x * p.x + p.z * p.z));
 }
 
+// `average` has no value of its own: the pigment, normal or texture averages its map's entries.
+double average_pattern(const scene::Pattern& pat, const Vec3& p, int generator) { return 0.0; }
+
+double quilted_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return quilted_value(pat, p);
+}
+
+// POV-Ray's spiral angle in the x-y plane, 0..2π, through asin as it computes it.
+double spiral_value(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const double turb =
+        pat.turbulence ? pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator) : 0.0;
+    const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+    double phi = 0.0;
+    if (rad != 0.0)
+        phi = p.x < 0.0 ? 3.0 * std::numbers::pi / 2 - std::asin(p.y / rad) : std::numbers::pi / 2 + std::asin(p.y / rad);
+    return p.z + rad + static_cast<double>(pat.arms) * phi / kTwoPi + turb;
+}
+
+double spiral1_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    return spiral_value(pat, p, generator);
+}
+
+double spiral2_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
+    const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+    return triangle_wave(rad) + triangle_wave(spiral_value(pat, p, generator));
+}
+
 }  // namespace
+
+Vec3 quilted_offset(const scene::Pattern& pat, const Vec3& p) {
+    Vec3 v{p.x - pov_floor(p.x) - 0.5, p.y - pov_floor(p.y) - 0.5, p.z - pov_floor(p.z) - 0.5};
+    const double t = length(v);
+    // POV-Ray's quilt_cubic: a Bezier-like cubic through the controls, scaled by 1/sqrt(3/4).
+    const double it = 1.0 - t;
+    const double it2 = it * it, t2 = t * t;
+    const double c = (t * t2 + 3.0 * t * it2 * pat.control0 + 3.0 * t2 * it * pat.control1) * 1.154700538;
+    return v * c;
+}
+
+double quilted_value(const scene::Pattern& pat, const Vec3& p) {
+    const Vec3 v = quilted_offset(pat, p);
+    return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
+}
 
 double cycloidal(double v) {
     if (v >= 0.0) return std::sin((v - std::floor(v)) * kTwoPi);
     return 0.0 - std::sin((0.0 - (v + std::floor(0.0 - v))) * kTwoPi);
-}
-
-Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p) {
-    Vec3 q = pattern.transform.is_identity() ? p : pattern.transform.inverse_point(p);
-    if (pattern.turbulence && pattern.type != Type::Marble && pattern.type != Type::Wood) {
-        const scene::Turbulence& t = *pattern.turbulence;
-        if (!(t.amount == Vec3{})) q += dturbulence(q, turb_params(t)) * t.amount;
-    }
-    return q;
 }
 
 double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator) {

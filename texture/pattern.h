@@ -17,6 +17,11 @@ double raw_pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise
 /// `noise_generator` is the scene's default, used when the pattern does not name its own.
 double pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise_generator);
 
+/// `quilted`'s displacement in its unit cell (POV-Ray's quilted normal adds it, scaled, to the normal).
+Vec3 quilted_offset(const scene::Pattern& pattern, const Vec3& p);
+/// `quilted`'s value: the mean absolute component of quilted_offset.
+double quilted_value(const scene::Pattern& pattern, const Vec3& p);
+
 /// POV-Ray's `cycloidal`: sin(2π v) computed through the fractional part of v.
 double cycloidal(double v);
 

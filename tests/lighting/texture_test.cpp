@@ -155,7 +155,7 @@ TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
     EXPECT_EQ(t.pigment.pattern.wave, scene::WaveType::Triangle);
     EXPECT_EQ(t.pigment.color_map.size(), 3u);  // marble's default map
     EXPECT_EQ(t.normal.pattern.type, scene::Pattern::Type::Bumps);
-    EXPECT_DOUBLE_EQ(t.normal.amount, 0.4);
+    EXPECT_DOUBLE_EQ(t.normal.amount, static_cast<double>(0.4f));  // POV-Ray keeps bump sizes in single precision
     EXPECT_TRUE(t.finish.reflection_fresnel);
 }
 

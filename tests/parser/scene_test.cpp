@@ -1,5 +1,6 @@
 // Tests of scene statements: camera resolution, lights, objects, textures, unions, global settings, warnings.
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "parser/keywords.h"
@@ -300,7 +301,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     const Scene s = parse_ok(R"(
         julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15 }
         julia_fractal { <0.1, 0, 0, 0> }
-        sphere { 0, 1 pigment { mandel 20 } }
+        sphere { 0, 1 pigment { tiling 1 } }
         #declare Thing = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 1, 1>, 1 }
         object { Thing }
         box { 0, 1 }
@@ -309,7 +310,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
     const std::vector<std::string> expected = {"julia_fractal is not rendered yet",
-                                               "pigment pattern 'mandel' is not rendered yet",
+                                               "pigment pattern 'tiling' is not rendered yet",
                                                "sphere_sweep is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
@@ -479,7 +480,12 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         SCOPED_TRACE(std::string(keyword));
         EXPECT_TRUE(is_keyword(keyword));
         EXPECT_FALSE(is_pattern_keyword(keyword));
-        const std::string pattern = std::string(keyword) + (keyword == "gradient" ? " y" : "");
+        // The patterns that need parameters get a sample of them.
+        static const std::map<std::string_view, const char*> parameters = {
+            {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
+            {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}};
+        const auto sample = parameters.find(keyword);
+        const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
                                  " } }\nsphere { 0, 1 texture { " + pattern +
                                  " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");

@@ -1,0 +1,220 @@
+// Pattern parameters: what follows the fractal, quilted and spiral keywords, their modifiers (exponent, exterior,
+// interior, control0, control1) and `warp { ... }` blocks, read as POV-Ray 3.7's Parse_Pattern and Parse_Warp do.
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/constants.h"
+#include "parser/parser.h"
+
+namespace wardray::parser {
+
+namespace {
+
+using PType = Pattern::Type;
+
+bool is_fractal(PType t) { return t == PType::Mandel || t == PType::Julia || t == PType::Magnet; }
+
+// POV-Ray compat: quilted's controls, a repeat's width and turbulence's omega and lambda are single precision.
+double single(double v) { return static_cast<double>(static_cast<float>(v)); }
+
+}  // namespace
+
+int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
+    switch (pat.type) {
+        case PType::Mandel:
+        case PType::Julia:
+        case PType::Magnet:
+            pat.interior_type = 0;
+            pat.exterior_type = 1;
+            pat.interior_factor = pat.exterior_factor = 1.0;
+            pat.fractal_exponent = 2;
+            if (pat.type == PType::Magnet) {
+                const int kind = static_cast<int>(parse_float());
+                if (kind != 1 && kind != 2) fail(t, "magnet type must be 1 or 2");
+                pat.magnet_type = kind;
+                const Token form = next();
+                if (is_word(form, "julia")) pat.magnet_julia = true;
+                else if (is_word(form, "mandel")) pat.magnet_julia = false;
+                else fail(form, "expected 'mandel' or 'julia' after 'magnet " + std::to_string(kind) + "'");
+            }
+            if (pat.type == PType::Julia || (pat.type == PType::Magnet && pat.magnet_julia)) {
+                const Numeric c = parse_numeric();
+                pat.julia_re = c.v[0];
+                pat.julia_im = c.n > 1 ? c.v[1] : c.v[0];
+                accept(",");
+            }
+            pat.fractal_iterations = static_cast<int>(parse_float());
+            return 0;
+        case PType::PigmentPattern:
+            pat.pigment.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
+            return 0;
+        case PType::Quilted:
+            pat.control0 = pat.control1 = 1.0;
+            pat.frequency = 0.0;
+            return 0;
+        case PType::Spiral1:
+        case PType::Spiral2:
+            // POV-Ray compat: the arm count is a short, and spirals default to the triangle wave.
+            pat.arms = static_cast<short>(parse_float());
+            pat.wave = WaveType::Triangle;
+            return 0;
+        default:
+            return 0;
+    }
+}
+
+bool Parser::parse_pattern_extra(const Token& t, Pattern& pat) {
+    const std::string w = t.text;
+    if (w == "warp") {
+        next();
+        parse_warp(t, pat);
+        return true;
+    }
+    if (w == "control0" || w == "control1") {
+        if (pat.type != PType::Quilted) return false;
+        next();
+        (w == "control0" ? pat.control0 : pat.control1) = single(parse_float());
+        return true;
+    }
+    if (w != "exponent" && w != "exterior" && w != "interior") return false;
+    if (!is_fractal(pat.type) || (w == "exponent" && pat.type == PType::Magnet)) return false;
+    next();
+    const int v = static_cast<int>(parse_float());
+    if (w == "exponent") {
+        pat.fractal_exponent = v;
+        if (v < 2 || v > 33) {
+            warn(t, "invalid " + std::string(pat.type == PType::Mandel ? "mandel" : "julia") +
+                        " pattern exponent; supported exponents are 2 to 33, using 2");
+            pat.fractal_exponent = 2;
+        }
+        return true;
+    }
+    accept(",");
+    const double factor = parse_float();
+    if (w == "exterior") {
+        if (v < 0 || v > 8) fail(t, "invalid fractal pattern exterior type; valid types are 0 to 8");
+        pat.exterior_type = v;
+        pat.exterior_factor = factor;
+    } else {
+        if (v < 0 || v > 6) fail(t, "invalid fractal pattern interior type; valid types are 0 to 6");
+        pat.interior_type = v;
+        pat.interior_factor = factor;
+    }
+    return true;
+}
+
+void Parser::parse_warp(const Token& kw, Pattern& pat) {
+    expect("{");
+    using WType = Warp::Type;
+    Warp w;
+    const Token t = next();
+    if (is_word(t, "turbulence")) {
+        w.type = WType::Turbulence;
+        w.turbulence.amount = parse_vector();
+        while (true) {
+            if (accept_keyword("octaves")) w.turbulence.octaves = std::clamp(static_cast<int>(parse_float()), 1, 10);
+            else if (accept_keyword("omega")) w.turbulence.omega = single(parse_float());
+            else if (accept_keyword("lambda")) w.turbulence.lambda = single(parse_float());
+            else break;
+        }
+    } else if (is_word(t, "repeat")) {
+        w.type = WType::Repeat;
+        const Vec3 v = parse_vector();
+        int axes = 0;
+        for (int i = 0; i < 3; ++i)
+            if (v[i] != 0.0) w.axis = i, ++axes;
+        if (axes == 0) fail(t, "no axis specified in repeat");
+        if (axes > 1) fail(t, "can only repeat along 1 axis");
+        w.width = single(v[w.axis]);  // POV-Ray compat: the repeat width is single precision
+        while (true) {
+            if (accept_keyword("offset")) {
+                w.offset = parse_vector();
+            } else if (accept_keyword("flip")) {
+                const Vec3 f = parse_vector();
+                for (int i = 0; i < 3; ++i) w.flip[i] = f[i] != 0.0 ? -1.0 : 1.0;
+            } else {
+                break;
+            }
+        }
+    } else if (is_word(t, "black_hole")) {
+        w.type = WType::BlackHole;
+        w.center = parse_vector();
+        accept(",");
+        w.radius = parse_float();
+        while (true) {
+            if (accept_keyword("strength")) w.strength = parse_float();
+            else if (accept_keyword("falloff")) w.falloff = parse_float();
+            else if (accept_keyword("inverse")) w.inverse = true;
+            else if (accept_keyword("type")) w.hole_type = static_cast<int>(parse_float());
+            else if (accept_keyword("repeat")) w.repeat_vector = parse_vector(), w.repeat = true, check_black_hole(t, w);
+            else if (accept_keyword("turbulence")) w.uncertainty = parse_vector(), w.uncertain = true, check_black_hole(t, w);
+            else break;
+        }
+    } else if (is_word(t, "cylindrical") || is_word(t, "spherical") || is_word(t, "toroidal")) {
+        w.type = t.text == "cylindrical" ? WType::Cylindrical : t.text == "spherical" ? WType::Spherical : WType::Toroidal;
+        while (true) {
+            if (accept_keyword("orientation")) w.orientation = normalize(parse_vector());
+            else if (accept_keyword("dist_exp")) w.dist_exp = parse_float();
+            else if (w.type == WType::Toroidal && accept_keyword("major_radius")) w.major_radius = parse_float();
+            else break;
+        }
+    } else if (is_word(t, "planar")) {
+        w.type = WType::Planar;
+        if (!is_punct(peek(), "}")) {
+            w.orientation = normalize(parse_vector());
+            accept(",");
+            w.plane_offset = parse_float();
+        }
+    } else if (is_word(t, "cubic")) {
+        w.type = WType::Cubic;
+    } else {
+        fail(t, "expected a warp type (turbulence, repeat, black_hole, cylindrical, spherical, toroidal, planar or "
+                "cubic) but found " + describe_token(t));
+    }
+    if (!accept("}")) fail(peek(), "expected '}' to close '" + kw.text + "' but found " + describe_token(peek()));
+    // POV-Ray's warp list runs from the last item given to the first: the new warp goes in front, after the
+    // transforms given so far (which become a transform warp of their own).
+    if (!pat.transform.is_identity()) {
+        Warp tr;
+        tr.transform = pat.transform;
+        pat.warps.insert(pat.warps.begin(), tr);
+        pat.transform = Transform{};
+    }
+    pat.warps.insert(pat.warps.begin(), w);
+}
+
+std::vector<SlopeMapEntry> Parser::parse_slope_map() {
+    // `slope_map { [value <height, slope>] ... }` (POV-Ray's SLOPE_TYPE blend map).
+    expect("{");
+    std::vector<SlopeMapEntry> map;
+    while (!accept("}")) {
+        const Token open = expect("[");
+        SlopeMapEntry e;
+        e.value = static_cast<double>(static_cast<float>(parse_float()));
+        accept(",");
+        const Numeric hs = parse_numeric();
+        e.height = hs.v[0];
+        e.slope = hs.n > 1 ? hs.v[1] : hs.v[0];
+        expect("]");
+        map.push_back(e);
+    }
+    return map;
+}
+
+void Parser::check_black_hole(const Token& at, Warp& w) {
+    // POV-Ray's Check_BH_Parameters: a repeated hole stays inside its cell.
+    if (!w.repeat) return;
+    for (int i = 0; i < 3; ++i) {
+        if (w.repeat_vector[i] <= 0.0) continue;
+        if (w.center[i] < w.radius) w.center[i] = w.radius;
+        const double least = w.center[i] + w.radius + w.uncertainty[i];
+        if (w.repeat_vector[i] < least) {
+            w.repeat_vector[i] = least;
+            warn(at, "black hole repeat vector too small; increased to " + std::to_string(least));
+        }
+        if (w.repeat_vector[i] < kPovEpsilon) w.repeat_vector[i] = 0.0;
+    }
+}
+
+}  // namespace wardray::parser
