@@ -111,7 +111,7 @@ void FunctionProgram::emit_unsupported(std::uint32_t nargs, const std::string& r
     emit(ins);
 }
 
-double FunctionProgram::evaluate(std::span<const double> args) const {
+double FunctionProgram::evaluate(std::span<const double> args, const EvalContext& context) const {
     // Missing arguments read as 0: copy into a padded buffer only when the caller gave too few.
     std::array<double, 16> padded;
     const double* a = args.data();
@@ -122,17 +122,17 @@ double FunctionProgram::evaluate(std::span<const double> args) const {
         std::vector<double> big(m_params.size(), 0.0);
         std::copy(args.begin(), args.end(), big.begin());
         std::vector<double> stack(frame_size());
-        return run(big.data(), big.size(), stack.data());
+        return run(big.data(), big.size(), stack.data(), context);
     }
     if (frame_size() <= k_local_stack) {
         std::array<double, k_local_stack> stack;
-        return run(a, m_params.size(), stack.data());
+        return run(a, m_params.size(), stack.data(), context);
     }
     std::vector<double> stack(frame_size());
-    return run(a, m_params.size(), stack.data());
+    return run(a, m_params.size(), stack.data(), context);
 }
 
-double FunctionProgram::run(const double* args, std::size_t nargs, double* stack) const {
+double FunctionProgram::run(const double* args, std::size_t nargs, double* stack, const EvalContext& context) const {
     using Op = Instruction::Op;
     // The local slots sit below the operand stack; they start at 0 so every run is deterministic.
     double* const locals = stack;
@@ -187,9 +187,9 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
                 double* callee_args = stack + sp;
                 double result = 0.0;
                 if (ins.b >= callee.arity()) {
-                    result = callee.run(callee_args, ins.b, stack + sp + ins.b);
+                    result = callee.run(callee_args, ins.b, stack + sp + ins.b, context);
                 } else {
-                    result = callee.evaluate(std::span<const double>(callee_args, ins.b));
+                    result = callee.evaluate(std::span<const double>(callee_args, ins.b), context);
                 }
                 stack[sp++] = result;
                 break;
@@ -200,7 +200,7 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
                 break;
             case Op::Internal:
                 sp -= ins.b;
-                stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp);
+                stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp, context);
                 ++sp;
                 break;
             case Op::Local: stack[sp++] = locals[ins.a]; break;

@@ -18,6 +18,11 @@ enum class MathFn1 : std::uint8_t {
 /// The built-in two-argument math functions a program can call.
 enum class MathFn2 : std::uint8_t { Atan2, Pow, Mod, Div, Min, Max };
 
+/// What an evaluation needs from the scene besides its arguments.
+struct EvalContext {
+    int noise_generator = 2;  ///< the scene's global noise_generator (f_noise3d and the noise patterns)
+};
+
 /// One stack-machine instruction; `a` is an argument index, a local slot, a count, a jump target or a table index;
 /// `b` is a count or, for the loop instructions, a local slot.
 struct Instruction {
@@ -60,7 +65,7 @@ public:
 
     /// Evaluates the function; `args` must hold arity() values (missing ones read as 0, extra ones are ignored).
     /// Allocates nothing for programs of ordinary depth; never throws.
-    double evaluate(std::span<const double> args) const;
+    double evaluate(std::span<const double> args, const EvalContext& context = {}) const;
 
     /// Why the function cannot be evaluated faithfully yet (it calls an internal or pattern function, directly
     /// or through a callee), or empty when it can. Such calls evaluate to 0.
@@ -87,7 +92,7 @@ public:
     const std::vector<Instruction>& code() const { return m_code; }
 
 private:
-    double run(const double* args, std::size_t nargs, double* stack) const;
+    double run(const double* args, std::size_t nargs, double* stack, const EvalContext& context) const;
     /// Values a run needs in its stack buffer: the local slots, then the operand stack.
     std::size_t frame_size() const { return m_locals + static_cast<std::size_t>(m_max_depth) + 1; }
 
