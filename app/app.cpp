@@ -83,6 +83,7 @@ int run_scene(Options options, const std::string& argv0, Clock::time_point start
     warn_skipped_objects(scene, built->geometry->skipped_objects());
     const Illumination illumination = build_illumination(scene, *built->geometry, job->options);
     const RenderedFrame frame = render_frame(scene, illumination, job->options);
+    for (const Diagnostic& w : built->geometry->shape_warnings()) std::cerr << format_diagnostic(w);
     const auto write_start = Clock::now();
     if (!write_outputs(*job, scene, illumination, frame.result)) return kExitScene;
     const PhaseTimes times{loaded->seconds, built->seconds, frame.seconds, seconds_since(write_start)};

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace wardray::geometry {
 
@@ -252,6 +253,33 @@ SurfaceHits IsosurfaceShape::intersect_all(const LocalRay& ray, double t_min, do
         hits.push({t, n, dot(n, ray.direction) < 0.0});
     }
     return hits;
+}
+
+std::optional<Diagnostic> IsosurfaceShape::gradient_warning() const {
+    const scene::Isosurface& iso = *m_iso;
+    const double found = gradient_found(), set = iso.max_gradient;
+    if (iso.evaluate || !(found > k_epsilon) || !(set > k_epsilon)) return std::nullopt;
+    // POV-Ray compat: its thresholds for "too low" and "too high", and its wording.
+    const double diff = set - found, ratio = std::fabs(set / found);
+    char text[256];
+    if ((ratio <= 0.9 && diff <= -0.5) || ((ratio <= 0.95 || diff <= -0.1) && set < 10.0)) {
+        std::snprintf(text, sizeof text,
+                      "the maximum gradient found was %0.3f, but max_gradient of the isosurface was set to %0.3f; "
+                      "the isosurface may contain holes: adjust max_gradient to get a proper rendering",
+                      static_cast<float>(found), static_cast<float>(set));
+    } else if (diff >= 10.0 || (ratio >= 1.1 && diff >= 0.5)) {
+        std::snprintf(text, sizeof text,
+                      "the maximum gradient found was %0.3f, but max_gradient of the isosurface was set to %0.3f; "
+                      "adjust max_gradient to get a faster rendering",
+                      static_cast<float>(found), static_cast<float>(set));
+    } else {
+        return std::nullopt;
+    }
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.loc = iso.function_loc;
+    d.message = text;
+    return d;
 }
 
 }  // namespace wardray::geometry

@@ -44,6 +44,9 @@ public:
     const scene::Isosurface& description() const { return *m_iso; }
     /// The largest gradient met so far.
     double gradient_found() const { return m_gradient->found.load(std::memory_order_relaxed); }
+    /// After rendering: POV-Ray's warning that max_gradient is lower than the gradient found (holes) or much
+    /// higher (slow), at the function; nothing when it fits or with `evaluate`.
+    std::optional<Diagnostic> gradient_warning() const;
 
 private:
     struct Trace;

@@ -73,6 +73,8 @@ Isosurface Parser::read_isosurface(const Token& kw) {
         } else if (w == "evaluate") {
             next();
             iso.evaluate = true;
+            warn(t, "isosurface 'evaluate' is approximated: the gradient adapts along each ray, not across the "
+                    "render as in POV-Ray");
             for (int i = 0; i < 3; ++i) {
                 if (i > 0) accept(",");
                 iso.eval[static_cast<std::size_t>(i)] = parse_float();
