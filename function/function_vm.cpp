@@ -74,6 +74,7 @@ int stack_effect(const Instruction& ins) {
         case Op::Select4: return -3;
         case Op::Call:
         case Op::Internal:
+        case Op::External:
         case Op::Unsupported: return 1 - static_cast<int>(ins.b);
         default: return -1;  // binary operators, Call2, JumpIfZero, StoreLocal
     }
@@ -82,6 +83,20 @@ int stack_effect(const Instruction& ins) {
 }  // namespace
 
 FunctionProgram::FunctionProgram(std::vector<std::string> params) : m_params(std::move(params)) {}
+
+bool FunctionProgram::operator==(const FunctionProgram& o) const {
+    if (m_params != o.m_params || m_code.size() != o.m_code.size() || m_callees.size() != o.m_callees.size() ||
+        m_externals.size() != o.m_externals.size() || m_unsupported != o.m_unsupported || m_locals != o.m_locals)
+        return false;
+    for (std::size_t i = 0; i < m_code.size(); ++i) {
+        const Instruction &a = m_code[i], &b = o.m_code[i];
+        const bool same_value = a.value == b.value || (std::isnan(a.value) && std::isnan(b.value));
+        if (a.op != b.op || a.a != b.a || a.b != b.b || !same_value) return false;
+    }
+    for (std::size_t i = 0; i < m_callees.size(); ++i)
+        if (!(*m_callees[i] == *o.m_callees[i])) return false;
+    return true;
+}
 
 std::size_t FunctionProgram::emit(Instruction ins) {
     m_depth += stack_effect(ins);
@@ -100,6 +115,15 @@ void FunctionProgram::emit_call(std::shared_ptr<const FunctionProgram> callee, s
     ins.a = static_cast<std::uint32_t>(m_callees.size());
     ins.b = nargs;
     m_callees.push_back(std::move(callee));
+    emit(ins);
+}
+
+void FunctionProgram::emit_external(std::shared_ptr<const ExternalFunction> external, std::uint32_t nargs) {
+    Instruction ins;
+    ins.op = Instruction::Op::External;
+    ins.a = static_cast<std::uint32_t>(m_externals.size());
+    ins.b = nargs;
+    m_externals.push_back(std::move(external));
     emit(ins);
 }
 
@@ -201,6 +225,11 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
             case Op::Internal:
                 sp -= ins.b;
                 stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp, context);
+                ++sp;
+                break;
+            case Op::External:
+                sp -= ins.b;
+                stack[sp] = m_externals[ins.a]->evaluate(stack + sp, ins.b, context);
                 ++sp;
                 break;
             case Op::Local: stack[sp++] = locals[ins.a]; break;

@@ -181,13 +181,6 @@ double dupin_cyclid(const double* a, const EvalContext&) {
 double ellipsoid(const double* a, const EvalContext&) {
     return std::sqrt(sq(a[0]) * sq(a[3]) + sq(a[1]) * sq(a[4]) + sq(a[2]) * sq(a[5]));
 }
-double enneper(const double* a, const EvalContext&) {
-    const Point p(a);
-    const double z = std::fabs(a[2]) < 0.2 ? 0.2 : a[2];  // POV-Ray compat: also for z < -0.2 it stays as given
-    const double r = (p.y2 - p.x2) / (2 * z) + 2 * p.z2 / 9 + 2.0 / 3.0;
-    const double r2 = (p.y2 - p.x2) / (4 * z) - 0.25 * (p.x2 + p.y2 + (8.0 / 9.0) * p.z2) + 2.0 / 9.0;
-    return strength(a, -(r * r * r - 6 * r2 * r2));
-}
 double flange_cover(const double* a, const EvalContext&) {
     const auto e = axis_ellipsoids(a);
     return a[6] - (e[0] + e[1] + e[2]) * a[5];
@@ -572,11 +565,12 @@ double noise_with_generator(const double* a, const EvalContext&) {
     return noise({a[0], a[1], a[2]}, noise_generator_of(a[3]));
 }
 
-// internal(0) .. internal(78); null where wardray does not evaluate it (77, pattern functions, is built apart).
+// internal(0) .. internal(78); null where wardray does not evaluate it: 18 (f_enneper, whose values differ from
+// POV-Ray 3.7's) and 77 (the pattern function, built apart).
 constexpr std::array<InternalFunction, 79> k_functions = {
     algbr_cyl1, algbr_cyl2, algbr_cyl3, algbr_cyl4, bicorn, bifolia, blob, blob2, boy_surface, comma,
     cross_ellipsoids, crossed_trough, cubic_saddle, cushion, devils_curve, devils_curve_2d, dupin_cyclid, ellipsoid,
-    enneper, flange_cover, folium_surface, folium_surface_2d, glob, heart, helical_torus, helix1, helix2, hex_x,
+    nullptr, flange_cover, folium_surface, folium_surface_2d, glob, heart, helical_torus, helix1, helix2, hex_x,
     hex_y, hetero_mf, hunt_surface, hyperbolic_torus, isect_ellipsoids, kampyle_of_eudoxus, kampyle_of_eudoxus_2d,
     klein_bottle, kummer_surface_v1, kummer_surface_v2, lemniscate_of_gerono, lemniscate_of_gerono_2d, mesh1, mitre,
     nodal_cubic, odd, ovals_of_cassini, paraboloid, parabolic_torus, polar_angle, pillow, piriform, piriform_2d,

@@ -50,7 +50,7 @@ const std::vector<std::string_view> k_patterns = {
     "aoi", "average", "density_file", "facets", "image_pattern", "mandel", "julia", "magnet", "pavement",
     "pigment_pattern", "quilted", "spiral1", "spiral2", "square", "tiling", "triangular", "object", "slope",
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
-    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping", "function"};
+    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping"};
 
 const std::vector<std::string_view> k_handled = {
     "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",

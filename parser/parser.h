@@ -69,6 +69,7 @@ private:
     /// Reads pigment items up to `close` ('}' of a pigment block or ']' of a pigment_map entry).
     void parse_pigment_items(Pigment& p, const Token& kw, const char* close);
     Pigment parse_pigment_body(const Token& kw) final;
+    Pigment parse_function_pigment(const Token& kw) final { return parse_pigment_body(kw); }
     Normal parse_normal_body(const Token& kw) final;
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);

@@ -179,7 +179,7 @@ struct Text {
 /// [accuracy a] [max_gradient g] [evaluate p0, p1, p2] [open] [max_trace n | all_intersections] }`: the surface
 /// f(x, y, z) = t inside its container, inside where f < t; a closed isosurface is capped by the container.
 struct Isosurface {
-    std::shared_ptr<const function::FunctionProgram> function;
+    function::SharedFunction function;
     bool sphere_container = false;
     Vec3 corner1{-1.0, -1.0, -1.0};  ///< the container box, ordered so corner1 <= corner2
     Vec3 corner2{1.0, 1.0, 1.0};

@@ -1,6 +1,7 @@
 // Scene description, textures: patterns, pigments, normals, finishes and textures with their maps.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "core/diagnostics.h"
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "function/function_vm.h"
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
@@ -51,7 +53,8 @@ struct Turbulence {
     X(boxed, Boxed)               \
     X(spherical, Spherical)       \
     X(planar, Planar)             \
-    X(cylindrical, Cylindrical)
+    X(cylindrical, Cylindrical)   \
+    X(function, Function)
 
 /// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
 /// texture maps).
@@ -75,6 +78,7 @@ struct Pattern {
     double crackle_offset = 0.0;
     bool crackle_solid = false;
     std::optional<Turbulence> turbulence;
+    function::SharedFunction function;  ///< the `function { ... }` pattern's function
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     bool operator==(const Pattern&) const = default;
 };

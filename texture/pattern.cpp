@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/constants.h"
+#include "texture/function_pattern.h"
 #include "texture/noise.h"
 
 namespace wardray::texture {

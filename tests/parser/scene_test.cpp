@@ -495,7 +495,9 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         SCOPED_TRACE(std::string(keyword));
         EXPECT_TRUE(is_keyword(keyword));
         EXPECT_FALSE(is_pattern_keyword(keyword));
-        const std::string pattern = std::string(keyword) + (keyword == "gradient" ? " y" : "");
+        const std::string pattern = std::string(keyword) + (keyword == "gradient"   ? " y"
+                                                             : keyword == "function" ? " { x + y }"
+                                                                                     : "");
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
                                  " } }\nsphere { 0, 1 texture { " + pattern +
                                  " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");
