@@ -79,6 +79,7 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     warn_skipped_objects(scene, built->geometry->skipped_objects());
     const Illumination illumination = build_illumination(scene, *built->geometry, job.options);
     const RenderedFrame rendered = render_frame(scene, illumination, job.options, job.region);
+    for (const Diagnostic& w : built->geometry->shape_warnings()) std::cerr << format_diagnostic(w);
     const auto write_start = Clock::now();
     Job frame_job = job;
     frame_job.output = frame.output;

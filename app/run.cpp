@@ -18,6 +18,8 @@
 #include "render/film.h"
 #include "render/output_gamma.h"
 #include "texture/noise.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
 
 #ifndef WARDRAY_SOURCE_DIR
 #define WARDRAY_SOURCE_DIR ""
@@ -81,6 +83,12 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.query = &object_query;
     parse_options.vector_turbulence = [](const Vec3& p, int octaves, double omega, double lambda) {
         return texture::dturbulence(p, texture::TurbulenceParams{octaves, omega, lambda});
+    };
+    parse_options.pattern_value = [](const scene::Pattern& pattern, const Vec3& p, int noise_generator) {
+        return texture::pattern_value(pattern, texture::warp_point(pattern, p), noise_generator);
+    };
+    parse_options.pigment_value = [](const scene::Pigment& pigment, const Vec3& p, int noise_generator) {
+        return texture::evaluate_pigment(pigment, p, noise_generator);
     };
     parse_options.debug_output = [](const std::string& text) { std::cerr << text << std::flush; };
     return parse_options;

@@ -74,6 +74,7 @@ int stack_effect(const Instruction& ins) {
         case Op::Select4: return -3;
         case Op::Call:
         case Op::Internal:
+        case Op::External:
         case Op::Unsupported: return 1 - static_cast<int>(ins.b);
         default: return -1;  // binary operators, Call2, JumpIfZero, StoreLocal
     }
@@ -82,6 +83,20 @@ int stack_effect(const Instruction& ins) {
 }  // namespace
 
 FunctionProgram::FunctionProgram(std::vector<std::string> params) : m_params(std::move(params)) {}
+
+bool FunctionProgram::operator==(const FunctionProgram& o) const {
+    if (m_params != o.m_params || m_code.size() != o.m_code.size() || m_callees.size() != o.m_callees.size() ||
+        m_externals.size() != o.m_externals.size() || m_unsupported != o.m_unsupported || m_locals != o.m_locals)
+        return false;
+    for (std::size_t i = 0; i < m_code.size(); ++i) {
+        const Instruction &a = m_code[i], &b = o.m_code[i];
+        const bool same_value = a.value == b.value || (std::isnan(a.value) && std::isnan(b.value));
+        if (a.op != b.op || a.a != b.a || a.b != b.b || !same_value) return false;
+    }
+    for (std::size_t i = 0; i < m_callees.size(); ++i)
+        if (!(*m_callees[i] == *o.m_callees[i])) return false;
+    return true;
+}
 
 std::size_t FunctionProgram::emit(Instruction ins) {
     m_depth += stack_effect(ins);
@@ -103,6 +118,15 @@ void FunctionProgram::emit_call(std::shared_ptr<const FunctionProgram> callee, s
     emit(ins);
 }
 
+void FunctionProgram::emit_external(std::shared_ptr<const ExternalFunction> external, std::uint32_t nargs) {
+    Instruction ins;
+    ins.op = Instruction::Op::External;
+    ins.a = static_cast<std::uint32_t>(m_externals.size());
+    ins.b = nargs;
+    m_externals.push_back(std::move(external));
+    emit(ins);
+}
+
 void FunctionProgram::emit_unsupported(std::uint32_t nargs, const std::string& reason) {
     if (m_unsupported.empty()) m_unsupported = reason;
     Instruction ins;
@@ -111,7 +135,7 @@ void FunctionProgram::emit_unsupported(std::uint32_t nargs, const std::string& r
     emit(ins);
 }
 
-double FunctionProgram::evaluate(std::span<const double> args) const {
+double FunctionProgram::evaluate(std::span<const double> args, const EvalContext& context) const {
     // Missing arguments read as 0: copy into a padded buffer only when the caller gave too few.
     std::array<double, 16> padded;
     const double* a = args.data();
@@ -122,17 +146,17 @@ double FunctionProgram::evaluate(std::span<const double> args) const {
         std::vector<double> big(m_params.size(), 0.0);
         std::copy(args.begin(), args.end(), big.begin());
         std::vector<double> stack(frame_size());
-        return run(big.data(), big.size(), stack.data());
+        return run(big.data(), big.size(), stack.data(), context);
     }
     if (frame_size() <= k_local_stack) {
         std::array<double, k_local_stack> stack;
-        return run(a, m_params.size(), stack.data());
+        return run(a, m_params.size(), stack.data(), context);
     }
     std::vector<double> stack(frame_size());
-    return run(a, m_params.size(), stack.data());
+    return run(a, m_params.size(), stack.data(), context);
 }
 
-double FunctionProgram::run(const double* args, std::size_t nargs, double* stack) const {
+double FunctionProgram::run(const double* args, std::size_t nargs, double* stack, const EvalContext& context) const {
     using Op = Instruction::Op;
     // The local slots sit below the operand stack; they start at 0 so every run is deterministic.
     double* const locals = stack;
@@ -187,9 +211,9 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
                 double* callee_args = stack + sp;
                 double result = 0.0;
                 if (ins.b >= callee.arity()) {
-                    result = callee.run(callee_args, ins.b, stack + sp + ins.b);
+                    result = callee.run(callee_args, ins.b, stack + sp + ins.b, context);
                 } else {
-                    result = callee.evaluate(std::span<const double>(callee_args, ins.b));
+                    result = callee.evaluate(std::span<const double>(callee_args, ins.b), context);
                 }
                 stack[sp++] = result;
                 break;
@@ -200,7 +224,12 @@ double FunctionProgram::run(const double* args, std::size_t nargs, double* stack
                 break;
             case Op::Internal:
                 sp -= ins.b;
-                stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp);
+                stack[sp] = internal_function(static_cast<int>(ins.a))(stack + sp, context);
+                ++sp;
+                break;
+            case Op::External:
+                sp -= ins.b;
+                stack[sp] = m_externals[ins.a]->evaluate(stack + sp, ins.b, context);
                 ++sp;
                 break;
             case Op::Local: stack[sp++] = locals[ins.a]; break;

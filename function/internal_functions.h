@@ -4,10 +4,12 @@
 
 #include <cstddef>
 
+#include "function/function_vm.h"
+
 namespace wardray::function {
 
 /// An internal function over its arguments: x, y, z, then its own parameters P0, P1, ...
-using InternalFunction = double (*)(const double* args);
+using InternalFunction = double (*)(const double* args, const EvalContext& context);
 
 /// How many arguments internal function `n` takes (x, y, z and its parameters), or 0 for no such function.
 std::size_t internal_function_arity(int n);

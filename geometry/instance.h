@@ -12,6 +12,7 @@
 #include "geometry/cone.h"
 #include "geometry/csg.h"
 #include "geometry/disc.h"
+#include "geometry/isosurface.h"
 #include "geometry/lathe.h"
 #include "geometry/mesh.h"
 #include "geometry/plane.h"
@@ -31,7 +32,7 @@ namespace wardray::geometry {
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, CsgShape>;
+                              TextShape, IsosurfaceShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).

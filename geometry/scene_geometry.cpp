@@ -404,6 +404,15 @@ std::optional<Bounds> SceneGeometry::bounds() const { return m_impl->bounds; }
 
 const std::vector<std::uint32_t>& SceneGeometry::skipped_objects() const { return m_impl->skipped; }
 
+std::vector<Diagnostic> SceneGeometry::shape_warnings() const {
+    // POV-Ray compat: only top-level objects report (CSG does not pass the message on to its children).
+    std::vector<Diagnostic> out;
+    for (const ShapeInstance& inst : m_impl->bounded)
+        if (const auto* iso = std::get_if<IsosurfaceShape>(&inst.shape()))
+            if (auto w = iso->gradient_warning()) out.push_back(std::move(*w));
+    return out;
+}
+
 double SceneGeometry::self_intersection_offset(const Vec3& p) const {
     return 1e-9 * std::fmax(max_abs_component(p), 1e-6 * m_impl->magnitude);
 }

@@ -53,6 +53,8 @@ public:
     /// Indices of the objects left out because they cannot be intersected without NaN (singular transform,
     /// zero radius, zero plane normal, non-finite numbers); the parser reports them.
     const std::vector<std::uint32_t>& skipped_objects() const;
+    /// Warnings the shapes have after rendering (an isosurface's max_gradient set too low or too high).
+    std::vector<Diagnostic> shape_warnings() const;
     /// Like the free self_intersection_offset(), with a floor of 1e-6 of the scene's magnitude so that points
     /// at or near the origin still get an offset that matches the size of the objects around them.
     double self_intersection_offset(const Vec3& p) const;

@@ -89,6 +89,9 @@ protected:
     virtual std::optional<Value> parse_item_value(const Token& t) = 0;
     /// A colour expression (the texture readers').
     virtual Color parse_color() = 0;
+    /// The `{ ... }` block of `function { pattern { ... } }` or `function { pigment { ... } }` (the texture
+    /// readers').
+    virtual Pigment parse_function_pigment(const Token& kw) = 0;
 
     std::vector<std::uint32_t> m_rand_streams;  ///< states of the streams seed() created
     std::uint64_t m_divisions_by_zero = 0;       ///< divisions by zero so far (each warned about)

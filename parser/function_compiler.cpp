@@ -8,6 +8,7 @@
 #include "function/internal_functions.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
+#include "parser/pattern_functions.h"
 
 namespace wardray::parser {
 
@@ -185,12 +186,32 @@ private:
                 return;
             }
             case UserFunction::Kind::Pattern:
-                m_prog.emit_unsupported(n, "pattern function is not rendered yet");
+                if (!m_p.m_options.pattern_value) {
+                    m_prog.emit_unsupported(n, "pattern function is not rendered yet");
+                    return;
+                }
+                m_prog.emit_external(make_pattern_function(f.pigment, m_p.m_options), n);
+                return;
+            case UserFunction::Kind::Pigment: {
+                // POV-Ray compat: a pigment function gives a float through one of its colour's items.
+                if (!m_p.is_punct(m_p.peek(), ".") || !m_p.m_options.pigment_value) break;
+                m_p.next();
+                const Token item = m_p.expect_identifier();
+                const int channel = pigment_channel(item.text.view());
+                if (channel < 0) m_p.fail(item, "unknown dot item '." + item.text + "' of a pigment function");
+                m_prog.emit_external(make_pigment_channel(f.pigment, channel, m_p.m_options), n);
+                return;
+            }
+            case UserFunction::Kind::Spline:
+                // Read and flagged: the function then evaluates this call to 0 and its user warns.
+                if (m_p.accept(".")) m_p.expect_identifier();
+                m_prog.emit_unsupported(n, "a spline function called inside a function is not rendered yet");
                 return;
             default:
-                m_p.fail(t, "'" + t.text + "' returns a vector or colour; only float functions can be called "
-                                           "inside a function yet");
+                break;
         }
+        m_p.fail(t, "'" + t.text + "' returns a vector or colour; only float functions and pigment functions "
+                                   "with an item such as .red can be called inside a function");
     }
 
     void primary() {
@@ -454,7 +475,7 @@ std::shared_ptr<const UserFunction> Evaluator::parse_user_function(const Token& 
     if (is_word(first, "pattern") || is_word(first, "pigment")) {
         const Token block = next();
         f->kind = first.text == "pattern" ? UserFunction::Kind::Pattern : UserFunction::Kind::Pigment;
-        skip_block(block);
+        f->pigment = std::make_shared<const Pigment>(parse_function_pigment(block));
         expect("}");
         return f;
     }
@@ -500,12 +521,21 @@ Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) 
             args.resize(3, 0.0);
             return Numeric::vector3(f.transform.point({args[0], args[1], args[2]}));
         }
-        case UserFunction::Kind::Pattern:
-            warn_once(name, "pattern function is not rendered yet (" + what + " evaluates to 0)");
-            return Numeric::scalar(0.0);
+        case UserFunction::Kind::Pattern: {
+            if (!m_options.pattern_value) {
+                warn_once(name, "pattern function is not rendered yet (" + what + " evaluates to 0)");
+                return Numeric::scalar(0.0);
+            }
+            args.resize(std::max<std::size_t>(args.size(), 3), 0.0);
+            return Numeric::scalar(m_options.pattern_value(f.pigment->pattern, {args[0], args[1], args[2]}, 2));
+        }
         case UserFunction::Kind::Pigment:
-            warn_once(name, "pigment function is not rendered yet (" + what + " evaluates to black)");
-            return Numeric::color(Color{});
+            if (!m_options.pigment_value) {
+                warn_once(name, "pigment function is not rendered yet (" + what + " evaluates to black)");
+                return Numeric::color(Color{});
+            }
+            args.resize(std::max<std::size_t>(args.size(), 3), 0.0);
+            return Numeric::color(m_options.pigment_value(*f.pigment, {args[0], args[1], args[2]}, 2));
         case UserFunction::Kind::Spline:
             if (args.size() != 1) fail(name, what + " is a spline function: it takes 1 argument");
             return spline_value(*f.spline, f.spline->type, args[0]);

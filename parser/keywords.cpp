@@ -36,7 +36,7 @@ const std::vector<std::string_view> k_reserved = {
 
 // Object kinds that are valid POV-Ray but not drawn yet (the drawn ones are WARDRAY_SHAPES, scene/shapes.h).
 const std::vector<std::string_view> k_unsupported_objects = {
-    "blob", "height_field", "isosurface", "parametric", "julia_fractal", "sphere_sweep", "bicubic_patch", "cubic",
+    "blob", "height_field", "parametric", "julia_fractal", "sphere_sweep", "bicubic_patch", "cubic",
     "poly", "polynomial", "ovus", "lemon", "intersection", "difference", "merge", "light_group"};
 
 const std::vector<std::string_view> k_unsupported_blocks = {
@@ -50,7 +50,7 @@ const std::vector<std::string_view> k_patterns = {
     "aoi", "density_file", "facets", "image_pattern", "pavement",
     "tiling", "object", "slope",
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
-    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping", "function"};
+    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping"};
 
 const std::vector<std::string_view> k_handled = {
     "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",

@@ -84,6 +84,11 @@ struct ParseOptions {
     std::function<std::shared_ptr<const ImageData>(const std::filesystem::path& file, bool& encoded,
                                                    std::string& error)>
         read_image;
+    /// The texture layer's pattern value at p (POV-Ray's Evaluate_TPat after the pattern's warps and transform),
+    /// for `function { pattern { ... } }`; when empty such functions evaluate to 0 with a warning.
+    std::function<double(const Pattern& pattern, const Vec3& p, int noise_generator)> pattern_value;
+    /// The texture layer's pigment colour at p, for `function { pigment { ... } }`; when empty it is black.
+    std::function<Color(const Pigment& pigment, const Vec3& p, int noise_generator)> pigment_value;
 };
 
 /// The outcome of a parse: a scene when there was no error, and every diagnostic in source order.

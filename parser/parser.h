@@ -75,6 +75,7 @@ private:
     /// Reads pigment items up to `close` ('}' of a pigment block or ']' of a pigment_map entry).
     void parse_pigment_items(Pigment& p, const Token& kw, const char* close);
     Pigment parse_pigment_body(const Token& kw, const Pigment* base = nullptr) final;
+    Pigment parse_function_pigment(const Token& kw) final { return parse_pigment_body(kw); }
     Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) final;
     Pigment parse_density_body(const Token& kw) final;
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).

@@ -89,6 +89,13 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
         case PType::Gradient:
             pat.gradient = normalize(parse_vector());
             break;
+        case PType::Function: {
+            const std::shared_ptr<const UserFunction> f = parse_user_function(t);
+            if (f->kind != UserFunction::Kind::Float || !f->program) fail(t, "a function pattern needs a float function");
+            if (!f->program->unsupported().empty()) warn(t, "pattern function is not rendered yet: " + f->program->unsupported());
+            pat.function = f->program;
+            break;
+        }
         case PType::Marble:
         case PType::Wood:
             pat.wave = WaveType::Triangle;

@@ -126,6 +126,7 @@ struct UserFunction {
     std::shared_ptr<const FunctionProgram> program;  ///< Float: the compiled body
     Transform transform;                             ///< Transform: maps the point (x, y, z)
     std::shared_ptr<const Spline> spline;            ///< Spline: the spline
+    std::shared_ptr<const Pigment> pigment;          ///< Pattern and Pigment: the block (its pattern, or colours)
     SourceLoc loc;
 };
 

@@ -2,10 +2,13 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "core/transform.h"
+#include "core/diagnostics.h"
 #include "core/vec3.h"
+#include "function/function_vm.h"
 
 namespace wardray::scene {
 
@@ -206,6 +209,28 @@ struct Text {
     bool operator==(const Text&) const = default;
 };
 
+/// POV-Ray's `isosurface { function { f } [contained_by { box { c1, c2 } | sphere { c, r } }] [threshold t]
+/// [accuracy a] [max_gradient g] [evaluate p0, p1, p2] [open] [max_trace n | all_intersections] }`: the surface
+/// f(x, y, z) = t inside its container, inside where f < t; a closed isosurface is capped by the container.
+struct Isosurface {
+    function::SharedFunction function;
+    bool sphere_container = false;
+    Vec3 corner1{-1.0, -1.0, -1.0};  ///< the container box, ordered so corner1 <= corner2
+    Vec3 corner2{1.0, 1.0, 1.0};
+    Vec3 center;                     ///< the container sphere
+    double radius = 1.0;
+    double threshold = 0.0;
+    double accuracy = 0.001;
+    double max_gradient = 1.1;
+    bool evaluate = false;
+    std::array<double, 3> eval{};  ///< evaluate's min_factor, attenuation and its third value
+    bool open = false;
+    int max_trace = 1;
+    int noise_generator = 2;  ///< the scene's global noise_generator when the isosurface was read
+    SourceLoc function_loc;   ///< where the function starts, for the max_gradient warning
+    bool operator==(const Isosurface&) const = default;
+};
+
 }  // namespace wardray::scene
 
 /// The primitive shapes, listed once: X(keyword, SceneType) for each keyword that starts a primitive, in the order
@@ -233,4 +258,5 @@ struct Text {
     X(prism, Prism)                   \
     X(lathe, Lathe)                   \
     X(sor, Sor)                       \
-    X(text, Text)
+    X(text, Text)                     \
+    X(isosurface, Isosurface)

@@ -10,6 +10,7 @@
 #include "core/transform.h"
 #include "core/vec3.h"
 #include "scene/image_map.h"
+#include "function/function_vm.h"
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
@@ -91,7 +92,8 @@ struct Warp {
     X(square, Square)             \
     X(triangular, Triangular)     \
     X(cubic, Cubic)               \
-    X(pigment_pattern, PigmentPattern)
+    X(pigment_pattern, PigmentPattern) \
+    X(function, Function)
 
 struct Pigment;
 
@@ -137,6 +139,7 @@ struct Pattern {
     int arms = 0;           ///< spiral1, spiral2
     PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
+    function::SharedFunction function;  ///< the `function { ... }` pattern's function
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
     std::vector<Warp> warps;

@@ -1,46 +1,18 @@
-// Noise: POV-Ray 3.7's lattice noise, its vector form, turbulence and the pattern random table, bit for bit.
+// Noise for the texture layer: POV-Ray's noise lives in function/noise.h, shared with the internal functions.
 #pragma once
 
-#include <cstddef>
-#include <vector>
-
-#include "core/vec3.h"
+#include "function/noise.h"
 
 namespace wardray::texture {
 
-/// fBm parameters of POV-Ray's `turbulence` (octaves, omega, lambda keep POV-Ray's defaults).
-struct TurbulenceParams {
-    int octaves = 6;
-    double omega = 0.5;
-    double lambda = 2.0;
-};
-
-/// POV-Ray's scalar `Noise(p, noise_generator)` in [0, 1]: generator 1 (original), 2 (range corrected, the 3.7
-/// default) or 3 (Perlin's solid noise).
-double noise(const Vec3& p, int generator);
-
-/// POV-Ray's vector `DNoise(p)`: each component a lattice noise without offset or clamping (about -1..1).
-Vec3 dnoise(const Vec3& p);
-
-/// POV-Ray's scalar `Turbulence`: a sum of octaves of noise (Perlin 1985, fBm), generator-specific remapping.
-double turbulence(const Vec3& p, const TurbulenceParams& t, int generator);
-
-/// POV-Ray's `DTurbulence`: the vector fBm used to displace points.
-Vec3 dturbulence(const Vec3& p, const TurbulenceParams& t);
-
-/// POV-Ray's `Hash3d`: the 12-bit hash of an integer lattice cell.
-int hash3d(int a, int b, int c);
-
-/// POV-Ray's `PatternRands(i)`: entry i mod 32768 of a fixed table of uniform doubles in [0, 1).
-double pattern_rand(std::size_t i);
-
-/// Centre and relative frequency of one of POV-Ray's wave sources (used by `ripples` and `waves`).
-struct WaveSource {
-    Vec3 center;
-    double frequency = 1.0;
-};
-
-/// The wave sources exactly as POV-Ray makes them for its default `number_of_waves 10`.
-const std::vector<WaveSource>& wave_sources();
+using function::dnoise;
+using function::dturbulence;
+using function::hash3d;
+using function::noise;
+using function::pattern_rand;
+using function::turbulence;
+using function::TurbulenceParams;
+using function::wave_sources;
+using function::WaveSource;
 
 }  // namespace wardray::texture

@@ -8,6 +8,7 @@
 
 #include "core/constants.h"
 #include "texture/fractal.h"
+#include "texture/function_pattern.h"
 #include "texture/noise.h"
 #include "texture/pattern_blocks.h"
 

@@ -239,6 +239,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"lathe", "lathe { linear_spline 3, <0, 0>, <1, 0.5>, <0, 1> }"},
     {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},
     {"text", "text { ttf \"timrom.ttf\" \"A\", 0.5, 0 }"},
+    {"isosurface", "isosurface { function { x*x + y*y + z*z - 1 } contained_by { sphere { 0, 2 } } }"},
 };
 
 // Parses one statement as a scene of one object.

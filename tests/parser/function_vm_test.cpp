@@ -178,11 +178,11 @@ TEST(UserFunctions, TransformFunctionsFromTransformsInc) {
 }
 
 TEST(UserFunctions, UnevaluatedInternalFunctionIsAnErrorOnlyWhenCalled) {
-    // f_noise3d (internal 76) needs the renderer's noise, which the parser does not evaluate yet.
-    test::parse_ok("#include \"functions.inc\"\n#declare G = function { f_noise3d(x, y, z) }\nsphere { 0, 1 }\n");
-    ParseResult r = test::parse_fail("#include \"functions.inc\"\n#declare A = f_noise3d(1, 2, 3);\n");
+    // internal(77) is POV-Ray's pattern function behind `function { pattern { ... } }`, not called by name.
+    test::parse_ok("#declare G = function { internal(77) }\nsphere { 0, 1 }\n");
+    ParseResult r = test::parse_fail("#declare G = function { internal(77) }\n#declare A = G(1, 2, 3);\n");
     EXPECT_NE(test::all_diagnostics(r).find(
-                  "test.pov:2:14: error: internal function 76 is not supported yet (called through 'f_noise3d')"),
+                  "test.pov:2:14: error: internal function 77 is not supported yet (called through 'G')"),
               std::string::npos)
         << test::all_diagnostics(r);
     r = test::parse_fail("#declare F = function { internal(79) }\n");

@@ -43,9 +43,9 @@ TEST(PovRayOutput, DirectivesMacrosColoursAndIncludeMacros) {
 }
 
 TEST(PovRayOutput, InternalFunctionsOfFunctionsInc) {
-    // sphere, torus, torus2, ellipsoid, paraboloid, r, th, ph, rounded_box and superellipsoid, also inside a
-    // user function.
-    EXPECT_EQ(compare_with_povray("internal"), 12u);
+    // All 76 evaluated internal functions (the "_2d" ones with and without their sweep), also inside a user
+    // function; the noise functions with POV-Ray's default generator.
+    EXPECT_EQ(compare_with_povray("internal"), 146u);
 }
 
 }  // namespace

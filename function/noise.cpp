@@ -1,6 +1,6 @@
 // Noise: POV-Ray 3.7's lattice noise (texture.cpp's Noise/DNoise), turbulence, hash and random tables.
 // The tables are regenerated here from POV-Ray's seeds so that every noise-based pattern matches its images.
-#include "texture/noise.h"
+#include "function/noise.h"
 
 #include <algorithm>
 #include <array>
@@ -10,7 +10,7 @@
 
 #include "core/constants.h"
 
-namespace wardray::texture {
+namespace wardray::function {
 
 namespace {
 
@@ -278,4 +278,4 @@ const std::vector<WaveSource>& wave_sources() {
     return sources;
 }
 
-}  // namespace wardray::texture
+}  // namespace wardray::function
