@@ -77,7 +77,7 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
     EXPECT_EQ(a.pigment.pattern.turbulence->amount.x, 0.5);
     EXPECT_EQ(a.pigment.color_map.size(), 2u);
     EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
-    EXPECT_EQ(a.normal.amount, 0.3);
+    EXPECT_EQ(a.normal.amount, static_cast<double>(0.3f));  // POV-Ray stores bump_size in single precision
     EXPECT_TRUE(s.objects[1].texture.pigment.is_solid());
     EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
     // A texture with no normal has none to modify: the new one does not take the object's earlier translate
