@@ -78,6 +78,8 @@ private:
     Pigment parse_function_pigment(const Token& kw) final { return parse_pigment_body(kw); }
     Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) final;
     Pigment parse_density_body(const Token& kw) final;
+    /// With an array element next: whether the array holds colours (its first assigned element is a number).
+    bool is_colour_array_next();
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
     void parse_image_map(const Token& kw, Pigment& p);
     /// An image file found like an include file, its texels in the working gamma; read once per gamma.

@@ -265,7 +265,9 @@ std::vector<ColorMapEntry> Parser::parse_color_map(const Token& kw) {
 
 bool Parser::parse_pigment_start(Pigment& p) {
     expand_macros();
-    if (is_array_element_next()) {
+    // An element of an array of colours starts a colour expression (`pigment { Colors[i] * 0.5 }`, isocacti.pov
+    // through arrays.inc's Rand_Array_Item): the colour reader takes it whole.
+    if (is_array_element_next() && !is_colour_array_next()) {
         const Token at = peek();
         const Value element = *take_array_element();
         if (const auto* ep = std::get_if<Boxed<Pigment>>(&element)) p = **ep;
@@ -283,6 +285,14 @@ bool Parser::parse_pigment_start(Pigment& p) {
             return true;
         }
     }
+    return false;
+}
+
+bool Parser::is_colour_array_next() {
+    const Value* v = lookup(peek().text);
+    const auto& array = std::get<std::shared_ptr<ArrayValue>>(*v);
+    for (const auto& e : array->elements)
+        if (e) return std::holds_alternative<Numeric>(*e);
     return false;
 }
 
@@ -375,7 +385,8 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
             }
             const Value* v = lookup(t.text);
             if (v == nullptr && !is_keyword(t.text) && !m_macros.count(t.text)) fail_undeclared(t);
-            if (v != nullptr && !std::holds_alternative<Numeric>(*v))
+            const bool colour_element = v != nullptr && is_array_element_next() && is_colour_array_next();
+            if (v != nullptr && !std::holds_alternative<Numeric>(*v) && !colour_element)
                 fail(t, "'" + t.text + "' cannot be used in a pigment here");
         }
         p.color = parse_color();

@@ -85,6 +85,19 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
     EXPECT_TRUE(s.objects[2].texture.normal.pattern.transform.is_identity());
 }
 
+TEST(Grammar, AColourArrayElementStartsAColourExpressionInAPigment) {
+    // isocacti.pov: `pigment { Rand_Array_Item(RockColors, RS)*RRand(0.1, 1, RS) }` (arrays.inc).
+    const Scene s = parse_ok(R"(
+        #declare Colors = array[2] { rgb <1, 0.5, 0.25>, rgb 1 }
+        #macro Item(A, I) A[I] #end
+        sphere { 0, 1 pigment { Item(Colors, 0) * 0.5 } }
+        sphere { 0, 1 pigment { Colors[1] } }
+    )");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color.g, 0.25);
+    EXPECT_EQ(s.objects[1].texture.pigment.color.b, 1.0);
+}
+
 TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
     const Scene s = parse_ok(R"(
         #declare N = normal { dents 0.75 }
