@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <limits>
 
 namespace wardray::geometry {
@@ -47,13 +48,28 @@ SurfaceHits SuperellipsoidShape::intersect_all(const LocalRay& ray, double t_min
     }
     if (!(t0 < t1)) return hits;
     auto f = [&](double t) { return implicit(ray.origin + t * ray.direction); };
-    // Steps fine enough for the corners of small exponents; each sign change is bisected to full precision.
+    // Samples: even steps fine enough for the corners of small exponents, plus the ray's crossings of the nine
+    // symmetry planes (x, y, z = 0 and x = ±y, x = ±z, y = ±z). The thin spikes of exponents above 2 lie along
+    // those planes' intersections, where a sign change can hide between even steps (as POV-Ray samples them).
     constexpr int steps = 96;
-    const double dt = (t1 - t0) / steps;
-    double ta = t0;
+    std::array<double, steps + 10> ts;
+    std::size_t count = 0;
+    for (int i = 0; i < steps; ++i) ts[count++] = t0 + i * ((t1 - t0) / steps);
+    ts[count++] = t1;
+    static constexpr double planes[9][3] = {{1, 1, 0}, {1, -1, 0}, {1, 0, 1}, {1, 0, -1}, {0, 1, 1},
+                                            {0, 1, -1}, {1, 0, 0},  {0, 1, 0}, {0, 0, 1}};
+    for (const auto& n : planes) {
+        const double d = n[0] * ray.direction.x + n[1] * ray.direction.y + n[2] * ray.direction.z;
+        if (std::fabs(d) < 1e-12) continue;
+        const double t = -(n[0] * ray.origin.x + n[1] * ray.origin.y + n[2] * ray.origin.z) / d;
+        if (t > t0 && t < t1) ts[count++] = t;
+    }
+    std::sort(ts.begin(), ts.begin() + count);
+    double ta = ts[0];
     double fa = f(ta);
-    for (int i = 1; i <= steps; ++i) {
-        const double tb = i == steps ? t1 : t0 + i * dt;
+    for (std::size_t i = 1; i < count; ++i) {
+        const double tb = ts[i];
+        if (!(tb > ta)) continue;
         const double fb = f(tb);
         if ((fa < 0.0) != (fb < 0.0)) {
             double lo = ta, hi = tb, flo = fa;

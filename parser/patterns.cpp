@@ -36,6 +36,9 @@ std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
                     entry(0.6, 0.9, 0.7, 0.4), entry(0.6, 1.0, 0.7, 0.4),   entry(1.0, 0.6, 0.3, 0.0)};
         case PType::Marble:
             return {entry(0.0, 0.9, 0.8, 0.8), entry(0.9, 0.9, 0.08, 0.08), entry(0.9, 0, 0, 0)};
+        case PType::Mandel:  // not julia or magnet: those take the grey ramp
+            return {entry(0.001, 0, 0, 0), entry(0.001, 0, 1, 1), entry(0.012, 1, 1, 0),
+                    entry(0.015, 1, 0, 1), entry(0.1, 0, 1, 1)};
         case PType::Hexagon:
             return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0), entry(2.0, 1, 0, 0)};
         case PType::Square:

@@ -46,8 +46,9 @@ double cell_fraction(double x) {
 }
 
 double brick(const scene::Pattern& pat, const Vec3& p) {
-    // POV-Ray compat: the mortar is stored 2·EPSILON thinner and the point shifted by EPSILON + mortar.
-    const double mortar = pat.mortar - 2.0 * kEpsilon;
+    // POV-Ray compat: the mortar is stored 2·EPSILON thinner, in single precision (so 0.5 stays 0.5), and the
+    // point is shifted by EPSILON + mortar.
+    const double mortar = static_cast<float>(pat.mortar - 2.0 * kEpsilon);
     const double fudge = kEpsilon + mortar;
     const double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
     const Vec3& size = pat.brick_size;
