@@ -8,21 +8,21 @@
 
 namespace wardray::geometry {
 
-std::optional<CsgShape> CsgShape::create(const scene::Csg& csg) {
+std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
     CsgShape shape;
     auto children = std::make_shared<std::vector<ShapeInstance>>();
     for (std::size_t i = 0; i < csg.children.size(); ++i) {
         // POV-Ray compat: a difference is the first child intersected with every other child inverted.
-        const bool flip = csg.op == scene::Csg::Op::Difference && i > 0;
+        const bool flip = (csg.op == scene::Csg::Op::Difference && i > 0) != inverted;
         auto inst = ShapeInstance::create(csg.children[i], 0, flip);
         if (!inst) return std::nullopt;
         children->push_back(std::move(*inst));
     }
     switch (csg.op) {
-        case scene::Csg::Op::Union: shape.m_rule = Rule::All; break;
-        case scene::Csg::Op::Merge: shape.m_rule = Rule::Outside; break;
+        case scene::Csg::Op::Union: shape.m_rule = inverted ? Rule::Inside : Rule::All; break;
+        case scene::Csg::Op::Merge: shape.m_rule = inverted ? Rule::Inside : Rule::Outside; break;
         case scene::Csg::Op::Intersection:
-        case scene::Csg::Op::Difference: shape.m_rule = Rule::Inside; break;
+        case scene::Csg::Op::Difference: shape.m_rule = inverted ? Rule::Outside : Rule::Inside; break;
     }
     shape.m_inside_all = shape.m_rule == Rule::Inside;
     const auto& kids = *children;

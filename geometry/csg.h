@@ -19,7 +19,11 @@ class ShapeInstance;
 class CsgShape {
 public:
     /// Returns nothing when a child cannot be built (the whole node is then skipped and reported).
-    static std::optional<CsgShape> create(const scene::Csg& csg);
+    static std::optional<CsgShape> create(const scene::Csg& csg) { return create(csg, false); }
+    /// The CSG with `inverse` applied as POV-Ray applies it: every child inverted and the operation turned into
+    /// its dual (a union or merge becomes an intersection, an intersection or difference a merge), so an inverted
+    /// union keeps no surface that lies inside another of its children.
+    static std::optional<CsgShape> create(const scene::Csg& csg, bool inverted);
 
     /// Crossings with t in (t_min, t_max), sorted, each naming the leaf primitive hit.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;

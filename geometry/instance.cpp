@@ -107,10 +107,19 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     const Transform& xf = object.transform;
     if (!xf.is_invertible() || !matrix_is_finite(xf.matrix()) || !matrix_is_finite(xf.inverse_matrix()))
         return std::nullopt;
-    auto shape = make_shape(object.shape);
+    // POV-Ray compat: an inverted CSG pushes the inversion down to its children and turns into its dual operation
+    // (csg.h); other shapes flip their inside and normals.
+    const bool inverted = object.inverse != flip_inverse;
+    const auto* csg = std::get_if<scene::Csg>(&object.shape);
+    std::optional<AnyShape> shape;
+    if (csg && inverted) {
+        if (auto c = CsgShape::create(*csg, true)) shape = AnyShape(std::move(*c));
+    } else {
+        shape = make_shape(object.shape);
+    }
     if (!shape) return std::nullopt;
     ShapeInstance inst(*shape, object, index);
-    if (flip_inverse) inst.m_inverse = !inst.m_inverse;
+    inst.m_inverse = inverted && !csg;
     std::optional<Bounds> local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
     if (!object.clipped_by.empty()) {

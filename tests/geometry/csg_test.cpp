@@ -141,6 +141,34 @@ TEST(Csg, MergeRemovesInnerSurfacesUnionKeepsThem) {
     EXPECT_EQ(m->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 2u);
 }
 
+// POV-Ray compat: `inverse` on a CSG inverts its children and turns a union into an intersection, so a union cut
+// away by a difference leaves no wall of one child inside another (qtvrpanorama.pov's hollow box showed them).
+TEST(Csg, InvertedUnionKeepsNoInnerSurface) {
+    scene::Csg lens;
+    lens.op = scene::Csg::Op::Union;
+    lens.children.push_back(make_object(scene::Sphere{{-0.5, 0, 0}, 1}));
+    lens.children.push_back(make_object(scene::Sphere{{0.5, 0, 0}, 1}));
+    scene::Object inverted = make_object(lens);
+    inverted.inverse = true;
+    const auto inv = ShapeInstance::create(inverted, 0);
+    ASSERT_TRUE(inv);
+    const SurfaceHits hits = inv->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_NEAR(hits[0].t, 3.5, 1e-9);
+    EXPECT_NEAR(hits[1].t, 6.5, 1e-9);
+    EXPECT_FALSE(hits[0].entering);  // into the complement's outside, that is into the union
+    EXPECT_FALSE(inv->inside({0, 0, 0}));
+    EXPECT_TRUE(inv->inside({0, 3, 0}));
+
+    scene::Csg cut;
+    cut.op = scene::Csg::Op::Difference;
+    cut.children.push_back(make_object(scene::Box{{-3, -3, -3}, {3, 3, 3}}));
+    cut.children.push_back(make_object(lens));
+    const auto hole = ShapeInstance::create(make_object(cut), 0);
+    ASSERT_TRUE(hole);
+    EXPECT_EQ(hole->intersect_all({-5, 0, 0}, {1, 0, 0}, 0.0, 1e30).size(), 4u);  // box, lens, lens, box
+}
+
 TEST(Csg, IntersectionWithPlaneIsBounded) {
     scene::Csg csg;
     csg.op = scene::Csg::Op::Intersection;
