@@ -15,40 +15,56 @@ void ObjectReader::read_object_photons(ObjectReader& r, ObjectValue& ov, const T
     };
     // POV-Ray's CheckPassThru: target, pass_through and refraction cannot all be on; the one turned off depends
     // on which was set last.
-    auto check_pass_through = [](ObjectReader& r, ObjectPhotons& ph, const Token& at, std::string_view last) {
+    // Each item applies to every part of the object (a union flattened into its parts keeps each part's own
+    // flags but those the block sets), then CheckPassThru runs on each, warning once per item.
+    bool warned = false;
+    auto check_pass_through = [&warned](ObjectReader& r, ObjectPhotons& ph, const Token& at, std::string_view last) {
         if (!(ph.pass_through && ph.target && ph.refraction != PhotonSwitch::Off)) return;
-        if (last == "refraction" || (last == "target" && ph.refraction == PhotonSwitch::On)) {
-            r.warn(at, "Cannot use pass_through with refraction & target.\nTurning off pass_through.");
-            ph.pass_through = false;
-        } else {
-            r.warn(at, "Cannot use pass_through with refraction & target.\nTurning off refraction.");
-            ph.refraction = PhotonSwitch::Off;
-        }
+        const bool drop_pass_through = last == "refraction" || (last == "target" && ph.refraction == PhotonSwitch::On);
+        if (!warned)
+            r.warn(at, drop_pass_through ? "Cannot use pass_through with refraction & target.\nTurning off pass_through."
+                                         : "Cannot use pass_through with refraction & target.\nTurning off refraction.");
+        warned = true;
+        if (drop_pass_through) ph.pass_through = false;
+        else ph.refraction = PhotonSwitch::Off;
+    };
+    auto each = [&ov](auto&& apply) {
+        for (ObjectPart& part : ov.parts) apply(part.object.photons);
     };
     r.expect("{");
-    ObjectPhotons ph = ov.parts.empty() ? ObjectPhotons{} : ov.parts.front().object.photons;
     while (!r.accept("}")) {
         const Token t = r.next();
+        warned = false;
         if (r.is_word(t, "target")) {
-            ph.spacing_multiplier = optional_float(r);
-            ph.target = ph.spacing_multiplier > 0.0;
-            if (ph.target) check_pass_through(r, ph, t, "target");
+            const double multiplier = optional_float(r);
+            each([&](ObjectPhotons& ph) {
+                ph.spacing_multiplier = multiplier;
+                ph.target = multiplier > 0.0;
+                if (ph.target) check_pass_through(r, ph, t, "target");
+            });
         } else if (r.is_word(t, "refraction")) {
-            ph.refraction = read_switch(r);
-            if (ph.refraction == PhotonSwitch::On) check_pass_through(r, ph, t, "refraction");
+            const PhotonSwitch v = read_switch(r);
+            each([&](ObjectPhotons& ph) {
+                ph.refraction = v;
+                if (v == PhotonSwitch::On) check_pass_through(r, ph, t, "refraction");
+            });
         } else if (r.is_word(t, "reflection")) {
-            ph.reflection = read_switch(r);
+            const PhotonSwitch v = read_switch(r);
+            each([&](ObjectPhotons& ph) { ph.reflection = v; });
         } else if (r.is_word(t, "pass_through")) {
-            ph.pass_through = static_cast<int>(optional_float(r)) != 0;
-            if (ph.pass_through) check_pass_through(r, ph, t, "pass_through");
+            const bool on = static_cast<int>(optional_float(r)) != 0;
+            each([&](ObjectPhotons& ph) {
+                ph.pass_through = on;
+                if (on) check_pass_through(r, ph, t, "pass_through");
+            });
         } else if (r.is_word(t, "collect")) {
-            ph.collect = optional_float(r) > 0.0;
+            const bool on = optional_float(r) > 0.0;
+            each([&](ObjectPhotons& ph) { ph.collect = on; });
         } else {
             r.fail(t, "expected target, refraction, reflection, pass_through or collect in photons but found " +
                           describe_token(t));
         }
     }
-    for (ObjectPart& part : ov.parts) part.object.photons = ph;
 }
 
 void ObjectReader::read_light_photons(ObjectReader& r, Light& light, const Token&) {

@@ -32,7 +32,8 @@ TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
     ASSERT_TRUE(map);
     EXPECT_EQ(stats.units, 1u);
     EXPECT_GT(stats.stored, 10000u);
-    for (const Vec3 p : {Vec3{0, 0, 0}, Vec3{0.5, 0, 0.2}}) {
+    // Away from the point under the light, where POV-Ray's polar rows of photons bias any k-nearest estimate.
+    for (const Vec3 p : {Vec3{0.5, 0, 0.2}, Vec3{-0.3, 0, 0.6}, Vec3{0.7, 0, -0.5}}) {
         Gathered g;
         map->gather_adaptive(p, {0, 1, 0}, g);
         Vec3 flux;
@@ -100,7 +101,8 @@ union {
     EXPECT_EQ(s.lights[0].photon_refraction, scene::PhotonSwitch::On);
     EXPECT_EQ(s.lights[0].photon_reflection, scene::PhotonSwitch::Off);
     EXPECT_TRUE(s.lights[0].photon_area_light);
-    ASSERT_EQ(s.objects.size(), 1u);
+    // A union of plain shapes is split into its parts, each keeping its own flags but those the union sets.
+    ASSERT_EQ(s.objects.size(), 2u);
     // CheckPassThru: pass_through given after target and refraction on turns refraction off, with its warning.
     const scene::ObjectPhotons& u = s.objects[0].photons;
     EXPECT_TRUE(u.target);
@@ -108,7 +110,7 @@ union {
     EXPECT_TRUE(u.pass_through);
     EXPECT_EQ(u.refraction, scene::PhotonSwitch::Off);
     // The union's set flags override its children's; what it leaves unset the children keep.
-    const auto& kids = std::get<scene::Csg>(s.objects[0].shape).children;
+    const scene::Object* kids = s.objects.data();
     EXPECT_TRUE(kids[0].photons.target);
     EXPECT_EQ(kids[0].photons.reflection, scene::PhotonSwitch::On);
     EXPECT_FALSE(kids[0].photons.collect);
