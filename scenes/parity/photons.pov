@@ -1,5 +1,4 @@
 // parity switches: -A
-// parity tolerance: 0.03
 // Parity scene: POV-Ray's photon mapping, compared at a dense spacing: a glass sphere's refracted caustic and a
 // metal ring's reflected one on a diffuse floor, the shadows through the targets black but for the photons.
 #version 3.7;

@@ -26,7 +26,6 @@ struct ParityCase {
     fs::path scene;
     std::string switches = "-A";  ///< given to both renderers
     std::string frame;            ///< an animation's frame: both write povray<frame>.hdr, wardray<frame>.hdr
-    double max_rrmse = kMaxRrmse;
 };
 
 // Names the case in test output instead of dumping its bytes.
@@ -41,18 +40,6 @@ std::string parity_switches(const fs::path& scene) {
     const std::string tag = "// parity switches:";
     if (first.rfind(tag, 0) != 0) return "-A";
     return first.substr(tag.size());
-}
-
-// A stochastic scene may name its own rRMSE bound on its second line: `// parity tolerance: 0.03` (photon maps,
-// whose photons POV-Ray places at random, compared at a dense spacing; the 3 %).
-double parity_tolerance(const fs::path& scene) {
-    std::ifstream in(scene);
-    std::string line;
-    std::getline(in, line);
-    std::getline(in, line);
-    const std::string tag = "// parity tolerance:";
-    if (line.rfind(tag, 0) != 0) return kMaxRrmse;
-    return std::stod(line.substr(tag.size()));
 }
 
 std::vector<ParityCase> parity_scenes() {
@@ -79,7 +66,7 @@ std::vector<ParityCase> parity_scenes() {
     for (const auto& e : fs::directory_iterator(root / "scenes" / "parity"))
         if (e.path().extension() == ".pov") parity.push_back(e.path());
     std::sort(parity.begin(), parity.end());
-    for (const fs::path& p : parity) cases.push_back({p.stem().string(), p, parity_switches(p), "", parity_tolerance(p)});
+    for (const fs::path& p : parity) cases.push_back({p.stem().string(), p, parity_switches(p)});
     return cases;
 }
 
@@ -120,7 +107,7 @@ TEST_P(PovrayParity, DirectLightMatchesPovRay) {
     RecordProperty("bad_pixel_fraction", std::to_string(cmp->bad_pixel_fraction));
     std::cout << "[ parity   ] " << figures.str() << "\n";
 
-    const bool pass = cmp->rrmse <= c.max_rrmse && cmp->bad_pixel_fraction <= kMaxBadPixels && cmp->non_finite == 0;
+    const bool pass = cmp->rrmse <= kMaxRrmse && cmp->bad_pixel_fraction <= kMaxBadPixels && cmp->non_finite == 0;
     if (!pass) {
         // Leave the image, the reference and a difference image beside each other for a person to look at.
         render::write_image(render::difference_image(*image, *reference), dir / "difference.png",
@@ -128,7 +115,7 @@ TEST_P(PovrayParity, DirectLightMatchesPovRay) {
         render::write_image(*image, dir / "wardray.png", render::ImageFormat::Png);
         render::write_image(*reference, dir / "povray.png", render::ImageFormat::Png);
     }
-    EXPECT_LE(cmp->rrmse, c.max_rrmse) << figures.str() << "; images in " << dir;
+    EXPECT_LE(cmp->rrmse, kMaxRrmse) << figures.str() << "; images in " << dir;
     EXPECT_LE(cmp->bad_pixel_fraction, kMaxBadPixels) << figures.str() << "; images in " << dir;
     EXPECT_EQ(cmp->non_finite, 0u);
 }
