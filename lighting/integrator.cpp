@@ -110,6 +110,10 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         // POV-Ray dims photons by the media they cross; the photon pass here does not see media yet.
         if (m_photons && m_media)
             m_limitations.push_back("photons crossing media are not dimmed by them (not rendered yet)");
+        for (const scene::Light& light : scene.lights)
+            if (m_photons && !light.projected_through.empty())
+                m_limitations.push_back("photons of a light with projected_through are shot as if it had none (not "
+                                        "rendered yet)");
     }
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
     // documentation describes, since media and fog then leave the camera's stretch of every ray out.

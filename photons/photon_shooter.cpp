@@ -216,11 +216,12 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
                                                PhotonStats& stats, void (*progress)(std::uint64_t)) {
     const auto t0 = std::chrono::steady_clock::now();
     const scene::PhotonSettings& settings = *scene.global.photons;
-    // The units: every light but fill lights, with every target, in scene order.
+    // The units: every global light but fill lights, with every target, in scene order (POV-Ray 3.7 shoots no
+    // photons from the lights of light groups).
     std::vector<Unit> units;
     std::vector<std::unique_ptr<scene::Object>> placed;
     for (const scene::Light& light : scene.lights) {
-        if (light.shadowless) continue;
+        if (light.shadowless || light.group != 0) continue;
         for (const scene::Object& o : scene.objects) find_targets(o, Transform{}, units, placed, light);
     }
     const geometry::ObjectQuery query;
