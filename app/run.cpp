@@ -271,6 +271,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradients = options.gi_gradients;
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
+    // The photon pass runs here, in the integrator's construction, when the scene has a photons block.
     illumination.integrator = std::make_unique<lighting::Integrator>(scene, geometry, settings);
     for (const std::string& limitation : illumination.integrator->limitations())
         std::cerr << options.scene.string() << ": warning: " << limitation << "\n";

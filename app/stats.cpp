@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "photons/photon_shooter.h"
+
 namespace wardray::app {
 
 namespace {
@@ -69,6 +71,12 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
     stats["non_finite_pixels"] = result.non_finite_pixels;
     stats["supersampled_pixels"] = result.supersampled_pixels;
     stats["cache"] = cache_stats(illumination.cache.get(), result.rays);
+    stats["photons"] = nullptr;
+    if (const photons::PhotonStats* ph = illumination.integrator ? illumination.integrator->photon_stats() : nullptr)
+        stats["photons"] = {{"units", ph->units},         {"spacing", ph->spacing},
+                            {"shot", ph->shot},           {"stored", ph->stored},
+                            {"gather_radius", ph->gather_radius},
+                            {"shoot_seconds", ph->shoot_seconds}, {"build_seconds", ph->build_seconds}};
     auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
         std::ofstream f(tmp);
         f << stats.dump(2) << "\n";

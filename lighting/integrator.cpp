@@ -13,6 +13,8 @@
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
 #include "media/fog.h"
+#include "photons/photon_map.h"
+#include "photons/photon_shooter.h"
 #include "texture/noise.h"
 
 namespace wardray::lighting {
@@ -99,12 +101,28 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         }
     }
     if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    if (scene.global.photons) {
+        // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
+        // shot it turn black (LightSampler).
+        m_photon_stats = std::make_unique<photons::PhotonStats>();
+        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats);
+        if (m_photons) m_lights.use_photon_shadows();
+        // POV-Ray dims photons by the media they cross; the photon pass here does not see media yet.
+        if (m_photons && m_media)
+            m_limitations.push_back("photons crossing media are not dimmed by them (not rendered yet)");
+        for (const scene::Light& light : scene.lights)
+            if (m_photons && !light.projected_through.empty())
+                m_limitations.push_back("photons of a light with projected_through are shot as if it had none (not "
+                                        "rendered yet)");
+    }
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
     // documentation describes, since media and fog then leave the camera's stretch of every ray out.
     if ((m_media || !scene.fogs.empty()) && !hollow_ray(scene, m_camera_interiors))
         m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
                                 "expected.");
 }
+
+Integrator::~Integrator() = default;
 
 Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
     ++ctx.rays.camera;
@@ -150,8 +168,6 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
 Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                               const Vec3& n, TraceContext& ctx) const {
     Vec3 colour;
-    const Vec3& view_dir = s.direction;
-    const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
     for (const scene::Light& light : m_scene.lights) {
         // POV-Ray's ComputeDiffuseLight: the global lights unless the surface's light group turns them off, and
         // the lights of the groups the surface is in.
@@ -162,27 +178,33 @@ Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, 
             m_lights.light_arriving(light, s.hit->position, n, *s.interiors, s.highlights,
                                     s.object->double_illuminate, to_light, ctx);
         if (arriving == Vec3{}) continue;
-        const double cos_i = dot(n, to_light);
-        Vec3 light_colour;  // this light's diffuse and highlights
-        // Lambert with POV-Ray's brilliance exponent: diffuse · opacity · cos^brilliance.
-        if (finish.diffuse > 0.0) {
-            const double shape =
-                finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
-            double intensity = finish.diffuse * opacity * shape;
-            if (finish.crand > 0.0) intensity -= graininess(finish.crand, s.hit->position, light.position);
-            light_colour += pigment * arriving * intensity;
-        }
         // POV-Ray compat: shadowless (fill) lights cause no highlights, nor does any light on a gather ray's path.
-        if (light.shadowless || !s.highlights) {
-            if (finish.irid > 0.0)
-                light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
-            colour += light_colour;
-            continue;
-        }
+        colour += finish_light(finish, pigment, opacity, s, n, to_light, arriving, !light.shadowless && s.highlights,
+                               light.position);
+    }
+    return colour;
+}
+
+Vec3 Integrator::finish_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                              const Vec3& n, const Vec3& to_light, const Vec3& arriving, bool highlights,
+                              const Vec3& grain_from) const {
+    const Vec3& view_dir = s.direction;
+    const double cos_i = dot(n, to_light);
+    Vec3 light_colour;  // this light's diffuse and highlights
+    // Lambert with POV-Ray's brilliance exponent: diffuse · opacity · cos^brilliance.
+    if (finish.diffuse > 0.0) {
+        const double shape =
+            finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
+        double intensity = finish.diffuse * opacity * shape;
+        if (finish.crand > 0.0) intensity -= graininess(finish.crand, s.hit->position, grain_from);
+        light_colour += pigment * arriving * intensity;
+    }
+    if (highlights) {
         // POV-Ray's metallic highlight tint.
         const Vec3 tint = finish.metallic > 0.0 ? metallic_tint(pigment, finish.metallic, cos_i) : Vec3{1.0, 1.0, 1.0};
         // Phong highlight: phong · cos(reflected, light)^phong_size (POV-Ray drops tiny values for sizes ≥ 60).
         if (finish.phong > 0.0) {
+            const Vec3 reflected = view_dir - 2.0 * dot(view_dir, n) * n;
             const double c = dot(reflected, to_light);
             if (c > 0.0 && (finish.phong_size < 60.0 || c > 0.0008))
                 light_colour += arriving * tint * (finish.phong * std::pow(c, finish.phong_size));
@@ -193,11 +215,9 @@ Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, 
             const double c = dot(half, n);
             if (c > 0.0) light_colour += arriving * tint * (finish.specular * std::pow(c, 1.0 / finish.roughness));
         }
-        if (finish.irid > 0.0)
-            light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
-        colour += light_colour;
     }
-    return colour;
+    if (finish.irid > 0.0) light_colour = light_colour * iridescence(finish, to_light, view_dir, n, s.hit->position);
+    return light_colour;
 }
 
 Vec3 Integrator::iridescence(const scene::Finish& finish, const Vec3& to_light, const Vec3& view_dir, const Vec3& n,

@@ -23,6 +23,12 @@ struct Ray;
 struct Hit;
 }  // namespace wardray::geometry
 
+namespace wardray::photons {
+class PhotonMap;
+struct Gathered;
+struct PhotonStats;
+}  // namespace wardray::photons
+
 namespace wardray::lighting {
 
 /// How indirect light is computed (`--gi`).
@@ -45,6 +51,7 @@ public:
     /// Prepares the light sources, indirect light (when the scene has radiosity and --gi is not off), the sky and
     /// the atmosphere, and finds the objects the camera is inside.
     Integrator(const scene::Scene& scene, const geometry::SceneGeometry& geometry, IntegratorOptions options);
+    ~Integrator() override;
     Integrator(const Integrator&) = delete;
     Integrator& operator=(const Integrator&) = delete;
 
@@ -56,6 +63,9 @@ public:
 
     /// Warnings about what this integrator leaves out of the picture (reported once per render).
     const std::vector<std::string>& limitations() const { return m_limitations; }
+
+    /// What the photon pass did (null without photons in the scene).
+    const photons::PhotonStats* photon_stats() const { return m_photon_stats.get(); }
 
 private:
     /// Where a texture is being shaded: the surface point, its normals and the ray that found it.
@@ -101,6 +111,15 @@ private:
     /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
     Vec3 direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                       const Vec3& n, TraceContext& ctx) const;
+    /// One light's diffuse and (with `highlights`) phong, specular and iridescence on one layer, for the light
+    /// `arriving` from the unit direction `to_light`; `grain_from` seeds crand's graininess.
+    Vec3 finish_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                      const Vec3& n, const Vec3& to_light, const Vec3& arriving, bool highlights,
+                      const Vec3& grain_from) const;
+    /// POV-Ray's ComputePhotonDiffuseLight: the gathered photons lighting one layer like lights of their
+    /// direction, each undoing the cosine it landed at, over the area π r² they were gathered from.
+    Vec3 photon_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                      const Vec3& n, const photons::Gathered& gathered) const;
     /// A reflected ray's colour (POV-Ray's ComputeReflection, with its fix-ups for bumped normals).
     Vec3 reflect(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
                  TraceContext& ctx) const;
@@ -124,6 +143,8 @@ private:
     std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media
     bool m_ambient_is_light = true;
     int m_noise_generator = 2;
+    std::unique_ptr<const photons::PhotonMap> m_photons;  ///< null without photons, or when none were stored
+    std::unique_ptr<photons::PhotonStats> m_photon_stats;
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them
     std::vector<std::string> m_limitations;
 };

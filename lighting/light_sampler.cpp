@@ -14,6 +14,8 @@
 #include "media/atmosphere.h"
 #include "media/participating_media.h"
 #include "media/transmittance.h"
+#include "photons/photon_shooter.h"
+#include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
 
@@ -86,34 +88,53 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
 
 LightSampler::~LightSampler() = default;
 
-Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p) const {
+Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics) const {
     if (!texture.texture_map.empty()) {
         const Vec3 tp = texture::warp_point(texture.map_pattern, p);
+        // The map's pattern warps the normals of the entries' layers (fake caustics only).
+        if (caustics) caustics->warps.push_back(&texture.map_pattern);
+        Vec3 filter;
         if (texture.map_pattern.type == scene::Pattern::Type::Average) {
             // POV-Ray's ComputeAverageTextureColours in a shadow: the entries' filters, weighted by map value.
             Vec3 sum;
             float total = 0.0f;
             for (const auto& e : texture.texture_map) {
-                sum += texture_filter(e.texture, tp) * e.value;
+                sum += texture_filter(e.texture, tp, caustics) * e.value;
                 total += static_cast<float>(e.value);
             }
-            return sum / static_cast<double>(total);
+            filter = sum / static_cast<double>(total);
+        } else {
+            const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
+            const auto& map = texture.texture_map;
+            const texture::MapLookup m =
+                texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+            filter = texture_filter(map[m.cur].texture, tp, caustics);
+            if (m.prev != m.cur)
+                filter = filter * m.fraction + texture_filter(map[m.prev].texture, tp, caustics) * (1.0 - m.fraction);
         }
-        const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
-        const auto& map = texture.texture_map;
-        const texture::MapLookup m =
-            texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
-        const Vec3 cur = texture_filter(map[m.cur].texture, tp);
-        if (m.prev == m.cur) return cur;
-        return cur * m.fraction + texture_filter(map[m.prev].texture, tp) * (1.0 - m.fraction);
+        if (caustics) caustics->warps.pop_back();
+        return filter;
     }
     Vec3 filter = media::filter_colour(texture::evaluate_pigment(texture.pigment, p, m_noise_generator));
-    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p);
+    if (caustics) {
+        // POV-Ray's fake caustics (ComputeShadowTexture): each layer's transmitted colour times
+        // 1 + |n·d|^power, n the layer's (perturbed) normal and d the shadow ray's direction, so light through a
+        // surface facing it comes out brighter than it went in.
+        Vec3 n = caustics->raw_normal;
+        if (texture.normal.pattern.type != scene::Pattern::Type::None) {
+            for (const scene::Pattern* w : caustics->warps) n = texture::warp_normal(*w, n);
+            n = texture::perturb_normal(texture.normal, n, p, m_noise_generator);
+            for (auto it = caustics->warps.rbegin(); it != caustics->warps.rend(); ++it)
+                n = texture::unwarp_normal(**it, n);
+        }
+        filter = filter * (1.0 + std::pow(std::fabs(dot(n, caustics->direction)), caustics->power));
+    }
+    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p, caustics);
     return filter;
 }
 
-Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                                 ShadowAtmosphere fog, TraceContext& ctx) const {
+Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const Vec3& dir, double distance,
+                                 InteriorStack interiors, ShadowAtmosphere fog, TraceContext& ctx) const {
     // POV-Ray compat (ComputeShadowMedia): with media_attenuation, fog dims each stretch of the shadow ray that is
     // inside no non-hollow object.
     auto fog_over = [&](double from, double to) {
@@ -147,9 +168,18 @@ Vec3 LightSampler::shadow_filter(const Vec3& p, const Vec3& dir, double distance
         }
         filter = filter * fog_over(t_origin, hit->t);
         const scene::Object& object = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
+        // POV-Ray compat (ComputeShadowColour): the photons of a target that refracts this light carry its light.
+        if (m_photon_shadows && !ctx.lit_ignores_photons && photons::photons_replace_shadow(object, light)) return {};
         // POV-Ray compat (ComputeShadowTexture): a surface met from inside shows its interior texture.
         const bool inside = !object.interior_texture.empty() && dot(hit->normal, dir) > 0.0;
-        filter = filter * texture_filter(inside ? object.interior_texture.front() : object.texture, hit->position);
+        const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
+        const double caustics = m_scene.objects[hit->object].interior.caustics;
+        if (caustics != 0.0) {
+            Caustics c{caustics, dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal, dir, {}};
+            filter = filter * texture_filter(texture, hit->position, &c);
+        } else {
+            filter = filter * texture_filter(texture, hit->position, nullptr);
+        }
         const scene::Interior& interior = m_scene.objects[hit->object].interior;
         if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
             std::fabs(interior.fade_distance) > kPovEpsilon)
@@ -242,12 +272,12 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
         light.type != Type::Cylinder)
         return area_light_shadow(light, colour, p, interiors, fog, ctx);
-    return colour * shadow_towards(p, to_light, distance, interiors, fog, ctx);
+    return colour * shadow_towards(light, p, to_light, distance, interiors, fog, ctx);
 }
 
-Vec3 LightSampler::shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                                  ShadowAtmosphere fog, TraceContext& ctx) const {
-    if (m_any_transparent || fog.any()) return shadow_filter(p, dir, distance, interiors, fog, ctx);
+Vec3 LightSampler::shadow_towards(const scene::Light& light, const Vec3& p, const Vec3& dir, double distance,
+                                  const InteriorStack& interiors, ShadowAtmosphere fog, TraceContext& ctx) const {
+    if (m_any_transparent || fog.any()) return shadow_filter(light, p, dir, distance, interiors, fog, ctx);
     const double offset = m_geometry.self_intersection_offset(p);
     geometry::Ray shadow{p, dir, offset, distance - offset, geometry::RayKind::Shadow};
     ++ctx.rays.shadow;
@@ -297,7 +327,7 @@ Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colo
         }
         const Vec3 d = light.position + offset - p;
         const double distance = length(d);
-        const Vec3 c = distance > 0.0 ? colour * shadow_towards(p, d / distance, distance, interiors, fog, ctx)
+        const Vec3 c = distance > 0.0 ? colour * shadow_towards(light, p, d / distance, distance, interiors, fog, ctx)
                                         : colour;
         grid[k] = c;
         known[k] = 1;

@@ -34,6 +34,10 @@ public:
     LightSampler(const LightSampler&) = delete;
     LightSampler& operator=(const LightSampler&) = delete;
 
+    /// A photon map was built: shadow rays through the targets that refract a light's photons are black for it
+    /// (POV-Ray's ComputeShadowColour), unless the lit surface ignores photons (TraceContext::lit_ignores_photons).
+    void use_photon_shadows() { m_photon_shadows = true; }
+
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
     /// `area_lights` false (on a gather ray's path) an area light counts as a point light at its centre. `to_light`
@@ -53,8 +57,8 @@ private:
                   bool area_lights, Vec3& to_light, TraceContext& ctx) const;
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
-    Vec3 shadow_towards(const Vec3& p, const Vec3& dir, double distance, const InteriorStack& interiors,
-                        ShadowAtmosphere fog, TraceContext& ctx) const;
+    Vec3 shadow_towards(const scene::Light& light, const Vec3& p, const Vec3& dir, double distance,
+                        const InteriorStack& interiors, ShadowAtmosphere fog, TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
     Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
@@ -63,14 +67,24 @@ private:
     /// of every surface it crosses). `interiors` are those of the ray that found `p` (POV-Ray starts the shadow
     /// ray with them and fades light crossing an interior).
     /// `fog`, when the light has media_attenuation, dims the stretches outside non-hollow objects.
-    Vec3 shadow_filter(const Vec3& p, const Vec3& dir, double distance, InteriorStack interiors,
-                       ShadowAtmosphere fog, TraceContext& ctx) const;
-    /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied).
-    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p) const;
+    Vec3 shadow_filter(const scene::Light& light, const Vec3& p, const Vec3& dir, double distance,
+                       InteriorStack interiors, ShadowAtmosphere fog, TraceContext& ctx) const;
+    /// What POV-Ray's fake caustics need at a shadow ray's surface: the interior's exponent, the raw normal turned
+    /// against the ray, the ray's unit direction and the warps of the texture maps entered so far.
+    struct Caustics {
+        double power = 0.0;
+        Vec3 raw_normal;
+        Vec3 direction;
+        std::vector<const scene::Pattern*> warps;
+    };
+    /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied);
+    /// with `caustics`, each layer's also times POV-Ray's fake-caustics factor.
+    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics) const;
 
     const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
-    bool m_any_transparent = false;      ///< some object can let light through (filter or transmit somewhere)
+    bool m_any_transparent = false;
+    bool m_photon_shadows = false;  ///< a photon map carries the light refracted by photon targets      ///< some object can let light through (filter or transmit somewhere)
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation

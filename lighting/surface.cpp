@@ -9,6 +9,8 @@
 #include "core/constants.h"
 #include "lighting/integrator.h"
 #include "lighting/metallic.h"
+#include "photons/photon_map.h"
+#include "photons/reflectivity.h"
 #include "media/transmittance.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
@@ -28,35 +30,9 @@ struct LayerReflection {
     double exponent;
 };
 
-// POV-Ray's ComputeReflectivity: the reflected fraction and the reflection ray's weight.
-// Standard: min + (max − min)·(1 − cos θ)^falloff. Fresnel: the unpolarised Fresnel reflectance for the relative
-// index `ior` (Cook & Torrance 1982, eq. 8 form), blending min and max.
-Vec3 reflectivity(const scene::Finish& f, double cos_i, double ior, double& weight) {
-    const Vec3 rmin = f.reflection_min.rgb();
-    const Vec3 rmax = f.reflection_max.rgb();
-    if (!f.reflection_fresnel) {
-        weight *= std::max(max3(rmax), max3(rmin));
-        const double frac = std::fabs(f.reflection_falloff - 1.0) > kPovEpsilon
-                                ? std::pow(1.0 - cos_i, f.reflection_falloff)
-                                : 1.0 - cos_i;
-        if (std::fabs(frac) < kPovEpsilon) return rmin;
-        if (std::fabs(frac - 1.0) < kPovEpsilon) return rmax;
-        return rmax * frac + rmin * (1.0 - frac);
-    }
-    Vec3 r = rmax;
-    const double sqx = ior * ior + cos_i * cos_i - 1.0;
-    if (sqx > 0.0) {
-        const double g = std::sqrt(sqx);
-        const double a = (g - cos_i) / (g + cos_i);
-        const double b = (cos_i * (g + cos_i) - 1.0) / (cos_i * (g - cos_i) + 1.0);
-        const double fr = std::clamp(0.5 * a * a * (1.0 + b * b), 0.0, 1.0);
-        r = rmax * fr + rmin * (1.0 - fr);
-    }
-    weight *= max3(r);
-    return r;
-}
-
 }  // namespace
+
+using photons::reflectivity;
 
 Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double depth, const RayState& state,
                        TraceContext& ctx) const {
@@ -137,6 +113,10 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     const bool gi_needed = m_indirect && state.gi_depth < m_scene.global.radiosity->recursion_limit;
     bool gi_done = false;
     Vec3 indirect_light;
+    // Photons are gathered once, at the first layer lit by them, about its normal (POV-Ray's PhotonGatherer).
+    const bool photons_here = m_photons && s.object->photons.collect;
+    photons::Gathered gathered;
+    bool gathered_done = false;
     std::array<LayerReflection, kMaxLayers> reflections;  // filled before use
     std::size_t reflection_count = 0;
     for (std::size_t li = 0; li < layer_count; ++li) {
@@ -194,8 +174,14 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         }
         // POV-Ray compat: pretrace camera rays only fill the cache, so their own direct light is skipped.
         const bool pretrace_eye = !ctx.final_pass && state.gi_depth == 0;
-        if ((f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0) && !pretrace_eye)
-            own += direct_light(f, pigment, opacity, s, n, ctx);
+        const bool lit = f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0;
+        ctx.lit_ignores_photons = !s.object->photons.collect;
+        if (lit && !pretrace_eye) own += direct_light(f, pigment, opacity, s, n, ctx);
+        if (photons_here && lit && !pretrace_eye) {
+            if (!gathered_done) m_photons->gather_adaptive(s.hit->position, n, gathered);
+            gathered_done = true;
+            own += photon_light(f, pigment, opacity, s, n, gathered);
+        }
         colour += own * filter;
 
         filter = filter * (pigment * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});

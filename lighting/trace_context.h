@@ -45,6 +45,9 @@ struct TraceContext {
     /// samples depend on the order the tile makes records in (fixed), not on its position: a scene scaled by any
     /// factor then draws the same samples.
     std::uint64_t gather_seed = 0;
+    /// POV-Ray's litObjectIgnoresPhotons: the surface being lit has `collect off`, so shadows through photon
+    /// targets stay filtered for it.
+    bool lit_ignores_photons = false;
     /// --aov irradiance: the indirect irradiance first computed on the current camera path lands here.
     bool capture_irradiance = false;
     bool captured = false;

@@ -145,10 +145,9 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
              r.warn(kw, "Index of refraction value should be specified in 'interior{...}' statement.");
          }},
         {"caustics",
-         [](AppearanceReader& r, Finish&, const Token& kw) {
-             r.parse_float();
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             f.legacy_caustics = r.parse_float();
              r.warn(kw, "Caustics value should be specified in 'interior{...}' statement.");
-             r.warn_unsupported(kw, "caustics");
          }},
         {"refraction",
          [](AppearanceReader& r, Finish&, const Token& kw) {
@@ -370,7 +369,10 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
             in.fade_power = parse_float();
         } else if (t.text == "fade_color" || t.text == "fade_colour") {
             in.fade_color = parse_color();
-        } else if (t.text == "caustics" || t.text == "dispersion" || t.text == "dispersion_samples") {
+        } else if (t.text == "caustics") {
+            // POV-Ray keeps the value times 45, the exponent of its fake-caustics term.
+            in.caustics = parse_float() * 45.0;
+        } else if (t.text == "dispersion" || t.text == "dispersion_samples") {
             warn_unsupported(t, "interior " + t.text);
             parse_float();
         } else if (t.text == "refraction") {

@@ -30,8 +30,6 @@ protected:
         bool textured = false;            ///< a texture was given: further ones are layers
         std::vector<Object> bounded_by;   ///< for clipped_by without objects of its own
     };
-    /// A modifier that is valid POV-Ray and not rendered yet: warns and skips its block.
-    static void skip_unsupported_modifier(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     /// Applies `tr` to every part of the object and the textures given so far.
     void apply_transform(ObjectValue& ov, const Transform& tr);
     /// The texture a modifier of `ov` changes (its own, made from the default when it had none).
@@ -46,6 +44,10 @@ protected:
     static void read_material_modifier(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     static void read_interior_texture(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     static void read_double_illuminate(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    /// An object's `photons { }` block (parser/photons.cpp).
+    static void read_object_photons(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    /// A light's `photons { refraction reflection area_light }` block.
+    static void read_light_photons(ObjectReader& r, Light& light, const Token& kw);
     /// Reads `light_group { objects lights modifiers }` after its keyword (light_group.cpp): a union whose lights
     /// light only its objects.
     ObjectValue parse_light_group(const Token& kw);
@@ -63,8 +65,6 @@ protected:
     void read_looks_like(const Light& light, ObjectValue* looks, const Token& kw);
     /// Reads `area_light` axis1, axis2, size1, size2 (commas optional) into `light`.
     void parse_area_light(Light& light);
-    /// A light item that is valid POV-Ray and not rendered yet: warns and skips its block.
-    static void skip_unsupported_light_item(ObjectReader& r, Light& light, const Token& kw);
 
     /// Reads a primitive's parameters after its '{' (the shape reader's).
     virtual Shape parse_shape_parameters(const Token& kw) = 0;

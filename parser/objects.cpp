@@ -39,16 +39,6 @@ void set_flag(ObjectValue& ov, bool Object::*flag) {
 
 }  // namespace
 
-void ObjectReader::skip_unsupported_modifier(ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) {
-    r.warn_unsupported(kw, kw.text);
-    r.skip_block(kw);
-}
-
-void ObjectReader::skip_unsupported_light_item(ObjectReader& r, Light&, const Token& kw) {
-    r.warn_unsupported(kw, kw.text);
-    r.skip_block(kw);
-}
-
 void ObjectReader::parse_area_light(Light& light) {
     light.area = true;
     // POV-Ray compat: the commas between the four values are optional.
@@ -338,7 +328,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
              }},
             {"interior_texture", &read_interior_texture},
             {"material", &read_material_modifier},
-            {"photons", &skip_unsupported_modifier},
+            {"photons", &read_object_photons},
             {"uv_mapping",
              [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
         };
@@ -444,7 +434,7 @@ Light ObjectReader::parse_light_body(const Token& kw, ObjectValue* looks) {
              [](ObjectReader& r, Light& l, const Token&) { l.media_attenuation = r.parse_bool_optional(); }},
             {"projected_through",
              [](ObjectReader& r, Light& l, const Token& kw) { r.read_projected_through(l, kw); }},
-            {"photons", &skip_unsupported_light_item},
+            {"photons", &read_light_photons},
         };
         if (const Item* item = items.find(w)) {
             (*item)(*this, light, t);

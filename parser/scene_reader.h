@@ -31,6 +31,8 @@ protected:
     void parse_global_settings(const Token& kw);
     /// Reads `radiosity { ... }` of the global settings into `rad`.
     void parse_radiosity(const Token& kw, RadiositySettings& rad);
+    /// global_settings' `photons { }` block (parser/photons.cpp).
+    void parse_photons(const Token& kw, PhotonSettings& ph);
     std::optional<Value> parse_item_value(const Token& t) final;
     /// A declared colour map, kept as a pigment holding only that map.
     Pigment color_map_value(const Token& kw);

@@ -150,14 +150,39 @@ void inherit_textures(Object& o) {
     }
 }
 
-// POV-Ray compat: an `ior` given in a plain texture's finish (3.1 syntax) becomes the object's interior ior, down
+// POV-Ray compat: an `ior` or `caustics` given in a plain texture's finish (3.1 syntax) becomes the object's interior ior, down
 // the tree, once the textures are inherited (Post_Process).
 void promote_finish_ior(Object& o) {
     const Texture& tx = o.texture;
-    if (tx.map_pattern.type == Pattern::Type::None && tx.texture_map.empty() && tx.finish.legacy_ior >= 0.0)
-        o.interior.ior = tx.finish.legacy_ior;
+    const bool plain = tx.map_pattern.type == Pattern::Type::None && tx.texture_map.empty();
+    if (plain && tx.finish.legacy_ior >= 0.0) o.interior.ior = tx.finish.legacy_ior;
+    if (plain && tx.finish.legacy_caustics >= 0.0) o.interior.caustics = tx.finish.legacy_caustics;
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) promote_finish_ior(child);
+}
+
+// POV-Ray compat (Post_Process): a CSG's photon flags that are set override its children's, down the tree.
+void promote_photons(Object& o) {
+    auto* csg = std::get_if<Csg>(&o.shape);
+    if (csg == nullptr) return;
+    const ObjectPhotons& p = o.photons;
+    for (Object& child : csg->children) {
+        ObjectPhotons& c = child.photons;
+        if (p.target) {
+            c.target = true;
+            c.spacing_multiplier = p.spacing_multiplier;
+        }
+        if (p.pass_through) c.pass_through = true;
+        if (p.reflection != PhotonSwitch::Unset) c.reflection = p.reflection;
+        if (p.refraction != PhotonSwitch::Unset) c.refraction = p.refraction;
+        if (!p.collect) c.collect = false;
+        // POV-Ray's CheckPassThru on the child, without its warning (given where the flags were read).
+        if (c.pass_through && c.target && c.refraction != PhotonSwitch::Off) {
+            if (c.refraction == PhotonSwitch::On) c.pass_through = false;
+            else c.refraction = PhotonSwitch::Off;
+        }
+        promote_photons(child);
+    }
 }
 
 }  // namespace
@@ -174,6 +199,7 @@ void SceneReader::place_object(ObjectValue ov) {
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
         promote_finish_ior(part.object);
+        promote_photons(part.object);
         m_builder.add_object(std::move(part.object));
     }
     for (Light& l : ov.lights) m_builder.add_light(std::move(l));
@@ -433,7 +459,14 @@ void SceneReader::parse_global_settings(const Token& kw) {
                  r.parse_radiosity(item, rad);
                  g.radiosity = rad;
              }},
-            {"photons", skip_unsupported_setting},
+            {"photons",
+             [](SceneReader& r, GlobalSettings& g, const Token& item) {
+                 PhotonSettings ph;
+                 r.parse_photons(item, ph);
+                 // POV-Ray compat: `gather` with a maximum of 0 turns photons off.
+                 if (ph.gather_max > 0) g.photons = ph;
+                 else g.photons.reset();
+             }},
             {"subsurface", skip_unsupported_setting},
             {"noise_generator",
              [](SceneReader& r, GlobalSettings& g, const Token&) {

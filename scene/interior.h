@@ -8,6 +8,10 @@
 
 namespace wardray::scene {
 
+/// POV-Ray's on/off/unset photon flags of objects and lights (PH_RFR_ON_FLAG and PH_RFR_OFF_FLAG, and the
+/// reflection pair).
+enum class PhotonSwitch : unsigned char { Unset, On, Off };
+
 /// The inside of an object: index of refraction and POV-Ray's fade of light passing through.
 struct Interior {
     double ior = 1.0;
@@ -16,6 +20,8 @@ struct Interior {
     Color fade_color;
     /// `hollow`: fog (and media) fill the object's inside; POV-Ray's default is not hollow.
     bool hollow = false;
+    /// `caustics C`: POV-Ray's fake caustics, stored as POV-Ray keeps it (C · 45); 0 leaves shadows alone.
+    double caustics = 0.0;
     /// `media { }` blocks inside the object, in their order (all of them act together).
     std::vector<Media> media;
     bool operator==(const Interior&) const = default;

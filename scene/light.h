@@ -7,6 +7,7 @@
 #include "core/color.h"
 #include "core/diagnostics.h"
 #include "core/vec3.h"
+#include "scene/interior.h"
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
@@ -57,6 +58,10 @@ struct Light {
     /// `projected_through { object }`, at most one: the light reaches only points that see it through this object
     /// (placed in world space); shadows count only between the point and the object. Empty for most lights.
     std::vector<Object> projected_through;
+    /// The light's `photons { refraction reflection area_light }` block.
+    PhotonSwitch photon_refraction = PhotonSwitch::Unset;
+    PhotonSwitch photon_reflection = PhotonSwitch::Unset;
+    bool photon_area_light = false;
     SourceLoc loc;
     bool operator==(const Light&) const = default;
 };

@@ -41,6 +41,18 @@ using Shape = UniqueVariant<WARDRAY_SHAPES(WARDRAY_SHAPE_TYPE) Csg>;
 inline constexpr std::array k_shape_keywords = {WARDRAY_SHAPES(WARDRAY_SHAPE_KEYWORD)};
 #undef WARDRAY_SHAPE_KEYWORD
 
+/// An object's `photons { target [spacing multiplier] refraction reflection collect pass_through }` block; the
+/// flags as POV-Ray keeps them after promoting a CSG's to its children and CheckPassThru.
+struct ObjectPhotons {
+    bool target = false;
+    double spacing_multiplier = 1.0;  ///< POV-Ray's Ph_Density
+    PhotonSwitch refraction = PhotonSwitch::Unset;
+    PhotonSwitch reflection = PhotonSwitch::Unset;
+    bool collect = true;  ///< `collect off` sets PH_IGNORE_PHOTONS_FLAG
+    bool pass_through = false;
+    bool operator==(const ObjectPhotons&) const = default;
+};
+
 /// One object of the scene: a shape, its placement, its appearance and its flags.
 struct Object {
     Shape shape;
@@ -62,6 +74,7 @@ struct Object {
     std::vector<int> light_groups;
     /// In a light_group without `global_lights`: the global lights do not light it (NO_GLOBAL_LIGHTS_FLAG).
     bool no_global_lights = false;
+    ObjectPhotons photons;
     std::vector<Object> clipped_by;  ///< clipping objects, placed relative to this object's transform
     /// `bounded_by` objects, placed as clipped_by: POV-Ray tests the object only on rays that meet them all.
     std::vector<Object> bounded_by;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "core/color.h"
 #include "core/diagnostics.h"
@@ -33,6 +34,30 @@ struct RadiositySettings {
     bool operator==(const RadiositySettings&) const = default;
 };
 
+/// The `photons { ... }` block of global_settings with POV-Ray 3.7's defaults (its ScenePhotonSettings).
+struct PhotonSettings {
+    double spacing = 1.0;  ///< surface separation (POV-Ray's surfaceSeparation)
+    int count = 0;         ///< `count`: a target photon count instead of spacing (0: not given)
+    int gather_min = 20;
+    int gather_max = 100;
+    int media_steps = 0;  ///< `media max_steps [, factor]`: photons in media (0: none)
+    double media_factor = 1.0;
+    double jitter = 0.4;
+    int max_trace_level = -1;  ///< −1: the scene's max_trace_level
+    double adc_bailout = -1.0;  ///< −1: the scene's adc_bailout
+    double expand_tolerance = 0.2;
+    int expand_min = 35;
+    double radius = -1.0;  ///< `radius gather, multiplier, media gather, media multiplier`; −1: estimated
+    double radius_multiplier = 1.0;
+    double media_radius = -1.0;
+    double media_radius_multiplier = 1.0;
+    double autostop = 0.5;
+    std::string file;  ///< save_file or load_file name (empty: neither)
+    bool load = false;  ///< `load_file` (else `save_file` when `file` is given)
+    SourceLoc loc;
+    bool operator==(const PhotonSettings&) const = default;
+};
+
 /// The scene-wide settings of global_settings, with POV-Ray 3.7's defaults.
 struct GlobalSettings {
     GammaCurve assumed_gamma;  ///< the working gamma: how the scene's colour values are encoded
@@ -45,6 +70,7 @@ struct GlobalSettings {
     double adc_bailout = 1.0 / 255.0;
     int noise_generator = 2;  ///< POV-Ray 3.7's default: range-corrected noise
     std::optional<RadiositySettings> radiosity;
+    std::optional<PhotonSettings> photons;  ///< POV-Ray's photonsEnabled: a block with gather_max > 0
     bool operator==(const GlobalSettings&) const = default;
 };
 

@@ -238,6 +238,9 @@ struct Finish {
     /// POV-Ray 3.1's `finish { ior }`, negative when not given: the object's interior takes it when the object is
     /// placed (POV-Ray's Post_Process), if the object's texture is a plain one.
     double legacy_ior = -1.0;
+    /// POV-Ray 3.1's `finish { caustics }`, negative when not given: promoted to the interior as `legacy_ior` is
+    /// (unscaled, as POV-Ray's Post_Process copies it).
+    double legacy_caustics = -1.0;
     SourceLoc loc;
     bool operator==(const Finish&) const = default;
 };

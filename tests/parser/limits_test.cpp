@@ -110,7 +110,7 @@ TEST(Limits, SingularMatricesAsPovRayTreatsThem) {
 // them once per lookup multiplied them with every redeclaration, so this parse never finished (arosFractal.pov).
 TEST(Limits, RedeclaredObjectKeepsOneCopyOfItsWarnings) {
     const Scene s = test::parse_ok(R"(
-        #declare Ring = torus { 1, 0.1 photons { target } }
+        #declare Ring = torus { 1, 0.1 radiosity { importance 0.5 } }
         #declare U = object { Ring }
         #for (I, 1, 40)
           #declare U = union { object { U } object { Ring translate I * x } }
@@ -118,9 +118,9 @@ TEST(Limits, RedeclaredObjectKeepsOneCopyOfItsWarnings) {
         object { U }
     )");
     ASSERT_EQ(s.objects.size(), 41u);
-    std::size_t photons_warnings = 0;
-    for (const Diagnostic& d : s.warnings) photons_warnings += d.message == "photons is not rendered yet";
-    EXPECT_EQ(photons_warnings, 1u);
+    std::size_t importance_warnings = 0;
+    for (const Diagnostic& d : s.warnings) importance_warnings += d.message == "object radiosity importance is not rendered yet";
+    EXPECT_EQ(importance_warnings, 1u);
 }
 
 }  // namespace

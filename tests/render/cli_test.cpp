@@ -192,6 +192,21 @@ TEST(Cli, RandomMediaSamplingGivesTheSameImageForAnyThreadCount) {
     EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
 }
 
+TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
+    // The photon pass shoots rows in parallel, each seeded by its unit and index, and builds one map in row order.
+    const fs::path dir = work_dir("photon_threads");
+    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "photons.pov", dir / "p.pov",
+                  fs::copy_options::overwrite_existing);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT1 -o one.hdr --stats s.json", dir).exit_status, 0);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o two.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o again.hdr", dir).exit_status, 0);
+    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
+    EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
+    const auto stats = nlohmann::json::parse(read_file(dir / "s.json"));
+    EXPECT_EQ(stats["photons"]["units"].get<int>(), 2);
+    EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
+}
+
 TEST(Cli, ParseTimeGeometryQueriesAndDebugOutputMatchPovRay) {
     // POV-Ray 3.7 prints: P=1.0000,4.0000,6.0000 N=0.0000,1.0000,0.0000 in=1 lo=-1.000,0.000,2.000 ...
     const fs::path dir = work_dir("queries");

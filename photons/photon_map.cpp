@@ -1,0 +1,175 @@
+// PhotonMap: packing photons as POV-Ray 3.7 does, the balanced kd-tree, the k-nearest gather and POV-Ray's
+// estimate of the gather radius (Jensen 1996, "Global Illumination using Photon Maps", sec. 3 and 4).
+#include "photons/photon_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "photons/photon_random.h"
+
+namespace wardray::photons {
+
+Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin) {
+    Photon ph;
+    ph.position = {static_cast<float>(position.x), static_cast<float>(position.y), static_cast<float>(position.z)};
+    // Ward's RGBE: a shared exponent, 8-bit mantissas; POV-Ray biases the exponent by 250 for dim photons.
+    const float c[3] = {static_cast<float>(colour.x), static_cast<float>(colour.y), static_cast<float>(colour.z)};
+    const float v = std::max(c[0], std::max(c[1], c[2]));
+    if (!(v >= 1e-32f)) {
+        ph.rgbe = {0, 0, 0, 0};
+    } else {
+        int e = 0;
+        const float scale = static_cast<float>(std::frexp(v, &e) * 256.0 / v);
+        for (int i = 0; i < 3; ++i) ph.rgbe[i] = static_cast<std::uint8_t>(std::max(0.0f, c[i] * scale));
+        ph.rgbe[3] = static_cast<std::uint8_t>(e + 250);
+    }
+    // The direction towards the origin as two angles of 127 steps per π (POV-Ray's addSurfacePhoton).
+    const Vec3 d = normalize(origin - position);
+    const double horizontal = std::sqrt(d.x * d.x + d.z * d.z);
+    double phi = horizontal > 0.0 ? std::acos(std::clamp(d.x / horizontal, -1.0, 1.0)) : 0.0;
+    if (d.z < 0.0) phi = -phi;
+    double theta = std::acos(std::min(1.0, horizontal));
+    if (d.y < 0.0) theta = -theta;
+    ph.theta = static_cast<std::int8_t>(theta * 127.0 / std::numbers::pi);
+    ph.phi = static_cast<std::int8_t>(phi * 127.0 / std::numbers::pi);
+    return ph;
+}
+
+Vec3 photon_colour(const Photon& p) {
+    if (p.rgbe[3] == 0) return {};
+    const float f = static_cast<float>(std::ldexp(1.0, static_cast<int>(p.rgbe[3]) - (250 + 8)));
+    return {p.rgbe[0] * f, p.rgbe[1] * f, p.rgbe[2] * f};
+}
+
+Vec3 photon_direction(const Photon& p) {
+    const double theta = p.theta * std::numbers::pi / 127.0;
+    const double phi = p.phi * std::numbers::pi / 127.0;
+    return {std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi)};
+}
+
+PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings)
+    : m_photons(std::move(photons)),
+      m_gather_max(settings.gather_max),
+      m_gather_min(settings.gather_min),
+      m_expand_tolerance(settings.expand_tolerance),
+      m_expand_min(settings.expand_min) {
+    if (m_photons.empty()) return;
+    build(0, static_cast<int>(m_photons.size()));
+    estimate_radius(settings);
+}
+
+void PhotonMap::build(int begin, int end) {
+    if (end - begin < 1) return;
+    // Split at the median of the axis along which the photons spread most (a balanced kd-tree, stored implicitly:
+    // the node of [begin, end) is its middle element).
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = begin; i < end; ++i)
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], m_photons[i].position[a]);
+            hi[a] = std::max(hi[a], m_photons[i].position[a]);
+        }
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+        if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+    const int mid = (begin + end - 1) / 2;
+    std::nth_element(m_photons.begin() + begin, m_photons.begin() + mid, m_photons.begin() + end,
+                     [axis](const Photon& a, const Photon& b) { return a.position[axis] < b.position[axis]; });
+    m_photons[mid].axis = static_cast<std::uint8_t>(axis);
+    build(begin, mid);
+    build(mid + 1, end);
+}
+
+void PhotonMap::search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+                       std::vector<std::pair<double, const Photon*>>& heap) const {
+    if (end - begin < 1) return;
+    const int mid = (begin + end - 1) / 2;
+    const Photon& ph = m_photons[mid];
+    const Vec3 v = ph.point() - p;
+    double d2 = dot(v, v);
+    // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
+    if (n) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
+    if (d2 < max_d2) {
+        heap.emplace_back(d2, &ph);
+        std::push_heap(heap.begin(), heap.end());
+        if (heap.size() > limit) {
+            std::pop_heap(heap.begin(), heap.end());
+            heap.pop_back();
+            max_d2 = heap.front().first;
+        }
+    }
+    const int axis = ph.axis;
+    const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
+    const bool below = delta < 0.0;
+    // The near side first, then the far side while the splitting plane is within reach.
+    if (below) search(begin, mid, p, n, max_d2, limit, heap);
+    else search(mid + 1, end, p, n, max_d2, limit, heap);
+    if (delta * delta < max_d2) {
+        if (below) search(mid + 1, end, p, n, max_d2, limit, heap);
+        else search(begin, mid, p, n, max_d2, limit, heap);
+    }
+}
+
+void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out) const {
+    out.photons.clear();
+    out.radius = size;
+    if (m_photons.empty() || m_gather_max <= 0) return;
+    std::vector<std::pair<double, const Photon*>> heap;
+    heap.reserve(static_cast<std::size_t>(m_gather_max) + 1);
+    double max_d2 = size * size;
+    search(0, static_cast<int>(m_photons.size()), p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
+    out.radius = std::sqrt(max_d2);
+    // Nearest first, ties by storage order, so the sum's rounding is the same on every run.
+    std::sort(heap.begin(), heap.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second < b.second;
+    });
+    for (const auto& e : heap) out.photons.push_back(e.second);
+}
+
+void PhotonMap::gather_adaptive(const Vec3& p, const Vec3& n, Gathered& out) const {
+    gather(p, m_min_radius, &n, out);
+    double previous = out.photons.size() / (out.radius * out.radius);
+    if (previous == 0.0) previous = 1e-16;
+    // POV-Ray's gatherNumSteps is 2: at most one wider gather, at the radius plus twice it.
+    if (static_cast<int>(out.photons.size()) >= m_gather_min) return;
+    Gathered wider;
+    gather(p, m_min_radius + m_radius_step, &n, wider);
+    const double density = wider.photons.size() / (wider.radius * wider.radius);
+    const int found = static_cast<int>(wider.photons.size());
+    if ((density - previous) / previous < m_expand_tolerance || (found < m_expand_min && found > 0))
+        out = std::move(wider);
+}
+
+void PhotonMap::estimate_radius(const scene::PhotonSettings& settings) {
+    m_min_radius = settings.radius;
+    if (m_min_radius <= 0.0) {
+        // POV-Ray's setGatherOptions: the mean density n / (π r²) of the gather_max photons around sampled
+        // photons gives the radius that holds gather_max photons on average; it grows by up to 21 times with the
+        // fraction of samples whose density at that radius is under 70 % (but over 5 %) of the mean.
+        const int n = static_cast<int>(m_photons.size());
+        const int samples = std::clamp(n / 20, 100, 1000);
+        Random rng(0x50484F544F4E53ull);
+        Gathered g;
+        double sum = 0.0;
+        for (int i = 0; i < samples; ++i) {
+            gather(m_photons[rng.below(n)].point(), 10000000.0, nullptr, g);
+            const double density =
+                g.radius > 0.0 ? g.photons.size() / (std::numbers::pi * g.radius * g.radius) : (i > 0 ? sum / i : 0.0);
+            sum += density;
+        }
+        const double mean = sum / samples;
+        m_min_radius = mean > 0.0 ? std::sqrt(m_gather_max / (mean * std::numbers::pi)) : 1.0;
+        int sparse = 0;
+        for (int i = 0; i < samples; ++i) {
+            gather(m_photons[rng.below(n)].point(), m_min_radius, nullptr, g);
+            if (g.radius <= 0.0) continue;
+            const double density = g.photons.size() / (std::numbers::pi * g.radius * g.radius);
+            if (density < mean * 0.7 && density > mean * 0.05) ++sparse;
+        }
+        m_min_radius *= 1.0 + 20.0 * static_cast<double>(sparse) / samples;
+    }
+    m_min_radius *= settings.radius_multiplier;
+    m_radius_step = m_min_radius * 2.0;
+}
+
+}  // namespace wardray::photons

@@ -1,0 +1,73 @@
+// PhotonMap: POV-Ray 3.7's surface photon map: photons stored as POV-Ray packs them (single-precision position,
+// an RGBE colour, the incoming direction in two signed bytes), a balanced kd-tree, and its adaptive gather.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "scene/settings.h"
+
+namespace wardray::photons {
+
+/// One stored photon, packed as POV-Ray packs it, so its rounding is the same.
+struct Photon {
+    std::array<float, 3> position{};
+    std::array<std::uint8_t, 4> rgbe{};  ///< Ward's RGBE with POV-Ray's exponent bias of 250
+    std::int8_t theta = 0;                ///< direction towards the photon's origin, 127 steps per π
+    std::int8_t phi = 0;
+    std::uint8_t axis = 0;  ///< the kd-tree's split axis at this node
+
+    Vec3 point() const { return {position[0], position[1], position[2]}; }
+};
+
+/// Packs a photon: its position, its colour (flux) and the point it came from.
+Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin);
+/// The photon's colour as POV-Ray unpacks it.
+Vec3 photon_colour(const Photon& p);
+/// The unit direction from the photon towards where it came from, from its two bytes.
+Vec3 photon_direction(const Photon& p);
+
+/// The photons found by a gather and the radius POV-Ray divides their sum by.
+struct Gathered {
+    std::vector<const Photon*> photons;
+    double radius = 0.0;
+};
+
+/// The photon map: built once after shooting, then read by every thread.
+class PhotonMap {
+public:
+    /// Builds the kd-tree over `photons` (their order decides nothing but ties) and POV-Ray's gather radius
+    /// (setGatherOptions: estimated from the photons' density unless the settings give it), with a fixed seed.
+    PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings);
+
+    std::size_t size() const { return m_photons.size(); }
+    /// The photons in the kd-tree's order.
+    const std::vector<Photon>& photons() const { return m_photons; }
+    double min_gather_radius() const { return m_min_radius; }
+
+    /// POV-Ray's gatherPhotons: up to gather_max photons nearest `p` within `size`, distances flattened along `n`
+    /// (d² grows by 16·|n·v|·d², so photons off the surface's plane count as farther) when `n` is given. The radius
+    /// is `size`, or the farthest photon kept when more were in reach.
+    void gather(const Vec3& p, double size, const Vec3* n, Gathered& out) const;
+    /// POV-Ray's gatherPhotonsAdaptive: gather at the map's radius, and once more at three times it when too few
+    /// photons were found and the density does not drop by more than expand_thresholds says.
+    void gather_adaptive(const Vec3& p, const Vec3& n, Gathered& out) const;
+
+private:
+    void build(int begin, int end);
+    void search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+                std::vector<std::pair<double, const Photon*>>& heap) const;
+    void estimate_radius(const scene::PhotonSettings& settings);
+
+    std::vector<Photon> m_photons;
+    int m_gather_max = 100;
+    int m_gather_min = 20;
+    double m_expand_tolerance = 0.2;
+    int m_expand_min = 35;
+    double m_min_radius = 0.0;
+    double m_radius_step = 0.0;
+};
+
+}  // namespace wardray::photons

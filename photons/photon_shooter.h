@@ -1,0 +1,41 @@
+// The photon pass: POV-Ray 3.7's photon shooting from every light at every target object, traced on Embree
+// through the targets' reflection and refraction, and the photon map built from what lands on surfaces.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "photons/photon_map.h"
+#include "scene/scene.h"
+
+namespace wardray::geometry {
+class SceneGeometry;
+}  // namespace wardray::geometry
+
+namespace wardray::photons {
+
+/// What the photon pass did, for --stats.
+struct PhotonStats {
+    std::uint64_t shot = 0;
+    std::uint64_t stored = 0;
+    std::size_t units = 0;       ///< light-and-target pairs shot
+    double spacing = 0.0;        ///< the surface spacing used (after `count`'s estimate)
+    double gather_radius = 0.0;  ///< the map's gather radius
+    double shoot_seconds = 0.0;
+    double build_seconds = 0.0;
+};
+
+/// POV-Ray's photon pass for a scene whose global_settings enable photons: the units (each light but fill lights
+/// with each target, in scene order), `count`'s spacing estimate, the shooting (rows of each unit in parallel, each
+/// row seeded by its unit and index, so the photons are the same for any number of threads), and the map. Null
+/// when no photon was stored. `progress`, when set, is called now and then with the photons stored so far.
+std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
+                                               PhotonStats& stats, void (*progress)(std::uint64_t) = nullptr);
+
+/// POV-Ray's ComputeShadowColour test: with a photon map, a shadow ray through `blocker` (a target that refracts
+/// photons of `light`) is black, since the photons carry that light.
+bool photons_replace_shadow(const scene::Object& blocker, const scene::Light& light);
+
+}  // namespace wardray::photons

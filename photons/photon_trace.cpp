@@ -1,0 +1,301 @@
+// PhotonTracer: POV-Ray 3.7's photon path (PhotonTrace::TraceRay, ComputeLightedTexture for photons,
+// ComputeRefractionForPhotons) on Embree: photons pass only targets and pass_through objects until they first
+// refract or reflect, then land on every collecting surface, carrying the flux of their share of the light.
+#include "photons/photon_trace.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+#include "core/constants.h"
+#include "geometry/object_query.h"
+#include "geometry/scene_geometry.h"
+#include "media/transmittance.h"
+#include "photons/reflectivity.h"
+#include "texture/normal.h"
+#include "texture/pattern.h"
+#include "texture/pigment.h"
+
+namespace wardray::photons {
+
+namespace {
+
+double max3(const Vec3& c) { return std::max(c.x, std::max(c.y, c.z)); }
+
+bool switch_on(scene::PhotonSwitch object, scene::PhotonSwitch light) {
+    return (object == scene::PhotonSwitch::On && light != scene::PhotonSwitch::Off) ||
+           (object != scene::PhotonSwitch::Off && light == scene::PhotonSwitch::On);
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> objects_containing(const scene::Scene& scene, const Vec3& p) {
+    std::vector<std::uint32_t> out;
+    const geometry::ObjectQuery query;
+    for (std::size_t o = 0; o < scene.objects.size(); ++o)
+        if (query.inside(scene.objects[o], p)) out.push_back(static_cast<std::uint32_t>(o));
+    return out;
+}
+
+/// What one photon's path carries: POV-Ray's thread variables of the photon pass.
+struct PhotonTracer::Path {
+    const ShotUnit* unit = nullptr;
+    std::vector<Photon>* out = nullptr;
+    int level = 0;
+    bool pass_prev = true;
+    bool pass_this = false;
+    double depth = 0.0;  ///< POV-Ray's photonDepth: the distance travelled from the light
+    bool hit_target = false;
+};
+
+PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry)
+    : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator) {
+    const scene::PhotonSettings& s = *scene.global.photons;
+    m_max_level = s.max_trace_level >= 0 ? s.max_trace_level : scene.global.max_trace_level;
+    m_bailout = s.adc_bailout >= 0.0 ? s.adc_bailout : scene.global.adc_bailout;
+}
+
+bool PhotonTracer::shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour,
+                         std::vector<Photon>& out) const {
+    Path path;
+    path.unit = &unit;
+    path.out = &out;
+    RayIn ray{origin, dir, {}};
+    ray.interiors = origin == unit.light->position && unit.light_interiors ? *unit.light_interiors
+                                                                            : objects_containing(m_scene, origin);
+    trace(ray, colour, 1.0, path);
+    return path.hit_target;
+}
+
+void PhotonTracer::trace(const RayIn& ray, Vec3 colour, double weight, Path& path) const {
+    if (path.level >= m_max_level || weight < m_bailout) return;
+    ++path.level;
+    const geometry::Ray r{ray.origin, ray.dir, m_geometry.self_intersection_offset(ray.origin), 1e30,
+                          geometry::RayKind::Shadow};
+    const std::optional<geometry::Hit> hit = m_geometry.intersect(r);
+    if (hit) {
+        const scene::Object& leaf = hit->leaf ? *hit->leaf : m_scene.objects[hit->object];
+        const bool old = path.pass_prev;
+        path.pass_prev = path.pass_this;
+        path.pass_this = false;
+        // Until it has refracted or reflected, a photon passes only pass_through objects on its way to the target.
+        bool stop = false;
+        if (path.level == 1 || path.pass_prev) {
+            const auto& parts = *path.unit->parts;
+            const bool in_target = std::find(parts.begin(), parts.end(), &leaf) != parts.end() ||
+                                   std::find(parts.begin(), parts.end(), &m_scene.objects[hit->object]) != parts.end();
+            if (leaf.photons.target && in_target) path.hit_target = true;
+            else if (leaf.photons.pass_through) path.pass_this = true;
+            else stop = true;
+        }
+        if (!stop) {
+            Vec3 raw = hit->normal;
+            if (dot(raw, ray.dir) > 0.0) raw = -raw;
+            const bool inside = !leaf.interior_texture.empty() && dot(hit->normal, ray.dir) > 0.0;
+            std::vector<const scene::Pattern*> warps;
+            texture(inside ? leaf.interior_texture.front() : leaf.texture, hit->position, warps, *hit, raw, ray,
+                    colour, weight, path);
+        }
+        path.pass_this = path.pass_prev;
+        path.pass_prev = old;
+    }
+    --path.level;
+}
+
+void PhotonTracer::texture(const scene::Texture& tx, const Vec3& p, std::vector<const scene::Pattern*>& warps,
+                           const geometry::Hit& hit, const Vec3& raw, const RayIn& ray, Vec3 colour, double weight,
+                           Path& path) const {
+    if (tx.texture_map.empty()) {
+        surface(tx, p, warps, hit, raw, ray, colour, weight, path);
+        return;
+    }
+    // A texture map splits the photon between the two entries around the pattern's value (by their weights for
+    // an average map).
+    const scene::Pattern& pattern = tx.map_pattern;
+    const Vec3 tp = texture::warp_point(pattern, p);
+    const auto& map = tx.texture_map;
+    warps.push_back(&pattern);
+    if (pattern.type == scene::Pattern::Type::Average) {
+        float total = 0.0f;
+        for (const auto& e : map) total += static_cast<float>(e.value);
+        for (const auto& e : map) texture(e.texture, tp, warps, hit, raw, ray, colour * (e.value / total), weight, path);
+    } else {
+        const double v = texture::pattern_value(pattern, tp, m_noise_generator);
+        const texture::MapLookup m = texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
+        if (m.prev == m.cur) {
+            texture(map[m.cur].texture, tp, warps, hit, raw, ray, colour, weight, path);
+        } else {
+            texture(map[m.cur].texture, tp, warps, hit, raw, ray, colour * m.fraction, weight, path);
+            texture(map[m.prev].texture, tp, warps, hit, raw, ray, colour * (1.0 - m.fraction), weight, path);
+        }
+    }
+    warps.pop_back();
+}
+
+void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::vector<const scene::Pattern*>& warps,
+                           const geometry::Hit& hit, const Vec3& raw, const RayIn& ray, Vec3 colour, double weight,
+                           Path& path) const {
+    const std::uint32_t id = hit.object;
+    const scene::Interior& interior = m_scene.objects[id].interior;
+    const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[id];
+    const bool inside_this = std::find(ray.interiors.begin(), ray.interiors.end(), id) != ray.interiors.end();
+    // POV-Ray's interior fade over the stretch travelled inside.
+    if (inside_this && interior.fade_power > 0.0 && std::fabs(interior.fade_distance) > kPovEpsilon)
+        colour = colour * media::interior_fade(interior, hit.t);
+    path.depth += hit.t;
+    // Store where it lands, once it has refracted or reflected (POV-Ray's addSurfacePhoton), with the flux of its
+    // share of the light: colour · spread² · distance² (not for parallel light), undoing the light's fade.
+    const ShotUnit& unit = *path.unit;
+    if (path.level > 1 && !path.pass_prev && leaf.photons.collect) {
+        const scene::Light& light = *unit.light;
+        double a = 1.0;
+        if (light.fade_power > 0.0 && std::fabs(light.fade_distance) > kPovEpsilon)
+            a = 2.0 / (1.0 + std::pow(path.depth / light.fade_distance, light.fade_power));
+        Vec3 flux = colour * (a * unit.spread * unit.spread);
+        if (!unit.parallel) flux = flux * (path.depth * path.depth);
+        path.out->push_back(make_photon(hit.position, flux, ray.origin));
+    }
+    if (path.pass_this) {
+        // POV-Ray compat: a pass_through object lets the photon on unchanged, and its depth is not taken back.
+        RayIn next{hit.position, ray.dir, ray.interiors};
+        auto it = std::find(next.interiors.begin(), next.interiors.end(), id);
+        if (it != next.interiors.end()) next.interiors.erase(it);
+        else next.interiors.push_back(id);
+        trace(next, colour, weight, path);
+        return;
+    }
+    // The layers, top first: their normals, reflectivities and what they let through.
+    constexpr std::size_t kMaxLayers = 8;
+    std::array<const scene::Texture*, kMaxLayers> layers{};
+    std::size_t count = 0;
+    for (auto it = tx.layers.rbegin(); it != tx.layers.rend() && count + 1 < kMaxLayers; ++it) layers[count++] = &*it;
+    layers[count++] = &tx;
+    struct Layer {
+        double weight;
+        Vec3 normal, reflectivity;
+        double exponent;
+    };
+    std::array<Layer, kMaxLayers> list{};
+    std::size_t listed = 0;
+    Vec3 filter{1.0, 1.0, 1.0};
+    double trans = 1.0;
+    Vec3 top_normal = raw, normal = raw;
+    for (std::size_t li = 0; li < count && trans > m_bailout; ++li) {
+        const scene::Texture& layer = *layers[li];
+        normal = raw;
+        if (layer.normal.pattern.type != scene::Pattern::Type::None) {
+            for (const scene::Pattern* w : warps) normal = texture::warp_normal(*w, normal);
+            normal = texture::perturb_normal(layer.normal, normal, p, m_noise_generator);
+            for (auto it = warps.rbegin(); it != warps.rend(); ++it) normal = texture::unwarp_normal(**it, normal);
+        }
+        if (li == 0) top_normal = normal;
+        const Color pc = texture::evaluate_pigment(layer.pigment, p, m_noise_generator);
+        // POV-Ray compat (photon pass): the layer's colour is filtered by the layers above before it tints the
+        // metallic reflection and the filter.
+        const Vec3 lay = pc.rgb() * filter;
+        Layer l{weight * trans, normal, {}, layer.finish.reflection_exponent};
+        const double cos_i = -dot(ray.dir, normal);
+        double ior = 1.0;
+        if (layer.finish.reflection_fresnel) {
+            const auto& in = ray.interiors;
+            const double top = in.empty() ? 1.0 : m_scene.objects[in.back()].interior.ior;
+            if (in.empty()) ior = interior.ior;
+            else if (inside_this) ior = in.size() == 1 ? 1.0 / interior.ior : top / interior.ior;
+            else ior = interior.ior / top;
+        }
+        l.reflectivity = reflectivity(layer.finish, cos_i, ior, l.weight);
+        if (layer.finish.reflection_metallic != 0.0) {
+            const double x = std::fabs(std::acos(std::clamp(cos_i, -1.0, 1.0))) / (std::numbers::pi / 2.0);
+            const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+            const double rm = layer.finish.reflection_metallic;
+            l.reflectivity = l.reflectivity * (Vec3{1.0, 1.0, 1.0} + (lay - Vec3{1.0, 1.0, 1.0}) * (rm * (1.0 - f)));
+        }
+        list[listed++] = l;
+        filter = filter * (lay * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});
+        if (layer.finish.conserve_energy) {
+            const Vec3& rf = l.reflectivity;
+            filter = filter * Vec3{std::min(1.0, 1.0 - rf.x), std::min(1.0, 1.0 - rf.y), std::min(1.0, 1.0 - rf.z)};
+        }
+        trans = std::min(1.0, std::fabs(texture::grey(filter)));
+    }
+    bool total_internal = false;
+    if (switch_on(leaf.photons.refraction, unit.light->photon_refraction) && trans > m_bailout) {
+        const double w = weight * std::max(max3(filter), 0.0);
+        total_internal = refract(hit, top_normal, raw, ray, colour, filter, w, path);
+    }
+    if (switch_on(leaf.photons.reflection, unit.light->photon_reflection)) {
+        for (std::size_t i = 0; i < listed; ++i) {
+            const Layer& l = list[i];
+            const Vec3 d = top_normal - l.normal;
+            const bool same = std::fabs(d.x) <= kPovEpsilon && std::fabs(d.y) <= kPovEpsilon && std::fabs(d.z) <= kPovEpsilon;
+            if ((total_internal && same) || l.reflectivity == Vec3{}) continue;
+            Vec3 c = colour;
+            if (l.exponent != 1.0) {
+                const double e = 1.0 / l.exponent;
+                c = {std::pow(c.x, e), std::pow(c.y, e), std::pow(c.z, e)};
+            }
+            // POV-Ray compat: every layer's reflection leaves about the last layer's normal.
+            reflect(hit, normal, raw, ray, l.reflectivity * c, l.weight * max3(l.reflectivity), path);
+        }
+    }
+    path.depth -= hit.t;
+}
+
+bool PhotonTracer::refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw, const RayIn& ray,
+                           const Vec3& colour, const Vec3& filter, double weight, Path& path) const {
+    // POV-Ray's interior bookkeeping and relative index, as for camera rays.
+    const std::uint32_t id = hit.object;
+    const double inner = m_scene.objects[id].interior.ior;
+    RayIn next{hit.position, ray.dir, ray.interiors};
+    auto& in = next.interiors;
+    auto top_ior = [&]() { return m_scene.objects[in.back()].interior.ior; };
+    double ior = 1.0;
+    if (in.empty()) {
+        in.push_back(id);
+        ior = 1.0 / inner;
+    } else if (in.back() == id) {
+        in.pop_back();
+        ior = in.empty() ? inner : inner / top_ior();
+    } else if (auto it = std::find(in.begin(), in.end(), id); it != in.end()) {
+        in.erase(it);
+        ior = 1.0;
+    } else {
+        ior = top_ior() / inner;
+        in.push_back(id);
+    }
+    if (std::fabs(ior - 1.0) < kPovEpsilon) {
+        trace(next, colour * filter, weight, path);
+        return false;
+    }
+    // Snell's law in vector form (Heckbert 1989).
+    double cos_n = dot(ray.dir, normal);
+    Vec3 local = -normal;
+    if (cos_n <= 0.0) {
+        local = normal;
+        cos_n = -cos_n;
+    }
+    const double t = 1.0 + ior * ior * (cos_n * cos_n - 1.0);
+    if (t < 0.0) {
+        reflect(hit, normal, raw, ray, colour, weight, path);
+        return true;
+    }
+    next.dir = normalize(ray.dir * ior + local * (ior * cos_n - std::sqrt(t)));
+    trace(next, colour * filter, weight, path);
+    return false;
+}
+
+void PhotonTracer::reflect(const geometry::Hit& hit, const Vec3& n, const Vec3& raw, const RayIn& ray,
+                           const Vec3& colour, double weight, Path& path) const {
+    // The mirror direction, bent back above the true surface as POV-Ray does for bumped normals.
+    Vec3 d = ray.dir - 2.0 * dot(ray.dir, n) * n;
+    const double k = dot(d, raw);
+    if (k < 0.0) {
+        if (dot(d, n) < 0.0) d = ray.dir - 2.0 * dot(ray.dir, raw) * raw;
+        else d += -2.0 * k * raw;
+    }
+    const RayIn next{hit.position, normalize(d), ray.interiors};
+    trace(next, colour, weight, path);
+}
+
+}  // namespace wardray::photons

@@ -1,0 +1,71 @@
+// PhotonTracer: one photon's path through the scene as POV-Ray 3.7's PhotonTrace follows it: to the target
+// (through pass_through objects), through its layers' refraction and reflection, stored where it lands.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "photons/photon_map.h"
+#include "scene/scene.h"
+
+namespace wardray::geometry {
+class SceneGeometry;
+struct Hit;
+}  // namespace wardray::geometry
+
+namespace wardray::photons {
+
+/// The light and target a photon is shot for, and the spread that sizes its stored flux.
+struct ShotUnit {
+    const scene::Light* light = nullptr;
+    const std::vector<const scene::Object*>* parts = nullptr;  ///< every object of the target's tree
+    double spread = 0.0;   ///< POV-Ray's photonSpread: the angle (or, parallel, the distance) between photons
+    bool parallel = false;
+    /// The objects that contain the light's position (the ray starts inside them), for photons that start there.
+    const std::vector<std::uint32_t>* light_interiors = nullptr;
+};
+
+/// The objects of `scene` that contain `p` (POV-Ray starts a photon's ray inside them).
+std::vector<std::uint32_t> objects_containing(const scene::Scene& scene, const Vec3& p);
+
+/// Traces photons; stateless, so one instance serves every thread.
+class PhotonTracer {
+public:
+    PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
+
+    /// Follows a photon of `colour` from `origin` along the unit `dir`, appending what it stores to `out`; true
+    /// when it reached the unit's target (POV-Ray's hitObject, for autostop).
+    bool shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour,
+               std::vector<Photon>& out) const;
+
+private:
+    struct Path;
+    struct RayIn {
+        Vec3 origin, dir;
+        std::vector<std::uint32_t> interiors;  ///< the objects the ray is inside, innermost last
+    };
+    /// POV-Ray's PhotonTrace::TraceRay.
+    void trace(const RayIn& ray, Vec3 colour, double weight, Path& path) const;
+    /// POV-Ray's ComputeTextureColour and ComputeOneTextureColour in the photon pass: texture maps split the photon.
+    void texture(const scene::Texture& tx, const Vec3& p, std::vector<const scene::Pattern*>& warps,
+                 const geometry::Hit& hit, const Vec3& raw_normal, const RayIn& ray, Vec3 colour, double weight,
+                 Path& path) const;
+    /// POV-Ray's PhotonTrace::ComputeLightedTexture: store, then refract and reflect.
+    void surface(const scene::Texture& tx, const Vec3& p, const std::vector<const scene::Pattern*>& warps,
+                 const geometry::Hit& hit, const Vec3& raw_normal, const RayIn& ray, Vec3 colour, double weight,
+                 Path& path) const;
+    /// POV-Ray's ComputeRefractionForPhotons; true on total internal reflection.
+    bool refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
+                 const Vec3& colour, const Vec3& filter, double weight, Path& path) const;
+    /// POV-Ray's ComputeReflection for a photon.
+    void reflect(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
+                 const Vec3& colour, double weight, Path& path) const;
+
+    const scene::Scene& m_scene;
+    const geometry::SceneGeometry& m_geometry;
+    int m_max_level = 5;
+    double m_bailout = 1.0 / 255.0;
+    int m_noise_generator = 2;
+};
+
+}  // namespace wardray::photons

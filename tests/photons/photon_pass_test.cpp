@@ -1,0 +1,127 @@
+// The photon pass on small scenes: the flux photons carry through a clear target equals the light they replace,
+// the parser's photon blocks, and the same photons for any number of threads.
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <cstring>
+#include <numbers>
+
+#include "../parser/test_util.h"
+#include "geometry/scene_geometry.h"
+#include "photons/photon_map.h"
+#include "photons/photon_shooter.h"
+
+namespace wardray::photons {
+namespace {
+
+// A clear target of index 1 above a floor, the light straight above: photons pass it unbent and land with the
+// light's irradiance, POV-Ray's I·cos θ (its lights do not fall off with distance).
+constexpr const char* kClearTarget = R"(
+global_settings { photons { spacing 0.01 jitter 0 } }
+light_source { <0, 10, 0> color rgb <0.8, 0.6, 0.4> photons { refraction on } }
+plane { y, 0 pigment { rgb 1 } }
+sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1 } photons { target collect off } }
+)";
+
+TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
+    const scene::Scene scene = parser::test::parse_ok(kClearTarget);
+    ASSERT_TRUE(scene.global.photons);
+    const geometry::SceneGeometry geometry(scene);
+    PhotonStats stats;
+    const auto map = shoot_photons(scene, geometry, stats);
+    ASSERT_TRUE(map);
+    EXPECT_EQ(stats.units, 1u);
+    EXPECT_GT(stats.stored, 10000u);
+    // Away from the point under the light, where POV-Ray's polar rows of photons bias any k-nearest estimate.
+    for (const Vec3 p : {Vec3{0.5, 0, 0.2}, Vec3{-0.3, 0, 0.6}, Vec3{0.7, 0, -0.5}}) {
+        Gathered g;
+        map->gather_adaptive(p, {0, 1, 0}, g);
+        Vec3 flux;
+        for (const Photon* ph : g.photons) flux += photon_colour(*ph);
+        const Vec3 density = flux / (std::numbers::pi * g.radius * g.radius);
+        const double cos_theta = 10.0 / length(Vec3{0, 10, 0} - p);
+        EXPECT_NEAR(density.x, 0.8 * cos_theta, 0.8 * 0.05) << p.x;
+        EXPECT_NEAR(density.z / density.x, 0.5, 0.02);
+    }
+}
+
+TEST(PhotonPass, SameMapForAnyNumberOfThreads) {
+    const scene::Scene scene = parser::test::parse_ok(kClearTarget);
+    const geometry::SceneGeometry geometry(scene);
+    auto shoot = [&](int threads) {
+        PhotonStats stats;
+        std::unique_ptr<const PhotonMap> map;
+        tbb::task_arena(threads).execute([&] { map = shoot_photons(scene, geometry, stats); });
+        return map;
+    };
+    const auto one = shoot(1);
+    const auto two = shoot(2);
+    ASSERT_TRUE(one && two);
+    ASSERT_EQ(one->size(), two->size());
+    EXPECT_EQ(std::memcmp(one->photons().data(), two->photons().data(), one->size() * sizeof(Photon)), 0);
+}
+
+TEST(PhotonPass, NoTargetNoPhotons) {
+    const scene::Scene scene = parser::test::parse_ok(R"(
+global_settings { photons { spacing 0.01 } }
+light_source { <0, 10, 0> color rgb 1 }
+plane { y, 0 pigment { rgb 1 } }
+sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1.5 } }
+)");
+    const geometry::SceneGeometry geometry(scene);
+    PhotonStats stats;
+    EXPECT_FALSE(shoot_photons(scene, geometry, stats));
+    EXPECT_EQ(stats.units, 0u);
+}
+
+TEST(PhotonBlocks, ReadAsPovRayReadsThem) {
+    const scene::Scene s = parser::test::parse_ok(R"(
+global_settings { photons { count 20000 gather 10, 50 media 100, 2 jitter 0.2 max_trace_level 7 adc_bailout 0.02
+                            expand_thresholds 0.3, 25 radius 0.5, 2 autostop 0.3 } }
+light_source { <0, 10, 0> color rgb 1 photons { refraction on reflection off area_light } }
+union {
+  sphere { 0, 1 photons { reflection on collect off } }
+  sphere { x, 1 }
+  photons { target 0.5 refraction on pass_through }
+}
+)");
+    ASSERT_TRUE(s.global.photons);
+    const scene::PhotonSettings& p = *s.global.photons;
+    EXPECT_EQ(p.count, 20000);
+    EXPECT_EQ(p.gather_min, 10);
+    EXPECT_EQ(p.gather_max, 50);
+    EXPECT_EQ(p.media_steps, 100);
+    EXPECT_EQ(p.media_factor, 2.0);
+    EXPECT_EQ(p.max_trace_level, 7);
+    EXPECT_EQ(p.expand_min, 25);
+    EXPECT_EQ(p.radius, 0.5);
+    EXPECT_EQ(p.radius_multiplier, 2.0);
+    EXPECT_EQ(p.autostop, 0.3);
+    ASSERT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].photon_refraction, scene::PhotonSwitch::On);
+    EXPECT_EQ(s.lights[0].photon_reflection, scene::PhotonSwitch::Off);
+    EXPECT_TRUE(s.lights[0].photon_area_light);
+    // A union of plain shapes is split into its parts, each keeping its own flags but those the union sets.
+    ASSERT_EQ(s.objects.size(), 2u);
+    // CheckPassThru: pass_through given after target and refraction on turns refraction off, with its warning.
+    const scene::ObjectPhotons& u = s.objects[0].photons;
+    EXPECT_TRUE(u.target);
+    EXPECT_EQ(u.spacing_multiplier, 0.5);
+    EXPECT_TRUE(u.pass_through);
+    EXPECT_EQ(u.refraction, scene::PhotonSwitch::Off);
+    // The union's set flags override its children's; what it leaves unset the children keep.
+    const scene::Object* kids = s.objects.data();
+    EXPECT_TRUE(kids[0].photons.target);
+    EXPECT_EQ(kids[0].photons.reflection, scene::PhotonSwitch::On);
+    EXPECT_FALSE(kids[0].photons.collect);
+    EXPECT_EQ(kids[1].photons.refraction, scene::PhotonSwitch::Off);
+    EXPECT_TRUE(kids[1].photons.pass_through);
+    bool warned = false;
+    for (const Diagnostic& d : s.warnings) warned = warned || d.message.find("Turning off refraction") != std::string::npos;
+    EXPECT_TRUE(warned);
+    // `gather` with a maximum of 0 turns photons off.
+    EXPECT_FALSE(parser::test::parse_ok("global_settings { photons { gather 0, 0 } }").global.photons);
+}
+
+}  // namespace
+}  // namespace wardray::photons
