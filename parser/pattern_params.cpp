@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
+#include <mutex>
 
 #include "core/constants.h"
 #include "parser/parser.h"
@@ -250,6 +252,16 @@ std::shared_ptr<const DensityFile> Parser::read_density_file(const Token& at, co
     }
     if (found.empty()) fail(at, "Cannot read media density file.");
     if (auto it = m_density_files.find(found.string()); it != m_density_files.end()) return it->second;
+    // Parses alive at the same time share one copy of a file, so their scenes compare equal (patterns compare
+    // density files by identity).
+    static std::mutex shared_mutex;
+    static std::map<std::string, std::weak_ptr<const DensityFile>> shared;
+    const std::lock_guard<std::mutex> lock(shared_mutex);
+    if (auto it = shared.find(found.string()); it != shared.end())
+        if (std::shared_ptr<const DensityFile> alive = it->second.lock()) {
+            m_density_files.emplace(found.string(), alive);
+            return alive;
+        }
     std::ifstream in(found, std::ios::binary);
     const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (bytes.size() < 6) fail(at, "Error reading density_file");
@@ -272,6 +284,7 @@ std::shared_ptr<const DensityFile> Parser::read_density_file(const Token& at, co
         d->raw[i] = v;
     }
     m_density_files.emplace(found.string(), d);
+    shared[found.string()] = d;
     return d;
 }
 

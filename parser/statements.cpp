@@ -447,7 +447,6 @@ void SceneReader::parse_global_settings(const Token& kw) {
                      r.warn(kw, "Illegal Value: number_of_waves must be greater than 0.\nChanged to 1.");
                      g.number_of_waves = 1;
                  }
-                 if (r.m_options.set_number_of_waves) r.m_options.set_number_of_waves(g.number_of_waves);
              }},
             {"mm_per_unit", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
             {"irid_wavelength", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_color(); }},
