@@ -201,7 +201,7 @@ TEST(ImagePatterns, SplineComponentsInsideFunctions) {
     const parser::ParseResult r = parser::parse_string(
         "global_settings { assumed_gamma 1 }\n#declare S = function { spline { linear_spline 0, <0, 1, 5>, 1, <1, 3, 7> } }\n"
         "#declare F = function { S(x).y + S(x * 2).z }\n"
-        "#if (abs(F(0.25) - (1.5 + 6)) > 1e-12) #error \"wrong spline component\" #end\n",
+        "#if (abs(F(0.25, 0, 0) - (1.5 + 6)) > 1e-12) #error \"wrong spline component\" #end\n",
         "test.pov", options_with_povray_include());
     EXPECT_TRUE(r.ok());
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
