@@ -17,6 +17,7 @@
 #include "parser/parse.h"
 #include "render/film.h"
 #include "render/output_gamma.h"
+#include "render/png_palette.h"
 #include "texture/noise.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -68,6 +69,12 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         image->width = film->width();
         image->height = film->height();
         image->rgb = film->data();
+        // A palette PNG's indices too (bump_map use_index, material_map, image_map filter N).
+        int w = 0, h = 0;
+        std::vector<std::uint8_t> index;
+        if (render::read_png_palette_indices(file, w, h, index, image->palette_size) && w == image->width &&
+            h == image->height)
+            image->index = std::move(index);
         return image;
     };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
@@ -87,6 +94,7 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.pattern_value = [](const scene::Pattern& pattern, const Vec3& p, int noise_generator) {
         return texture::pattern_value(pattern, texture::warp_point(pattern, p), noise_generator);
     };
+    parse_options.set_number_of_waves = [](int count) { texture::set_number_of_waves(count); };
     parse_options.pigment_value = [](const scene::Pigment& pigment, const Vec3& p, int noise_generator) {
         return texture::evaluate_pigment(pigment, p, noise_generator);
     };

@@ -262,20 +262,33 @@ int hash3d(int a, int b, int c) {
 
 double pattern_rand(std::size_t i) { return tables().rands[i % 32768]; }
 
-const std::vector<WaveSource>& wave_sources() {
-    static const std::vector<WaveSource> sources = [] {
-        std::vector<WaveSource> w;
-        // POV-Ray's Initialize_Waves: centres from DNoise at (i, 0, 0), frequencies from an LCG.
-        PovLcg lcg{static_cast<std::uint32_t>(-560851967)};
-        for (int i = 0; i < 10; ++i) {
-            WaveSource s;
-            s.center = normalize(dnoise(Vec3{static_cast<double>(i), 0.0, 0.0}));
-            s.frequency = lcg.next() * 0.000030518509476 + 0.01;
-            w.push_back(s);
-        }
-        return w;
-    }();
+namespace {
+
+std::vector<WaveSource> make_wave_sources(int count) {
+    std::vector<WaveSource> w;
+    // POV-Ray's Initialize_Waves: centres from DNoise at (i, 0, 0), frequencies from an LCG.
+    PovLcg lcg{static_cast<std::uint32_t>(-560851967)};
+    for (int i = 0; i < count; ++i) {
+        WaveSource s;
+        s.center = normalize(dnoise(Vec3{static_cast<double>(i), 0.0, 0.0}));
+        s.frequency = lcg.next() * 0.000030518509476 + 0.01;
+        w.push_back(s);
+    }
+    return w;
+}
+
+std::vector<WaveSource>& current_wave_sources() {
+    static std::vector<WaveSource> sources = make_wave_sources(10);
     return sources;
+}
+
+}  // namespace
+
+const std::vector<WaveSource>& wave_sources() { return current_wave_sources(); }
+
+void set_number_of_waves(int count) {
+    std::vector<WaveSource>& sources = current_wave_sources();
+    if (static_cast<int>(sources.size()) != count) sources = make_wave_sources(count);
 }
 
 }  // namespace wardray::function

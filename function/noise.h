@@ -41,7 +41,12 @@ struct WaveSource {
     double frequency = 1.0;
 };
 
-/// The wave sources exactly as POV-Ray makes them for its default `number_of_waves 10`.
+/// The wave sources exactly as POV-Ray makes them (Initialize_Waves) for the scene's `number_of_waves`, 10 unless
+/// set_number_of_waves said otherwise.
 const std::vector<WaveSource>& wave_sources();
+
+/// Makes wave_sources() give POV-Ray's first `count` sources (global_settings { number_of_waves }). Not
+/// thread-safe: call it before rendering (the integrator does, from the scene's setting).
+void set_number_of_waves(int count);
 
 }  // namespace wardray::function

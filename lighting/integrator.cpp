@@ -71,6 +71,7 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     // `#version 3.6` (or older) still gets it.
     m_ambient_is_light = !scene.global.radiosity.has_value() || scene.version < 3.7;
     m_noise_generator = scene.global.noise_generator;
+    texture::set_number_of_waves(scene.global.number_of_waves);
     // Indirect light only for a radiosity block with --gi on: through the cache, or by brute force.
     if (scene.global.radiosity.has_value() && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);

@@ -15,6 +15,7 @@
 #include "media/participating_media.h"
 #include "media/transmittance.h"
 #include "photons/photon_shooter.h"
+#include "texture/image_map.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -36,7 +37,11 @@ double smooth_ramp(double low, double high, double x) {
 bool pigment_opaque(const scene::Pigment& p) {
     if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
     // An image map lets light through with filter or transmit all, and where `once` leaves no image.
-    if (p.image_map) return !p.image_map->once && p.image_map->filter_all == 0.0 && p.image_map->transmit_all == 0.0;
+    if (p.image_map) {
+        for (const scene::PaletteFT& ft : p.image_map->palette_ft)
+            if (ft.filter != 0.0f || ft.transmit != 0.0f) return false;
+        return !p.image_map->once && p.image_map->filter_all == 0.0 && p.image_map->transmit_all == 0.0;
+    }
     for (const auto& e : p.color_map)
         if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
     for (const auto& e : p.pigment_map)
@@ -103,6 +108,10 @@ Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, 
                 total += static_cast<float>(e.value);
             }
             filter = sum / static_cast<double>(total);
+        } else if (texture.material_map) {
+            const auto& map = texture.texture_map;
+            const int i = texture::material_map_index(*texture.material_map, tp, static_cast<int>(map.size()));
+            filter = texture_filter(map[static_cast<std::size_t>(i)].texture, tp, caustics);
         } else {
             const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
             const auto& map = texture.texture_map;

@@ -12,6 +12,7 @@
 #include "photons/photon_map.h"
 #include "photons/reflectivity.h"
 #include "media/transmittance.h"
+#include "texture/image_map.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -62,6 +63,14 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
     s.p_texture = texture::warp_point(pattern, s.p_texture);
     const auto& map = texture.texture_map;
     if (pattern.type == scene::Pattern::Type::Average) return shade_average(texture, s, warps, state, ctx);
+    if (texture.material_map) {
+        // material_map: the image picks one material, lit on its own at the map's warped point.
+        const int i = texture::material_map_index(*texture.material_map, s.p_texture, static_cast<int>(map.size()));
+        warps.push_back(&pattern);
+        const Vec3 colour = shade_texture(map[static_cast<std::size_t>(i)].texture, s, warps, state, ctx);
+        warps.pop_back();
+        return colour;
+    }
     const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator);
     const texture::MapLookup m =
         texture::search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
@@ -123,7 +132,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         const scene::Texture* layer = layers[li];
         if (trans <= bailout) break;
         Vec3 n = s.raw_normal;
-        if (layer->normal.pattern.type != scene::Pattern::Type::None) {
+        if (layer->normal.perturbs()) {
             for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
             n = texture::perturb_normal(layer->normal, n, s.p_texture, m_noise_generator);
             for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = texture::unwarp_normal(**it, n);

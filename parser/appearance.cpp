@@ -248,6 +248,7 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         if (t.kind != TokenKind::Identifier) fail(t, "expected a texture item but found '" + t.text + "'");
         // texture_map patterns: `texture { gradient y texture_map { ... } }` or `checker texture {..} texture {..}`.
         const int count = parse_pattern_keyword(t, tx.map_pattern);
+        const bool list_inside = take_pattern_list_open();
         if (count >= 0) {
             tx.texture_map.clear();
             for (int i = 0; i < count && is_word(peek(), "texture"); ++i) {
@@ -255,11 +256,16 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
                 tx.texture_map.push_back({static_cast<double>(i), parse_texture_body(tkw)});
                 accept(",");
             }
+            if (list_inside) expect("}");
             continue;
         }
         if (tx.map_pattern.type != Pattern::Type::None && parse_pattern_modifier(t, tx.map_pattern)) continue;
         next();
-        if (t.text == "no_bump_scale") {
+        if (t.text == "tiles") {
+            tx = parse_tiles(t);
+        } else if (t.text == "material_map") {
+            parse_material_map(t, tx);
+        } else if (t.text == "no_bump_scale") {
             // POV-Ray's DONT_SCALE_BUMPS flag: the bumps would grow with the texture's scale; wardray keeps their size.
             warn_unsupported(t, "no_bump_scale");
         } else if (t.text == "pigment") {
@@ -292,6 +298,32 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             fail(t, "expected pigment, finish, normal or a transform in texture but found '" + t.text + "'");
         }
     }
+}
+
+Texture AppearanceReader::parse_texture_list(const Token& kw) {
+    // POV-Ray compat: textures in a row are layers, the last listed on top (Link_Textures).
+    if (!is_word(peek(), "texture")) fail(peek(), "expected a texture in '" + kw.text + "' but found " + describe_token(peek()));
+    Texture base = parse_texture_body(next());
+    while (is_word(peek(), "texture")) base.layers.push_back(parse_texture_body(next()));
+    return base;
+}
+
+Texture AppearanceReader::parse_tiles(const Token& kw) {
+    // `tiles { texture {..} tile2 texture {..} }`: a checker of the two; the first tile at the pattern's value 1
+    // (POV-Ray's Parse_Tiles keeps the old tiles' order).
+    expect("{");
+    Texture tx;
+    tx.map_pattern.type = Pattern::Type::Checker;
+    tx.map_pattern.frequency = 0.0;
+    Texture first = parse_texture_list(kw);
+    const Token second = peek();
+    if (!is_word(second, "tile2")) fail(second, "expected 'tile2' in tiles but found " + describe_token(second));
+    next();
+    Texture other = is_word(peek(), "texture") ? parse_texture_list(second) : default_texture();
+    expect("}");
+    tx.texture_map.push_back({0.0, std::move(other)});
+    tx.texture_map.push_back({1.0, std::move(first)});
+    return tx;
 }
 
 void AppearanceReader::parse_texture_part_identifiers(Texture& tx) {
@@ -401,6 +433,9 @@ void AppearanceReader::directive_default(const Token& tok) {
             const Texture tx = parse_texture_body(t);
             m_default_pigment = tx.pigment;
             m_default_finish = tx.finish;
+            if (tx.normal.perturbs()) m_default_normal = tx.normal;
+        } else if (is_word(t, "normal")) {
+            m_default_normal = parse_normal_body(t);
         } else if (is_word(t, "pigment")) {
             m_default_pigment = parse_pigment_body(t);
         } else if (is_word(t, "finish")) {
@@ -409,7 +444,7 @@ void AppearanceReader::directive_default(const Token& tok) {
             warn_unsupported(t, t.text);
             skip_block(t);
         } else {
-            fail(t, "expected texture, pigment or finish in #default but found '" + t.text + "'");
+            fail(t, "expected texture, pigment, normal or finish in #default but found '" + t.text + "'");
         }
     }
 }

@@ -29,6 +29,10 @@ protected:
     Texture parse_texture_body(const Token& kw);
     /// Reads texture items up to `close` ('}' of a texture block or ']' of a texture_map entry).
     void parse_texture_items(Texture& tx, const Token& kw, const char* close);
+    /// Reads `texture { } texture { } ...`: the first texture with the others as layers over it.
+    Texture parse_texture_list(const Token& kw);
+    /// Reads `tiles { texture { } tile2 texture { } }` after its keyword (a checker of two textures).
+    Texture parse_tiles(const Token& kw);
     /// Reads the pigment, normal and finish identifiers that may open a plain texture's items.
     void parse_texture_part_identifiers(Texture& tx);
     /// Reads `interior { ... }` after its keyword.
@@ -54,6 +58,8 @@ protected:
     virtual Pigment parse_density_body(const Token& kw) = 0;
     /// Reads `normal { ... }` after its keyword (the pattern reader's).
     virtual Normal parse_normal_body(const Token& kw, const Normal* base = nullptr) = 0;
+    /// Reads `material_map { ... }` after its keyword: `tx` becomes the material map (the image reader's).
+    virtual void parse_material_map(const Token& kw, Texture& tx) = 0;
     /// Reads a colour map after its keyword (the pattern reader's).
     virtual std::vector<ColorMapEntry> parse_color_map(const Token& kw) = 0;
     /// True when `t` can start a float, vector or colour expression (the pattern reader's).
@@ -65,19 +71,27 @@ protected:
     virtual int parse_pattern_keyword(const Token& t, Pattern& pat) = 0;
     /// Reads one pattern modifier; false when `t` is none (the pattern reader's).
     virtual bool parse_pattern_modifier(const Token& t, Pattern& pat) = 0;
+    /// True (once) when the pattern just read takes its list inside its braces (object): the caller reads the '}'
+    /// after the list.
+    virtual bool take_pattern_list_open() = 0;
 
     /// Reads a colour's keywords and components into `c`; `any` when a colour was already read.
     Color read_color(Color c, bool any);
 
-    /// A texture made of the current #default pigment and finish.
+    /// A texture made of the current #default pigment, normal and finish.
     Texture default_texture() const {
         Texture t;
         t.pigment = m_default_pigment;
         t.finish = m_default_finish;
+        t.normal = default_normal();
         return t;
     }
+    /// The normal a `normal { }` block starts from where there is none to modify: the #default normal, if any
+    /// (POV-Ray's Parse_Tnormal copies Default_Texture's), else no perturbation.
+    Normal default_normal() const { return m_default_normal.value_or(Normal{}); }
     Pigment m_default_pigment;
     Finish m_default_finish;
+    std::optional<Normal> m_default_normal;
     /// Finish items given with `albedo` in the block being read (bits: diffuse, phong, specular).
     unsigned m_finish_albedo = 0;
     /// The working gamma, once global_settings' assumed_gamma is read: sRGB colours are re-encoded into it.

@@ -202,11 +202,20 @@ private:
                 m_prog.emit_external(make_pigment_channel(f.pigment, channel, m_p.m_options), n);
                 return;
             }
-            case UserFunction::Kind::Spline:
-                // Read and flagged: the function then evaluates this call to 0 and its user warns.
-                if (m_p.accept(".")) m_p.expect_identifier();
-                m_prog.emit_unsupported(n, "a spline function called inside a function is not rendered yet");
+            case UserFunction::Kind::Spline: {
+                // A component of the spline's value (`S(t).y`); a call without one is read and flagged: the
+                // function then evaluates it to 0 and its user warns.
+                if (m_p.accept(".")) {
+                    const Token item = m_p.expect_identifier();
+                    const int channel = pigment_channel(item.text.view());
+                    if (channel < 0 || channel > 4)
+                        m_p.fail(item, "unknown dot item '." + item.text + "' of a spline function");
+                    m_prog.emit_external(make_spline_channel(f.spline, channel), n);
+                    return;
+                }
+                m_prog.emit_unsupported(n, "a spline function called inside a function without a component (.x, .y, ...) is not rendered yet");
                 return;
+            }
             default:
                 break;
         }

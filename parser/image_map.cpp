@@ -1,5 +1,6 @@
 // image_map pigments: the image file (read through ParseOptions::read_image), its gamma and its mapping.
 #include <cmath>
+#include <functional>
 
 #include "parser/parser.h"
 
@@ -9,6 +10,7 @@ namespace {
 
 /// The image file types POV-Ray names before the file; the name alone is enough for the reader.
 bool is_image_type(const TokenText& w) {
+    if (w.view().empty()) return false;
     static const char* const types[] = {"gif", "tga", "iff", "ppm", "pgm", "png", "jpeg", "tiff", "sys", "exr", "hdr"};
     for (const char* t : types)
         if (w == t) return true;
@@ -18,7 +20,7 @@ bool is_image_type(const TokenText& w) {
 }  // namespace
 
 std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const std::string& name,
-                                                          const std::optional<GammaCurve>& file_gamma) {
+                                                          const std::optional<GammaCurve>& file_gamma, bool colour) {
     if (!m_options.read_image) fail(at, "image_map cannot read images here (no image reader)");
     std::filesystem::path found;
     for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
@@ -32,15 +34,17 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     // The working gamma the texels are taken into, and how the file was encoded (POV-Ray 3.7's rules, see
     // core/gamma.h): `gamma G` if given, else sRGB for 8- and 16-bit files and linear for float ones; a scene
     // for POV-Ray before 3.7 with assumed_gamma takes untagged files to be in the working gamma, and one
-    // without gamma handling uses the values as they are.
-    const bool handling = m_working_gamma.has_value() || (m_version_given && m_version >= 3.7);
-    const GammaCurve working = m_working_gamma.value_or(GammaCurve::neutral());
+    // without gamma handling uses the values as they are. POV-Ray compat: the images of bump maps and material
+    // maps (not `colour`) keep their stored values unless a `gamma` is given, which decodes them to linear.
+    const bool handling = colour ? m_working_gamma.has_value() || (m_version_given && m_version >= 3.7)
+                                 : file_gamma.has_value();
+    const GammaCurve working = colour ? m_working_gamma.value_or(GammaCurve::neutral()) : GammaCurve::neutral();
     std::string key = found.string() + '\n' + (file_gamma ? std::to_string(file_gamma->gamma) : "file") +
                       std::to_string(static_cast<int>(file_gamma ? file_gamma->kind : GammaCurve::Kind::Neutral)) +
                       '\n' + std::to_string(working.gamma) + std::to_string(handling) +
-                      std::to_string(m_version >= 3.7);
+                      std::to_string(m_version >= 3.7) + (colour ? "c" : "v");
     if (auto it = m_images.find(key); it != m_images.end()) {
-        if (it->second->has_alpha) warn_unsupported(at, "image_map alpha channel");
+        if (it->second->has_alpha && colour) warn_unsupported(at, "image_map alpha channel");
         return it->second;
     }
     bool encoded = false;
@@ -48,7 +52,8 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     const std::shared_ptr<const ImageData> stored = m_options.read_image(found, encoded, error);
     if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
     // POV-Ray takes transparency from an alpha channel; the reader does not return it.
-    if (stored->has_alpha) warn_unsupported(at, "image_map alpha channel");
+    // Bump maps and material maps use only the colours or indices.
+    if (stored->has_alpha && colour) warn_unsupported(at, "image_map alpha channel");
     auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
@@ -61,24 +66,32 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     return image;
 }
 
-void Parser::parse_image_map(const Token& kw, Pigment& p) {
-    expect("{");
+ImageMap Parser::parse_image_block(const Token& kw, ImageBlock block, const std::function<bool(const Token&)>& item) {
     const std::size_t depth = m_brace_depth;
     ImageMap map;
-    if (peek().kind == TokenKind::Identifier && peek().text == "function") {
-        warn_unsupported(peek(), "image_map function");
-        skip_to_close(kw, "}", depth);
-        return;
-    }
     if (peek().kind == TokenKind::Identifier && is_image_type(peek().text)) next();
     const Token file = peek();
     const std::string name = parse_string();
     std::optional<GammaCurve> file_gamma;
+    // filter and transmit for one palette entry (-1: all), in the order given.
+    struct PaletteSetting {
+        Token at;
+        bool transmit = false;
+        int index = -1;
+        double value = 0.0;
+    };
+    std::vector<PaletteSetting> palette;
+    const bool image_map = block == ImageBlock::ImageMap;
     while (true) {
         expand_macros();
-        const Token t = next();
-        if (is_punct(t, "}")) break;
-        if (t.kind == TokenKind::EndOfFile) fail(kw, "'image_map' has no closing '}'");
+        const Token t = peek();
+        if (is_punct(t, "}")) {
+            next();
+            break;
+        }
+        if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '}'");
+        if (item && item(t)) continue;
+        next();
         const TokenText& w = t.text;
         if (w == "gamma") {
             if (accept_keyword("srgb")) {
@@ -94,31 +107,106 @@ void Parser::parse_image_map(const Token& kw, Pigment& p) {
             map.once = true;
         } else if (w == "interpolate") {
             map.interpolate = static_cast<int>(parse_float());
-            if (map.interpolate != 2 && map.interpolate != 4) {
-                if (map.interpolate == 3) warn_unsupported(t, "image_map interpolate 3 (bicubic)");
-                else fail(t, "Invalid interpolate value.");
-            }
+            if (map.interpolate == 3) warn_unsupported(t, kw.text + " interpolate 3 (bicubic)");
+            else if (image_map && map.interpolate != 2 && map.interpolate != 4) fail(t, "Invalid interpolate value.");
+            else if (map.interpolate != 0 && map.interpolate != 2 && map.interpolate != 4)
+                warn_unsupported(t, kw.text + " interpolate " + std::to_string(map.interpolate));
         } else if (w == "map_type") {
             map.map_type = static_cast<int>(parse_float());
-            if (map.map_type != 0 && map.map_type != 1 && map.map_type != 2 && map.map_type != 5)
-                fail(t, "Invalid map_type value.");
+            const bool known = map.map_type == 0 || map.map_type == 1 || map.map_type == 2 || map.map_type == 5;
+            // POV-Ray compat: only an image_map checks it; another value maps as planar elsewhere.
+            if (!known && image_map) fail(t, "Invalid map_type value.");
+            if (!known) map.map_type = 0;
         } else if (w == "use_color" || w == "use_colour") {
-            // the default for an image_map
-        } else if ((w == "filter" || w == "transmit") && accept_keyword("all")) {
-            (w == "filter" ? map.filter_all : map.transmit_all) = parse_float();
-        } else if (w == "filter" || w == "transmit" || w == "use_index" || w == "repeat" || w == "offset" ||
-                   w == "alpha") {
-            warn_unsupported(t, "image_map " + w);
+            map.use_index = false;
+        } else if (w == "use_index") {
+            map.use_index = true;
+        } else if (image_map && (w == "filter" || w == "transmit" || w == "alpha")) {
+            if (w == "alpha") warn(t, "Keyword ALPHA discontinued. Use FILTER instead.");
+            PaletteSetting setting{t, w == "transmit"};
+            if (!accept_keyword("all")) {
+                setting.index = static_cast<int>(parse_float() + 0.01);
+                accept(",");
+            }
+            setting.value = parse_float();
+            palette.push_back(setting);
+        } else if (w == "repeat" || w == "offset") {
+            warn_unsupported(t, kw.text + " " + w);
             skip_to_close(kw, "}", depth);
             break;
         } else {
-            fail(t, "expected an image_map item but found '" + w + "'");
+            fail(t, "expected a " + kw.text + " item but found '" + w + "'");
         }
     }
-    map.image = read_image_file(file, name, file_gamma);
-    p.image_map = std::move(map);
+    map.image = read_image_file(file, name, file_gamma, image_map);
+    const ImageData& img = *map.image;
+    for (const PaletteSetting& s : palette) {
+        double& all = s.transmit ? map.transmit_all : map.filter_all;
+        if (s.index < 0) all = s.value;
+        if (!img.indexed()) {
+            // POV-Ray reads GIF and other palette files with their palette; only PNG palettes are read here.
+            if (s.index >= 0) warn_unsupported(s.at, "image_map " + s.at.text + " of a palette entry of a file other than a palette PNG");
+            continue;
+        }
+        if (s.index >= img.palette_size) fail(s.at, s.transmit ? "TRANSMIT color register value out of range." : "FILTER color register value out of range.");
+        // POV-Ray compat: a palette image keeps filter and transmit per entry, `all` setting every entry.
+        if (map.palette_ft.empty()) map.palette_ft.resize(static_cast<std::size_t>(img.palette_size));
+        for (int i = 0; i < img.palette_size; ++i) {
+            if (s.index >= 0 && i != s.index) continue;
+            (s.transmit ? map.palette_ft[i].transmit : map.palette_ft[i].filter) = static_cast<float>(s.value);
+        }
+    }
+    if (img.indexed() && !map.palette_ft.empty()) map.filter_all = map.transmit_all = 0.0;
+    return map;
+}
+
+void Parser::parse_image_map(const Token& kw, Pigment& p) {
+    expect("{");
+    if (peek().kind == TokenKind::Identifier && peek().text == "function") {
+        warn_unsupported(peek(), "image_map function");
+        skip_to_close(kw, "}", m_brace_depth);
+        return;
+    }
+    p.image_map = parse_image_block(kw, ImageBlock::ImageMap, nullptr);
     p.color_map.clear();
     p.pigment_map.clear();
+}
+
+void Parser::parse_bump_map(const Token& kw, Normal& n) {
+    expect("{");
+    if (peek().kind == TokenKind::Identifier && peek().text == "function") {
+        warn_unsupported(peek(), "bump_map function");
+        skip_to_close(kw, "}", m_brace_depth);
+        return;
+    }
+    n.bump_map = parse_image_block(kw, ImageBlock::BumpMap, [&](const Token& t) {
+        if (!is_word(t, "bump_size")) return false;
+        next();
+        n.amount = static_cast<double>(static_cast<float>(parse_float()));  // POV-Ray compat: single precision
+        return true;
+    });
+    n.pattern.type = Pattern::Type::None;
+    n.normal_map.clear();
+    n.slope_map.clear();
+}
+
+void Parser::parse_material_map(const Token& kw, Texture& tx) {
+    // POV-Ray's Parse_Material_Map: a new texture whose image picks one of the textures listed after it.
+    expect("{");
+    Texture result;
+    bool textures = false;
+    std::vector<TextureMapEntry> materials;
+    ImageMap map = parse_image_block(kw, ImageBlock::MaterialMap, [&](const Token& t) {
+        if (!is_word(t, "texture")) return false;
+        next();
+        materials.push_back({static_cast<double>(materials.size()), parse_texture_body(t)});
+        textures = true;
+        return true;
+    });
+    if (!textures) fail(kw, "a material_map needs at least one texture");
+    result.material_map = std::move(map);
+    result.texture_map = std::move(materials);
+    tx = std::move(result);
 }
 
 }  // namespace wardray::parser

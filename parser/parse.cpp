@@ -65,6 +65,7 @@ ParseResult Parser::run(std::string text, const std::string& path) {
     ParseResult result;
     try {
         m_scopes.emplace_back();
+        if (m_options.set_number_of_waves) m_options.set_number_of_waves(10);
         for (const auto& [name, value] : m_options.declares) m_scopes.front()[name] = Numeric::scalar(value);
         auto file = std::make_unique<SourceFile>();
         file->path = path;

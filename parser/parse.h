@@ -87,6 +87,10 @@ struct ParseOptions {
     /// The texture layer's pattern value at p (POV-Ray's Evaluate_TPat after the pattern's warps and transform),
     /// for `function { pattern { ... } }`; when empty such functions evaluate to 0 with a warning.
     std::function<double(const Pattern& pattern, const Vec3& p, int noise_generator)> pattern_value;
+    /// The texture layer's wave sources for waves and ripples evaluated while parsing: called with 10 when a parse
+    /// starts. POV-Ray compat: parse-time evaluations (eval_pigment) use the default 10 sources whatever the
+    /// scene's number_of_waves, which applies only to the render; may be empty.
+    std::function<void(int count)> set_number_of_waves;
     /// The texture layer's pigment colour at p, for `function { pigment { ... } }`; when empty it is black.
     std::function<Color(const Pigment& pigment, const Vec3& p, int noise_generator)> pigment_value;
 };

@@ -2,6 +2,7 @@
 // pattern readers.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -59,6 +60,9 @@ private:
     void skip_to_close(const Token& kw, const char* close, std::size_t depth) final;
     int parse_pattern_keyword(const Token& t, Pattern& pat) final;
     bool parse_pattern_modifier(const Token& t, Pattern& pat) final;
+    bool take_pattern_list_open() final;
+    /// Reads the object of an `object { ... }` pattern after its '{'.
+    Object parse_pattern_object(const Token& kw);
     // --- pattern parameters and warps (pattern_params.cpp) ---
     int parse_pattern_parameters(const Token& t, Pattern& pat);
     bool parse_pattern_extra(const Token& t, Pattern& pat);
@@ -82,9 +86,21 @@ private:
     bool is_colour_array_next();
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
     void parse_image_map(const Token& kw, Pigment& p);
-    /// An image file found like an include file, its texels in the working gamma; read once per gamma.
+    /// Reads `bump_map { ... }` after its keyword into `n`.
+    void parse_bump_map(const Token& kw, Normal& n);
+    /// Reads `material_map { ... }` after its keyword: `tx` becomes the material map.
+    void parse_material_map(const Token& kw, Texture& tx) final;
+    /// The blocks that read an image: their items differ a little.
+    enum class ImageBlock { ImageMap, BumpMap, MaterialMap };
+    /// Reads an image block's file and items after its '{' up to its '}'; `item` takes the block's own items
+    /// (true when it read one).
+    ImageMap parse_image_block(const Token& kw, ImageBlock block, const std::function<bool(const Token&)>& item);
+    /// An image file found like an include file, its texels in the working gamma (`colour`, image_map) or as stored
+    /// (bump_map, material_map); read once per gamma.
     std::shared_ptr<const ImageData> read_image_file(const Token& at, const std::string& name,
-                                                     const std::optional<GammaCurve>& file_gamma);
+                                                     const std::optional<GammaCurve>& file_gamma, bool colour);
+    /// A df3 file found like an include file (density_file), read once.
+    std::shared_ptr<const DensityFile> read_density_file(const Token& at, const std::string& name);
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);
     /// Reads normal items up to `close`.
@@ -94,6 +110,10 @@ private:
     std::map<std::string, std::shared_ptr<TrueTypeFont>> m_fonts;
     /// Images read so far, by resolved path and gamma.
     std::map<std::string, std::shared_ptr<const ImageData>> m_images;
+    /// Density files read so far, by resolved path.
+    std::map<std::string, std::shared_ptr<const DensityFile>> m_density_files;
+    /// An object pattern's list is being read: its '}' follows the list.
+    bool m_pattern_list_open = false;
 };
 
 }  // namespace wardray::parser

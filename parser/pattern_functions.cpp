@@ -1,6 +1,7 @@
 // Pattern and pigment functions: the pattern or pigment block with the texture layer's evaluation.
 #include "parser/pattern_functions.h"
 
+#include <array>
 #include <utility>
 
 namespace wardray::parser {
@@ -39,7 +40,25 @@ private:
     std::function<Color(const Pigment&, const Vec3&, int)> m_value;
 };
 
+class SplineChannel final : public ExternalFunction {
+public:
+    SplineChannel(std::shared_ptr<const Spline> spline, int channel) : m_spline(std::move(spline)), m_channel(channel) {}
+    double evaluate(const double* args, std::size_t n, const EvalContext&) const override {
+        const std::array<double, 5> v = evaluate_spline(*m_spline, m_spline->type, n > 0 ? args[0] : 0.0);
+        // Components past the spline's own are 0, as a call of it in an expression gives them.
+        return m_channel < m_spline->terms ? v[static_cast<std::size_t>(m_channel)] : 0.0;
+    }
+
+private:
+    std::shared_ptr<const Spline> m_spline;
+    int m_channel;
+};
+
 }  // namespace
+
+std::shared_ptr<const ExternalFunction> make_spline_channel(std::shared_ptr<const Spline> spline, int channel) {
+    return std::make_shared<const SplineChannel>(std::move(spline), channel);
+}
 
 std::shared_ptr<const ExternalFunction> make_pattern_function(std::shared_ptr<const Pigment> block,
                                                               const ParseOptions& options) {

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "parser/parse.h"
+#include "parser/splines.h"
 
 namespace wardray::parser {
 
@@ -16,6 +17,9 @@ std::shared_ptr<const ExternalFunction> make_pattern_function(std::shared_ptr<co
 /// The function VM's call of one channel of a pigment function (`F(x, y, z).red` and the like).
 std::shared_ptr<const ExternalFunction> make_pigment_channel(std::shared_ptr<const Pigment> block, int channel,
                                                              const ParseOptions& options);
+
+/// The function VM's call of one component of a spline function (`S(t).y`): the spline at its first argument.
+std::shared_ptr<const ExternalFunction> make_spline_channel(std::shared_ptr<const Spline> spline, int channel);
 
 /// The channel a dot item names: 0..4 red/x/u, green/y/v, blue/z, filter/t, transmit; 5 gray; -1 none.
 int pigment_channel(std::string_view item);

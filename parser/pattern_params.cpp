@@ -2,7 +2,12 @@
 // interior, control0, control1) and `warp { ... }` blocks, read as POV-Ray 3.7's Parse_Pattern and Parse_Warp do.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <memory>
+#include <mutex>
 
 #include "core/constants.h"
 #include "parser/parser.h"
@@ -49,6 +54,14 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
         case PType::PigmentPattern:
             pat.pigment.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
             return 0;
+        case PType::DensityFile: {
+            const Token df3 = next();
+            if (!is_word(df3, "df3")) fail(df3, "expected 'df3' after density_file but found " + describe_token(df3));
+            const Token at = peek();
+            pat.density_file = read_density_file(at, parse_string());
+            pat.density_interpolation = 0;
+            return 0;
+        }
         case PType::Quilted:
             pat.control0 = pat.control1 = 1.0;
             pat.frequency = 0.0;
@@ -69,6 +82,13 @@ bool Parser::parse_pattern_extra(const Token& t, Pattern& pat) {
     if (w == "warp") {
         next();
         parse_warp(t, pat);
+        return true;
+    }
+    if (w == "interpolate") {
+        if (pat.type != PType::DensityFile) fail(t, "Cannot use interpolate with non-density_file.");
+        next();
+        pat.density_interpolation = static_cast<int>(parse_float());
+        if (pat.density_interpolation % 10 == 2) warn_unsupported(t, "density_file interpolate 2 (tricubic)");
         return true;
     }
     if (w == "control0" || w == "control1") {
@@ -215,6 +235,57 @@ void Parser::check_black_hole(const Token& at, Warp& w) {
         }
         if (w.repeat_vector[i] < kPovEpsilon) w.repeat_vector[i] = 0.0;
     }
+}
+
+}  // namespace wardray::parser
+
+namespace wardray::parser {
+
+std::shared_ptr<const DensityFile> Parser::read_density_file(const Token& at, const std::string& name) {
+    std::filesystem::path found;
+    for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(candidate.path, ec)) {
+            found = candidate.path;
+            break;
+        }
+    }
+    if (found.empty()) fail(at, "Cannot read media density file.");
+    if (auto it = m_density_files.find(found.string()); it != m_density_files.end()) return it->second;
+    // Parses alive at the same time share one copy of a file, so their scenes compare equal (patterns compare
+    // density files by identity).
+    static std::mutex shared_mutex;
+    static std::map<std::string, std::weak_ptr<const DensityFile>> shared;
+    const std::lock_guard<std::mutex> lock(shared_mutex);
+    if (auto it = shared.find(found.string()); it != shared.end())
+        if (std::shared_ptr<const DensityFile> alive = it->second.lock()) {
+            m_density_files.emplace(found.string(), alive);
+            return alive;
+        }
+    std::ifstream in(found, std::ios::binary);
+    const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (bytes.size() < 6) fail(at, "Error reading density_file");
+    // POV-Ray's Read_Density_File: three big-endian 16-bit sizes, then 8-, 16- or 32-bit values by file length.
+    auto d = std::make_shared<DensityFile>();
+    d->nx = (bytes[0] << 8) | bytes[1];
+    d->ny = (bytes[2] << 8) | bytes[3];
+    d->nz = (bytes[4] << 8) | bytes[5];
+    const std::size_t count = static_cast<std::size_t>(d->nx) * d->ny * d->nz;
+    const std::size_t len = bytes.size() - 6;
+    std::size_t width = 0;
+    if (count * 4 == len) width = 4, d->max = 4294967295.0;
+    else if (count * 2 == len) width = 2, d->max = 65535.0;
+    else if (count == len) width = 1, d->max = 255.0;
+    else fail(at, "Invalid density file size");
+    d->raw.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        std::uint32_t v = 0;
+        for (std::size_t b = 0; b < width; ++b) v = (v << 8) | bytes[6 + i * width + b];
+        d->raw[i] = v;
+    }
+    m_density_files.emplace(found.string(), d);
+    shared[found.string()] = d;
+    return d;
 }
 
 }  // namespace wardray::parser

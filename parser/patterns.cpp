@@ -48,7 +48,8 @@ std::vector<ColorMapEntry> default_color_map(Pattern::Type type) {
             return {entry(0, 1, 0, 0), entry(1, 0, 1, 0), entry(2, 0, 0, 1),
                     entry(3, 1, 1, 0), entry(4, 0, 1, 1), entry(5, 1, 0, 1)};
         case PType::Checker:
-            // POV-Ray compat: checker takes the first two of hexagon's colours.
+        case PType::Object:
+            // POV-Ray compat: checker (and object) take the first two of hexagon's colours.
             return {entry(0.0, 0, 0, 1), entry(1.0, 0, 1, 0)};
         default:
             return {entry(0.0, 0, 0, 0), entry(1.0, 1, 1, 1)};
@@ -117,6 +118,14 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
         case PType::Checker:
             pat.frequency = 0.0;
             return 2;
+        case PType::Object:
+            // `object { OBJECT a, b }`: the list of the two comes inside the braces, which the
+            // caller closes after it (take_pattern_list_open).
+            expect("{");
+            pat.object = std::make_shared<const Object>(parse_pattern_object(t));
+            pat.frequency = 0.0;
+            m_pattern_list_open = true;
+            return 2;
         case PType::Hexagon:
             pat.frequency = 0.0;
             return 3;
@@ -138,6 +147,27 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
             return parse_pattern_parameters(t, pat);
     }
     return 0;
+}
+
+bool Parser::take_pattern_list_open() { return std::exchange(m_pattern_list_open, false); }
+
+Object Parser::parse_pattern_object(const Token& kw) {
+    // POV-Ray's Parse_Bound_Clip: the objects, transforms after them moving all; the pattern takes one.
+    std::vector<Object> list;
+    while (true) {
+        expand_macros();
+        Transform tr;
+        if (!list.empty() && parse_transform_item(peek(), tr)) {
+            for (Object& o : list) o.transform = o.transform.then(tr);
+            continue;
+        }
+        if (!is_object_start(peek())) break;
+        const Token t = next();
+        ObjectValue child = parse_object(t);
+        if (auto o = as_single_object(child)) list.push_back(std::move(*o));
+    }
+    if (list.size() != 1) fail(kw, "object or object identifier expected.");
+    return std::move(list.front());
 }
 
 bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
@@ -352,7 +382,9 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '" + close + "'");
         if (t.kind == TokenKind::Identifier && !is_color_keyword(t)) {
             const int count = parse_pattern_keyword(t, p.pattern);
+            const bool list_inside = take_pattern_list_open();
             if (count > 0) parse_pigment_list(p, count);
+            if (list_inside) expect("}");
             if (count >= 0 || parse_pattern_modifier(t, p.pattern)) continue;
             if (t.text == "color_map" || t.text == "colour_map") {
                 next();
@@ -425,7 +457,7 @@ Normal Parser::parse_normal_body(const Token& kw, const Normal* base) {
     // In place like the pigment (POV-Ray's Parse_Tnormal), from `base` when it is a normal. A texture without one
     // has none in POV-Ray (a null Tnormal), so the transforms its object went through do not reach a new normal.
     expect("{");
-    Normal n = base && base->pattern.type != PType::None ? *base : Normal{};
+    Normal n = base && base->perturbs() ? *base : default_normal();
     n.loc = make_diagnostic(Severity::Note, kw, "").loc;
     parse_normal_start(n);
     parse_normal_items(n, kw, "}");
@@ -467,12 +499,14 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a normal item but found " + describe_token(t));
         const int count = parse_pattern_keyword(t, n.pattern);
+        const bool list_inside = take_pattern_list_open();
         if (count >= 0) {
             for (int i = 0; i < count && is_word(peek(), "normal"); ++i) {
                 const Token nkw = next();
                 n.normal_map.push_back({static_cast<double>(i), parse_normal_body(nkw)});
                 accept(",");
             }
+            if (list_inside) expect("}");
             // POV-Ray compat: an optional bump amount follows the pattern.
             accept(",");
             if (starts_value(peek())) n.amount = map_value(parse_float());
@@ -491,6 +525,8 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
             while (!accept("}")) {
                 const Token open = expect("[");
                 NormalMapEntry e;
+                // POV-Ray compat (Parse_Blend_Map): an entry starts from the #default normal.
+                e.normal = default_normal();
                 const bool weighted = n.pattern.type != PType::Average || starts_value(peek());
                 e.value = weighted ? map_value(parse_float()) : 1.0;
                 accept(",");
@@ -502,7 +538,9 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
         } else if (t.text == "slope_map") {
             n.slope_map = parse_slope_map();
             n.normal_map.clear();
-        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text) || t.text == "bump_map") {
+        } else if (t.text == "bump_map") {
+            parse_bump_map(t, n);
+        } else if (is_pattern_keyword(t.text) || is_unsupported_block(t.text)) {
             warn_unsupported(t, "normal pattern '" + t.text + "'");
             n = Normal{};
             skip_to_close(kw, close, depth);

@@ -473,10 +473,13 @@ void SceneReader::parse_global_settings(const Token& kw) {
                  g.noise_generator = std::clamp(static_cast<int>(r.parse_float()), 1, 3);
              }},
             {"max_intersections", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
-            // The waves and ripples patterns use POV-Ray's default 10 wave sources; another count is not drawn.
             {"number_of_waves",
-             [](SceneReader& r, GlobalSettings&, const Token& kw) {
-                 if (static_cast<int>(r.parse_float()) != 10) r.warn_unsupported(kw, "number_of_waves");
+             [](SceneReader& r, GlobalSettings& g, const Token& kw) {
+                 g.number_of_waves = static_cast<int>(r.parse_float());
+                 if (g.number_of_waves <= 0) {
+                     r.warn(kw, "Illegal Value: number_of_waves must be greater than 0.\nChanged to 1.");
+                     g.number_of_waves = 1;
+                 }
              }},
             {"mm_per_unit", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_float(); }},
             {"irid_wavelength", [](SceneReader& r, GlobalSettings&, const Token&) { r.parse_color(); }},

@@ -1,6 +1,7 @@
 // Scene description, image maps: a picture wrapped around an object as its pigment.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -14,6 +15,18 @@ struct ImageData {
     int height = 0;
     std::vector<float> rgb;  ///< width * height * 3
     bool has_alpha = false;  ///< the file has an alpha channel, which is not read
+    /// A palette image's colour index of each texel, rows from the top (POV-Ray's colour-mapped images); empty for
+    /// other images.
+    std::vector<std::uint8_t> index;
+    int palette_size = 0;
+    bool indexed() const { return !index.empty(); }
+};
+
+/// A palette entry's filter and transmit (image_map `filter N, F` and `transmit N, T`).
+struct PaletteFT {
+    float filter = 0.0f;
+    float transmit = 0.0f;
+    bool operator==(const PaletteFT&) const = default;
 };
 
 /// `image_map { png "file" map_type M interpolate I once filter all F transmit all T }` (POV-Ray 3.7).
@@ -24,6 +37,12 @@ struct ImageMap {
     bool once = false;    ///< no repetition: clear outside the unit square
     double filter_all = 0.0;
     double transmit_all = 0.0;
+    /// A palette image's filter and transmit per entry, when the image_map sets any (then filter_all and
+    /// transmit_all are in it, as POV-Ray stores them in the palette).
+    std::vector<PaletteFT> palette_ft;
+    /// bump_map and material_map: the palette index rather than the colour (`use_index`; a material_map always
+    /// takes an index image's index).
+    bool use_index = false;
     bool operator==(const ImageMap&) const = default;
 };
 

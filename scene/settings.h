@@ -68,6 +68,7 @@ struct GlobalSettings {
     Color ambient_light{1.0, 1.0, 1.0};
     int max_trace_level = 5;
     double adc_bailout = 1.0 / 255.0;
+    int number_of_waves = 10;  ///< the wave sources of `waves` and `ripples` (POV-Ray's default 10)
     int noise_generator = 2;  ///< POV-Ray 3.7's default: range-corrected noise
     std::optional<RadiositySettings> radiosity;
     std::optional<PhotonSettings> photons;  ///< POV-Ray's photonsEnabled: a block with gather_max > 0

@@ -1,6 +1,7 @@
 // Scene description, textures: patterns, pigments, normals, finishes and textures with their maps.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -93,9 +94,22 @@ struct Warp {
     X(triangular, Triangular)     \
     X(cubic, Cubic)               \
     X(pigment_pattern, PigmentPattern) \
-    X(function, Function)
+    X(function, Function)         \
+    X(density_file, DensityFile)  \
+    X(object, Object)
 
 struct Pigment;
+struct Object;
+
+/// A density_file's voxels as POV-Ray's df3 stores them (x fastest, then y, then z), each value raw / max.
+struct DensityFile {
+    int nx = 0, ny = 0, nz = 0;
+    std::vector<std::uint32_t> raw;
+    double max = 255.0;  ///< 255, 65535 or 4294967295 for 8-, 16- and 32-bit files
+    double at(std::size_t x, std::size_t y, std::size_t z) const {
+        return static_cast<double>(raw[(z * static_cast<std::size_t>(ny) + y) * static_cast<std::size_t>(nx) + x]) / max;
+    }
+};
 
 /// A pigment held by a pattern (pigment_pattern), shared between copies and compared by value.
 struct PigmentRef {
@@ -140,6 +154,9 @@ struct Pattern {
     PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     function::SharedFunction function;  ///< the `function { ... }` pattern's function
+    std::shared_ptr<const DensityFile> density_file;  ///< density_file df3 "file"
+    std::shared_ptr<const Object> object;             ///< object { OBJECT a, b }: the object (compared by identity)
+    int density_interpolation = 0;                    ///< density_file: 0 none, 1 trilinear, 2 tricubic
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
     std::vector<Warp> warps;
@@ -202,7 +219,12 @@ struct Normal {
     double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
     std::vector<NormalMapEntry> normal_map;
     std::vector<SlopeMapEntry> slope_map;  ///< reshapes the pattern's value before its slope is taken
+    /// `bump_map { png "file" bump_size B use_index ... }`: the normal from an image (its transform and warps
+    /// in `pattern`, whose type is then None).
+    std::optional<ImageMap> bump_map;
     SourceLoc loc;
+    /// True when the normal perturbs anything: a pattern or a bump map.
+    bool perturbs() const { return pattern.type != Pattern::Type::None || bump_map.has_value(); }
     bool operator==(const Normal&) const = default;
 };
 
@@ -255,6 +277,9 @@ struct Texture {
     Normal normal;
     Pattern map_pattern;  ///< texture_map's pattern (None: a plain texture)
     std::vector<TextureMapEntry> texture_map;
+    /// `material_map { png "file" texture { } ... }`: the image picks one of texture_map's entries by index
+    /// (entry values 0, 1, ...); its transform and warps are map_pattern's.
+    std::optional<ImageMap> material_map;
     std::vector<Texture> layers;  ///< layers on top of this one, lowest first
     bool operator==(const Texture&) const = default;
 };

@@ -10,6 +10,7 @@ using function::dturbulence;
 using function::hash3d;
 using function::noise;
 using function::pattern_rand;
+using function::set_number_of_waves;
 using function::turbulence;
 using function::TurbulenceParams;
 using function::wave_sources;

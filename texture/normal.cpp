@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "texture/image_map.h"
 #include "texture/noise.h"
 #include "texture/pattern.h"
 
@@ -87,6 +88,11 @@ double slope_map_value(const std::vector<scene::SlopeMapEntry>& map, double valu
 
 Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator) {
     const scene::Pattern& pat = normal.pattern;
+    if (normal.bump_map) {
+        // POV-Ray's bump_map: the image's normal in pattern space, carried back out.
+        const Vec3 local = bump_map_normal(*normal.bump_map, normal.amount, warp_point(pat, p), warp_normal(pat, n));
+        return unwarp_normal(pat, local);
+    }
     if (pat.type == Type::None) return n;
     const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
     const Vec3 tp = warp_point(pat, p);

@@ -7,9 +7,11 @@
 #include <numbers>
 
 #include "core/constants.h"
+#include "texture/density_file.h"
 #include "texture/fractal.h"
 #include "texture/function_pattern.h"
 #include "texture/noise.h"
+#include "texture/object_pattern.h"
 #include "texture/pattern_blocks.h"
 
 namespace wardray::texture {

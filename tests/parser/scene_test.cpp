@@ -483,7 +483,8 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         // The patterns that need parameters get a sample of them.
         static const std::map<std::string_view, const char*> parameters = {
             {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
-            {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}, {"function", " { x + y }"}};
+            {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}, {"function", " { x + y }"},
+            {"density_file", " df3 \"/usr/share/povray-3.7/include/spiral.df3\""}, {"object", " { sphere { 0, 1 } }"}};
         const auto sample = parameters.find(keyword);
         const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
