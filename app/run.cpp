@@ -78,8 +78,10 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     if (options.max_array_size) parse_options.max_array_elements = *options.max_array_size;
     if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
     if (options.max_memory_file) parse_options.max_memory_file_bytes = *options.max_memory_file;
-    if (options.max_objects) parse_options.max_objects = *options.max_objects;
-    if (options.max_memory) parse_options.max_memory_bytes = static_cast<std::size_t>(*options.max_memory) << 20;
+    // The command line's budgets: an object costs about 3.7 KB while parsing, so an endless object-making loop stops
+    // within a second or two and about 400 MB; the switches raise them for scenes that really are that large.
+    parse_options.max_objects = options.max_objects.value_or(100'000);
+    parse_options.max_memory_bytes = static_cast<std::size_t>(options.max_memory.value_or(1024)) << 20;
     // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
     parse_options.defer_library_declarations = !options.check_only;
     static const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing
