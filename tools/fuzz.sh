@@ -3,7 +3,7 @@
 #   tools/fuzz.sh [SECONDS] [parser|render]     (needs clang and libclang-rt-14-dev; tools/setup.sh installs them)
 # parser (the default) fuzzes tests/fuzz/parser_fuzz, the parser alone; render fuzzes tests/fuzz/render_fuzz, the
 # whole pipeline (parse, build, render 8x6 with radiosity when asked, every pixel finite).
-# Builds the target in build-fuzz/ (clang, -fsanitize=fuzzer,address,undefined), seeds a corpus from scenes/,
+# Builds the target (tests/fuzz/parser_fuzz.cpp or tests/app/render_fuzz.cpp) in build-fuzz/ (clang, -fsanitize=fuzzer,address,undefined), seeds a corpus from scenes/,
 # tests/bad_input/ and the regression folders, and writes crashes, hangs and leaks to build-fuzz/findings[-render]/.
 # Copy a finding into tests/fuzz/regressions/ (parser) or tests/fuzz/render_regressions/ (render) once it is
 # fixed: fuzz_regression_tests and render_fuzz_regression_tests replay those folders.

@@ -1,7 +1,7 @@
 // libFuzzer entry point for the whole pipeline: parses arbitrary bytes as a scene, builds its geometry and renders
 // an 8x6 image (radiosity and its cache included when the scene asks), then checks every pixel is finite.
 //
-// Built with -DWARDRAY_FUZZ=ON under clang (tools/fuzz.sh render), and without libFuzzer into
+// Built (by tests/fuzz/CMakeLists.txt) with -DWARDRAY_FUZZ=ON under clang (tools/fuzz.sh 600 render), and without libFuzzer into
 // render_fuzz_regression_tests, which replays tests/fuzz/render_regressions/ and the seed scenes through it.
 #include <cmath>
 #include <cstddef>
