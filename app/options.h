@@ -77,6 +77,8 @@ struct Options {
     std::optional<std::uint64_t> max_array_size;
     std::optional<std::uint64_t> max_string_length;
     std::optional<std::uint64_t> max_memory_file;
+    std::optional<std::uint64_t> max_objects;  ///< --max-objects
+    std::optional<std::uint64_t> max_memory;   ///< --max-memory, in MB
     AnimationOptions animation;
     RegionOptions region;
     bool continue_trace = false;  ///< +C: frames whose image already exists are not rendered again

@@ -15,6 +15,7 @@
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
+#include "parser/read_access.h"
 #include "render/film.h"
 #include "render/output_gamma.h"
 #include "render/png_palette.h"
@@ -84,6 +85,10 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     if (options.max_array_size) parse_options.max_array_elements = *options.max_array_size;
     if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
     if (options.max_memory_file) parse_options.max_memory_file_bytes = *options.max_memory_file;
+    // The command line's budgets: an object costs about 3.7 KB while parsing, so an endless object-making loop stops
+    // within a second or two and about 400 MB; the switches raise them for scenes that really are that large.
+    parse_options.max_objects = options.max_objects.value_or(100'000);
+    parse_options.max_memory_bytes = static_cast<std::size_t>(options.max_memory.value_or(1024)) << 20;
     // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
     parse_options.defer_library_declarations = !options.check_only;
     static const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing
@@ -227,6 +232,16 @@ std::optional<int> refuse_job(const Job& job) {
         std::cerr << "wardray: the output '" << job.output.string()
                   << "' is the scene file itself; choose another\n";
         return kExitUsage;
+    }
+    // +RFI reads a file the user named: confined like the scene's own reads (the default name, beside the
+    // output as +RFO writes it, is wardray's own file).
+    if (options.radiosity_load && options.radiosity_file) {
+        const parser::ParseOptions reads = parse_options_for(options, {});
+        if (!parser::is_readable(*options.radiosity_file, parser::readable_roots(reads, options.scene))) {
+            std::cerr << "wardray: error: " << parser::read_refusal(*options.radiosity_file, "+RFI radiosity file")
+                      << "\n";
+            return kExitScene;
+        }
     }
     if (!options.check_only) {
         if (const auto error = image_too_large(options.width, options.height)) {

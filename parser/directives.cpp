@@ -473,6 +473,7 @@ void Preprocessor::directive_include(const Token& tok) {
     for (const SearchCandidate& c : candidates) {
         std::error_code ec;
         if (!std::filesystem::is_regular_file(c.path, ec)) continue;
+        require_readable(name_tok, c.path, "include file");
         // A library file is one found through the library paths, or beside the library file including it.
         index = load_file(c.path, c.library, error);
         if (!index) continue;

@@ -120,15 +120,13 @@ void Preprocessor::directive_file_io(const Token& tok) {
                 }
             }
             if (!found) fail(name_tok, "cannot open '" + file_name + "' for reading: no such file");
-            bool allowed = false;
-            for (const auto& r : roots) allowed = allowed || is_within(*found, r);
-            if (!allowed)
-                fail(name_tok, "reading '" + resolved(*found).string() +
-                                   "' is not allowed: files are read only from the scene's folder, the include "
-                                   "path and the folders given as read paths");
+            require_readable(name_tok, *found, "#fopen read");
             std::string reason;
             if (!read_text_file(*found, file->text, reason))
                 fail(name_tok, "cannot open '" + found->string() + "' for reading: " + reason);
+            if (const auto excerpt = binary_excerpt(file->text))
+                fail(name_tok, "'" + found->string() + "' is not a text file (it starts with \"" + *excerpt + "\")");
+            normalize_source_text(file->text);
             std::vector<Diagnostic> errors;
             file->path = found->string();
             file->tokens = lex(file->text, 0, file->path, errors, file->decoded);

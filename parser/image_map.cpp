@@ -22,15 +22,10 @@ bool is_image_type(const TokenText& w) {
 std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const std::string& name,
                                                           const std::optional<GammaCurve>& file_gamma, bool colour) {
     if (!m_options.read_image) fail(at, "image_map cannot read images here (no image reader)");
-    std::filesystem::path found;
-    for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(candidate.path, ec)) {
-            found = candidate.path;
-            break;
-        }
-    }
-    if (found.empty()) fail(at, "cannot open image file '" + name + "'");
+    const std::optional<std::filesystem::path> where =
+        find_readable(at, std::filesystem::path(name), "", "image file");
+    if (!where) fail(at, "cannot open image file '" + name + "'");
+    const std::filesystem::path& found = *where;
     // The working gamma the texels are taken into, and how the file was encoded (POV-Ray 3.7's rules, see
     // core/gamma.h): `gamma G` if given, else sRGB for 8- and 16-bit files and linear for float ones; a scene
     // for POV-Ray before 3.7 with assumed_gamma takes untagged files to be in the working gamma, and one

@@ -17,6 +17,24 @@ bool is_object_keyword(const Token& t) {
 
 namespace {
 
+// The objects a copy of `ov` creates: every node of its parts' CSG trees and their clipping and bounding objects,
+// counted without recursion (a tree a loop nested deeply must not overflow the stack here).
+std::size_t object_count(const ObjectValue& ov) {
+    std::vector<const Object*> pending;
+    for (const ObjectPart& part : ov.parts) pending.push_back(&part.object);
+    std::size_t count = 0;
+    while (!pending.empty()) {
+        const Object* o = pending.back();
+        pending.pop_back();
+        ++count;
+        if (const auto* csg = std::get_if<Csg>(&o->shape))
+            for (const Object& child : csg->children) pending.push_back(&child);
+        for (const Object& c : o->clipped_by) pending.push_back(&c);
+        for (const Object& b : o->bounded_by) pending.push_back(&b);
+    }
+    return count;
+}
+
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
 void transform_textures(Object& o, bool own_texture, const Transform& tr) {
     if (own_texture) transform_texture(o.texture, tr);
@@ -72,7 +90,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         // POV-Ray compat: a declared object's identifier alone is that object, without modifiers (Parse_Object).
         const Value* v = lookup(w);
         if (v == nullptr) fail_undeclared(kw);
-        return *std::get<Boxed<ObjectValue>>(*v);
+        const ObjectValue& declared = *std::get<Boxed<ObjectValue>>(*v);
+        count_objects(kw, object_count(declared));
+        return declared;
     }
     if (w == "light_group") return parse_light_group(kw);
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
@@ -84,6 +104,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
     ObjectValue ov;
     const SourceLoc loc = make_diagnostic(Severity::Note, kw, "").loc;
     auto add_shape = [&](Shape shape) {
+        count_objects(kw, 1);
         ObjectPart part;
         part.object.shape = std::move(shape);
         part.object.loc = loc;
@@ -103,6 +124,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
     if (copied != nullptr) {
         next();
         ov = *std::get<Boxed<ObjectValue>>(*copied);
+        count_objects(kw, object_count(ov));
     } else if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
         // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
@@ -112,7 +134,10 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         std::optional<Value> element;
         const Token at = peek();
         if ((element = take_array_element())) {
-            if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) ov = **o;
+            if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) {
+                count_objects(at, object_count(**o));  // before copying, so a huge copy is never made
+                ov = **o;
+            }
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
             parse_object_modifiers(ov, ov.compound);
             return ov;
@@ -129,6 +154,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             if (std::holds_alternative<Unsupported>(*v)) {
                 // Already warned about where it was declared; the object is left out.
             } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
+                count_objects(id, object_count(**o));  // before copying, so a huge copy is never made
                 ov = **o;
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");

@@ -70,6 +70,17 @@ ParseResult Parser::run(std::string text, const std::string& path) {
         auto file = std::make_unique<SourceFile>();
         file->path = path;
         file->text = std::move(text);
+        if (const auto excerpt = binary_excerpt(file->text)) {
+            // Not text: one error at its start, quoting only a short escaped excerpt.
+            Diagnostic d;
+            d.severity = Severity::Error;
+            d.loc = SourceLoc{path, 1, 1};
+            d.message = "this is not a scene file: it is not text (it starts with \"" + *excerpt + "\")";
+            m_diagnostics.push_back(std::move(d));
+            ++m_errors;
+            file->text.clear();
+        }
+        normalize_source_text(file->text);
         std::vector<Diagnostic> lex_errors;
         file->tokens = lex(file->text, 0, path, lex_errors, file->decoded);
         m_files.push_back(std::move(file));

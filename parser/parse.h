@@ -67,6 +67,12 @@ struct ParseOptions {
     /// Bytes of a file #write keeps in memory while file writes are off (--max-memory-file); the mesh-camera
     /// examples write about 20 MB and read it back.
     std::size_t max_memory_file_bytes = std::size_t{64} << 20;
+    /// Objects the parse creates, counting every shape a statement makes and every one an `object { Name }`
+    /// copies (--max-objects).
+    std::size_t max_objects = 2'000'000;
+    /// Memory the parse may take, the growth of the process's resident memory since it began (--max-memory, in
+    /// MB on the command line); checked every few thousand tokens.
+    std::size_t max_memory_bytes = std::size_t{2048} << 20;
 
     /// Pay for what is used: a `#declare` of a pigment, finish, texture or colour map in a file found through
     /// `library_paths` is read when the scene first uses the identifier, not where it stands. Off, every

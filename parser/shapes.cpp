@@ -282,6 +282,7 @@ Text Parser::parse_text_parameters(const Token& kw) {
         const std::filesystem::path& c = candidate.path;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(c, ec)) continue;
+        require_readable(kind, c, "font file");
         const std::string key = std::filesystem::weakly_canonical(c, ec).string();
         if (auto it = m_fonts.find(key); it != m_fonts.end()) {
             font = it->second;

@@ -11,7 +11,9 @@
 namespace wardray::parser {
 
 SourceStream::SourceStream(const ParseOptions& options)
-    : m_stack_base(static_cast<const char*>(__builtin_frame_address(0))), m_options(options) {}
+    : m_stack_base(static_cast<const char*>(__builtin_frame_address(0))),
+      m_options(options),
+      m_resident_at_start(resident_bytes()) {}
 
 std::string SourceFile::line_text(std::uint32_t line) const {
     // Diagnostics and entity locations ask for lines often: index the line starts once per file.
@@ -52,7 +54,8 @@ Diagnostic SourceStream::make_diagnostic(Severity s, const Token& at, std::strin
     d.span = at.kind == TokenKind::EndOfFile ? 1 : at.length;
     // A note without a message only carries a location (for scene entities): skip the costly parts.
     if (s == Severity::Note && d.message.empty()) return d;
-    if (at.file < m_files.size()) d.source_line = m_files[at.file]->line_text(at.line);
+    // Escaped and cut short: a line of a file that is not really text never reaches the terminal as it is.
+    if (at.file < m_files.size()) d.source_line = printable_source_line(m_files[at.file]->line_text(at.line));
     // Notes, innermost first: the macro being expanded and the include chain; deep recursion is shortened to
     // the innermost and outermost few frames.
     constexpr std::size_t k_shown_each_side = 3;
@@ -154,6 +157,11 @@ std::optional<std::uint32_t> SourceStream::load_file(const std::filesystem::path
     }
     auto file = std::make_unique<SourceFile>();
     if (!read_text_file(path, file->text, error)) return std::nullopt;
+    if (const auto excerpt = binary_excerpt(file->text)) {
+        error = "it is not a text file (it starts with \"" + *excerpt + "\")";
+        return std::nullopt;
+    }
+    normalize_source_text(file->text);
     file->path = key;
     file->library = library;
     const auto index = static_cast<std::uint32_t>(m_files.size());

@@ -14,6 +14,7 @@
 
 #include "parser/lexer.h"
 #include "parser/parse.h"
+#include "parser/read_access.h"
 #include "parser/value.h"
 
 namespace wardray::parser {
@@ -97,6 +98,13 @@ protected:
     /// `extension` in the same places.
     std::vector<SearchCandidate> search_candidates(const std::filesystem::path& requested,
                                                    const char* extension) const;
+    /// Fails at `at` when `file` lies outside the folders the scene may read (parser/read_access.h), naming the
+    /// switch that allows it; `what` says what the file is for ("include file", "font", ...).
+    void require_readable(const Token& at, const std::filesystem::path& file, std::string_view what);
+    /// The first of search_candidates(requested, extension) that exists, checked by require_readable; nothing
+    /// when none exists. The way every file a scene names (images, height fields, density files) is found.
+    std::optional<std::filesystem::path> find_readable(const Token& at, const std::filesystem::path& requested,
+                                                       const char* extension, std::string_view what);
 
     /// A diagnostic at `at` with the source line and the include/macro notes.
     Diagnostic make_diagnostic(Severity s, const Token& at, std::string message) const;
@@ -112,6 +120,12 @@ protected:
     void warn_once(const Token& at, const std::string& message);
     /// Reports an unsupported-feature warning unless the same one was shown already.
     void emit_feature_warning(Diagnostic d);
+
+    /// Counts `n` objects created at `at`; past ParseOptions::max_objects an error there ends the parse.
+    void count_objects(const Token& at, std::size_t n);
+    /// Past ParseOptions::max_memory_bytes of growth since the parse began, an error at `at` ends the parse.
+    /// Reads the resident size, so callers ask every few thousand tokens.
+    void check_memory(const Token& at);
 
     /// The deepest nesting of blocks and expressions the descent follows.
     static constexpr std::size_t k_max_nesting = 400;
@@ -162,6 +176,9 @@ protected:
     const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
 
     const ParseOptions& m_options;
+    std::vector<ReadRoot> m_read_roots;  ///< the folders the scene may read, made on first use
+    std::size_t m_objects_created = 0;
+    std::size_t m_resident_at_start = 0;  ///< the process's resident bytes when the parse began
     std::vector<std::unique_ptr<SourceFile>> m_files;
     std::map<std::string, std::uint32_t> m_file_index;  ///< resolved path -> index, so re-includes do not re-lex
     std::uint32_t m_file = 0;

@@ -48,7 +48,8 @@ const Token& TokenStream::peek_expr() {
 Token TokenStream::next() {
     Token t = peek();
     if (t.kind != TokenKind::EndOfFile) ++m_pos;
-    ++m_tokens_taken;
+    // The memory budget, every 16384 tokens (about 10 us each time, a few per millisecond of parsing).
+    if ((++m_tokens_taken & 0x3FFF) == 0) check_memory(t);
     if (t.kind == TokenKind::Punct) {
         if (t.text == "{") {
             ++m_brace_depth;

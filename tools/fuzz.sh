@@ -1,31 +1,40 @@
 #!/usr/bin/env bash
-# Fuzzes the scene parser with libFuzzer for SECONDS (default 600), then prints executions and findings.
-#   tools/fuzz.sh [SECONDS]     (needs clang and libclang-rt-14-dev; tools/setup.sh installs them)
-# Builds tests/fuzz/parser_fuzz in build-fuzz/ (clang, -fsanitize=fuzzer,address,undefined), seeds a corpus from
-# scenes/, tests/bad_input/ and tests/fuzz/regressions/, and writes crashes, hangs and leaks to build-fuzz/findings/.
-# Copy a finding into tests/fuzz/regressions/ once it is fixed: fuzz_regression_tests replays that folder.
+# Fuzzes with libFuzzer for SECONDS (default 600), then prints executions and findings.
+#   tools/fuzz.sh [SECONDS] [parser|render]     (needs clang and libclang-rt-14-dev; tools/setup.sh installs them)
+# parser (the default) fuzzes tests/fuzz/parser_fuzz, the parser alone; render fuzzes tests/fuzz/render_fuzz, the
+# whole pipeline (parse, build, render 8x6 with radiosity when asked, every pixel finite).
+# Builds the target (tests/fuzz/parser_fuzz.cpp or tests/app/render_fuzz.cpp) in build-fuzz/ (clang, -fsanitize=fuzzer,address,undefined), seeds a corpus from scenes/,
+# tests/bad_input/ and the regression folders, and writes crashes, hangs and leaks to build-fuzz/findings[-render]/.
+# Copy a finding into tests/fuzz/regressions/ (parser) or tests/fuzz/render_regressions/ (render) once it is
+# fixed: fuzz_regression_tests and render_fuzz_regression_tests replay those folders.
 set -euo pipefail
 
 seconds=${1:-600}
+target=${2:-parser}
+case "$target" in
+  parser) suffix="" ;;
+  render) suffix="-render" ;;
+  *) echo "fuzz.sh: the target is parser or render, not '$target'" >&2; exit 2 ;;
+esac
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build-fuzz"
 jobs=${FUZZ_BUILD_JOBS:-2}
 
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DWARDRAY_FUZZ=ON -DWARDRAY_TESTS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$build" --target parser_fuzz -j "$jobs" >/dev/null
+cmake --build "$build" --target "${target}_fuzz" -j "$jobs" >/dev/null
 
 # The corpus keeps what earlier runs found; the seeds are copied in again each time (names are contents).
-corpus="$build/corpus"
-findings="$build/findings"
+corpus="$build/corpus$suffix"
+findings="$build/findings$suffix"
 mkdir -p "$corpus" "$findings"
 for f in "$root"/scenes/*.pov "$root"/scenes/*/*.pov "$root"/tests/bad_input/*.pov "$root"/tests/bad_input/inc/* \
-         "$root"/tests/fuzz/regressions/*; do
+         "$root"/tests/fuzz/regressions/* "$root"/tests/fuzz/render_regressions/*; do
   [ -f "$f" ] && cp "$f" "$corpus/seed-$(sha1sum "$f" | cut -c1-16)"
 done
 
 # A dictionary of the language's keywords and directives helps the mutator build statements.
-dict="$build/pov.dict"
+dict="$build/pov$suffix.dict"
 {
   grep -o '"[A-Za-z_][A-Za-z_0-9]*"' "$root/parser/keywords.cpp" | sort -u
   for d in declare local include macro end while for if ifdef ifndef else elseif switch case range break \
@@ -34,11 +43,11 @@ dict="$build/pov.dict"
 } > "$dict"
 
 before=$(find "$findings" -type f | wc -l)
-log="$build/fuzz.log"
+log="$build/fuzz$suffix.log"
 started=$SECONDS
 set +e
 ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  "$build/tests/fuzz/parser_fuzz" "$corpus" -dict="$dict" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
+  "$build/tests/fuzz/${target}_fuzz" "$corpus" -dict="$dict" -max_total_time="$seconds" -max_len=4096 -timeout=10 \
   -rss_limit_mb=2048 -malloc_limit_mb=1024 -artifact_prefix="$findings/" -print_final_stats=1 >"$log" 2>&1
 status=$?
 set -e

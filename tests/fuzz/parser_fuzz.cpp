@@ -20,6 +20,8 @@ wardray::parser::ParseOptions fuzz_options() {
     o.max_include_depth = 8;
     o.max_array_elements = 100'000;
     o.max_string_length = 100'000;
+    o.max_objects = 20'000;
+    o.max_memory_bytes = std::size_t{512} << 20;
     o.image_width = 64;
     o.image_height = 48;
     return o;

@@ -282,8 +282,9 @@ TEST(Golden, FunctionBuiltinArgumentCount) {
 
 TEST(Golden, FileReadOutsideAllowedFolders) {
     EXPECT_EQ(first_diagnostic("#fopen F \"/etc/hostname\" read\n"),
-              "test.pov:1:10: error: reading '/etc/hostname' is not allowed: files are read only from the scene's "
-              "folder, the include path and the folders given as read paths\n"
+              "test.pov:1:10: error: reading '/etc/hostname' (#fopen read) is not allowed: files are read only "
+              "from the scene's folder, the include path (+L, Library_Path) and the folders given with --read-path "
+              "DIR\n"
               "    1 | #fopen F \"/etc/hostname\" read\n"
               "      |          ^~~~~~~~~~~~~~~\n");
 }

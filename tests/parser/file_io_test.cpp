@@ -85,8 +85,8 @@ TEST_F(FileIo, ReadingOutsideTheAllowedFoldersIsRefused) {
     EXPECT_EQ(r.diagnostics[0].loc.line, 2u);
     EXPECT_EQ(r.diagnostics[0].message,
               "reading '" + (m_dir / "secret.txt").string() +
-                  "' is not allowed: files are read only from the scene's folder, the include path and the folders "
-                  "given as read paths");
+                  "' (#fopen read) is not allowed: files are read only from the scene's folder, the include path "
+                  "(+L, Library_Path) and the folders given with --read-path DIR");
     // A folder the user names is allowed.
     ParseOptions o = writing();
     o.read_paths.push_back(m_dir);

@@ -1,0 +1,1 @@
+#version 3.7;// CR line ends (classic Mac): the comment ends at the CRsphere { 0, 1 pigment { rgb q } }

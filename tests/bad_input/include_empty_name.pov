@@ -1,0 +1,3 @@
+// An empty include name.
+#version 3.7;
+#include ""

@@ -1,0 +1,214 @@
+// Hostile scenes, round two: reads confined to the permitted folders for every way of reading, files that are not
+// text, byte-order marks and line ends, the object and memory budgets, and deep nesting built by loops.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "parser/read_access.h"
+#include "tests/parser/test_util.h"
+
+namespace wardray::parser {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kRefused = "is not allowed: files are read only from the scene's folder, the include path (+L, "
+                             "Library_Path) and the folders given with --read-path DIR";
+
+/// A scene folder and a folder beside it holding a "secret" the scene must not read.
+class ReadConfinement : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() /
+                ("wardray_reads_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir / "scene");
+        fs::create_directories(m_dir / "outside");
+        std::ofstream(m_dir / "outside" / "secret.inc") << "#declare Secret = 42;\n";
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    ParseOptions options() {
+        ParseOptions o = test::default_options();
+        // Records every image the parser asks for: a refused one must never reach the reader.
+        o.read_image = [this](const fs::path& file, bool&, std::string& error) -> std::shared_ptr<const ImageData> {
+            m_images_read.push_back(file);
+            error = "test reader";
+            return nullptr;
+        };
+        return o;
+    }
+    ParseResult parse(const std::string& text, const ParseOptions& o) {
+        std::ofstream(m_dir / "scene" / "s.pov") << "global_settings { assumed_gamma 1 }\n" << text;
+        return parse_file(m_dir / "scene" / "s.pov", o);
+    }
+    std::string first_error(const ParseResult& r) {
+        for (const Diagnostic& d : r.diagnostics)
+            if (d.severity == Severity::Error) return d.message;
+        return "";
+    }
+
+    fs::path m_dir;
+    std::vector<fs::path> m_images_read;
+};
+
+TEST_F(ReadConfinement, IncludeOutsideIsRefusedUnlessAReadPathAllowsIt) {
+    const ParseResult r = parse("#include \"../outside/secret.inc\"\n", options());
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(first_error(r), "reading '" + (m_dir / "outside" / "secret.inc").string() + "' (include file) " + kRefused);
+    EXPECT_EQ(r.diagnostics[0].loc.line, 2u);
+    EXPECT_EQ(r.diagnostics[0].loc.column, 10u);
+    // Nothing of the file is echoed.
+    for (const Diagnostic& d : r.diagnostics) EXPECT_EQ(d.source_line.find("Secret"), std::string::npos);
+    ParseOptions o = options();
+    o.read_paths.push_back(m_dir / "outside");
+    EXPECT_TRUE(parse("#include \"../outside/secret.inc\"\n#if (Secret != 42) #error \"\" #end\n", o).ok());
+    // The include path (+L) allows it too.
+    o = options();
+    o.library_paths.push_back(m_dir / "outside");
+    EXPECT_TRUE(parse("#include \"secret.inc\"\n#if (Secret != 42) #error \"\" #end\n", o).ok());
+}
+
+TEST_F(ReadConfinement, AbsoluteSystemFilesAreRefusedForEveryWayOfReading) {
+    const std::string refused = "reading '/etc/passwd' (";
+    EXPECT_EQ(first_error(parse("#include \"/etc/passwd\"\n", options())), refused + "include file) " + kRefused);
+    EXPECT_EQ(first_error(parse("#fopen F \"/etc/passwd\" read\n", options())), refused + "#fopen read) " + kRefused);
+    EXPECT_EQ(first_error(parse("text { ttf \"/etc/passwd\" \"a\" 1, 0 }\n", options())),
+              refused + "font file) " + kRefused);
+    EXPECT_EQ(first_error(parse("plane { z, 1 pigment { image_map { png \"/etc/passwd\" } } }\n", options())),
+              refused + "image file) " + kRefused);
+    EXPECT_TRUE(m_images_read.empty());
+}
+
+TEST_F(ReadConfinement, ASymbolicLinkInTheSceneFolderIsJudgedByWhereItLeads) {
+    std::error_code ec;
+    fs::create_symlink(m_dir / "outside" / "secret.inc", m_dir / "scene" / "link.inc", ec);
+    if (ec) GTEST_SKIP() << "no symbolic links here";
+    const ParseResult r = parse("#include \"link.inc\"\n", options());
+    EXPECT_EQ(first_error(r), "reading '" + (m_dir / "outside" / "secret.inc").string() + "' (include file) " + kRefused);
+    EXPECT_EQ(first_error(parse("plane { z, 1 pigment { image_map { png \"link.inc\" } } }\n", options())),
+              "reading '" + (m_dir / "outside" / "secret.inc").string() + "' (image file) " + kRefused);
+    EXPECT_TRUE(m_images_read.empty());
+}
+
+TEST_F(ReadConfinement, TheSystemIncludeFolderMayLinkElsewhere) {
+    // The include path is the user's (or the system's): its links are followed, as Debian links its fonts.
+    std::error_code ec;
+    fs::create_directories(m_dir / "lib");
+    fs::create_symlink(m_dir / "outside" / "secret.inc", m_dir / "lib" / "linked.inc", ec);
+    if (ec) GTEST_SKIP() << "no symbolic links here";
+    ParseOptions o = options();
+    o.library_paths.push_back(m_dir / "lib");
+    EXPECT_TRUE(parse("#include \"linked.inc\"\n#if (Secret != 42) #error \"\" #end\n", o).ok());
+}
+
+TEST_F(ReadConfinement, ImagesInTheSceneFolderReachTheReader) {
+    std::ofstream(m_dir / "scene" / "tex.png") << "x";
+    const ParseResult r = parse("plane { z, 1 pigment { image_map { png \"tex.png\" } } }\n", options());
+    ASSERT_EQ(m_images_read.size(), 1u);
+    EXPECT_EQ(first_error(r), "cannot read image file '" + m_images_read[0].string() + "': test reader");
+}
+
+TEST_F(ReadConfinement, ABinaryIncludeIsAnErrorWithAShortEscapedExcerpt) {
+    std::string png = "\x89PNG\r\n\x1a\n";
+    png += std::string(4000, '\0');
+    std::ofstream(m_dir / "scene" / "pic.png", std::ios::binary) << png;
+    const ParseResult r = parse("#include \"pic.png\"\n", options());
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(first_error(r), "cannot open include file 'pic.png': it is not a text file (it starts with "
+                              "\"\\x89PNG\\x0D\\x0A\\x1A\\x0A\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00...\")");
+    EXPECT_EQ(first_error(parse("#fopen F \"pic.png\" read\n", options())),
+              "'" + (m_dir / "scene" / "pic.png").string() +
+                  "' is not a text file (it starts with \"\\x89PNG\\x0D\\x0A\\x1A\\x0A\\x00\\x00\\x00\\x00\\x00\\x00"
+                  "\\x00\\x00...\")");
+}
+
+TEST(SourceText, BinaryScenesAreReportedAtTheirStartWithoutEchoingThem) {
+    const std::string bytes = std::string("\x7F" "ELF\x02\x01\x01", 7) + std::string(100, '\0') + "secret";
+    const ParseResult r = parse_string(bytes, "a.out", test::default_options());
+    ASSERT_FALSE(r.ok());
+    ASSERT_FALSE(r.diagnostics.empty());
+    EXPECT_EQ(r.diagnostics[0].severity, Severity::Error);
+    EXPECT_EQ(r.diagnostics[0].loc.line, 1u);
+    EXPECT_EQ(test::all_diagnostics(r).find("secret"), std::string::npos);
+    EXPECT_EQ(binary_excerpt("sphere { 0, 1 }\n// caf\xC3\xA9\n"), std::nullopt);
+    EXPECT_EQ(binary_excerpt("\xFF\xFE#\0v\0"), std::optional<std::string>("\\xFF\\xFE#"));
+}
+
+TEST(SourceText, ControlBytesInAShownLineAreEscapedAndLongLinesCut) {
+    EXPECT_EQ(printable_source_line("sphere { 0, 1 } // caf\xC3\xA9"), "sphere { 0, 1 } // caf\xC3\xA9");
+    EXPECT_EQ(printable_source_line("a\x1B[2Jb\xFF"), "a\\x1B[2Jb\\xFF");
+    EXPECT_EQ(printable_source_line(std::string(1000, 'x')).size(), 243u);
+}
+
+TEST(SourceText, AByteOrderMarkAndEveryLineEndAreAccepted) {
+    const ParseResult bom = parse_string("\xEF\xBB\xBF#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+                                         "sphere { 0, 1 }\n", "t.pov", test::default_options());
+    EXPECT_TRUE(bom.ok()) << test::all_diagnostics(bom);
+    for (const char* end : {"\n", "\r\n", "\r"}) {
+        const std::string e = end;
+        const std::string text = "\xEF\xBB\xBF#version 3.7;" + e + "// a comment" + e + "sphere { 0, q }" + e;
+        const ParseResult r = parse_string(text, "t.pov", test::default_options());
+        ASSERT_FALSE(r.ok());
+        EXPECT_EQ(r.diagnostics[0].loc.line, 3u) << "line end " << static_cast<int>(end[0]);
+        EXPECT_EQ(r.diagnostics[0].loc.column, 13u);
+        EXPECT_EQ(r.diagnostics[0].source_line, "sphere { 0, q }");
+    }
+}
+
+TEST(Budgets, TheObjectThatCrossesTheLimitIsNamed) {
+    ParseOptions o = test::default_options();
+    o.max_objects = 10;
+    const ParseResult r = parse_string("#for (I, 1, 20)\n  sphere { I * x, 1 }\n#end\n", "t.pov", o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics[0].message, "the scene created more than the limit of 10 objects (an endless loop "
+                                        "making objects?); raise it with --max-objects");
+    EXPECT_EQ(r.diagnostics[0].loc.line, 2u);
+    o.max_objects = 20;
+    EXPECT_TRUE(parse_string("#for (I, 1, 20)\n  sphere { I * x, 1 }\n#end\n", "t.pov", o).ok());
+    // A copy counts every object it holds.
+    o.max_objects = 25;
+    const ParseResult copies = parse_string(
+        "#declare U = union { #for (I, 1, 10) sphere { I * x, 1 } #end }\nobject { U }\nobject { U }\n", "t.pov", o);
+    ASSERT_FALSE(copies.ok());
+    EXPECT_EQ(copies.diagnostics[0].loc.line, 3u);
+}
+
+TEST(Budgets, AnEndlessObjectLoopStopsWithinSeconds) {
+    ParseOptions o = test::default_options();
+    o.max_loop_iterations = 1'000'000'000;
+    o.max_objects = 100'000;  // the command line's default (parse.h's 2 million takes about 6 s)
+    const auto start = std::chrono::steady_clock::now();
+    const ParseResult r = parse_string("#declare I = 0;\n#while (1)\n  sphere { <I, 0, 0>, 1 }\n  #declare I = I + 1;\n"
+                                       "#end\n", "t.pov", o);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_FALSE(r.ok());
+    EXPECT_LT(seconds, 5.0);
+    EXPECT_NE(r.diagnostics[0].message.find("raise it with --max"), std::string::npos) << r.diagnostics[0].message;
+}
+
+TEST(Budgets, MemoryGrowthPastTheLimitEndsTheParse) {
+    ParseOptions o = test::default_options();
+    o.max_loop_iterations = 1'000'000'000;
+    o.max_memory_bytes = std::size_t{64} << 20;
+    const ParseResult r = parse_string(
+        "#declare I = 0;\nmesh {\n#while (1)\n  triangle { <I, 0, 0>, <I, 1, 0>, <I, 0, 1> }\n  #declare I = I + 1;\n"
+        "#end\n}\n", "t.pov", o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.diagnostics[0].message,
+              "the parse took more than the limit of 64 MB of memory (an endless loop?); raise it with --max-memory MB");
+}
+
+TEST(DeepNesting, TwentyThousandUnionsNestedByALoopParseQuickly) {
+    const auto start = std::chrono::steady_clock::now();
+    const Scene s = test::parse_ok(
+        "#declare U = sphere { 0, 1 }\n"
+        "#for (I, 1, 20000)\n  #declare U = union { object { U translate 0.0001 * x } }\n#end\n"
+        "object { U }\n");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(s.objects.size(), 1u);
+    EXPECT_LT(seconds, 2.0);
+}
+
+}  // namespace
+}  // namespace wardray::parser
