@@ -185,6 +185,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
     // Shared among processes, each process renders its share of every wave and they exchange records between waves.
     TileExchange exchange(settings.communicator);
+    exchange.begin(tile_count);
     std::vector<TileExchange::TileRect> final_tiles;  // this process's tiles of the final pass
     const int processes = settings.communicator ? std::max(settings.communicator->size(), 1) : 1;
     const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1) / processes;
@@ -208,7 +209,9 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
                 ctx.gather_seed = pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1));
+                const double tile_start = exchange.distributed() ? TileExchange::thread_seconds() : 0.0;
                 body(tile, x0, y0, x1, y1, ctx);
+                if (exchange.distributed()) exchange.tile_cost(tile, TileExchange::thread_seconds() - tile_start);
                 ctx.cache = nullptr;
             }, tile_done);
             exchange.end_wave(wave, mine, cached ? cache : nullptr);

@@ -62,17 +62,57 @@ void ByteReader::take(void* out, std::size_t n) {
 TileExchange::TileExchange(Communicator* communicator)
     : m_comm(communicator && communicator->size() > 1 ? communicator : nullptr) {}
 
+void TileExchange::begin(int tile_count) {
+    m_cost.assign(static_cast<std::size_t>(std::max(tile_count, 0)), 0.0);
+    m_measured = m_cost;
+}
+
+double TileExchange::thread_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void TileExchange::tile_cost(int tile, double seconds) {
+    if (m_comm && tile >= 0 && static_cast<std::size_t>(tile) < m_measured.size())
+        m_measured[static_cast<std::size_t>(tile)] = seconds;
+}
+
 std::vector<int> TileExchange::share(const std::vector<int>& wave) {
     if (!m_comm) {
         m_mine.tiles += wave.size();
         return wave;
     }
     m_wave_start = cpu_seconds();
-    const auto size = static_cast<std::uint64_t>(m_comm->size());
-    const auto rank = static_cast<std::uint64_t>(m_comm->rank());
+    const auto size = static_cast<std::size_t>(m_comm->size());
+    const auto rank = static_cast<std::size_t>(m_comm->rank());
+    bool known = wave.size() > size;
+    for (const int tile : wave)
+        known = known && static_cast<std::size_t>(tile) < m_cost.size() && m_cost[static_cast<std::size_t>(tile)] > 0.0;
     std::vector<int> mine;
-    for (std::size_t i = 0; i < wave.size(); ++i)
-        if ((i + m_waves) % size == rank) mine.push_back(wave[i]);
+    if (known) {
+        // Longest processing time first (Graham 1969), on the costs every process holds alike: the same shares
+        // everywhere. Ties go to the lower tile index and the lower rank.
+        std::vector<int> order = wave;
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return m_cost[static_cast<std::size_t>(a)] > m_cost[static_cast<std::size_t>(b)];
+        });
+        std::vector<double> load(size, 0.0);
+        for (const int tile : order) {
+            const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+            load[least] += m_cost[static_cast<std::size_t>(tile)];
+            if (least == rank) mine.push_back(tile);
+        }
+        // In the wave's order, as the tiles were listed.
+        std::vector<char> taken(m_cost.size(), 0);
+        for (const int tile : mine) taken[static_cast<std::size_t>(tile)] = 1;
+        mine.clear();
+        for (const int tile : wave)
+            if (taken[static_cast<std::size_t>(tile)]) mine.push_back(tile);
+    } else {
+        for (std::size_t i = 0; i < wave.size(); ++i)
+            if ((i + m_waves) % size == rank) mine.push_back(wave[i]);
+    }
     ++m_waves;
     m_mine.tiles += mine.size();
     return mine;
@@ -95,6 +135,7 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
     for (const int tile : mine) {
         const cache::TileCache::Contribution c = cache->tile(tile).contribution();
         out.put(static_cast<std::int32_t>(tile));
+        out.put(m_measured[static_cast<std::size_t>(tile)]);
         out.put(c.lookups);
         out.put(c.hits);
         out.put(static_cast<std::uint64_t>(c.records.size()));
@@ -115,17 +156,19 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
         stats.bytes += all[r].size();
         stats.busy_max = std::max(stats.busy_max, rank_busy);
         stats.busy_sum += rank_busy;
-        if (static_cast<int>(r) == m_comm->rank()) continue;
         while (!in.done()) {
             const auto tile = in.get<std::int32_t>();
             if (tile < 0 || static_cast<std::size_t>(tile) >= in_wave.size() || !in_wave[static_cast<std::size_t>(tile)])
                 throw std::runtime_error("tile exchange: a process sent a tile outside the wave");
+            // Every process keeps the same costs: its own tiles' as it sent them.
+            m_cost[static_cast<std::size_t>(tile)] = std::max(in.get<double>(), 1e-9);
             cache::TileCache::Contribution c;
             c.lookups = in.get<std::uint64_t>();
             c.hits = in.get<std::uint64_t>();
             const auto count = in.get<std::uint64_t>();
             c.records.reserve(count);
             for (std::uint64_t i = 0; i < count; ++i) c.records.push_back(in.get<cache::IrradianceRecord>());
+            if (static_cast<int>(r) == m_comm->rank()) continue;
             m_mine.records_received += count;
             stats.records += count;
             cache->tile(tile).adopt(c);

@@ -44,9 +44,17 @@ public:
     bool distributed() const { return m_comm != nullptr; }
     bool root() const { return !m_comm || m_comm->rank() == 0; }
 
-    /// The tiles of `wave` this process renders: every size()-th one, the starting point turning with each wave
-    /// so that one-tile waves do not all fall to the same process.
+    /// Readies the exchange for a render of `tile_count` tiles.
+    void begin(int tile_count);
+    /// The tiles of `wave` this process renders. When every tile's cost in an earlier pass is known, the costliest
+    /// go first, each to the process with the least work so far (longest processing time first); otherwise every
+    /// size()-th tile, the starting point turning with each wave so that one-tile waves do not all fall to the
+    /// same process. The choice never changes a pixel, only who renders it.
     std::vector<int> share(const std::vector<int>& wave);
+    /// The processor seconds tile `tile` took in this pass (from its worker thread; each tile is one thread's).
+    void tile_cost(int tile, double seconds);
+    /// This thread's processor time in seconds.
+    static double thread_seconds();
     /// After each wave (collective when there is a cache): sends the records this process's tiles made and adopts
     /// the other processes' into their tiles' views, so that cache->merge_tiles(wave) then merges the same records
     /// everywhere. Without a cache (one wave, no records) it only keeps the time.
@@ -73,6 +81,8 @@ private:
     std::uint64_t m_waves = 0;
     double m_wave_start = 0.0;   ///< processor time when this process started its share of the wave
     double m_unexchanged = 0.0;  ///< busy time of waves without an exchange, sent with the image
+    std::vector<double> m_cost;  ///< each tile's last exchanged cost (the same on every process); 0: not known
+    std::vector<double> m_measured;  ///< this process's tiles' costs in the current wave
     RankStatistics m_mine;
     std::vector<RankStatistics> m_ranks;
     std::vector<WaveStatistics> m_wave_stats;
