@@ -7,6 +7,7 @@
 
 #include "app/diff_command.h"
 #include "app/options.h"
+#include "app/process_group.h"
 #include "app/process_limits.h"
 #include "app/run.h"
 #include "app/stats.h"
@@ -65,53 +66,75 @@ void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint
     }
 }
 
-// One frame of the job from its file to its image: each step prints why it fails; returns the exit status.
-int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start) {
+// One frame of the job from its file to its image: each step prints why it fails; returns the exit status. Shared
+// among processes, every rank loads and builds the scene, they render it together, and rank 0 writes it.
+int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start, ProcessGroup& group) {
     const std::optional<LoadedScene> loaded = load_scene(job.options, frame.clock);
-    if (!loaded) return kExitScene;
+    if (!group.agree(loaded.has_value(), "parse the scene")) return kExitScene;
     const scene::Scene& scene = loaded->scene;
     if (job.options.check_only) {
-        describe_scene(scene, std::cout);
+        if (group.root()) describe_scene(scene, std::cout);
         return kExitOk;
     }
     const std::optional<BuiltGeometry> built = build_geometry(scene);
-    if (!built) return kExitScene;
+    if (!group.agree(built.has_value(), "build the scene's geometry")) return kExitScene;
     warn_skipped_objects(scene, built->geometry->skipped_objects());
-    const Illumination illumination = build_illumination(scene, *built->geometry, job.options);
-    const RenderedFrame rendered = render_frame(scene, illumination, job.options, job.region);
+    Illumination illumination = build_illumination(scene, *built->geometry, job.options);
+    if (illumination.cache && job.options.radiosity_load) group.share_cache(*illumination.cache);
+    const RenderedFrame rendered =
+        render_frame(scene, illumination, job.options, job.region, group.communicator());
     for (const Diagnostic& w : built->geometry->shape_warnings()) std::cerr << format_diagnostic(w);
     const auto write_start = Clock::now();
     Job frame_job = job;
     frame_job.output = frame.output;
-    if (!write_outputs(frame_job, scene, illumination, rendered.result)) return kExitScene;
+    // Only rank 0 writes; the others wait to hear that it did.
+    bool written = !group.root() || write_outputs(frame_job, scene, illumination, rendered.result);
     const PhaseTimes times{loaded->seconds, built->seconds, rendered.seconds, seconds_since(write_start)};
-    if (job.options.stats &&
-        !write_stats(*job.options.stats, frame_job, scene, illumination, rendered.result, times,
-                     PeakMemory{loaded->peak_bytes, built->peak_bytes, peak_resident_bytes()}, start))
-        return kExitScene;
-    if (job.options.verbose)
+    if (written && group.root() && job.options.stats)
+        written = write_stats(*job.options.stats, frame_job, scene, illumination, rendered.result, times,
+                              PeakMemory{loaded->peak_bytes, built->peak_bytes, peak_resident_bytes()}, start);
+    if (!group.agree(written, "write the output")) return kExitScene;
+    if (job.options.verbose && group.root())
         std::cerr << "wardray: wrote " << frame.output.string() << " (" << job.options.width << "x"
                   << job.options.height << ") in " << seconds_since(start) << " s\n";
     return kExitOk;
 }
 
 // One scene, each frame of it parsed afresh (POV-Ray compat); +C skips the frames whose image already exists.
+int run_frames(const Job& job, Clock::time_point start, ProcessGroup& group) {
+    for (const Frame& frame : job.frames) {
+        std::error_code ec;
+        // Rank 0 writes the images, so its folder decides what +C keeps.
+        const bool kept = job.options.continue_trace && !job.options.check_only &&
+                          group.root_decides(group.root() && std::filesystem::exists(frame.output, ec));
+        if (kept) {
+            if (job.options.verbose && group.root())
+                std::cerr << "wardray: " << frame.output.string() << " exists; kept (+C)\n";
+            continue;
+        }
+        const Clock::time_point frame_start = &frame == &job.frames.front() ? start : Clock::now();
+        if (const int status = render_one_frame(job, frame, frame_start, group); status != kExitOk) return status;
+        if (job.options.check_only) break;
+    }
+    return kExitOk;
+}
+
 int run_scene(Options options, const std::string& argv0, Clock::time_point start) {
     const std::optional<Job> job = resolve_job(std::move(options), argv0);
     if (!job) return kExitScene;
     if (const std::optional<int> refused = refuse_job(*job)) return *refused;
     const auto thread_limit = prepare_process(job->options);
-    for (const Frame& frame : job->frames) {
-        std::error_code ec;
-        if (job->options.continue_trace && !job->options.check_only && std::filesystem::exists(frame.output, ec)) {
-            if (job->options.verbose) std::cerr << "wardray: " << frame.output.string() << " exists; kept (+C)\n";
-            continue;
-        }
-        const Clock::time_point frame_start = &frame == &job->frames.front() ? start : Clock::now();
-        if (const int status = render_one_frame(*job, frame, frame_start); status != kExitOk) return status;
-        if (job->options.check_only) break;
+    // Under mpirun, the ranks started together; a rank that fails unexpectedly ends them all, never leaving the
+    // others waiting in an exchange.
+    ProcessGroup group;
+    if (!group.shared()) return run_frames(*job, start, group);
+    try {
+        return run_frames(*job, start, group);
+    } catch (const std::bad_alloc&) {
+        group.fail("out of memory");
+    } catch (const std::exception& e) {
+        group.fail(e.what());
     }
-    return kExitOk;
 }
 
 }  // namespace

@@ -308,8 +308,8 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
 }
 
 RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options,
-                           const std::optional<render::PixelRegion>& region) {
-    ProgressLine progress(isatty(STDERR_FILENO) != 0);
+                           const std::optional<render::PixelRegion>& region, render::Communicator* communicator) {
+    ProgressLine progress(isatty(STDERR_FILENO) != 0 && (!communicator || communicator->rank() == 0));
     const auto start = Clock::now();
     render::RenderSettings settings;
     settings.width = options.width;
@@ -325,6 +325,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
                           antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
+    settings.communicator = communicator;
     RenderedFrame frame{render::render_image(
         scene, *illumination.integrator, settings, [&](double f) { progress.update("render", f); },
         illumination.cache.get())};

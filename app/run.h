@@ -85,8 +85,10 @@ struct RenderedFrame {
 };
 
 /// Renders the image (only `region`'s pixels when there is one), with a progress line when stderr is a terminal.
+/// With `communicator`, the render is shared among its processes (rank 0's result holds the whole image).
 RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumination, const Options& options,
-                           const std::optional<render::PixelRegion>& region = std::nullopt);
+                           const std::optional<render::PixelRegion>& region = std::nullopt,
+                           render::Communicator* communicator = nullptr);
 
 /// Writes the image, the --aov images and the radiosity file (+RFO); false (with a message) when one fails.
 bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination& illumination,

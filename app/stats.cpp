@@ -38,6 +38,40 @@ nlohmann::json cache_stats(const cache::IrradianceCache* irradiance_cache, const
             {"rays_per_record", rays_per_record}};
 }
 
+// A render shared among processes: each rank's share and traffic, and each wave's work and exchange; null for one.
+nlohmann::json process_stats(const render::RenderResult& result) {
+    if (result.ranks.empty()) return nullptr;
+    nlohmann::json ranks = nlohmann::json::array();
+    std::uint64_t bytes = 0;
+    for (std::size_t r = 0; r < result.ranks.size(); ++r) {
+        const render::RankStatistics& s = result.ranks[r];
+        bytes += s.traffic.bytes_sent;
+        ranks.push_back({{"rank", r},
+                         {"tiles", s.tiles},
+                         {"records_made", s.records_made},
+                         {"records_received", s.records_received},
+                         {"bytes_sent", s.traffic.bytes_sent},
+                         {"bytes_received", s.traffic.bytes_received},
+                         {"exchanges", s.traffic.exchanges},
+                         {"exchange_seconds", s.traffic.seconds},
+                         {"busy_cpu_seconds", s.busy_seconds}});
+    }
+    nlohmann::json waves = nlohmann::json::array();
+    double critical = 0.0, busy = 0.0;
+    for (const render::WaveStatistics& w : result.waves) {
+        critical += w.busy_max;
+        busy += w.busy_sum;
+        waves.push_back({{"tiles", w.tiles}, {"records", w.records}, {"bytes", w.bytes},
+                         {"busy_max_cpu_seconds", w.busy_max}, {"busy_sum_cpu_seconds", w.busy_sum}});
+    }
+    return {{"count", result.ranks.size()},
+            {"bytes_exchanged", bytes},
+            {"critical_cpu_seconds", critical},
+            {"busy_cpu_seconds", busy},
+            {"ranks", ranks},
+            {"waves", waves}};
+}
+
 }  // namespace
 
 bool write_stats(const std::filesystem::path& path, const Job& job, const scene::Scene& scene,
@@ -77,6 +111,7 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
                             {"shot", ph->shot},           {"stored", ph->stored},
                             {"gather_radius", ph->gather_radius},
                             {"shoot_seconds", ph->shoot_seconds}, {"build_seconds", ph->build_seconds}};
+    if (!result.ranks.empty()) stats["processes"] = process_stats(result);
     auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
         std::ofstream f(tmp);
         f << stats.dump(2) << "\n";

@@ -62,6 +62,28 @@ void TileCache::add(IrradianceRecord record) {
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
+TileCache::Contribution TileCache::contribution() const {
+    Contribution c;
+    c.records.reserve(m_order.size());
+    for (const auto& [depth, index] : m_order)
+        c.records.push_back(m_own[static_cast<std::size_t>(depth)].records()[index]);
+    c.lookups = m_lookups;
+    c.hits = m_hits;
+    return c;
+}
+
+void TileCache::adopt(const Contribution& contribution) {
+    m_order.clear();
+    for (RecordOctree& own : m_own) own = RecordOctree(own.reach());
+    // Filed as they stand: merge_tiles() reads them back in this order and clamps them against the merged cache.
+    for (const IrradianceRecord& record : contribution.records) {
+        if (record.depth < 0 || record.depth >= static_cast<int>(m_own.size())) continue;
+        m_order.emplace_back(record.depth, m_own[static_cast<std::size_t>(record.depth)].insert(record));
+    }
+    m_lookups = contribution.lookups;
+    m_hits = contribution.hits;
+}
+
 IrradianceCache::IrradianceCache(const scene::RadiositySettings& settings)
     : IrradianceCache(std::max(settings.recursion_limit, 1), largest_error_bound(settings)) {}
 

@@ -48,6 +48,17 @@ public:
     void add(IrradianceRecord record);
     /// How many records this tile has made in the pass.
     std::size_t record_count() const { return m_order.size(); }
+    /// This tile's records since the last merge, in the order they were made and as they stand now (radii clamped
+    /// against each other), with its lookup counts: what another process needs to merge them as this one would.
+    struct Contribution {
+        std::vector<IrradianceRecord> records;
+        std::uint64_t lookups = 0;
+        std::uint64_t hits = 0;
+    };
+    Contribution contribution() const;
+    /// Takes over a contribution made by this tile in another process (rendering across processes), replacing
+    /// whatever this view holds, so that merge_tiles() then merges exactly what that process would have.
+    void adopt(const Contribution& contribution);
 
 private:
     friend class IrradianceCache;

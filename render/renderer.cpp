@@ -157,7 +157,7 @@ std::vector<double> pretrace_sizes(const scene::RadiositySettings& rs, int width
 
 RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
-    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt};
+    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt, {}, {}};
     const camera::CameraModel camera(scene.camera, settings.width, settings.height, scene.global.noise_generator);
     // Focal blur only when the camera asks for it: a scene without it pays nothing.
     std::optional<camera::FocalBlur> blur;
@@ -183,7 +183,12 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     for (const std::vector<int>& wave : waves) tiles_rendered += wave.size();
     std::vector<double> sizes;
     if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
-    const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1);
+    // Shared among processes, each process renders its share of every wave and they exchange records between waves.
+    TileExchange exchange(settings.communicator);
+    exchange.begin(tile_count);
+    std::vector<TileExchange::TileRect> final_tiles;  // this process's tiles of the final pass
+    const int processes = settings.communicator ? std::max(settings.communicator->size(), 1) : 1;
+    const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1) / processes;
     std::atomic<int> tiles_done{0};
     std::mutex progress_mutex;
     auto tile_done = [&]() {
@@ -198,15 +203,26 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         if (cached) cache->begin_pass(tile_count);
         const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
         for (const std::vector<int>& wave : waves) {
-            for_each_tile(settings, wave, [&](int tile, int x0, int y0, int x1, int y1) {
+            const std::vector<int> mine = exchange.share(wave);
+            for_each_tile(settings, mine, [&](int tile, int x0, int y0, int x1, int y1) {
                 lighting::TraceContext& ctx = tile_counters[tile].trace;
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
                 ctx.gather_seed = pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1));
+                const double tile_start = exchange.distributed() ? TileExchange::thread_seconds() : 0.0;
                 body(tile, x0, y0, x1, y1, ctx);
+                if (exchange.distributed()) exchange.tile_cost(tile, TileExchange::thread_seconds() - tile_start);
                 ctx.cache = nullptr;
             }, tile_done);
+            exchange.end_wave(wave, mine, cached ? cache : nullptr);
             if (cached) cache->merge_tiles(wave);
+            if (final_pass && exchange.distributed()) {
+                for (const int tile : mine) {
+                    const int x0 = (tile % tiles_x) * settings.tile_size, y0 = (tile / tiles_x) * settings.tile_size;
+                    final_tiles.push_back({tile, x0, y0, std::min(x0 + settings.tile_size, settings.width),
+                                           std::min(y0 + settings.tile_size, settings.height)});
+                }
+            }
         }
         if (cached) cache->end_pass();
     };
@@ -247,16 +263,21 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     });
     result.passes.push_back(
         {"final", 1.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - final_start).count()});
+    for (const TileCounters& t : tile_counters) {
+        result.rays += t.trace.rays;
+        result.non_finite_pixels += t.non_finite;
+        result.supersampled_pixels += t.supersampled;
+    }
+    // Across processes, process 0 now receives the other processes' tiles and counters.
+    exchange.gather_image(final_tiles, result.film, result.irradiance ? &*result.irradiance : nullptr, result.rays,
+                          result.non_finite_pixels, result.supersampled_pixels);
+    result.ranks = exchange.ranks();
+    result.waves = exchange.waves();
     if (settings.region) {
         // The whole tiles the region touches were rendered; POV-Ray writes the pixels outside it black.
         for (int y = 0; y < settings.height; ++y)
             for (int x = 0; x < settings.width; ++x)
                 if (!settings.region->contains(x, y)) result.film.set_pixel(x, y, Vec3{});
-    }
-    for (const TileCounters& t : tile_counters) {
-        result.rays += t.trace.rays;
-        result.non_finite_pixels += t.non_finite;
-        result.supersampled_pixels += t.supersampled;
     }
     return result;
 }

@@ -11,6 +11,7 @@
 #include "lighting/integrator.h"
 #include "scene/scene.h"
 #include "render/film.h"
+#include "render/tile_exchange.h"
 
 namespace wardray::cache {
 class IrradianceCache;
@@ -48,6 +49,9 @@ struct RenderSettings {
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
     bool irradiance_aov = false;  ///< keep each pixel's indirect irradiance (at its centre sample) in a second film
+    /// Processes to share the render with (rendering across MPI ranks); null: this process renders every tile. The
+    /// image, the cache and the counters are the same either way; only process 0's result holds the whole image.
+    Communicator* communicator = nullptr;
 };
 
 /// One pass over the image: a pretrace pass with its block size in pixels, or the final pass.
@@ -68,6 +72,8 @@ struct RenderResult {
     std::uint64_t supersampled_pixels = 0;
     std::vector<PassTiming> passes;
     std::optional<Film> irradiance;  ///< RenderSettings::irradiance_aov: indirect irradiance per pixel, else empty
+    std::vector<RankStatistics> ranks;  ///< each process's share, by rank, when the render was shared among several
+    std::vector<WaveStatistics> waves;  ///< and each wave's work and exchange
 };
 
 /// POV-Ray's pretrace block sizes in pixels for an image of width × height: pretrace_start to pretrace_end of the

@@ -12,6 +12,7 @@ packages=(
   libgtest-dev nlohmann-json3-dev          # tests, --stats JSON
   povray povray-includes povray-examples fonts-povray  # the reference renderer, its includes and scenes
   python3-numpy python3-openimageio python3-matplotlib  # tools/compare: read HDR images, plot error against time
+  libopenmpi-dev openmpi-bin              # rendering across processes (mpirun -np N wardray; -DWARDRAY_MPI)
   clang libclang-rt-14-dev                 # tools/fuzz.sh: libFuzzer and the sanitizer runtimes (CI does not fuzz)
 )
 

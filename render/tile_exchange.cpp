@@ -1,0 +1,247 @@
+// TileExchange: which process renders which tile, and the records, pixels and counters they exchange.
+#include "render/tile_exchange.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstring>
+#include <ctime>
+#include <stdexcept>
+#include <type_traits>
+
+#include "cache/irradiance_cache.h"
+
+namespace wardray::render {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Records travel as their bytes: every process is the same executable on the same kind of machine.
+static_assert(std::is_trivially_copyable_v<cache::IrradianceRecord>);
+static_assert(std::is_trivially_copyable_v<lighting::RayCounters>);
+static_assert(std::is_trivially_copyable_v<RankStatistics>);
+
+/// This process's processor time in seconds, every thread together.
+double cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+}  // namespace
+
+std::vector<Bytes> Communicator::allgather(const Bytes& mine) {
+    const auto start = Clock::now();
+    std::vector<Bytes> all = do_allgather(mine);
+    count(mine, all, std::chrono::duration<double>(Clock::now() - start).count());
+    return all;
+}
+
+std::vector<Bytes> Communicator::gather(const Bytes& mine) {
+    const auto start = Clock::now();
+    std::vector<Bytes> all = do_gather(mine);
+    count(mine, all, std::chrono::duration<double>(Clock::now() - start).count());
+    return all;
+}
+
+void Communicator::count(const Bytes& mine, const std::vector<Bytes>& received, double seconds) {
+    ++m_traffic.exchanges;
+    m_traffic.bytes_sent += mine.size();
+    for (std::size_t r = 0; r < received.size(); ++r)
+        if (static_cast<int>(r) != rank()) m_traffic.bytes_received += received[r].size();
+    m_traffic.seconds += seconds;
+}
+
+void ByteReader::take(void* out, std::size_t n) {
+    if (m_bytes->size() - m_at < n) throw std::out_of_range("tile exchange: a message ends early");
+    std::memcpy(out, m_bytes->data() + m_at, n);
+    m_at += n;
+}
+
+TileExchange::TileExchange(Communicator* communicator)
+    : m_comm(communicator && communicator->size() > 1 ? communicator : nullptr) {}
+
+void TileExchange::begin(int tile_count) {
+    m_cost.assign(static_cast<std::size_t>(std::max(tile_count, 0)), 0.0);
+    m_measured = m_cost;
+}
+
+double TileExchange::thread_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void TileExchange::tile_cost(int tile, double seconds) {
+    if (m_comm && tile >= 0 && static_cast<std::size_t>(tile) < m_measured.size())
+        m_measured[static_cast<std::size_t>(tile)] = seconds;
+}
+
+std::vector<int> TileExchange::share(const std::vector<int>& wave) {
+    if (!m_comm) {
+        m_mine.tiles += wave.size();
+        return wave;
+    }
+    m_wave_start = cpu_seconds();
+    const auto size = static_cast<std::size_t>(m_comm->size());
+    const auto rank = static_cast<std::size_t>(m_comm->rank());
+    bool known = wave.size() > size;
+    for (const int tile : wave)
+        known = known && static_cast<std::size_t>(tile) < m_cost.size() && m_cost[static_cast<std::size_t>(tile)] > 0.0;
+    std::vector<int> mine;
+    if (known) {
+        // Longest processing time first (Graham 1969), on the costs every process holds alike: the same shares
+        // everywhere. Ties go to the lower tile index and the lower rank.
+        std::vector<int> order = wave;
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+            return m_cost[static_cast<std::size_t>(a)] > m_cost[static_cast<std::size_t>(b)];
+        });
+        std::vector<double> load(size, 0.0);
+        for (const int tile : order) {
+            const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
+            load[least] += m_cost[static_cast<std::size_t>(tile)];
+            if (least == rank) mine.push_back(tile);
+        }
+        // In the wave's order, as the tiles were listed.
+        std::vector<char> taken(m_cost.size(), 0);
+        for (const int tile : mine) taken[static_cast<std::size_t>(tile)] = 1;
+        mine.clear();
+        for (const int tile : wave)
+            if (taken[static_cast<std::size_t>(tile)]) mine.push_back(tile);
+    } else {
+        for (std::size_t i = 0; i < wave.size(); ++i)
+            if ((i + m_waves) % size == rank) mine.push_back(wave[i]);
+    }
+    ++m_waves;
+    m_mine.tiles += mine.size();
+    return mine;
+}
+
+void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>& mine,
+                            cache::IrradianceCache* cache) {
+    if (!m_comm || wave.empty()) return;
+    const double busy = cpu_seconds() - m_wave_start;
+    m_mine.busy_seconds += busy;
+    if (!cache) {
+        m_unexchanged += busy;
+        return;
+    }
+    // This process's time on the wave, then each of its tiles: its index, its lookup counts and its records in the
+    // order they were made.
+    ByteWriter out;
+    out.put(busy);
+    std::uint64_t made = 0;
+    for (const int tile : mine) {
+        const cache::TileCache::Contribution c = cache->tile(tile).contribution();
+        out.put(static_cast<std::int32_t>(tile));
+        out.put(m_measured[static_cast<std::size_t>(tile)]);
+        out.put(c.lookups);
+        out.put(c.hits);
+        out.put(static_cast<std::uint64_t>(c.records.size()));
+        for (const cache::IrradianceRecord& r : c.records) out.put(r);
+        made += c.records.size();
+    }
+    m_mine.records_made += made;
+    const std::vector<Bytes> all = m_comm->allgather(out.bytes());
+    WaveStatistics stats;
+    stats.tiles = wave.size();
+    stats.records = made;
+    // The other processes' tiles take over what those processes made; merge_tiles(wave) then fixes the order.
+    std::vector<char> in_wave(static_cast<std::size_t>(*std::max_element(wave.begin(), wave.end())) + 1, 0);
+    for (const int tile : wave) in_wave[static_cast<std::size_t>(tile)] = 1;
+    for (std::size_t r = 0; r < all.size(); ++r) {
+        ByteReader in(all[r]);
+        const auto rank_busy = in.get<double>();
+        stats.bytes += all[r].size();
+        stats.busy_max = std::max(stats.busy_max, rank_busy);
+        stats.busy_sum += rank_busy;
+        while (!in.done()) {
+            const auto tile = in.get<std::int32_t>();
+            if (tile < 0 || static_cast<std::size_t>(tile) >= in_wave.size() || !in_wave[static_cast<std::size_t>(tile)])
+                throw std::runtime_error("tile exchange: a process sent a tile outside the wave");
+            // Every process keeps the same costs: its own tiles' as it sent them.
+            m_cost[static_cast<std::size_t>(tile)] = std::max(in.get<double>(), 1e-9);
+            cache::TileCache::Contribution c;
+            c.lookups = in.get<std::uint64_t>();
+            c.hits = in.get<std::uint64_t>();
+            const auto count = in.get<std::uint64_t>();
+            c.records.reserve(count);
+            for (std::uint64_t i = 0; i < count; ++i) c.records.push_back(in.get<cache::IrradianceRecord>());
+            if (static_cast<int>(r) == m_comm->rank()) continue;
+            m_mine.records_received += count;
+            stats.records += count;
+            cache->tile(tile).adopt(c);
+        }
+    }
+    m_wave_stats.push_back(stats);
+}
+
+void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance,
+                                lighting::RayCounters& rays, std::uint64_t& non_finite, std::uint64_t& supersampled) {
+    if (!m_comm) {
+        m_ranks.clear();
+        return;
+    }
+    // The counters first, then each tile's pixels row by row (and its irradiance pixels).
+    ByteWriter out;
+    out.put(m_unexchanged);
+    out.put(rays);
+    out.put(non_finite);
+    out.put(supersampled);
+    for (const TileRect& t : mine) {
+        out.put(t);
+        for (const Film* f : {static_cast<const Film*>(&film), static_cast<const Film*>(irradiance)}) {
+            if (!f) continue;
+            for (int y = t.y0; y < t.y1; ++y)
+                for (int x = t.x0; x < t.x1; ++x) {
+                    const Vec3 c = f->pixel(x, y);
+                    out.put(std::array<float, 3>{static_cast<float>(c.x), static_cast<float>(c.y),
+                                                 static_cast<float>(c.z)});
+                }
+        }
+    }
+    const std::vector<Bytes> all = m_comm->gather(out.bytes());
+    if (m_comm->rank() == 0) {
+        // The waves without an exchange (a render without a cache is one) as one more wave.
+        WaveStatistics final_wave;
+        final_wave.busy_max = final_wave.busy_sum = m_unexchanged;
+        for (std::size_t r = 0; r < all.size(); ++r) final_wave.bytes += all[r].size();
+        for (std::size_t r = 1; r < all.size(); ++r) {
+            ByteReader in(all[r]);
+            const auto busy = in.get<double>();
+            final_wave.busy_max = std::max(final_wave.busy_max, busy);
+            final_wave.busy_sum += busy;
+            rays += in.get<lighting::RayCounters>();
+            non_finite += in.get<std::uint64_t>();
+            supersampled += in.get<std::uint64_t>();
+            while (!in.done()) {
+                const auto t = in.get<TileRect>();
+                if (t.x0 < 0 || t.y0 < 0 || t.x1 > film.width() || t.y1 > film.height())
+                    throw std::runtime_error("tile exchange: a process sent pixels outside the image");
+                for (Film* f : {&film, irradiance}) {
+                    if (!f) continue;
+                    for (int y = t.y0; y < t.y1; ++y)
+                        for (int x = t.x0; x < t.x1; ++x) {
+                            const auto c = in.get<std::array<float, 3>>();
+                            f->set_pixel(x, y, {c[0], c[1], c[2]});
+                        }
+                }
+            }
+        }
+        if (final_wave.busy_sum > 0.0) m_wave_stats.push_back(final_wave);
+    }
+    // Last, each process's share and traffic (this exchange's own bytes not included).
+    ByteWriter stats;
+    RankStatistics s = m_mine;
+    s.traffic = m_comm->traffic();
+    stats.put(s);
+    const std::vector<Bytes> every = m_comm->gather(stats.bytes());
+    m_ranks.clear();
+    for (const Bytes& b : every) {
+        ByteReader in(b);
+        m_ranks.push_back(in.get<RankStatistics>());
+    }
+}
+
+}  // namespace wardray::render

@@ -1,0 +1,91 @@
+// TileExchange: a render's tiles shared among processes, with the cache records of each wave exchanged in tile order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "lighting/trace_context.h"
+#include "render/communicator.h"
+#include "render/film.h"
+
+namespace wardray::cache {
+class IrradianceCache;
+}  // namespace wardray::cache
+
+namespace wardray::render {
+
+/// One process's share of a render across processes, for --stats.
+struct RankStatistics {
+    std::uint64_t tiles = 0;             ///< tiles rendered, over every pass
+    std::uint64_t records_made = 0;      ///< cache records this process gathered
+    std::uint64_t records_received = 0;  ///< cache records adopted from the other processes
+    double busy_seconds = 0.0;           ///< processor time spent on its tiles (robust on a shared machine)
+    Communicator::Traffic traffic;       ///< bytes sent and received, and time in exchanges
+};
+
+/// One wave of one pass across processes, for --stats and the scaling model (docs/mpi.md).
+struct WaveStatistics {
+    std::uint64_t tiles = 0;
+    std::uint64_t records = 0;  ///< records the wave made, over every process
+    std::uint64_t bytes = 0;    ///< bytes every process sent in the wave's exchange, together
+    double busy_max = 0.0;      ///< processor seconds of the busiest process: the wave's length on idle processors
+    double busy_sum = 0.0;      ///< processor seconds over every process
+};
+
+/// How the tiles of one render are shared among the processes of a Communicator, deterministically: every
+/// process renders its share of each wave, then the wave's records are exchanged and every process merges the
+/// records of the whole wave in the wave's tile order, as one process would. So the cache, and with it the image,
+/// is the same bit for bit for any number of processes and threads.
+class TileExchange {
+public:
+    /// `communicator` null or of one process: this process renders every tile and nothing is exchanged.
+    explicit TileExchange(Communicator* communicator);
+
+    bool distributed() const { return m_comm != nullptr; }
+    bool root() const { return !m_comm || m_comm->rank() == 0; }
+
+    /// Readies the exchange for a render of `tile_count` tiles.
+    void begin(int tile_count);
+    /// The tiles of `wave` this process renders. When every tile's cost in an earlier pass is known, the costliest
+    /// go first, each to the process with the least work so far (longest processing time first); otherwise every
+    /// size()-th tile, the starting point turning with each wave so that one-tile waves do not all fall to the
+    /// same process. The choice never changes a pixel, only who renders it.
+    std::vector<int> share(const std::vector<int>& wave);
+    /// The processor seconds tile `tile` took in this pass (from its worker thread; each tile is one thread's).
+    void tile_cost(int tile, double seconds);
+    /// This thread's processor time in seconds.
+    static double thread_seconds();
+    /// After each wave (collective when there is a cache): sends the records this process's tiles made and adopts
+    /// the other processes' into their tiles' views, so that cache->merge_tiles(wave) then merges the same records
+    /// everywhere. Without a cache (one wave, no records) it only keeps the time.
+    void end_wave(const std::vector<int>& wave, const std::vector<int>& mine, cache::IrradianceCache* cache);
+
+    /// The pixels of a tile: [x0, x1) × [y0, y1).
+    struct TileRect {
+        int tile, x0, y0, x1, y1;
+    };
+    /// After the final pass: the pixels of `mine` (and of `irradiance` when given), the counters and each process's
+    /// statistics go to process 0, whose films then hold the whole image and whose totals are everyone's
+    /// (collective). Other processes keep only their own.
+    void gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance, lighting::RayCounters& rays,
+                      std::uint64_t& non_finite, std::uint64_t& supersampled);
+
+    /// Every process's statistics, by rank, on process 0 once gather_image() has run; empty elsewhere and for
+    /// one process.
+    const std::vector<RankStatistics>& ranks() const { return m_ranks; }
+    /// Every wave exchanged, in order (the same on every process); empty for one process.
+    const std::vector<WaveStatistics>& waves() const { return m_wave_stats; }
+
+private:
+    Communicator* m_comm;
+    std::uint64_t m_waves = 0;
+    double m_wave_start = 0.0;   ///< processor time when this process started its share of the wave
+    double m_unexchanged = 0.0;  ///< busy time of waves without an exchange, sent with the image
+    std::vector<double> m_cost;  ///< each tile's last exchanged cost (the same on every process); 0: not known
+    std::vector<double> m_measured;  ///< this process's tiles' costs in the current wave
+    RankStatistics m_mine;
+    std::vector<RankStatistics> m_ranks;
+    std::vector<WaveStatistics> m_wave_stats;
+};
+
+}  // namespace wardray::render
