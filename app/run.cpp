@@ -233,11 +233,13 @@ std::optional<int> refuse_job(const Job& job) {
                   << "' is the scene file itself; choose another\n";
         return kExitUsage;
     }
-    // +RFI reads a file the user named: confined like the scene's own reads (the default name, beside the
-    // output as +RFO writes it, is wardray's own file).
+    // +RFI reads a file the user named: confined like the scene's own reads, plus the current folder, where +RFO
+    // writes a relative name (the default name, beside the output as +RFO writes it, is wardray's own file).
     if (options.radiosity_load && options.radiosity_file) {
         const parser::ParseOptions reads = parse_options_for(options, {});
-        if (!parser::is_readable(*options.radiosity_file, parser::readable_roots(reads, options.scene))) {
+        std::vector<parser::ReadRoot> roots = parser::readable_roots(reads, options.scene);
+        roots.push_back({fs::current_path(ec), true});
+        if (!parser::is_readable(*options.radiosity_file, roots)) {
             std::cerr << "wardray: error: " << parser::read_refusal(*options.radiosity_file, "+RFI radiosity file")
                       << "\n";
             return kExitScene;

@@ -22,6 +22,7 @@ std::shared_ptr<const scene::ImageData> two_by_two(const std::filesystem::path&,
 scene::Pigment image_pigment(const std::string& items) {
     parser::ParseOptions options;
     options.read_image = two_by_two;
+    options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");  // the stand-in file is read from there
     // The file must exist for the search; the scene itself serves.
     const parser::ParseResult r = parser::parse_string(
         "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR

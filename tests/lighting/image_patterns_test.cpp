@@ -21,6 +21,7 @@ namespace {
 parser::ParseOptions options_with_povray_include() {
     parser::ParseOptions options;
     options.library_paths.push_back("/usr/share/povray-3.7/include");
+    options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");  // the stand-in image files are read from there
     options.set_number_of_waves = [](int count) { set_number_of_waves(count); };
     return options;
 }
@@ -104,6 +105,7 @@ const std::string kAnyFile = "\"" WARDRAY_SOURCE_DIR "/scenes/default.pov\"";
 parser::ParseOptions palette_options() {
     parser::ParseOptions options;
     options.read_image = palette_strip;
+    options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");
     return options;
 }
 
