@@ -24,6 +24,10 @@ CameraModel::CameraModel(const scene::Camera& camera, int width, int height, int
     f.width = width;
     f.height = height;
     m_project = k_projections[static_cast<int>(camera.type)];
+    if (camera.type == scene::Camera::Type::MeshCamera) {
+        m_mesh = std::make_unique<MeshCamera>(camera.mesh_camera);
+        f.mesh = m_mesh.get();
+    }
     // POV-Ray compat (FocalBlurData): the lens's x axis is up × direction, its y axis direction × x.
     m_x_perp = unit(cross(camera.up, camera.direction));
     m_y_perp = unit(cross(camera.direction, m_x_perp));
@@ -32,6 +36,13 @@ CameraModel::CameraModel(const scene::Camera& camera, int width, int height, int
 std::optional<geometry::Ray> CameraModel::ray(double px, double py) const {
     ProjectedRay r;
     if (!m_project(m_frame, px, py, r)) return std::nullopt;
+    return finish(r);
+}
+
+std::optional<geometry::Ray> CameraModel::ray(double px, double py, int ray_number) const {
+    if (!m_mesh || ray_number == 0) return ray(px, py);
+    ProjectedRay r;
+    if (!m_mesh->ray(m_frame, px, py, ray_number, r)) return std::nullopt;
     return finish(r);
 }
 

@@ -1,6 +1,8 @@
 // Projections: POV-Ray 3.7's camera types, each placing its ray as tracepixel.cpp's CreateCameraRay does.
 #include "camera/projections.h"
 
+#include "camera/mesh_camera.h"
+
 #include <cmath>
 #include <numbers>
 
@@ -142,6 +144,10 @@ bool spherical_ray(const Frame& f, double px, double py, ProjectedRay& out) {
     out.origin = f.location;
     out.direction = rotate_about(latitude, f.unit_up, out.x0);
     return true;
+}
+
+bool mesh_camera_ray(const Frame& f, double px, double py, ProjectedRay& out) {
+    return f.mesh != nullptr && f.mesh->ray(f, px, py, 0, out);
 }
 
 }  // namespace wardray::camera

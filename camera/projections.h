@@ -6,6 +6,8 @@
 
 namespace wardray::camera {
 
+class MeshCamera;
+
 /// The camera as every projection reads it: its final vectors, their unit versions and the image size.
 struct Frame {
     const scene::Camera* camera = nullptr;
@@ -15,6 +17,7 @@ struct Frame {
     double up_length = 1.0;
     double width = 1.0;   ///< image width in pixels
     double height = 1.0;  ///< image height in pixels
+    const MeshCamera* mesh = nullptr;  ///< mesh_camera: its meshes
 };
 
 /// A projection's ray before focal blur and camera normal: its origin, its (unnormalised) direction, and the

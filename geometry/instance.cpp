@@ -203,12 +203,13 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return std::nullopt;
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
-    const auto h = mesh->intersect_face(local, face, t_min, t_max, true);
+    double bary[2] = {0.0, 0.0};
+    const auto h = mesh->intersect_face(local, face, t_min, t_max, true, bary);
     if (!h) return std::nullopt;
     Vec3 n = normalize(m_transform.normal(h->normal));
     if (!is_finite(n)) return std::nullopt;
     if (m_inverse) n = -n;
-    return Hit{h->t, origin + h->t * direction, n, m_index, m_object};
+    return Hit{h->t, origin + h->t * direction, n, m_index, m_object, mesh->faces()[face].source, bary[0], bary[1]};
 }
 
 bool ShapeInstance::visible_to(RayKind kind) const {

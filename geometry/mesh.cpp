@@ -41,8 +41,10 @@ std::optional<MeshShape> MeshShape::create(const scene::Mesh& mesh) {
     m.m_normals = mesh.normals;
     const int nv = static_cast<int>(mesh.vertices.size());
     const int nn = static_cast<int>(mesh.normals.size());
-    for (const scene::Mesh::Face& f : mesh.faces) {
+    for (std::size_t fi = 0; fi < mesh.faces.size(); ++fi) {
+        const scene::Mesh::Face& f = mesh.faces[fi];
         Face face;
+        face.source = static_cast<int>(fi);
         bool ok = true;
         for (int k = 0; k < 3; ++k) {
             ok = ok && f.v[k] >= 0 && f.v[k] < nv;
@@ -73,7 +75,7 @@ void MeshShape::finish() {
 }
 
 std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::size_t index, double t_min,
-                                                    double t_max, bool known_hit) const {
+                                                    double t_max, bool known_hit, double* bary) const {
     const Face& f = m_faces[index];
     const Vec3& a = m_vertices[f.v[0]];
     const Vec3 e1 = m_vertices[f.v[1]] - a;
@@ -93,6 +95,10 @@ std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::si
     }
     const double t = dot(e2, qv) / det;
     if (!(t > t_min && t < t_max)) return std::nullopt;
+    if (bary) {
+        bary[0] = u;
+        bary[1] = v;
+    }
     const Vec3 ng = cross(e1, e2);
     Vec3 normal = ng;
     if (f.n[0] >= 0) {

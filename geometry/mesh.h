@@ -18,6 +18,7 @@ public:
     struct Face {
         std::array<int, 3> v{};
         std::array<int, 3> n{-1, -1, -1};
+        int source = -1;  ///< its index in scene::Mesh::faces (-1 for tessellated shapes)
     };
 
     /// Drops degenerate faces (zero area, bad indices); returns nothing when no face is left.
@@ -34,7 +35,7 @@ public:
     /// The crossing with one face, if any, with t in (t_min, t_max). With `known_hit` (Embree found this face
     /// in float) only the plane's t is recomputed and the barycentrics are clamped, so no edge crack opens.
     std::optional<SurfaceHit> intersect_face(const LocalRay& ray, std::size_t face, double t_min, double t_max,
-                                             bool known_hit = false) const;
+                                             bool known_hit = false, double* bary = nullptr) const;
     /// Object-space bounding box of the vertices.
     std::optional<Bounds> bounds() const { return m_bounds; }
     /// With an inside_vector: an odd number of crossings along it; without: never inside.

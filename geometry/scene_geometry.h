@@ -32,6 +32,11 @@ struct Hit {
     std::uint32_t object = 0;  ///< index into scene::Scene::objects (the top-level object)
     /// The primitive whose surface was hit (a CSG leaf, or the object itself): its texture applies.
     const scene::Object* leaf = nullptr;
+    /// A top-level mesh's face (its index in scene::Mesh::faces, -1 otherwise) and the barycentric weights of
+    /// its second and third corners at the hit, for uv coordinates and per-corner textures.
+    std::int32_t face = -1;
+    double bary_u = 0.0;
+    double bary_v = 0.0;
 };
 
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.

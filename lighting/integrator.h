@@ -73,6 +73,7 @@ private:
         const geometry::Hit* hit = nullptr;
         const scene::Object* object = nullptr;  ///< the primitive hit (its texture applies)
         Vec3 p_texture;                           ///< the point textures are evaluated at (enclosing space)
+        Vec3 p_uv;                                ///< the surface's (u, v, 0), for uv_mapping
         Vec3 raw_normal;                          ///< unit, turned to face the incoming ray
         Vec3 direction;                           ///< unit direction of the incoming ray
         double depth = 0.0;                       ///< distance from the ray's origin

@@ -13,6 +13,7 @@
 #include "photons/reflectivity.h"
 #include "media/transmittance.h"
 #include "texture/image_map.h"
+#include "lighting/mesh_texture.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -52,11 +53,28 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     std::vector<const scene::Pattern*> warps;
     // POV-Ray compat: a surface met from inside shows its interior texture, when it has one.
     const bool inside = !object.interior_texture.empty() && dot(hit.normal, direction) > 0.0;
-    return shade_texture(inside ? object.interior_texture.front() : object.texture, s, warps, state, ctx);
+    const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
+    const auto* mesh = hit.face >= 0 ? std::get_if<scene::Mesh>(&object.shape) : nullptr;
+    if (mesh == nullptr) {
+        if (object.uv_mapping) s.p_texture = s.p_uv;
+        return shade_texture(texture, s, warps, state, ctx);
+    }
+    s.p_uv = mesh_uv(*mesh, hit);
+    if (object.uv_mapping) s.p_texture = s.p_uv;
+    std::array<const scene::Texture*, 3> textures{};
+    std::array<double, 3> weights{};
+    const int count = inside ? 0 : mesh_face_textures(*mesh, object, hit, textures, weights);
+    if (count == 0) return shade_texture(texture, s, warps, state, ctx);
+    if (count == 1) return shade_texture(*textures[0], s, warps, state, ctx);
+    // POV-Ray compat: a triangle with a texture per corner blends the three lit colours.
+    Vec3 colour;
+    for (int k = 0; k < 3; ++k) colour += shade_texture(*textures[k], s, warps, state, ctx) * weights[k];
+    return colour;
 }
 
 Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::vector<const scene::Pattern*>& warps,
                                const RayState& state, TraceContext& ctx) const {
+    if (texture.uv_mapping) s.p_texture = s.p_uv;
     if (texture.texture_map.empty()) return shade_layers(texture, s, warps, state, ctx);
     // texture_map: each entry is lit on its own at the map's warped point, and the colours are blended.
     const scene::Pattern& pattern = texture.map_pattern;
@@ -134,11 +152,13 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         Vec3 n = s.raw_normal;
         if (layer->normal.perturbs()) {
             for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
-            n = texture::perturb_normal(layer->normal, n, s.p_texture, m_noise_generator);
+            n = texture::perturb_normal(layer->normal, n, layer->normal.uv_mapping ? s.p_uv : s.p_texture,
+                                        m_noise_generator);
             for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = texture::unwarp_normal(**it, n);
         }
         if (reflection_count == 0) top_normal = n;
-        const Color pc = texture::evaluate_pigment(layer->pigment, s.p_texture, m_noise_generator);
+        const Color pc = texture::evaluate_pigment(layer->pigment, layer->pigment.uv_mapping ? s.p_uv : s.p_texture,
+                                                   m_noise_generator);
         const Vec3 pigment = pc.rgb();
         const scene::Finish& f = layer->finish;
 

@@ -238,7 +238,11 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         const Token t = peek();
         Transform tr;
         if (parse_transform_item(t, tr)) {
+            // A transform inside a uv-mapped texture moves it in uv space.
+            const bool uv = tx.uv_mapping;
+            tx.uv_mapping = false;
             transform_texture(tx, tr);
+            tx.uv_mapping = uv;
             continue;
         }
         if (is_punct(t, close)) {
@@ -246,6 +250,11 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
             return;
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a texture item but found '" + t.text + "'");
+        if (t.text == "uv_mapping") {
+            next();
+            tx.uv_mapping = true;
+            continue;
+        }
         // texture_map patterns: `texture { gradient y texture_map { ... } }` or `checker texture {..} texture {..}`.
         const int count = parse_pattern_keyword(t, tx.map_pattern);
         const bool list_inside = take_pattern_list_open();

@@ -15,6 +15,7 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
     cam.right = spec.right;
     cam.up = spec.up;
     cam.cylinder = spec.cylinder;
+    cam.mesh_camera = spec.mesh_camera;
     cam.normal = spec.normal;
     cam.aperture = spec.aperture;
     cam.blur_samples = spec.blur_samples;

@@ -50,7 +50,7 @@ const std::vector<std::string_view> k_patterns = {
     "aoi", "facets", "image_pattern", "pavement",
     "tiling", "slope",
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
-    "image_map", "tiles", "texture_map", "material_map", "warp", "uv_mapping"};
+    "image_map", "tiles", "texture_map", "material_map", "warp"};
 
 const std::vector<std::string_view> k_handled = {
     "abs", "ceil", "acos", "acosh", "adaptive", "adc_bailout", "albedo", "always_sample", "ambient", "ambient_light",
@@ -79,7 +79,7 @@ const std::vector<std::string_view> k_handled = {
     "object", "open", "cutaway_textures", "u", "v", "t", "seed", "rand", "optional", "array", "split_union", "vstr",
     "trace", "vturbulence", "max_extent", "min_extent", "inside", "eval_pigment", "dimension_size", "dimensions",
     "bitwise_and", "bitwise_or", "bitwise_xor", "prod", "sum", "datetime", "now", "deprecated", "default",
-    "mesh_camera", "spline"};
+    "mesh_camera", "spline", "uv_mapping"};
 
 std::unordered_set<std::string_view> make_set(std::initializer_list<const std::vector<std::string_view>*> lists) {
     std::unordered_set<std::string_view> s;

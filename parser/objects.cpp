@@ -37,8 +37,12 @@ std::size_t object_count(const ObjectValue& ov) {
 
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
 void transform_textures(Object& o, bool own_texture, const Transform& tr) {
+    // POV-Ray compat: an object with uv_mapping keeps its textures in uv space.
+    if (o.uv_mapping) return;
     if (own_texture) transform_texture(o.texture, tr);
     for (Texture& inside : o.interior_texture) transform_texture(inside, tr);
+    if (auto* mesh = std::get_if<Mesh>(&o.shape))
+        for (Texture& t : mesh->textures) transform_texture(t, tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
 }
@@ -356,7 +360,9 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
             {"material", &read_material_modifier},
             {"photons", &read_object_photons},
             {"uv_mapping",
-             [](ObjectReader& r, ObjectValue&, const Token& kw, ModifierState&) { r.warn_unsupported(kw, kw.text); }},
+             [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) {
+                 for (ObjectPart& part : ov.parts) part.object.uv_mapping = true;
+             }},
         };
         if (const Modifier* modifier = modifiers.find(w)) {
             (*modifier)(*this, ov, t, state);

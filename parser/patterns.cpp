@@ -380,6 +380,12 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
             break;
         }
         if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '" + close + "'");
+        if (is_word(t, "uv_mapping")) {
+            // POV-Ray compat: the rest of the pigment is evaluated at the surface's (u, v, 0).
+            next();
+            p.uv_mapping = true;
+            continue;
+        }
         if (t.kind == TokenKind::Identifier && !is_color_keyword(t)) {
             const int count = parse_pattern_keyword(t, p.pattern);
             const bool list_inside = take_pattern_list_open();
@@ -498,6 +504,11 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
             return;
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a normal item but found " + describe_token(t));
+        if (is_word(t, "uv_mapping")) {
+            next();
+            n.uv_mapping = true;
+            continue;
+        }
         const int count = parse_pattern_keyword(t, n.pattern);
         const bool list_inside = take_pattern_list_open();
         if (count >= 0) {

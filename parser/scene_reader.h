@@ -17,10 +17,11 @@ protected:
     void parse_statement();
     /// Places an object statement's parts and lights in the scene, with the default texture where none is given.
     void place_object(ObjectValue ov);
+    void warn_uv_unsupported(const Object& o, bool in_csg);
     /// Reads `camera { ... }` after its keyword.
     CameraSpec parse_camera_body(const Token& kw);
-    /// A camera projection that is valid POV-Ray and not rendered yet; true when it ends the block (mesh_camera).
-    static bool other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
+    /// The `mesh_camera { ... }` block after its keyword (parser/mesh_camera.cpp).
+    void parse_mesh_camera(CameraSpec& spec, const Token& kw);
     /// A focal blur item: aperture, blur_samples, confidence, variance or focal_point.
     static bool focal_blur(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw);
     /// `assumed_gamma G | srgb`: the working gamma; POV-Ray compat: the first one stays in force.

@@ -33,6 +33,9 @@ void SceneReader::parse_statement() {
              Camera cam = resolve_camera(spec, error, warning);
              if (!warning.empty()) r.warn(kw, warning);
              if (!error.empty()) r.fail(kw, error);
+             // POV-Ray moves a mesh camera's blurred rays to the camera's location; not drawn that way here.
+             if (cam.type == Camera::Type::MeshCamera && cam.focal_blur())
+                 r.warn_unsupported(kw, "focal blur on a mesh_camera");
              r.m_builder.set_camera(cam);
          }},
         {"light_source",
@@ -187,8 +190,33 @@ void promote_photons(Object& o) {
 
 }  // namespace
 
+// uv_mapping where this renderer has no uv coordinates yet: a warning at the object (or the pigment).
+void SceneReader::warn_uv_unsupported(const Object& o, bool in_csg) {
+    bool nested = false;
+    bool uses = o.uv_mapping || texture_uses_uv(o.texture, nested);
+    for (const Texture& t : o.interior_texture) uses = texture_uses_uv(t, nested) || uses;
+    const auto* mesh = std::get_if<Mesh>(&o.shape);
+    if (mesh)
+        for (const Texture& t : mesh->textures) uses = texture_uses_uv(t, nested) || uses;
+    if (const auto* csg = std::get_if<Csg>(&o.shape))
+        for (const Object& child : csg->children) warn_uv_unsupported(child, true);
+    if (!uses) return;
+    std::string what;
+    if (nested) what = "uv_mapping inside a pigment_map or normal_map";
+    else if (std::holds_alternative<Csg>(o.shape)) what = "uv_mapping on the parts of a CSG";
+    else if (!mesh) what = std::string("uv_mapping on ") + std::string(shape_keyword(o.shape));
+    else if (in_csg || !o.clipped_by.empty() || o.inverse) what = "uv_mapping on a mesh in CSG, clipped or inverse";
+    if (what.empty()) return;
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.loc = o.loc;
+    d.message = what + " is not rendered yet";
+    emit_feature_warning(std::move(d));
+}
+
 void SceneReader::place_object(ObjectValue ov) {
     renumber_light_groups(ov);
+    for (const ObjectPart& part : ov.parts) warn_uv_unsupported(part.object, false);
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.
@@ -211,18 +239,6 @@ namespace {
 int as_int(double f) { return static_cast<int>(std::lround(f)); }
 
 }  // namespace
-
-bool SceneReader::other_projection(SceneReader& r, CameraSpec& spec, const Token& item, const Token& kw) {
-    r.warn_unsupported(item, item.text + " camera");
-    spec.other_projection = true;
-    if (item.text != "mesh_camera") return false;
-    // Its parameters and meshes are not modelled: skip the rest of the camera block.
-    const std::size_t depth = r.m_brace_depth;
-    while (r.m_brace_depth >= depth) {
-        if (r.next().kind == TokenKind::EndOfFile) r.fail(kw, "camera block has no closing '}'");
-    }
-    return true;
-}
 
 bool SceneReader::focal_blur(SceneReader& r, CameraSpec& c, const Token& item, const Token&) {
     using Item = void (*)(SceneReader&, CameraSpec&, const Token&);
@@ -307,7 +323,6 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
         // An item returns true when it ends the camera block.
         using Item = bool (*)(SceneReader&, CameraSpec&, const Token& item, const Token& kw);
         static const KeywordTable<Item> items = {
-            {"mesh_camera", &other_projection},
             {"location", [](SceneReader& r, CameraSpec& c, const Token&, const Token&) {
                  c.location = r.parse_vector();
                  return false;
@@ -359,6 +374,7 @@ CameraSpec SceneReader::parse_camera_body(const Token& kw) {
                 if (spec.cylinder < 1 || spec.cylinder > 4)
                     fail(t, "Invalid cylinder camera type, valid are types 1 to 4.");
             }
+            if (spec.type == Camera::Type::MeshCamera) parse_mesh_camera(spec, t);
         } else if (const Item* item = items.find(w)) {
             if ((*item)(*this, spec, t, kw)) return spec;
         } else {

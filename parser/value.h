@@ -85,6 +85,7 @@ struct CameraSpec {
     std::optional<double> angle;
     std::optional<double> v_angle;  ///< spherical: the second value of `angle`
     int cylinder = 1;
+    MeshCameraSpec mesh_camera;
     std::optional<Normal> normal;
     std::optional<Vec3> focal_point;
     double aperture = 0.0;

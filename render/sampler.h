@@ -44,11 +44,25 @@ public:
         if (m_blur) {
             return m_blur->sample(m_camera, [&](const geometry::Ray& r) { return trace(r); }, px, py);
         }
+        if (m_camera.rays_per_pixel() > 1) return several(px, py);
         const std::optional<geometry::Ray> ray = m_camera.ray(px, py);
         return ray ? trace(*ray) : Vec3{};  // POV-Ray compat: where the projection traces no ray, black
     }
 
 private:
+    /// POV-Ray compat (TracePixel): a mesh camera's rays of one position averaged over those it traces.
+    Vec3 several(double px, double py) const {
+        Vec3 sum;
+        int traced = 0;
+        for (int n = 0; n < m_camera.rays_per_pixel(); ++n) {
+            if (const std::optional<geometry::Ray> ray = m_camera.ray(px, py, n)) {
+                sum += trace(*ray);
+                ++traced;
+            }
+        }
+        return traced > 0 ? sum / static_cast<double>(traced) : Vec3{};
+    }
+
     Vec3 trace(const geometry::Ray& ray) const {
         Vec3 c = m_integrator.trace_camera_ray(ray, m_counters.trace);
         if (!is_finite(c)) {

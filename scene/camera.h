@@ -6,6 +6,7 @@
 #include "core/diagnostics.h"
 #include "core/vec3.h"
 #include "scene/kind_list.h"
+#include "scene/shapes.h"
 #include "scene/texture.h"
 
 namespace wardray::scene {
@@ -20,7 +21,25 @@ namespace wardray::scene {
     X(omnimax, Omnimax)                 \
     X(panoramic, Panoramic)             \
     X(cylinder, Cylinder)               \
-    X(spherical, Spherical)
+    X(spherical, Spherical)             \
+    X(mesh_camera, MeshCamera)
+
+/// POV-Ray's `mesh_camera { rays_per_pixel, distribution [, max_distance] mesh { } ... [smooth] }`: rays leave
+/// the faces of meshes along their normals.
+struct MeshCameraSpec {
+    /// One mesh of the camera with the transform its object statement gave it.
+    struct PlacedMesh {
+        Mesh mesh;
+        Transform transform;
+        bool operator==(const PlacedMesh&) const = default;
+    };
+    int rays_per_pixel = 1;
+    int distribution = 0;        ///< 0-3: how pixels pick faces (POV-Ray's Face_Distribution_Method)
+    double max_distance = 0.0;   ///< the optional maximum ray length (0: none)
+    bool smooth = false;         ///< distribution 3: interpolate the vertex normals
+    std::vector<PlacedMesh> meshes;
+    bool operator==(const MeshCameraSpec&) const = default;
+};
 
 /// The camera, resolved by the parser to POV-Ray's final vectors (after look_at, angle, sky and transforms).
 struct Camera {
@@ -37,6 +56,7 @@ struct Camera {
     double h_angle = 360.0;         ///< spherical: `angle H, V`, the horizontal field of view
     double v_angle = 180.0;         ///< spherical: the vertical field of view (H / 2 when not given)
     int cylinder = 1;               ///< `cylinder N`: which of POV-Ray's four cylindrical projections
+    MeshCameraSpec mesh_camera;     ///< mesh_camera: its meshes and how rays leave them
     std::optional<Normal> normal;   ///< camera `normal { ... }`: perturbs every camera ray's direction
     /// Focal blur: `aperture`, `blur_samples [min,] max`, `confidence`, `variance`, `focal_point`.
     double aperture = 0.0;

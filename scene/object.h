@@ -65,6 +65,8 @@ struct Object {
     bool no_reflection = false;
     bool no_radiosity = false;
     bool has_texture = false;  ///< the statement gave its own texture (else it takes its CSG parent's)
+    /// Object `uv_mapping` (POV-Ray's UV_FLAG): every texture is evaluated at (u, v, 0) and stays put.
+    bool uv_mapping = false;
     /// `interior_texture`: at most one texture (its further layers in `layers`), seen where a ray meets the surface
     /// from inside; empty when the object has none (then `texture` is seen from both sides).
     std::vector<Texture> interior_texture;

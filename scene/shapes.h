@@ -9,6 +9,7 @@
 #include "core/diagnostics.h"
 #include "core/vec3.h"
 #include "function/function_vm.h"
+#include "scene/texture.h"
 
 namespace wardray::scene {
 
@@ -109,6 +110,8 @@ struct Mesh {
     struct Face {
         std::array<int, 3> v{};
         std::array<int, 3> n{-1, -1, -1};
+        std::array<int, 3> uv{-1, -1, -1};   ///< indices into `uvs` (-1: POV-Ray's default uv of the corner)
+        std::array<int, 3> tex{-1, -1, -1};  ///< indices into `textures`: none, one (tex[0]) or one per corner
         bool operator==(const Face&) const = default;
     };
     Kind kind = Kind::Mesh;
@@ -120,6 +123,8 @@ struct Mesh {
     std::vector<Vec3> vertices;
     std::vector<Vec3> normals;
     std::vector<Face> faces;
+    std::vector<Vec3> uvs;           ///< `uv_vectors` (u, v, 0)
+    std::vector<Texture> textures;   ///< per-triangle textures and mesh2's `texture_list`
     Vec3 inside_vector;  ///< zero when not given: the mesh has no inside
     bool operator==(const Mesh&) const = default;
 };

@@ -184,6 +184,8 @@ struct Pigment {
     std::vector<ColorMapEntry> color_map;
     std::vector<PigmentMapEntry> pigment_map;
     std::optional<ImageMap> image_map;  ///< an image_map pigment (its transform and warps in `pattern`)
+    /// `uv_mapping`: evaluated at the surface's (u, v, 0) instead of the point, and not moved by the object.
+    bool uv_mapping = false;
     SourceLoc loc;
 
     /// True for a plain colour: no pattern or image to evaluate.
@@ -222,6 +224,7 @@ struct Normal {
     /// `bump_map { png "file" bump_size B use_index ... }`: the normal from an image (its transform and warps
     /// in `pattern`, whose type is then None).
     std::optional<ImageMap> bump_map;
+    bool uv_mapping = false;  ///< `uv_mapping`: the pattern is evaluated at the surface's (u, v, 0)
     SourceLoc loc;
     /// True when the normal perturbs anything: a pattern or a bump map.
     bool perturbs() const { return pattern.type != Pattern::Type::None || bump_map.has_value(); }
@@ -281,6 +284,7 @@ struct Texture {
     /// (entry values 0, 1, ...); its transform and warps are map_pattern's.
     std::optional<ImageMap> material_map;
     std::vector<Texture> layers;  ///< layers on top of this one, lowest first
+    bool uv_mapping = false;  ///< `uv_mapping`: the whole texture is evaluated at the surface's (u, v, 0)
     bool operator==(const Texture&) const = default;
 };
 
@@ -297,11 +301,40 @@ inline Texture& top_layer(Texture& t) { return t.layers.empty() ? t : t.layers.b
 
 /// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
 /// by `tr`. Map entries are evaluated in their parent's pattern space and are left alone.
+/// POV-Ray compat: a uv-mapped texture, pigment or normal lives in uv space and stays where it is.
 inline void transform_texture(Texture& t, const Transform& tr) {
-    t.pigment.pattern.transform = t.pigment.pattern.transform.then(tr);
-    t.normal.pattern.transform = t.normal.pattern.transform.then(tr);
+    if (t.uv_mapping) return;
+    if (!t.pigment.uv_mapping) t.pigment.pattern.transform = t.pigment.pattern.transform.then(tr);
+    if (!t.normal.uv_mapping) t.normal.pattern.transform = t.normal.pattern.transform.then(tr);
     t.map_pattern.transform = t.map_pattern.transform.then(tr);
     for (Texture& layer : t.layers) transform_texture(layer, tr);
+}
+
+/// True when the pigment or one of its pigment_map entries is uv-mapped; `nested` is set for an entry's.
+inline bool pigment_uses_uv(const Pigment& p, bool& nested, bool in_map = false) {
+    bool uses = p.uv_mapping;
+    if (uses && in_map) nested = true;
+    for (const PigmentMapEntry& e : p.pigment_map) uses = pigment_uses_uv(e.pigment, nested, true) || uses;
+    return uses;
+}
+
+/// True when the normal or one of its normal_map entries is uv-mapped; `nested` is set for an entry's.
+inline bool normal_uses_uv(const Normal& n, bool& nested, bool in_map = false) {
+    bool uses = n.uv_mapping;
+    if (uses && in_map) nested = true;
+    for (const NormalMapEntry& e : n.normal_map) uses = normal_uses_uv(e.normal, nested, true) || uses;
+    return uses;
+}
+
+/// True when the texture, at any depth, asks for uv coordinates; `nested` is set when a uv-mapped pigment or
+/// normal sits inside a pigment_map or normal_map entry.
+inline bool texture_uses_uv(const Texture& t, bool& nested) {
+    bool uses = t.uv_mapping;
+    uses = pigment_uses_uv(t.pigment, nested) || uses;
+    uses = normal_uses_uv(t.normal, nested) || uses;
+    for (const TextureMapEntry& e : t.texture_map) uses = texture_uses_uv(e.texture, nested) || uses;
+    for (const Texture& l : t.layers) uses = texture_uses_uv(l, nested) || uses;
+    return uses;
 }
 
 }  // namespace wardray::scene

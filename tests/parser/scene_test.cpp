@@ -504,7 +504,8 @@ TEST(CameraList, EveryKeywordSetsItsTypeAndIsReserved) {
         EXPECT_TRUE(is_keyword(keyword));
         EXPECT_EQ(camera_type_name(type), keyword);
         // The cylinder camera's keyword takes its projection's number.
-        const std::string item = std::string(keyword) + (keyword == "cylinder" ? " 2" : "");
+        std::string item = std::string(keyword) + (keyword == "cylinder" ? " 2" : "");
+        if (keyword == "mesh_camera") item += " { 1 0 mesh { triangle { 0, x, y } } }";
         const Scene s = parse_ok("camera { " + item + " location -5*z look_at 0 }");
         EXPECT_EQ(s.camera.type, type);
     }

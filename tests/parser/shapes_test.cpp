@@ -117,23 +117,87 @@ TEST(Prism, SplineTypesAndCounts) {
     parse_fail("prism { bezier_spline 0, 1, 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> }");
 }
 
-// meshcam_macros.inc gives each mesh triangle uv coordinates (povray 3.7 renders its demos); they are read and
-// reported, and the triangle keeps its corners and normals.
-TEST(Mesh, TriangleUvVectorsAreReadAndReported) {
+// A mesh triangle's uv_vectors give its corners uv coordinates for uv_mapping; texture_list gives each corner a
+// texture (identifiers, as POV-Ray's Parse_Mesh_Texture reads them).
+TEST(Mesh, TriangleUvVectorsAndTexturesAreRead) {
     const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        #declare A = texture { pigment { rgb x } }
+        #declare B = texture { pigment { rgb y } }
         mesh {
           smooth_triangle { <0, 0, 0>, z, <1, 0, 0>, z, <0, 1, 0>, z uv_vectors <0, 0>, <1, 0>, <0, 1> }
           triangle { <1, 0, 0>, <1, 1, 0>, <0, 1, 0> uv_vectors <1, 0> <1, 1> <0, 1> texture { pigment { rgb 1 } } }
+          triangle { <1, 0, 0>, <1, 1, 0>, <0, 1, 0> texture_list { A, B, A } }
         })",
                                        "test.pov", test::default_options());
     ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
     ASSERT_EQ(r.scene->objects.size(), 1u);
     const auto& mesh = std::get<Mesh>(r.scene->objects[0].shape);
-    ASSERT_EQ(mesh.faces.size(), 2u);
+    ASSERT_EQ(mesh.faces.size(), 3u);
     EXPECT_EQ(mesh.normals.size(), 3u);
     EXPECT_EQ(mesh.vertices[5].y, 1);
-    EXPECT_NE(test::all_diagnostics(r).find("uv_vectors is not rendered yet"), std::string::npos);
+    ASSERT_EQ(mesh.uvs.size(), 6u);
+    EXPECT_EQ(mesh.uvs[mesh.faces[1].uv[1]], (Vec3{1, 1, 0}));
+    EXPECT_EQ(mesh.faces[2].uv[0], -1);  // no uv_vectors: POV-Ray's (0, 0)
+    EXPECT_EQ(mesh.faces[0].tex[0], -1);
+    EXPECT_EQ(mesh.faces[1].tex[0], 0);
+    EXPECT_EQ(mesh.faces[1].tex[1], -1);
+    ASSERT_EQ(mesh.textures.size(), 4u);
+    EXPECT_EQ(mesh.textures[mesh.faces[2].tex[1]].pigment.color.rgb(), (Vec3{0, 1, 0}));
+    EXPECT_EQ(test::all_diagnostics(r).find("not rendered yet"), std::string::npos);
     parse_fail("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> uv_vectors <0, 0>, <1, 0> } }");
+}
+
+// mesh2: uv_indices pick uv_vectors per face (without them the vertex indices do), texture_list entries are
+// chosen by one or three indices after a face.
+TEST(Mesh, Mesh2UvIndicesAndTextureList) {
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        mesh2 {
+          vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0> }
+          uv_vectors { 2, <0.25, 0.5>, <1, 1> }
+          texture_list { 2, texture { pigment { rgb x } } texture { pigment { rgb z } } }
+          face_indices { 3, <0, 1, 2>, 1, <0, 2, 3>, 0, 1, 1, <1, 2, 3> }
+          uv_indices { 3, <0, 1, 0>, <1, 1, 0>, <0, 0, 0> }
+          uv_mapping
+        })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    const auto& mesh = std::get<Mesh>(r.scene->objects[0].shape);
+    ASSERT_EQ(mesh.faces.size(), 3u);
+    EXPECT_EQ(mesh.faces[0].uv, (std::array<int, 3>{0, 1, 0}));
+    EXPECT_EQ(mesh.faces[0].tex, (std::array<int, 3>{1, -1, -1}));
+    EXPECT_EQ(mesh.faces[1].tex, (std::array<int, 3>{0, 1, 1}));
+    EXPECT_EQ(mesh.faces[2].tex, (std::array<int, 3>{-1, -1, -1}));
+    EXPECT_TRUE(r.scene->objects[0].uv_mapping);
+    parse_fail("mesh2 { vertex_vectors { 3, 0, x, y } uv_vectors { 1, <0, 0> } face_indices { 1, <0, 1, 2> } }");
+    parse_fail("mesh2 { vertex_vectors { 3, 0, x, y } texture_list { 1, texture { } } face_indices { 1, <0, 1, 2>, 3 } }");
+}
+
+// uv_mapping on a pigment, a normal and a texture is read, and keeps them out of the object's transforms.
+TEST(Mesh, UvMappingStaysInUvSpace) {
+    const ParseResult r = parse_string(R"(global_settings { assumed_gamma 1 }
+        mesh2 {
+          vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <1, 1, 0> } uv_vectors { 3, <0, 0>, <1, 0>, <1, 1> }
+          face_indices { 1, <0, 1, 2> }
+          texture { pigment { uv_mapping checker scale 2 } normal { uv_mapping bumps } }
+          translate 5*x
+        }
+        mesh2 {
+          vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <1, 1, 0> } face_indices { 1, <0, 1, 2> }
+          texture { uv_mapping pigment { checker } scale 3 }
+          scale 7
+        }
+        sphere { 0, 1 pigment { uv_mapping checker } })",
+                                       "test.pov", test::default_options());
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    const Texture& a = r.scene->objects[0].texture;
+    EXPECT_TRUE(a.pigment.uv_mapping);
+    EXPECT_TRUE(a.normal.uv_mapping);
+    EXPECT_EQ(a.pigment.pattern.transform.point({1, 1, 1}), (Vec3{2, 2, 2}));
+    const Texture& b = r.scene->objects[1].texture;
+    EXPECT_TRUE(b.uv_mapping);
+    EXPECT_EQ(b.pigment.pattern.transform.point({1, 1, 1}), (Vec3{3, 3, 3}));
+    // A sphere has no uv coordinates here yet: said so.
+    EXPECT_NE(test::all_diagnostics(r).find("uv_mapping on sphere is not rendered yet"), std::string::npos);
 }
 
 // POV-Ray reads the commas between quartic coefficients as optional (primitiv.pov, hyptorus.pov), and a mesh2 face

@@ -123,5 +123,79 @@ TEST(Cameras, FocalBlurIsTheSameForTheSamePosition) {
     EXPECT_NEAR(a.y, 0.0, 0.1);
 }
 
+// A mesh camera of two unit squares' worth of triangles in the z = 0 plane, each face one pixel.
+scene::Camera mesh_camera(int distribution, int rays, int meshes) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::MeshCamera);
+    c.location = {0.0, 0.0, 0.25};
+    c.mesh_camera.distribution = distribution;
+    c.mesh_camera.rays_per_pixel = rays;
+    for (int m = 0; m < meshes; ++m) {
+        scene::MeshCameraSpec::PlacedMesh pm;
+        // Faces wound so that POV-Ray's normal (P3 − P1) × (P2 − P1) is +z: four faces, one per pixel of 2 × 2.
+        for (int i = 0; i < 4; ++i) {
+            const double x = i;
+            pm.mesh.vertices.insert(pm.mesh.vertices.end(), {{x, 0, 0}, {x, 1, 0}, {x + 1, 0, 0}});
+            scene::Mesh::Face f;
+            f.v = {3 * i, 3 * i + 1, 3 * i + 2};
+            pm.mesh.faces.push_back(f);
+        }
+        pm.transform = Transform::translation({0.0, 10.0 * m, 0.0});
+        c.mesh_camera.meshes.push_back(pm);
+    }
+    return c;
+}
+
+TEST(Cameras, MeshCameraRaysLeaveFaceCentroidsAlongTheirNormals) {
+    const CameraModel cam(mesh_camera(0, 1, 1), 2, 2);
+    // Pixel (1, 1): POV-Ray's y − 0.5 makes row 1 use face row 0, so face 1; its centroid is (4/3, 1/3, 0),
+    // moved by location.z = 0.25 along the normal.
+    const auto r = cam.ray(1.5, 1.5);
+    ASSERT_TRUE(r);
+    expect_near(r->origin, {4.0 / 3.0, 1.0 / 3.0, 0.25});
+    expect_near(r->direction, {0.0, 0.0, 1.0});
+    expect_near(cam.ray(0.5, 0.5)->origin, {1.0 / 3.0, 1.0 / 3.0, 0.25});
+    // Row 1 of the second column is face 1 too; a direction with negative z reverses the ray.
+    scene::Camera back = mesh_camera(0, 1, 1);
+    back.direction = {0.0, 0.0, -1.0};
+    const CameraModel reversed(back, 2, 2);
+    expect_near(reversed.ray(1.5, 0.5)->direction, {0.0, 0.0, -1.0});
+    expect_near(reversed.ray(1.5, 0.5)->origin, {4.0 / 3.0, 1.0 / 3.0, 0.25});
+}
+
+TEST(Cameras, MeshCameraDistributions) {
+    // Distribution 0 with two rays: the second ray leaves the second (translated) mesh.
+    const CameraModel two(mesh_camera(0, 2, 2), 2, 2);
+    EXPECT_EQ(two.rays_per_pixel(), 2);
+    expect_near(two.ray(0.5, 0.5, 1)->origin, {1.0 / 3.0, 10.0 + 1.0 / 3.0, 0.25});
+    // Distribution 1: the faces of both meshes in one sequence; later samples find no face.
+    const CameraModel summed(mesh_camera(1, 2, 2), 4, 2);
+    expect_near(summed.ray(0.5, 2.5)->origin, {1.0 / 3.0, 10.0 + 1.0 / 3.0, 0.25});
+    EXPECT_FALSE(summed.ray(0.5, 0.5, 1));
+    // Distribution 2: side by side, the face index counted from the image's left edge.
+    const CameraModel side(mesh_camera(2, 1, 2), 4, 1);
+    expect_near(side.ray(2.5, 0.5)->origin, {2.0 + 1.0 / 3.0, 10.0 + 1.0 / 3.0, 0.25});
+    // Beyond the faces no ray.
+    const CameraModel big(mesh_camera(0, 1, 1), 4, 4);
+    EXPECT_FALSE(big.ray(0.5, 3.5));
+}
+
+TEST(Cameras, MeshCameraUvDistributionFindsThePointOfEachUv) {
+    scene::Camera c = mesh_camera(3, 1, 1);
+    scene::Mesh& m = c.mesh_camera.meshes[0].mesh;
+    // One square face pair spanning uv [0, 1]², vertices (0..2, 0..2) in x, y.
+    m.vertices = {{0, 0, 0}, {0, 2, 0}, {2, 2, 0}, {2, 0, 0}};
+    m.uvs = {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
+    scene::Mesh::Face a, b;
+    a.v = a.uv = {0, 1, 2};
+    b.v = b.uv = {0, 2, 3};
+    m.faces = {a, b};
+    const CameraModel cam(c, 10, 10);
+    // Column 3 of 10: u = 3/10; row 4: v = 1 − 4/10 (POV-Ray samples the pixel's upper-left corner in uv).
+    const auto r = cam.ray(3.5, 4.5);
+    ASSERT_TRUE(r);
+    expect_near(r->origin, {0.6, 1.2, 0.25});
+    expect_near(r->direction, {0.0, 0.0, 1.0});
+}
+
 }  // namespace
 }  // namespace wardray::camera
