@@ -16,6 +16,7 @@
 #include "geometry/object_query.h"
 #include "parser/parse.h"
 #include "render/film.h"
+#include "render/height_image.h"
 #include "render/output_gamma.h"
 #include "texture/noise.h"
 #include "texture/pattern.h"
@@ -69,6 +70,9 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         image->height = film->height();
         image->rgb = film->data();
         return image;
+    };
+    parse_options.read_height_grid = [](const fs::path& file, std::string& error, std::string& unsupported) {
+        return render::read_height_grid(file, error, unsupported);
     };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
     if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;

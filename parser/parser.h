@@ -94,6 +94,8 @@ private:
     std::map<std::string, std::shared_ptr<TrueTypeFont>> m_fonts;
     /// Images read so far, by resolved path and gamma.
     std::map<std::string, std::shared_ptr<const ImageData>> m_images;
+    /// Height field images read so far, by file (height_field.cpp).
+    std::map<std::string, std::shared_ptr<const HeightGrid>> m_height_grids;
 };
 
 }  // namespace wardray::parser
