@@ -17,6 +17,7 @@
 #include "parser/parse.h"
 #include "parser/read_access.h"
 #include "render/film.h"
+#include "render/height_image.h"
 #include "render/output_gamma.h"
 #include "render/png_palette.h"
 #include "texture/noise.h"
@@ -77,6 +78,9 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
             h == image->height)
             image->index = std::move(index);
         return image;
+    };
+    parse_options.read_height_grid = [](const fs::path& file, std::string& error, std::string& unsupported) {
+        return render::read_height_grid(file, error, unsupported);
     };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
     if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;

@@ -12,6 +12,7 @@
 #include "geometry/cone.h"
 #include "geometry/csg.h"
 #include "geometry/disc.h"
+#include "geometry/height_field.h"
 #include "geometry/isosurface.h"
 #include "geometry/lathe.h"
 #include "geometry/mesh.h"
@@ -32,7 +33,7 @@ namespace wardray::geometry {
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, IsosurfaceShape, CsgShape>;
+                              TextShape, IsosurfaceShape, HeightFieldShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).

@@ -47,9 +47,11 @@ void transform_textures(Object& o, bool own_texture, const Transform& tr) {
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
 }
 
-// POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents'; it keeps them.
+// POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents', and a smooth
+// height field's normals are interpolated in world space; both keep the transforms.
 void place_patches(Object& o, const Transform& tr) {
     if (auto* patch = std::get_if<BicubicPatch>(&o.shape)) patch->placement = patch->placement.then(tr);
+    if (auto* hf = std::get_if<HeightField>(&o.shape)) hf->placement = hf->placement.then(tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) place_patches(child, tr);
 }
@@ -332,6 +334,9 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                  for (ObjectPart& part : ov.parts) part.object.interior.hollow = hollow;
              }},
             {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            // POV-Ray compat: an acceleration hint of height fields, blobs and meshes; the picture is the same.
+            {"hierarchy",
+             [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
             {"split_union",
              [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},
             {"cutaway_textures", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},

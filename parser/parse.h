@@ -90,6 +90,12 @@ struct ParseOptions {
     std::function<std::shared_ptr<const ImageData>(const std::filesystem::path& file, bool& encoded,
                                                    std::string& error)>
         read_image;
+    /// The render layer's height field image reader: the 16-bit heights POV-Ray takes from each pixel (palette
+    /// index, grey value, or red and green bytes), or nothing with `error` set (or `unsupported`, naming a kind of
+    /// file not read as POV-Ray reads it); when empty height_field images are an error.
+    std::function<std::shared_ptr<const HeightGrid>(const std::filesystem::path& file, std::string& error,
+                                                    std::string& unsupported)>
+        read_height_grid;
     /// The texture layer's pattern value at p (POV-Ray's Evaluate_TPat after the pattern's warps and transform),
     /// for `function { pattern { ... } }`; when empty such functions evaluate to 0 with a warning.
     std::function<double(const Pattern& pattern, const Vec3& p, int noise_generator)> pattern_value;

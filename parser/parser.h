@@ -114,6 +114,8 @@ private:
     std::map<std::string, std::shared_ptr<const DensityFile>> m_density_files;
     /// An object pattern's list is being read: its '}' follows the list.
     bool m_pattern_list_open = false;
+    /// Height field images read so far, by file (height_field.cpp).
+    std::map<std::string, std::shared_ptr<const HeightGrid>> m_height_grids;
 };
 
 }  // namespace wardray::parser

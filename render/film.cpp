@@ -168,7 +168,8 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
     });
 }
 
-std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha) {
+std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha,
+                               bool* grey, bool* bits16) {
     const OiioReader* reader = oiio_reader(error);
     if (!reader) return std::nullopt;
     int width = 0, height = 0, encoded = 0;
@@ -190,6 +191,8 @@ std::optional<Film> read_image(const std::filesystem::path& path, std::string& e
     reader->release(pixels);
     if (stored) *stored = (encoded & 1) != 0;
     if (alpha) *alpha = (encoded & 2) != 0;
+    if (grey) *grey = (encoded & 4) != 0;
+    if (bits16) *bits16 = (encoded & 8) != 0;
     return film;
 }
 

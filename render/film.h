@@ -60,9 +60,10 @@ void remove_partial_output_on_signal();
 /// Reads any image OpenImageIO reads as linear RGB (8-bit sRGB files are decoded to linear).
 /// On failure returns nothing and sets `error`. With `stored`, the values are left as the file stores them
 /// (8- and 16-bit ones scaled to [0, 1]) and `*stored` says whether they are encoded (integer) values. `*alpha`
-/// says whether the file has an alpha channel (not read).
+/// says whether the file has an alpha channel (not read); `*grey` whether it has one colour channel and `*bits16`
+/// whether it stores 16-bit values.
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
-                               bool* alpha = nullptr);
+                               bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr);
 
 /// sRGB transfer function, linear to encoded, for one channel in [0, 1].
 double srgb_encode(double linear);

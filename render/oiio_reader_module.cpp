@@ -19,7 +19,8 @@ void set_error(char* error, std::size_t size, const std::string& message) {
 
 /// Reads `path` as float RGB rows from the top; `*pixels` is malloc'd (free with wardray_oiio_free).
 /// `*encoded` has bit 0 set when the file stores 8- or 16-bit values (to be decoded from sRGB) and bit 1 when it has
-/// an alpha channel (which is not returned). Returns 1 on success.
+/// an alpha channel (which is not returned), bit 2 when it is grey (one channel, or grey and alpha) and bit 3 when it
+/// stores 16-bit values. Returns 1 on success.
 extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int* encoded, float** pixels,
                                  char* error, std::size_t error_size) {
     try {
@@ -47,7 +48,8 @@ extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int*
         *height = spec.height;
         const bool integer =
             spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
-        *encoded = (integer ? 1 : 0) | (spec.alpha_channel >= 0 || channels == 4 || channels == 2 ? 2 : 0);
+        *encoded = (integer ? 1 : 0) | (spec.alpha_channel >= 0 || channels == 4 || channels == 2 ? 2 : 0) |
+                   (channels <= 2 ? 4 : 0) | (spec.format.basetype == OIIO::TypeDesc::UINT16 ? 8 : 0);
         *pixels = rgb;
         return 1;
     } catch (const std::exception& e) {

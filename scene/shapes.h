@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -236,6 +237,29 @@ struct Isosurface {
     bool operator==(const Isosurface&) const = default;
 };
 
+/// A height field's elevation grid as POV-Ray stores it: one 16-bit height (0..65535) per image pixel, row z = 0
+/// being the image's bottom row.
+struct HeightGrid {
+    int width = 0;   ///< pixels along x (at least 2)
+    int height = 0;  ///< pixels along z (at least 2)
+    std::vector<std::uint16_t> heights;  ///< width * height, row-major from z = 0
+    std::uint16_t at(int x, int z) const { return heights[static_cast<std::size_t>(z) * width + x]; }
+    bool operator==(const HeightGrid&) const = default;
+};
+
+/// POV-Ray's `height_field { [type] "file" | function W, H { f } [smooth] [water_level w] [hierarchy on|off] }`:
+/// two triangles per grid cell over the unit square (x and z from 0 to 1, y = height / 65536), the cell's diagonal
+/// from (x + 1, z) to (x, z + 1); nothing below water_level is drawn.
+struct HeightField {
+    std::shared_ptr<const HeightGrid> grid;
+    bool smooth = false;
+    double water_level = 0.0;  ///< a fraction of the full height
+    /// Every transform applied to the field since it was read (its own and its CSG parents'), in order: POV-Ray
+    /// interpolates the smooth vertex normals after taking them to world space.
+    Transform placement;
+    bool operator==(const HeightField&) const = default;
+};
+
 }  // namespace wardray::scene
 
 /// The primitive shapes, listed once: X(keyword, SceneType) for each keyword that starts a primitive, in the order
@@ -264,4 +288,5 @@ struct Isosurface {
     X(lathe, Lathe)                   \
     X(sor, Sor)                       \
     X(text, Text)                     \
-    X(isosurface, Isosurface)
+    X(isosurface, Isosurface)         \
+    X(height_field, HeightField)

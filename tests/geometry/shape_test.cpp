@@ -240,6 +240,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},
     {"text", "text { ttf \"timrom.ttf\" \"A\", 0.5, 0 }"},
     {"isosurface", "isosurface { function { x*x + y*y + z*z - 1 } contained_by { sphere { 0, 2 } } }"},
+    {"height_field", "height_field { function 4, 3 { x + y } smooth water_level 0.1 }"},
 };
 
 // Parses one statement as a scene of one object.

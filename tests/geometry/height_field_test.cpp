@@ -1,0 +1,201 @@
+// Tests of HeightFieldShape: random grids against brute force over every triangle (nearest crossing, inside),
+// POV-Ray's unit-square geometry, water level, smooth normals at grid points, and the parser's function image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "geometry/instance.h"
+#include "parser/parse.h"
+#include "test_util.h"
+
+namespace wardray::geometry {
+namespace {
+
+using test::Random;
+
+// A w x h grid of heights: smooth hills plus noise, so both gentle and steep cells occur.
+std::shared_ptr<scene::HeightGrid> random_grid(Random& r, int w, int h) {
+    auto g = std::make_shared<scene::HeightGrid>();
+    g->width = w;
+    g->height = h;
+    const double a = r.uniform(1, 6), b = r.uniform(1, 6), noise = r.uniform(0, 8000);
+    for (int z = 0; z < h; ++z)
+        for (int x = 0; x < w; ++x) {
+            const double v = 30000 + 25000 * std::sin(a * x / w + b * z / h) + r.uniform(-noise, noise);
+            g->heights.push_back(static_cast<std::uint16_t>(std::clamp(v, 0.0, 65535.0)));
+        }
+    return g;
+}
+
+// Brute force in unit-square space: the nearest crossing with any of the grid's triangles (exact tests) inside
+// POV-Ray's box [0, 1] x [lo, hi] x [0, 1].
+double brute_nearest(const scene::HeightGrid& g, double water, const LocalRay& ray) {
+    const Vec3 s{1.0 / (g.width - 1), 1.0 / 65536.0, 1.0 / (g.height - 1)};
+    double lo = 65535, hi = 0;
+    for (auto v : g.heights) lo = std::fmin(lo, v), hi = std::fmax(hi, v);
+    lo = std::fmax(lo, 65536.0 * water) - 0.001;
+    hi += 0.001;
+    double b0 = 0, b1 = 0;
+    if (!slab_interval({0, lo * s.y, 0}, {1, hi * s.y, 1}, ray.origin, ray.direction, b0, b1)) return INFINITY;
+    b0 = std::fmax(b0, 1e-6);
+    auto vertex = [&](int x, int z) { return Vec3{x * s.x, g.at(x, z) * s.y, z * s.z}; };
+    double best = INFINITY;
+    auto triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 e1 = b - a, e2 = c - a, pv = cross(ray.direction, e2);
+        const double det = dot(e1, pv);
+        if (det == 0.0) return;
+        const Vec3 tv = ray.origin - a, qv = cross(tv, e1);
+        const double u = dot(tv, pv) / det, v = dot(ray.direction, qv) / det, t = dot(e2, qv) / det;
+        if (u >= 0 && v >= 0 && u + v <= 1 && t >= b0 && t <= b1) best = std::fmin(best, t);
+    };
+    for (int z = 0; z + 1 < g.height; ++z)
+        for (int x = 0; x + 1 < g.width; ++x) {
+            triangle(vertex(x, z), vertex(x + 1, z), vertex(x, z + 1));
+            triangle(vertex(x + 1, z + 1), vertex(x, z + 1), vertex(x + 1, z));
+        }
+    return best;
+}
+
+TEST(HeightField, NearestCrossingAgreesWithBruteForce) {
+    Random rng(11);
+    int hits = 0, misses = 0, disagreements = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        scene::HeightField hf;
+        hf.grid = random_grid(rng, rng.integer(2, 40), rng.integer(2, 40));
+        hf.water_level = rng.chance(0.3) ? rng.uniform(0.0, 0.6) : 0.0;
+        hf.smooth = rng.chance(0.5);
+        const auto shape = HeightFieldShape::create(hf);
+        ASSERT_TRUE(shape);
+        const Vec3 target{rng.uniform(-0.1, 1.1), rng.uniform(0.0, 1.0), rng.uniform(-0.1, 1.1)};
+        const Vec3 origin = target + rng.direction() * rng.uniform(0.5, 4.0);
+        const LocalRay ray{origin, (target - origin) * rng.uniform(0.2, 5.0)};
+        const double expected = brute_nearest(*hf.grid, hf.water_level, ray);
+        const SurfaceHits got = shape->intersect_all(ray, 0.0, INFINITY);
+        if (!std::isfinite(expected)) {
+            // Only POV-Ray's edge tolerance may add a crossing the exact test does not see.
+            disagreements += !got.empty();
+            ++misses;
+            continue;
+        }
+        ++hits;
+        ASSERT_FALSE(got.empty()) << "trial " << trial;
+        if (std::fabs(got[0].t - expected) > 1e-9 * std::fmax(1.0, expected)) ++disagreements;
+        // Every crossing lies on the surface, and the normal points up out of the field.
+        for (const SurfaceHit& h : got) {
+            const Vec3 p = ray.origin + h.t * ray.direction;
+            EXPECT_NEAR(shape->implicit(p), 0.0, 1e-9) << "trial " << trial;
+            EXPECT_GT(h.normal.y, 0.0);
+            if (!hf.smooth) {
+                EXPECT_EQ(h.entering, dot(h.normal, ray.direction) < 0.0);
+            }
+        }
+    }
+    EXPECT_GT(hits, 150);
+    EXPECT_GT(misses, 30);
+    EXPECT_LE(disagreements, (hits + misses) / 100);
+}
+
+TEST(HeightField, InsideAgreesWithTheHeightBelowThePoint) {
+    Random rng(12);
+    for (int trial = 0; trial < 50; ++trial) {
+        scene::HeightField hf;
+        hf.grid = random_grid(rng, rng.integer(2, 30), rng.integer(2, 30));
+        hf.water_level = rng.chance(0.5) ? rng.uniform(0.0, 0.7) : 0.0;
+        const auto shape = HeightFieldShape::create(hf);
+        ASSERT_TRUE(shape);
+        const Bounds b = *shape->bounds();
+        for (int k = 0; k < 200; ++k) {
+            const Vec3 p{rng.uniform(0.0, 0.999), rng.uniform(-0.1, 1.1), rng.uniform(0.0, 0.999)};
+            const double above = shape->implicit(p);
+            if (std::fabs(above) < 1e-6) continue;
+            // POV-Ray compat: with a water level the triangles' corners are raised to it for the inside test, so
+            // only points clearly below the water or above every height are checked then.
+            if (hf.water_level > 0.0 && p.y >= b.lower.y && p.y < b.upper.y) continue;
+            const bool expected = p.y < b.upper.y && (above < 0.0 || p.y < b.lower.y);
+            EXPECT_EQ(shape->inside(p), expected) << "trial " << trial << " point " << p.x << " " << p.y << " " << p.z;
+        }
+        // Outside the unit square nothing is inside.
+        EXPECT_FALSE(shape->inside({-0.01, 0.0, 0.5}));
+        EXPECT_FALSE(shape->inside({0.5, 0.0, 1.0}));
+    }
+}
+
+TEST(HeightField, UnitSquareGeometryAndWaterLevel) {
+    // A 3 x 2 grid: heights 0, 32768, 65535 along x, the same on both rows.
+    scene::HeightField hf;
+    auto g = std::make_shared<scene::HeightGrid>();
+    g->width = 3;
+    g->height = 2;
+    g->heights = {0, 32768, 65535, 0, 32768, 65535};
+    hf.grid = g;
+    const auto flat = HeightFieldShape::create(hf);
+    ASSERT_TRUE(flat);
+    // Straight down at x = 0.75 (half way along the second cell): the height is (32768 + 65535) / 2 / 65536.
+    const SurfaceHits down = flat->intersect_all({{0.75, 2.0, 0.5}, {0.0, -1.0, 0.0}}, 0.0, INFINITY);
+    ASSERT_EQ(down.size(), 1u);
+    EXPECT_NEAR(2.0 - down[0].t, (32768.0 + 65535.0) / 2.0 / 65536.0, 1e-12);
+    // The flat normal of that cell in unit space: slope (65535 - 32768) / 65536 per half unit of x.
+    const Vec3 n = normalize(down[0].normal);
+    const double slope = (65535.0 - 32768.0) / 65536.0 / 0.5;
+    EXPECT_NEAR(n.x, -slope / std::sqrt(1 + slope * slope), 1e-12);
+    EXPECT_NEAR(n.z, 0.0, 1e-12);
+    // With water_level 0.6 the part below 0.6 is not drawn: a ray down at x = 0.25 (height 0.25) misses.
+    hf.water_level = 0.6;
+    const auto wet = HeightFieldShape::create(hf);
+    EXPECT_TRUE(wet->intersect_all({{0.25, 2.0, 0.5}, {0.0, -1.0, 0.0}}, 0.0, INFINITY).empty());
+    EXPECT_EQ(wet->intersect_all({{0.75, 2.0, 0.5}, {0.0, -1.0, 0.0}}, 0.0, INFINITY).size(), 1u);
+    // Below the water level is inside.
+    EXPECT_TRUE(wet->inside({0.25, 0.55, 0.5}));
+    EXPECT_FALSE(wet->inside({0.25, 0.65, 0.5}));
+}
+
+TEST(HeightField, SmoothNormalsAreTheGridNormalsAtGridPoints) {
+    // A plane tilted along z: every vertex normal is the plane's normal, so the smooth normal is too.
+    scene::HeightField hf;
+    auto g = std::make_shared<scene::HeightGrid>();
+    g->width = 4;
+    g->height = 5;
+    for (int z = 0; z < 5; ++z)
+        for (int x = 0; x < 4; ++x) g->heights.push_back(static_cast<std::uint16_t>(10000 * z));
+    hf.grid = g;
+    hf.smooth = true;
+    const auto shape = HeightFieldShape::create(hf);
+    ASSERT_TRUE(shape);
+    const SurfaceHits h = shape->intersect_all({{0.4, 2.0, 0.3}, {0.0, -1.0, 0.0}}, 0.0, INFINITY);
+    ASSERT_EQ(h.size(), 1u);
+    // POV-Ray compat: the grid-space normal (0, 1, -10000) normalised is stored as 16-bit integers, which keeps
+    // only 3 of its y component (0, 3, -32766); unit space scales it by (3, 65536, 4).
+    const double gy = 1.0 / std::sqrt(1.0 + 1e8), gz = -10000.0 * gy;
+    const Vec3 q{0.0, double(static_cast<short>(32767 * gy)), double(static_cast<short>(32767 * gz))};
+    const Vec3 expected = normalize(Vec3{0.0, q.y * 65536.0, q.z * 4.0});
+    const Vec3 n = normalize(h[0].normal);
+    EXPECT_NEAR(n.z, expected.z, 1e-12);
+    EXPECT_NEAR(n.x, 0.0, 1e-12);
+}
+
+TEST(HeightField, FunctionImageSamplesTheUnitSquareFromTheTop) {
+    // POV-Ray's function image: pixel (i, j) holds f(i/(W-1), j/(H-1)); row j = 0 is the image top, which is z = 1.
+    parser::ParseOptions options;
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\nheight_field { function 3, 2 { 0.25 * x + 0.5 * y } smooth "
+        "water_level 0.1 }",
+        "hf.pov", options);
+    ASSERT_TRUE(r.ok());
+    const auto& hf = std::get<scene::HeightField>(r.scene->objects.front().shape);
+    ASSERT_TRUE(hf.grid);
+    EXPECT_TRUE(hf.smooth);
+    EXPECT_DOUBLE_EQ(hf.water_level, 0.1);
+    // z = 0 is the image's bottom row (y = 1): f = 0.25 x + 0.5.
+    auto expect_height = [&](int x, int z, double f) {
+        const auto stored = static_cast<unsigned>(std::floor(static_cast<float>(f) * 65535.0f + 0.5f));
+        const auto h = static_cast<unsigned>(static_cast<float>(stored) / 65535.0f * 65535.0f);
+        EXPECT_EQ(hf.grid->at(x, z), h) << x << "," << z;
+    };
+    expect_height(0, 0, 0.5);
+    expect_height(2, 0, 0.75);
+    expect_height(1, 1, 0.125);
+}
+
+}  // namespace
+}  // namespace wardray::geometry
