@@ -96,14 +96,9 @@ HeightField Parser::read_height_field(const Token& kw) {
         const Token file = peek();
         const std::string name = parse_string();
         if (!m_options.read_height_grid) fail(file, "height_field cannot read images here (no image reader)");
-        std::filesystem::path found;
-        for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
-            std::error_code ec;
-            if (std::filesystem::is_regular_file(candidate.path, ec)) {
-                found = candidate.path;
-                break;
-            }
-        }
+        const std::optional<std::filesystem::path> where =
+            find_readable(file, std::filesystem::path(name), "", "height_field image");
+        const std::filesystem::path found = where ? *where : std::filesystem::path();
         if (found.empty()) fail(file, "cannot open height_field image '" + name + "'");
         const std::string key = "height_field\n" + found.string();
         if (auto it = m_height_grids.find(key); it != m_height_grids.end()) {

@@ -36,6 +36,11 @@ protected:
             error = "test reader";
             return nullptr;
         };
+        o.read_height_grid = [this](const fs::path& file, std::string& error, std::string&) {
+            m_images_read.push_back(file);
+            error = "test reader";
+            return std::shared_ptr<const scene::HeightGrid>();
+        };
         return o;
     }
     ParseResult parse(const std::string& text, const ParseOptions& o) {
@@ -77,6 +82,8 @@ TEST_F(ReadConfinement, AbsoluteSystemFilesAreRefusedForEveryWayOfReading) {
               refused + "font file) " + kRefused);
     EXPECT_EQ(first_error(parse("plane { z, 1 pigment { image_map { png \"/etc/passwd\" } } }\n", options())),
               refused + "image file) " + kRefused);
+    EXPECT_EQ(first_error(parse("height_field { png \"/etc/passwd\" }\n", options())),
+              refused + "height_field image) " + kRefused);
     EXPECT_TRUE(m_images_read.empty());
 }
 
