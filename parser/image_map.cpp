@@ -1,5 +1,7 @@
 // image_map pigments: the image file (read through ParseOptions::read_image), its gamma and its mapping.
 #include <cmath>
+#include <string_view>
+#include <vector>
 
 #include "parser/parser.h"
 
@@ -15,18 +17,37 @@ bool is_image_type(const TokenText& w) {
     return false;
 }
 
+/// The extensions POV-Ray appends to a name without one, by the image type named before it.
+std::vector<const char*> image_extensions(std::string_view type) {
+    if (type == "tga") return {".tga", ".TGA"};
+    if (type == "png") return {".png", ".PNG"};
+    if (type == "ppm") return {".ppm", ".PPM"};
+    if (type == "pgm") return {".pgm", ".PGM"};
+    if (type == "gif") return {".gif", ".GIF"};
+    if (type == "iff") return {".iff", ".IFF", ".lbm", ".LBM"};
+    if (type == "jpeg") return {".jpg", ".JPG", ".jpeg", ".JPEG"};
+    if (type == "tiff") return {".tif", ".TIF", ".tiff", ".TIFF"};
+    if (type == "exr") return {".exr", ".EXR"};
+    if (type == "hdr") return {".hdr", ".HDR"};
+    return {""};
+}
+
 }  // namespace
 
 std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const std::string& name,
-                                                          const std::optional<GammaCurve>& file_gamma) {
+                                                          const std::optional<GammaCurve>& file_gamma,
+                                                          std::string_view type) {
     if (!m_options.read_image) fail(at, "image_map cannot read images here (no image reader)");
     std::filesystem::path found;
-    for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(candidate.path, ec)) {
-            found = candidate.path;
-            break;
+    for (const char* extension : image_extensions(type)) {
+        for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), extension)) {
+            std::error_code ec;
+            if (std::filesystem::is_regular_file(candidate.path, ec)) {
+                found = candidate.path;
+                break;
+            }
         }
+        if (!found.empty()) break;
     }
     if (found.empty()) fail(at, "cannot open image file '" + name + "'");
     // The working gamma the texels are taken into, and how the file was encoded (POV-Ray 3.7's rules, see
@@ -70,7 +91,8 @@ void Parser::parse_image_map(const Token& kw, Pigment& p) {
         skip_to_close(kw, "}", depth);
         return;
     }
-    if (peek().kind == TokenKind::Identifier && is_image_type(peek().text)) next();
+    std::string type;
+    if (peek().kind == TokenKind::Identifier && is_image_type(peek().text)) type = next().text.view();
     const Token file = peek();
     const std::string name = parse_string();
     std::optional<GammaCurve> file_gamma;
@@ -115,7 +137,7 @@ void Parser::parse_image_map(const Token& kw, Pigment& p) {
             fail(t, "expected an image_map item but found '" + w + "'");
         }
     }
-    map.image = read_image_file(file, name, file_gamma);
+    map.image = read_image_file(file, name, file_gamma, type);
     p.image_map = std::move(map);
     p.color_map.clear();
     p.pigment_map.clear();

@@ -82,9 +82,11 @@ private:
     bool is_colour_array_next();
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
     void parse_image_map(const Token& kw, Pigment& p);
-    /// An image file found like an include file, its texels in the working gamma; read once per gamma.
+    /// An image file found like an include file (a name without extension also with those of its `type`, e.g.
+    /// "png"), its texels in the working gamma; read once per gamma.
     std::shared_ptr<const ImageData> read_image_file(const Token& at, const std::string& name,
-                                                     const std::optional<GammaCurve>& file_gamma);
+                                                     const std::optional<GammaCurve>& file_gamma,
+                                                     std::string_view type = {});
     /// Takes a leading normal identifier or array element, when one comes next.
     void parse_normal_start(Normal& n);
     /// Reads normal items up to `close`.

@@ -17,10 +17,11 @@ std::shared_ptr<const ExternalFunction> make_pattern_function(std::shared_ptr<co
 std::shared_ptr<const ExternalFunction> make_pigment_channel(std::shared_ptr<const Pigment> block, int channel,
                                                              const ParseOptions& options);
 
-/// The channel a dot item names: 0..4 red/x/u, green/y/v, blue/z, filter/t, transmit; 5 gray; -1 none.
+/// The channel a dot item names: 0..4 red/x/u, green/y/v, blue/z, filter/t, transmit; 5 gray; 6 hf; -1 none.
 int pigment_channel(std::string_view item);
 
-/// Channel `channel` of a colour (5: POV-Ray's grey, 0.297 R + 0.589 G + 0.114 B).
+/// Channel `channel` of a colour (5: POV-Ray's grey, 0.297 R + 0.589 G + 0.114 B;
+/// 6: `.hf`, (R + G / 255) * 0.996093).
 double channel_value(const Color& c, int channel);
 
 }  // namespace wardray::parser
