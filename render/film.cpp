@@ -1,5 +1,6 @@
 // Film: pixel storage, and image files written by format and read through the OpenImageIO module.
 #include "render/film.h"
+#include "render/jpeg_reader.h"
 #include "render/png_reader.h"
 
 #include "render/image_writers.h"
@@ -170,10 +171,12 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
 }
 
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha) {
-    // Opaque PNGs (most image maps) through libpng; the rest through OpenImageIO, loaded on first use.
+    // Opaque PNGs and JPEGs (most image maps) through libpng and libjpeg; the rest through OpenImageIO, loaded on
+    // first use.
     int width = 0, height = 0;
     std::vector<float> pixels;
-    if (!read_png_rgb(path, width, height, pixels)) return read_image_with_oiio(path, error, stored, alpha);
+    if (!read_png_rgb(path, width, height, pixels) && !read_jpeg_rgb(path, width, height, pixels))
+        return read_image_with_oiio(path, error, stored, alpha);
     Film film(width, height);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {

@@ -63,7 +63,8 @@ void remove_partial_output_on_signal();
 /// says whether the file has an alpha channel (not read).
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
                                bool* alpha = nullptr);
-/// read_image through OpenImageIO only (read_image takes opaque PNGs through libpng, giving the same values).
+/// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
+/// libjpeg, giving the same values).
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
                                          bool* stored = nullptr, bool* alpha = nullptr);
 

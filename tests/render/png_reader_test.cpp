@@ -1,7 +1,10 @@
-// Tests of the libpng reader: every opaque kind of PNG gives exactly what OpenImageIO gives, and PNGs it leaves
-// alone (an alpha channel) still read through OpenImageIO.
+// Tests of the libpng and libjpeg readers: every opaque kind of PNG, and grey and colour JPEGs, give exactly
+// what OpenImageIO gives, and files they leave alone (an alpha channel) still read through OpenImageIO.
 #include "render/film.h"
+#include "render/jpeg_reader.h"
 #include "render/png_reader.h"
+
+#include <jpeglib.h>
 
 #include <gtest/gtest.h>
 
@@ -84,12 +87,12 @@ fs::path write(const std::string& name, const Bytes& png) {
     return dir / name;
 }
 
-void expect_same_as_oiio(const fs::path& p) {
+void expect_same_as_oiio(const fs::path& p, bool jpeg = false) {
     std::string error;
     bool stored = false, alpha = true;
     int w = 0, h = 0;
     std::vector<float> rgb;
-    ASSERT_TRUE(read_png_rgb(p, w, h, rgb)) << p;
+    ASSERT_TRUE(jpeg ? read_jpeg_rgb(p, w, h, rgb) : read_png_rgb(p, w, h, rgb)) << p;
     const auto ours = read_image(p, error, &stored, &alpha);
     const auto theirs = read_image_with_oiio(p, error);
     ASSERT_TRUE(ours && theirs) << error;
@@ -147,6 +150,44 @@ TEST(PngReader, AlphaAndOtherFilesAreLeftToOpenImageIO) {
     const fs::path text = write("not.png", Bytes{'h', 'e', 'l', 'l', 'o', '!', '!', '!', '!'});
     EXPECT_FALSE(read_png_rgb(text, w, h, rgb));
     EXPECT_FALSE(read_image(text, error).has_value());
+}
+
+/// A JPEG of pseudo-random smooth content, written by libjpeg at its defaults (4:2:0 for colour).
+fs::path write_jpeg(const std::string& name, int width, int height, int components) {
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "png_reader_test";
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    std::FILE* f = std::fopen(p.c_str(), "wb");
+    jpeg_compress_struct info;
+    jpeg_error_mgr errors;
+    info.err = jpeg_std_error(&errors);
+    jpeg_create_compress(&info);
+    jpeg_stdio_dest(&info, f);
+    info.image_width = width;
+    info.image_height = height;
+    info.input_components = components;
+    info.in_color_space = components == 1 ? JCS_GRAYSCALE : JCS_RGB;
+    jpeg_set_defaults(&info);
+    jpeg_set_quality(&info, 80, TRUE);
+    jpeg_start_compress(&info, TRUE);
+    std::vector<unsigned char> row(static_cast<std::size_t>(width) * components);
+    for (int y = 0; y < height; ++y) {
+        for (int i = 0; i < width * components; ++i) row[i] = static_cast<unsigned char>((i * 7 + y * 13) ^ (i * y));
+        JSAMPROW rows[1] = {row.data()};
+        jpeg_write_scanlines(&info, rows, 1);
+    }
+    jpeg_finish_compress(&info);
+    jpeg_destroy_compress(&info);
+    std::fclose(f);
+    return p;
+}
+
+TEST(JpegReader, GreyAndColourReadAsOpenImageIOReadsThem) {
+    expect_same_as_oiio(write_jpeg("colour.jpg", 37, 21, 3), true);
+    expect_same_as_oiio(write_jpeg("grey.jpg", 19, 11, 1), true);
+    int w = 0, h = 0;
+    std::vector<float> rgb;
+    EXPECT_FALSE(read_jpeg_rgb(write("rgb8-as-jpeg.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb));
 }
 
 }  // namespace
