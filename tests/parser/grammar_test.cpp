@@ -335,6 +335,28 @@ TEST(Grammar, AnImageNamedWithoutExtensionIsFoundByItsType) {
     EXPECT_NE(test::all_diagnostics(r).find("cannot open image file 'tex'"), std::string::npos);
 }
 
+TEST(Grammar, AUnionRedeclaredAroundItselfKeepsEveryPartInOrder) {
+    // `#declare U = union { object { U } ... }` over and over (a scene from the wild does it 1,400 times): each
+    // declaration copies U once and appends; the copies placed afterwards are whole and independent.
+    const Scene s = parse_ok(R"(
+        #declare U = sphere { 0, 1 }
+        #for (I, 1, 30)
+            #declare U = union { object { U } sphere { <I, 0, 0>, 1 } }
+        #end
+        object { U translate y }
+        object { U pigment { rgb <1, 0, 0> } }
+    )");
+    ASSERT_EQ(s.objects.size(), 62u);
+    for (int i = 0; i <= 30; ++i) {
+        const Object& a = s.objects[i];
+        const Object& b = s.objects[31 + i];
+        EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).x, double(i));
+        EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).y, 1.0);
+        EXPECT_EQ(b.transform.point(std::get<Sphere>(b.shape).center).y, 0.0);
+        EXPECT_EQ(b.texture.pigment.color.r, 1.0);
+    }
+}
+
 TEST(Grammar, APigmentFunctionGivesItsHeightFieldItem) {
     // `.hf` (MegaPOV's item, still compiled by POV-Ray 3.7): red as the high byte, green as the low one, scaled
     // by 0.996093.
