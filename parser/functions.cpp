@@ -363,11 +363,13 @@ Numeric Evaluator::parse_geometry_query(const Token& name) {
     if (m_options.query == nullptr) fail(name, f + "() needs the geometry layer, which this program did not provide");
     const SceneQuery& q = *m_options.query;
     if (f == "trace") {
-        if (length(*direction) == 0.0) fail(name, "trace() needs a non-zero direction");
-        // The nearest hit over the parts of the (flattened) object.
+        // The nearest hit over the parts of the (flattened) object. POV-Ray compat: a zero direction normalises
+        // to NaN there and finds nothing, a miss.
         std::optional<QueryHit> best;
         double best_distance = 0.0;
+        const bool no_direction = length(*direction) == 0.0;
         for (const ObjectPart& part : ov->parts) {
+            if (no_direction) break;
             const std::optional<QueryHit> hit = q.trace(part.object, *origin, *direction);
             if (!hit) continue;
             const double d = length(hit->point - *origin);

@@ -1,6 +1,8 @@
 // image_map pigments: the image file (read through ParseOptions::read_image), its gamma and its mapping.
 #include <cmath>
 #include <functional>
+#include <string_view>
+#include <vector>
 
 #include "parser/parser.h"
 
@@ -17,13 +19,33 @@ bool is_image_type(const TokenText& w) {
     return false;
 }
 
+/// The extensions POV-Ray appends to a name without one, by the image type named before it.
+std::vector<const char*> image_extensions(std::string_view type) {
+    if (type == "tga") return {".tga", ".TGA"};
+    if (type == "png") return {".png", ".PNG"};
+    if (type == "ppm") return {".ppm", ".PPM"};
+    if (type == "pgm") return {".pgm", ".PGM"};
+    if (type == "gif") return {".gif", ".GIF"};
+    if (type == "iff") return {".iff", ".IFF", ".lbm", ".LBM"};
+    if (type == "jpeg") return {".jpg", ".JPG", ".jpeg", ".JPEG"};
+    if (type == "tiff") return {".tif", ".TIF", ".tiff", ".TIFF"};
+    if (type == "exr") return {".exr", ".EXR"};
+    if (type == "hdr") return {".hdr", ".HDR"};
+    return {""};
+}
+
 }  // namespace
 
 std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const std::string& name,
-                                                          const std::optional<GammaCurve>& file_gamma, bool colour) {
+                                                          const std::optional<GammaCurve>& file_gamma, bool colour,
+                                                          std::string_view type) {
     if (!m_options.read_image) fail(at, "image_map cannot read images here (no image reader)");
-    const std::optional<std::filesystem::path> where =
-        find_readable(at, std::filesystem::path(name), "", "image file");
+    // A name without its extension is also tried with the extensions of the type named before it, as POV-Ray does.
+    std::optional<std::filesystem::path> where;
+    for (const char* extension : image_extensions(type)) {
+        where = find_readable(at, std::filesystem::path(name), extension, "image file");
+        if (where) break;
+    }
     if (!where) fail(at, "cannot open image file '" + name + "'");
     const std::filesystem::path& found = *where;
     // The working gamma the texels are taken into, and how the file was encoded (POV-Ray 3.7's rules, see
@@ -64,7 +86,8 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
 ImageMap Parser::parse_image_block(const Token& kw, ImageBlock block, const std::function<bool(const Token&)>& item) {
     const std::size_t depth = m_brace_depth;
     ImageMap map;
-    if (peek().kind == TokenKind::Identifier && is_image_type(peek().text)) next();
+    std::string type;
+    if (peek().kind == TokenKind::Identifier && is_image_type(peek().text)) type = next().text.view();
     const Token file = peek();
     const std::string name = parse_string();
     std::optional<GammaCurve> file_gamma;
@@ -133,7 +156,7 @@ ImageMap Parser::parse_image_block(const Token& kw, ImageBlock block, const std:
             fail(t, "expected a " + kw.text + " item but found '" + w + "'");
         }
     }
-    map.image = read_image_file(file, name, file_gamma, image_map);
+    map.image = read_image_file(file, name, file_gamma, image_map, type);
     const ImageData& img = *map.image;
     for (const PaletteSetting& s : palette) {
         double& all = s.transmit ? map.transmit_all : map.filter_all;

@@ -1,6 +1,7 @@
 // Objects: object statements (union flattening, CSG nodes), their modifiers, transforms and light sources.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
@@ -89,6 +90,25 @@ bool ObjectReader::is_object_start(const Token& t) {
     return v != nullptr && std::holds_alternative<Boxed<ObjectValue>>(*v);
 }
 
+namespace {
+
+/// `object { Declared }`: a copy of the declared object whose parts leave room for a few more, so a union that
+/// adds shapes after it (`#declare U = union { object { U } sphere { ... } }`) does not move every part again.
+void copy_declared(ObjectValue& ov, const ObjectValue& declared) {
+    constexpr std::size_t k_room = 8;
+    // Every member, named so a new one fails to compile here until it is copied too.
+    auto& [parts, lights, compound, texture] = ov;
+    const auto& [from_parts, from_lights, from_compound, from_texture] = declared;
+    parts.clear();
+    parts.reserve(from_parts.size() + k_room);
+    parts.insert(parts.end(), from_parts.begin(), from_parts.end());
+    lights = from_lights;
+    compound = from_compound;
+    texture = from_texture;
+}
+
+}  // namespace
+
 ObjectValue ObjectReader::parse_object(const Token& kw) {
     const NestingGuard guard(*this, kw);
     const TokenText& w = kw.text;
@@ -142,7 +162,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         if ((element = take_array_element())) {
             if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) {
                 count_objects(at, object_count(**o));  // before copying, so a huge copy is never made
-                ov = **o;
+                copy_declared(ov, **o);
             }
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
             parse_object_modifiers(ov, ov.compound);
@@ -161,7 +181,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
                 // Already warned about where it was declared; the object is left out.
             } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
                 count_objects(id, object_count(**o));  // before copying, so a huge copy is never made
-                ov = **o;
+                copy_declared(ov, **o);
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");
             }
@@ -180,13 +200,17 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         // union: children first, then the union's own modifiers.
         ov.compound = true;
         read_csg_children(ov, [&](ObjectValue& child) {
-            for (ObjectPart& part : child.parts) {
-                if (!part.has_texture && child.texture) {
-                    part.object.texture = *child.texture;
-                    part.has_texture = true;
-                }
-                ov.parts.push_back(std::move(part));
-            }
+            if (child.texture)
+                for (ObjectPart& part : child.parts)
+                    if (!part.has_texture) {
+                        part.object.texture = *child.texture;
+                        part.has_texture = true;
+                    }
+            // The parts move as one block: a union redeclared around its previous value (`#declare U = union {
+            // object { U } ... }`, many times over) then costs one copy of U per declaration, as in POV-Ray.
+            if (ov.parts.empty()) ov.parts = std::move(child.parts);
+            else ov.parts.insert(ov.parts.end(), std::make_move_iterator(child.parts.begin()),
+                                 std::make_move_iterator(child.parts.end()));
         });
     }
     parse_object_modifiers(ov, ov.compound);

@@ -95,10 +95,12 @@ private:
     /// Reads an image block's file and items after its '{' up to its '}'; `item` takes the block's own items
     /// (true when it read one).
     ImageMap parse_image_block(const Token& kw, ImageBlock block, const std::function<bool(const Token&)>& item);
-    /// An image file found like an include file, its texels in the working gamma (`colour`, image_map) or as stored
-    /// (bump_map, material_map); read once per gamma.
+    /// An image file found like an include file (a name without extension also with those of its `type`, e.g.
+    /// "png"), its texels in the working gamma (`colour`, image_map) or as stored (bump_map, material_map); read
+    /// once per gamma.
     std::shared_ptr<const ImageData> read_image_file(const Token& at, const std::string& name,
-                                                     const std::optional<GammaCurve>& file_gamma, bool colour);
+                                                     const std::optional<GammaCurve>& file_gamma, bool colour,
+                                                     std::string_view type = {});
     /// A df3 file found like an include file (density_file), read once.
     std::shared_ptr<const DensityFile> read_density_file(const Token& at, const std::string& name);
     /// Takes a leading normal identifier or array element, when one comes next.

@@ -77,6 +77,7 @@ int pigment_channel(std::string_view w) {
     if (w == "t" || w == "filter") return 3;
     if (w == "transmit") return 4;
     if (w == "gray" || w == "grey") return 5;
+    if (w == "hf") return 6;  // POV-Ray compat: MegaPOV's height-field item, which POV-Ray 3.7 still compiles
     return -1;
 }
 
@@ -87,6 +88,7 @@ double channel_value(const Color& c, int channel) {
         case 2: return c.b;
         case 3: return c.filter;
         case 4: return c.transmit;
+        case 6: return (c.r + c.g / 255.0) * 0.996093;  // red the high byte, green the low one, as POV-Ray scales them
         default: return 0.297 * c.r + 0.589 * c.g + 0.114 * c.b;
     }
 }

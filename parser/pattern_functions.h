@@ -21,10 +21,11 @@ std::shared_ptr<const ExternalFunction> make_pigment_channel(std::shared_ptr<con
 /// The function VM's call of one component of a spline function (`S(t).y`): the spline at its first argument.
 std::shared_ptr<const ExternalFunction> make_spline_channel(std::shared_ptr<const Spline> spline, int channel);
 
-/// The channel a dot item names: 0..4 red/x/u, green/y/v, blue/z, filter/t, transmit; 5 gray; -1 none.
+/// The channel a dot item names: 0..4 red/x/u, green/y/v, blue/z, filter/t, transmit; 5 gray; 6 hf; -1 none.
 int pigment_channel(std::string_view item);
 
-/// Channel `channel` of a colour (5: POV-Ray's grey, 0.297 R + 0.589 G + 0.114 B).
+/// Channel `channel` of a colour (5: POV-Ray's grey, 0.297 R + 0.589 G + 0.114 B;
+/// 6: `.hf`, (R + G / 255) * 0.996093).
 double channel_value(const Color& c, int channel);
 
 }  // namespace wardray::parser

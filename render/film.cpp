@@ -1,5 +1,7 @@
 // Film: pixel storage, and image files written by format and read through the OpenImageIO module.
 #include "render/film.h"
+#include "render/jpeg_reader.h"
+#include "render/png_reader.h"
 
 #include "render/image_writers.h"
 
@@ -170,6 +172,29 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
 
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha,
                                bool* grey, bool* bits16) {
+    // Opaque PNGs and JPEGs (most image maps) through libpng and libjpeg; the rest, and every read that asks
+    // whether the file is grey or 16-bit (height fields), through OpenImageIO, loaded on first use.
+    if (grey || bits16) return read_image_with_oiio(path, error, stored, alpha, grey, bits16);
+    int width = 0, height = 0;
+    std::vector<float> pixels;
+    if (!read_png_rgb(path, width, height, pixels) && !read_jpeg_rgb(path, width, height, pixels))
+        return read_image_with_oiio(path, error, stored, alpha);
+    Film film(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const float* p = &pixels[(static_cast<std::size_t>(y) * width + x) * 3];
+            Vec3 rgb{p[0], p[1], p[2]};
+            if (!stored) rgb = {srgb_decode(rgb.x), srgb_decode(rgb.y), srgb_decode(rgb.z)};
+            film.set_pixel(x, y, rgb);
+        }
+    }
+    if (stored) *stored = true;
+    if (alpha) *alpha = false;
+    return film;
+}
+
+std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error, bool* stored,
+                                         bool* alpha, bool* grey, bool* bits16) {
     const OiioReader* reader = oiio_reader(error);
     if (!reader) return std::nullopt;
     int width = 0, height = 0, encoded = 0;

@@ -64,6 +64,11 @@ void remove_partial_output_on_signal();
 /// whether it stores 16-bit values.
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
                                bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr);
+/// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
+/// libjpeg, giving the same values).
+std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
+                                         bool* stored = nullptr, bool* alpha = nullptr, bool* grey = nullptr,
+                                         bool* bits16 = nullptr);
 
 /// sRGB transfer function, linear to encoded, for one channel in [0, 1].
 double srgb_encode(double linear);

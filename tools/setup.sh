@@ -8,6 +8,7 @@ packages=(
   libembree-dev libtbb-dev                 # ray tracing and threads
   libopenimageio-dev openimageio-tools     # image reading (any format)
   libpng-dev libopenexr-dev                # image writing (PNG, OpenEXR)
+  libjpeg-dev                              # JPEG image maps read without OpenImageIO
   libcgal-dev libboost-dev                 # mesh geometry, the Spirit X3 parser
   libgtest-dev nlohmann-json3-dev          # tests, --stats JSON
   povray povray-includes povray-examples fonts-povray  # the reference renderer, its includes and scenes

@@ -306,5 +306,72 @@ TEST(Grammar, AnElementOfAnArrayOfFunctionsIsCalled) {
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[1].shape).radius, 6.0 + 14.0);
 }
 
+TEST(Grammar, AnImageNamedWithoutExtensionIsFoundByItsType) {
+    // POV-Ray appends the extensions of the type named before the file (png: .png, jpeg: .jpg or .jpeg).
+    TempDir dir;
+    dir.write("scene/tex.png", "not read: the reader below is a stand-in");
+    dir.write("scene/photo.jpeg", "not read either");
+    const auto main = dir.write("scene/s.pov", "global_settings { assumed_gamma 1 }\n"
+                                               "sphere { 0, 1 pigment { image_map { png \"tex\" } } }\n"
+                                               "sphere { 0, 1 pigment { image_map { jpeg \"photo\" } } }\n");
+    std::vector<std::string> opened;
+    ParseOptions o = test::default_options();
+    o.read_image = [&](const std::filesystem::path& file, bool& encoded, std::string&) {
+        opened.push_back(file.filename().string());
+        encoded = true;
+        auto image = std::make_shared<ImageData>();
+        image->width = image->height = 1;
+        image->rgb = {0.5f, 0.5f, 0.5f};
+        return std::shared_ptr<const ImageData>(image);
+    };
+    ParseResult r = parse_file(main, o);
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    ASSERT_EQ(opened, (std::vector<std::string>{"tex.png", "photo.jpeg"}));
+    EXPECT_TRUE(r.scene->objects[0].texture.pigment.image_map.has_value());
+    // A type whose extensions do not match is still an error at the file name.
+    dir.write("scene/t.pov", "sphere { 0, 1 pigment { image_map { gif \"tex\" } } }\n");
+    r = parse_file(dir.path() / "scene/t.pov", o);
+    EXPECT_FALSE(r.ok());
+    EXPECT_NE(test::all_diagnostics(r).find("cannot open image file 'tex'"), std::string::npos);
+}
+
+TEST(Grammar, AUnionRedeclaredAroundItselfKeepsEveryPartInOrder) {
+    // `#declare U = union { object { U } ... }` over and over (a scene from the wild does it 1,400 times): each
+    // declaration copies U once and appends; the copies placed afterwards are whole and independent.
+    const Scene s = parse_ok(R"(
+        #declare U = sphere { 0, 1 }
+        #for (I, 1, 30)
+            #declare U = union { object { U } sphere { <I, 0, 0>, 1 } }
+        #end
+        object { U translate y }
+        object { U pigment { rgb <1, 0, 0> } }
+    )");
+    ASSERT_EQ(s.objects.size(), 62u);
+    for (int i = 0; i <= 30; ++i) {
+        const Object& a = s.objects[i];
+        const Object& b = s.objects[31 + i];
+        EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).x, double(i));
+        EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).y, 1.0);
+        EXPECT_EQ(b.transform.point(std::get<Sphere>(b.shape).center).y, 0.0);
+        EXPECT_EQ(b.texture.pigment.color.r, 1.0);
+    }
+}
+
+TEST(Grammar, APigmentFunctionGivesItsHeightFieldItem) {
+    // `.hf` (MegaPOV's item, still compiled by POV-Ray 3.7): red as the high byte, green as the low one, scaled
+    // by 0.996093.
+    ParseOptions o = test::default_options();
+    o.pigment_value = [](const Pigment&, const Vec3& p, int) { return Color{0.5, 0.25 + p.x, 0.9, 0.0, 0.0}; };
+    const Scene s = parse_ok(R"(
+        #declare P = function { pigment { rgb 1 } }
+        #declare F = function { P(x, y, z).hf }
+        sphere { 0, F(0, 0, 0) }
+        sphere { 0, F(0.5, 0, 0) }
+    )", o);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, (0.5 + 0.25 / 255.0) * 0.996093);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[1].shape).radius, (0.5 + 0.75 / 255.0) * 0.996093);
+}
+
 }  // namespace
 }  // namespace wardray::parser

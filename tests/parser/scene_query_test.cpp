@@ -73,6 +73,20 @@ TEST(SceneQuery, TraceMissGivesZeroVectors) {
     EXPECT_EQ(c.z, 3.0);
 }
 
+TEST(SceneQuery, TraceWithAZeroDirectionMisses) {
+    // POV-Ray normalises the direction to NaN and finds nothing: the point and the normal are <0,0,0>, no error.
+    const FakeQuery q;
+    const Scene s = test::parse_ok("#declare Ball = sphere { <0, 0, 0>, 1 }\n"
+                                   "#declare Normal = <7, 7, 7>;\n"
+                                   "#declare P = trace(Ball, <0.5, 0, 0>, <0, 0, 0>, Normal);\n"
+                                   "sphere { P + Normal + <1, 2, 3>, 1 }\n",
+                                   with_query(q));
+    const Vec3 c = first_center(s);
+    EXPECT_EQ(c.x, 1.0);
+    EXPECT_EQ(c.y, 2.0);
+    EXPECT_EQ(c.z, 3.0);
+}
+
 TEST(SceneQuery, TraceTakesTheNearestPartOfAUnion) {
     const FakeQuery q;
     const Scene s = test::parse_ok("#declare U = union { sphere { <0, 0, 9>, 1 } sphere { <0, 0, 4>, 1 } }\n"

@@ -1,0 +1,194 @@
+// Tests of the libpng and libjpeg readers: every opaque kind of PNG, and grey and colour JPEGs, give exactly
+// what OpenImageIO gives, and files they leave alone (an alpha channel) still read through OpenImageIO.
+#include "render/film.h"
+#include "render/jpeg_reader.h"
+#include "render/png_reader.h"
+
+#include <jpeglib.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace wardray::render {
+namespace {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<unsigned char>;
+
+std::uint32_t crc32(const Bytes& data, std::size_t from) {
+    std::uint32_t c = 0xffffffffu;
+    for (std::size_t i = from; i < data.size(); ++i) {
+        c ^= data[i];
+        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+    }
+    return c ^ 0xffffffffu;
+}
+
+void put32(Bytes& b, std::uint32_t v) {
+    for (int s = 24; s >= 0; s -= 8) b.push_back(static_cast<unsigned char>(v >> s));
+}
+
+void chunk(Bytes& png, const char* type, const Bytes& data) {
+    put32(png, static_cast<std::uint32_t>(data.size()));
+    const std::size_t start = png.size();
+    png.insert(png.end(), type, type + 4);
+    png.insert(png.end(), data.begin(), data.end());
+    put32(png, crc32(png, start));
+}
+
+/// A PNG of `rows` (each with its filter byte 0 already in front), deflated as stored blocks.
+Bytes make_png(int width, int height, int depth, int color_type, const Bytes& rows, const Bytes& palette = {}) {
+    Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    Bytes ihdr;
+    put32(ihdr, width);
+    put32(ihdr, height);
+    ihdr.insert(ihdr.end(), {static_cast<unsigned char>(depth), static_cast<unsigned char>(color_type), 0, 0, 0});
+    chunk(png, "IHDR", ihdr);
+    if (!palette.empty()) chunk(png, "PLTE", palette);
+    Bytes z = {0x78, 0x01, 0x01, static_cast<unsigned char>(rows.size() & 0xff),
+               static_cast<unsigned char>(rows.size() >> 8), static_cast<unsigned char>(~rows.size() & 0xff),
+               static_cast<unsigned char>((~rows.size() >> 8) & 0xff)};
+    z.insert(z.end(), rows.begin(), rows.end());
+    std::uint32_t a = 1, b = 0;
+    for (unsigned char c : rows) {
+        a = (a + c) % 65521;
+        b = (b + a) % 65521;
+    }
+    put32(z, (b << 16) | a);
+    chunk(png, "IDAT", z);
+    chunk(png, "IEND", {});
+    return png;
+}
+
+/// Rows of `width` samples of `bytes_per_pixel` bytes, each byte a fixed pseudo-random value.
+Bytes rows_of(int width, int height, int bytes_per_row) {
+    Bytes rows;
+    std::uint32_t state = 12345;
+    for (int y = 0; y < height; ++y) {
+        rows.push_back(0);
+        for (int i = 0; i < bytes_per_row; ++i) {
+            state = state * 1103515245u + 12345u;
+            rows.push_back(static_cast<unsigned char>(state >> 16));
+        }
+    }
+    (void)width;
+    return rows;
+}
+
+fs::path write(const std::string& name, const Bytes& png) {
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "png_reader_test";
+    fs::create_directories(dir);
+    std::ofstream(dir / name, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), png.size());
+    return dir / name;
+}
+
+void expect_same_as_oiio(const fs::path& p, bool jpeg = false) {
+    std::string error;
+    bool stored = false, alpha = true;
+    int w = 0, h = 0;
+    std::vector<float> rgb;
+    ASSERT_TRUE(jpeg ? read_jpeg_rgb(p, w, h, rgb) : read_png_rgb(p, w, h, rgb)) << p;
+    const auto ours = read_image(p, error, &stored, &alpha);
+    const auto theirs = read_image_with_oiio(p, error);
+    ASSERT_TRUE(ours && theirs) << error;
+    EXPECT_TRUE(stored);
+    EXPECT_FALSE(alpha);
+    const auto linear = read_image(p, error);
+    ASSERT_TRUE(linear);
+    ASSERT_EQ(linear->width(), theirs->width());
+    ASSERT_EQ(linear->height(), theirs->height());
+    for (int y = 0; y < theirs->height(); ++y)
+        for (int x = 0; x < theirs->width(); ++x) {
+            const Vec3 a = linear->pixel(x, y), b = theirs->pixel(x, y);
+            ASSERT_EQ(a.x, b.x) << p << " at " << x << "," << y;
+            ASSERT_EQ(a.y, b.y);
+            ASSERT_EQ(a.z, b.z);
+        }
+}
+
+TEST(PngReader, OpaqueKindsReadAsOpenImageIOReadsThem) {
+    expect_same_as_oiio(write("rgb8.png", make_png(7, 5, 8, 2, rows_of(7, 5, 21))));
+    expect_same_as_oiio(write("rgb16.png", make_png(6, 4, 16, 2, rows_of(6, 4, 36))));
+    expect_same_as_oiio(write("gray8.png", make_png(9, 3, 8, 0, rows_of(9, 3, 9))));
+    expect_same_as_oiio(write("gray16.png", make_png(5, 3, 16, 0, rows_of(5, 3, 10))));
+    expect_same_as_oiio(write("gray1.png", make_png(16, 2, 1, 0, rows_of(16, 2, 2))));
+    expect_same_as_oiio(write("gray4.png", make_png(6, 2, 4, 0, rows_of(6, 2, 3))));
+    Bytes palette;
+    for (int i = 0; i < 16 * 3; ++i) palette.push_back(static_cast<unsigned char>(i * 5 + 3));
+    Bytes indices;  // 4-bit indices below 16
+    for (int y = 0; y < 3; ++y) {
+        indices.push_back(0);
+        for (int i = 0; i < 4; ++i) indices.push_back(static_cast<unsigned char>(((y + i) % 16) << 4 | (i * 3 % 16)));
+    }
+    expect_same_as_oiio(write("palette4.png", make_png(8, 3, 4, 3, indices, palette)));
+    // A known value: the stored byte over 255, and sRGB-decoded by default.
+    Bytes one = {0, 255, 128, 0};
+    const fs::path p = write("one.png", make_png(1, 1, 8, 2, one));
+    std::string error;
+    bool stored = false;
+    const auto raw = read_image(p, error, &stored);
+    ASSERT_TRUE(raw);
+    EXPECT_EQ(raw->pixel(0, 0).x, 1.0);
+    EXPECT_EQ(raw->pixel(0, 0).y, static_cast<double>(128.0f * (1.0f / 255.0f)));
+    EXPECT_NEAR(read_image(p, error)->pixel(0, 0).y, 0.2158605, 1e-6);
+}
+
+TEST(PngReader, AlphaAndOtherFilesAreLeftToOpenImageIO) {
+    const fs::path p = write("rgba8.png", make_png(3, 2, 8, 6, rows_of(3, 2, 12)));
+    int w = 0, h = 0;
+    std::vector<float> rgb;
+    EXPECT_FALSE(read_png_rgb(p, w, h, rgb));
+    std::string error;
+    bool alpha = false;
+    ASSERT_TRUE(read_image(p, error, nullptr, &alpha)) << error;
+    EXPECT_TRUE(alpha);
+    const fs::path text = write("not.png", Bytes{'h', 'e', 'l', 'l', 'o', '!', '!', '!', '!'});
+    EXPECT_FALSE(read_png_rgb(text, w, h, rgb));
+    EXPECT_FALSE(read_image(text, error).has_value());
+}
+
+/// A JPEG of pseudo-random smooth content, written by libjpeg at its defaults (4:2:0 for colour).
+fs::path write_jpeg(const std::string& name, int width, int height, int components) {
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "png_reader_test";
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    std::FILE* f = std::fopen(p.c_str(), "wb");
+    jpeg_compress_struct info;
+    jpeg_error_mgr errors;
+    info.err = jpeg_std_error(&errors);
+    jpeg_create_compress(&info);
+    jpeg_stdio_dest(&info, f);
+    info.image_width = width;
+    info.image_height = height;
+    info.input_components = components;
+    info.in_color_space = components == 1 ? JCS_GRAYSCALE : JCS_RGB;
+    jpeg_set_defaults(&info);
+    jpeg_set_quality(&info, 80, TRUE);
+    jpeg_start_compress(&info, TRUE);
+    std::vector<unsigned char> row(static_cast<std::size_t>(width) * components);
+    for (int y = 0; y < height; ++y) {
+        for (int i = 0; i < width * components; ++i) row[i] = static_cast<unsigned char>((i * 7 + y * 13) ^ (i * y));
+        JSAMPROW rows[1] = {row.data()};
+        jpeg_write_scanlines(&info, rows, 1);
+    }
+    jpeg_finish_compress(&info);
+    jpeg_destroy_compress(&info);
+    std::fclose(f);
+    return p;
+}
+
+TEST(JpegReader, GreyAndColourReadAsOpenImageIOReadsThem) {
+    expect_same_as_oiio(write_jpeg("colour.jpg", 37, 21, 3), true);
+    expect_same_as_oiio(write_jpeg("grey.jpg", 19, 11, 1), true);
+    int w = 0, h = 0;
+    std::vector<float> rgb;
+    EXPECT_FALSE(read_jpeg_rgb(write("rgb8-as-jpeg.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb));
+}
+
+}  // namespace
+}  // namespace wardray::render
