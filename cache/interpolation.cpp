@@ -87,11 +87,15 @@ InterpolationAccumulator::InterpolationAccumulator(const Vec3& p, const Vec3& n,
 
 bool InterpolationAccumulator::add(const IrradianceRecord& record) {
     const double eb = m_params.error_bound;
-    // Quick rejections first (most candidates fail one): facing away, or farther than ε alone allows.
+    // Quick rejections first (most candidates fail one): farther than ε alone allows, or facing away.
     if (!may_accept(record.position, record.normal, record.radius)) return false;
-    if (!(eb > 0.0) || !is_valid(record, m_p, m_n, eb)) return false;
+    // is_valid(), with ε and the behind measure computed once.
+    if (!(eb > 0.0)) return false;
     const double eps = record_error(record, m_p, m_n);
-    const double fade = front_fade(front_distance(record, m_p, m_n));
+    if (!(eps < eb)) return false;
+    const double front = front_distance(record, m_p, m_n);
+    if (!(front > -kFrontLimit)) return false;
+    const double fade = front_fade(front);
     // Ward, Rubinstein & Clear 1988's weight 1/ε, bounded at ε → 0 and shifted by 1/error_bound so it reaches
     // zero at the edge of validity (no seams where a record stops being valid).
     const double w = fade * (1.0 / std::max(eps, kWeightFloor * eb) - 1.0 / eb);

@@ -62,13 +62,15 @@ public:
     /// Tests `record` and adds it when valid; returns whether it was valid.
     bool add(const IrradianceRecord& record);
     /// A quick necessary condition for add() to accept a record at `position` with `normal` and (at least) `radius`:
-    /// facing the same side and near enough for ε alone.
+    /// near enough for ε alone and facing the same side (the distance first: it rejects most candidates).
     bool may_accept(const Vec3& position, const Vec3& normal, double radius) const {
-        if (!(dot(m_n, normal) > 0.0)) return false;
         const Vec3 d = m_p - position;
         const double reach = m_params.error_bound * radius;
-        return dot(d, d) < reach * reach;
+        if (!(dot(d, d) < reach * reach)) return false;
+        return dot(m_n, normal) > 0.0;
     }
+    /// The error bound of the lookup (LookupParams::error_bound).
+    double error_bound() const { return m_params.error_bound; }
     /// The weighted average so far.
     Interpolation result() const;
 

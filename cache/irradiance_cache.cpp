@@ -27,6 +27,20 @@ void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
     }
 }
 
+/// Adds the records of `tree` valid at p to `acc` in insertion order, so that the sum does not depend on how the
+/// tree files them.
+void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& tree, const Vec3& p) {
+    thread_local std::vector<std::uint32_t> candidates;
+    candidates.clear();
+    const auto& records = tree.records();
+    tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i) {
+        const IrradianceRecord& r = records[i];
+        if (acc.may_accept(r.position, r.normal, r.radius)) candidates.push_back(i);
+    });
+    std::sort(candidates.begin(), candidates.end());
+    for (const std::uint32_t i : candidates) acc.add(records[i]);
+}
+
 }  // namespace
 
 TileCache::TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {
@@ -40,11 +54,7 @@ Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const L
     // Then this tile's own records of the same depth.
     if (depth >= 0 && depth < static_cast<int>(m_own.size())) {
         const RecordOctree& own = m_own[static_cast<std::size_t>(depth)];
-        const auto& keys = own.keys();
-        own.visit(p, [&](std::uint32_t i) {
-            const RecordOctree::Key& k = keys[i];
-            if (acc.may_accept(k.position, k.normal, k.radius)) acc.add(own.records()[i]);
-        });
+        add_in_insertion_order(acc, own, p);
     }
     const Interpolation out = acc.result();
     ++m_lookups;
@@ -150,11 +160,7 @@ LookupParams IrradianceCache::clamp_params(int depth, const LookupParams& params
 void IrradianceCache::accumulate(InterpolationAccumulator& acc, const Vec3& p, int depth) const {
     if (depth < 0 || depth >= depth_count()) return;
     const RecordOctree& tree = m_octrees[static_cast<std::size_t>(depth)];
-    const auto& keys = tree.keys();
-    tree.visit(p, [&](std::uint32_t i) {
-        const RecordOctree::Key& k = keys[i];
-        if (acc.may_accept(k.position, k.normal, k.radius)) acc.add(tree.records()[i]);
-    });
+    add_in_insertion_order(acc, tree, p);
 }
 
 Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const {

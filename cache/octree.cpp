@@ -10,6 +10,9 @@ namespace {
 /// Levels below the root at most; smaller spheres are filed at this level (correct, only less selective).
 constexpr int kMaxLevels = 30;
 
+/// Filings at reach, reach/2, reach/4.
+constexpr int kFilings = 3;
+
 /// Cubes are widened by this fraction of their size in the overlap tests, so that rounding can only add a record
 /// to a node, never leave it out.
 constexpr double kSlack = 1e-9;
@@ -28,40 +31,46 @@ bool box_overlaps_cube(const Vec3& lo, const Vec3& hi, const Vec3& cube_min, dou
 
 }  // namespace
 
-RecordOctree::RecordOctree(double reach) : m_reach(std::isfinite(reach) ? std::max(reach, 1.0) : 1.0) {}
+RecordOctree::RecordOctree(double reach) {
+    const double r = std::isfinite(reach) ? std::max(reach, 1.0) : 1.0;
+    for (int k = 0; k < kFilings; ++k) m_filings.push_back(Filing{std::ldexp(r, -k), {}, -1});
+}
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
     const auto index = static_cast<std::uint32_t>(m_records.size());
     m_records.push_back(record);
-    m_keys.push_back({record.position, record.normal, record.radius});
-    const double s = m_reach * record.radius;
-    if (!is_finite(record.position) || !(s > 0.0) || !std::isfinite(s)) return index;
+    for (std::size_t k = 0; k < m_filings.size(); ++k) insert_into(m_filings[k], record, index, k == 0);
+    return index;
+}
+
+void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes) {
+    const double s = f.reach * record.radius;
+    if (!is_finite(record.position) || !(s > 0.0) || !std::isfinite(s)) return;
     const Vec3 lo = record.position - Vec3{s, s, s};
     const Vec3 hi = record.position + Vec3{s, s, s};
 
-    if (m_root < 0) {
+    if (f.root < 0) {
         // The first root: a power-of-two cube aligned to its size, so that later cube corners are exact.
         int e = 0;
         std::frexp(4.0 * s, &e);
         Node root;
         root.size = std::ldexp(1.0, e);
         for (int a = 0; a < 3; ++a) root.min[a] = std::floor(lo[a] / root.size) * root.size;
-        m_nodes.push_back(std::move(root));
-        m_root = 0;
+        f.nodes.push_back(std::move(root));
+        f.root = 0;
     }
-    grow_to_fit(lo, hi);
+    grow_to_fit(f, lo, hi);
 
     // Ward, Rubinstein & Clear 1988 file at the level whose cells are as wide as the sphere's diameter; one level
     // finer (cells as wide as its radius) costs up to 27 entries a record but fetches about 3x fewer candidates.
-    double target = m_nodes[m_root].size;
+    double target = f.nodes[f.root].size;
     for (int level = 0; level < kMaxLevels && target * 0.5 >= s; ++level) target *= 0.5;
-    file(index, m_root, lo, hi, target);
-    return index;
+    file(f, record, index, homes, f.root, lo, hi, target);
 }
 
-void RecordOctree::grow_to_fit(const Vec3& lo, const Vec3& hi) {
+void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
     for (;;) {
-        const Node& root = m_nodes[m_root];
+        const Node& root = f.nodes[f.root];
         bool fits = hi.x - lo.x <= root.size;
         for (int a = 0; a < 3; ++a) fits = fits && lo[a] >= root.min[a] && hi[a] < root.min[a] + root.size;
         if (fits) return;
@@ -77,47 +86,71 @@ void RecordOctree::grow_to_fit(const Vec3& lo, const Vec3& hi) {
                 bigger.min[a] = root.min[a];
             }
         }
-        bigger.children[octant] = m_root;
-        m_nodes.push_back(std::move(bigger));
-        m_root = static_cast<std::int32_t>(m_nodes.size() - 1);
+        bigger.children[octant] = f.root;
+        f.nodes.push_back(std::move(bigger));
+        f.root = static_cast<std::int32_t>(f.nodes.size() - 1);
     }
 }
 
-std::int32_t RecordOctree::child(std::int32_t node, int octant) {
-    if (m_nodes[node].children[octant] < 0) {
+std::int32_t RecordOctree::child(Filing& f, std::int32_t node, int octant) {
+    if (f.nodes[node].children[octant] < 0) {
         Node c;
-        c.size = 0.5 * m_nodes[node].size;
-        c.min = m_nodes[node].min + octant_offset(octant, c.size);
-        m_nodes.push_back(std::move(c));
-        m_nodes[node].children[octant] = static_cast<std::int32_t>(m_nodes.size() - 1);
+        c.size = 0.5 * f.nodes[node].size;
+        c.min = f.nodes[node].min + octant_offset(octant, c.size);
+        f.nodes.push_back(std::move(c));
+        f.nodes[node].children[octant] = static_cast<std::int32_t>(f.nodes.size() - 1);
     }
-    return m_nodes[node].children[octant];
+    return f.nodes[node].children[octant];
 }
 
-void RecordOctree::file(std::uint32_t index, std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
-    if (m_nodes[node].size <= target_size) {
-        m_nodes[node].records.push_back(index);
+void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes,
+                        std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
+    if (f.nodes[node].size <= target_size) {
+        Node& n = f.nodes[node];
+        n.index.push_back(index);
+        n.x.push_back(record.position.x);
+        n.y.push_back(record.position.y);
+        n.z.push_back(record.position.z);
+        n.radius.push_back(record.radius);
+        bool home = homes;
+        for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
+        if (home) n.homes.push_back(index);
         return;
     }
     // Into every child the sphere's box overlaps: at most three per axis once cells are as wide as its radius.
-    const double half = 0.5 * m_nodes[node].size;
+    const double half = 0.5 * f.nodes[node].size;
     for (int octant = 0; octant < 8; ++octant) {
-        const Vec3 cmin = m_nodes[node].min + octant_offset(octant, half);
-        if (box_overlaps_cube(lo, hi, cmin, half)) file(index, child(node, octant), lo, hi, target_size);
+        const Vec3 cmin = f.nodes[node].min + octant_offset(octant, half);
+        if (box_overlaps_cube(lo, hi, cmin, half)) file(f, record, index, homes, child(f, node, octant), lo, hi, target_size);
     }
+}
+
+std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
+                                   std::uint32_t* near) {
+    const std::size_t end = std::min(n.index.size(), begin + kScanChunk);
+    const double* x = n.x.data();
+    const double* y = n.y.data();
+    const double* z = n.z.data();
+    const double* r = n.radius.data();
+    std::size_t found = 0;
+    // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
+    for (std::size_t i = begin; i < end; ++i) {
+        const double dx = q.x - x[i], dy = q.y - y[i], dz = q.z - z[i];
+        const double reach = error_bound * r[i];
+        near[found] = n.index[i];
+        found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
+    }
+    return found;
 }
 
 void RecordOctree::within(std::int32_t node, const Vec3& centre, double radius,
                           std::vector<std::uint32_t>& found) const {
-    const Node& n = m_nodes[node];
+    const Node& n = m_filings.front().nodes[node];
     const Vec3 r{radius, radius, radius};
     if (!box_overlaps_cube(centre - r, centre + r, n.min, n.size)) return;
-    for (const std::uint32_t index : n.records) {
-        // A record is filed in up to 27 nodes; it is reported only from the one that holds its position.
-        const Vec3& p = m_keys[index].position;
-        bool home = true;
-        for (int a = 0; a < 3; ++a) home = home && p[a] >= n.min[a] && p[a] < n.min[a] + n.size;
-        if (home && length(p - centre) <= radius) found.push_back(index);
+    // A record is filed in up to 27 nodes; it is tested only in the one that holds its position.
+    for (const std::uint32_t index : n.homes) {
+        if (length(m_records[index].position - centre) <= radius) found.push_back(index);
     }
     for (const std::int32_t c : n.children) {
         if (c >= 0) within(c, centre, radius, found);
@@ -126,9 +159,9 @@ void RecordOctree::within(std::int32_t node, const Vec3& centre, double radius,
 
 void RecordOctree::for_each_within(const Vec3& centre, double radius,
                                    const std::function<void(std::uint32_t)>& visit) const {
-    if (m_root < 0 || !is_finite(centre) || !(radius >= 0.0)) return;
+    if (m_filings.front().root < 0 || !is_finite(centre) || !(radius >= 0.0)) return;
     std::vector<std::uint32_t> found;
-    within(m_root, centre, radius, found);
+    within(m_filings.front().root, centre, radius, found);
     // In insertion order.
     std::sort(found.begin(), found.end());
     for (const std::uint32_t index : found) visit(index);

@@ -15,6 +15,8 @@ namespace wardray::cache {
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
 /// are at least as wide as its sphere's radius and that its sphere's box overlaps (at most 27), so a lookup only
 /// walks from the root to the leaf holding the query point and tests each record it meets at most once.
+/// The records are filed three times, at reach, reach/2 and reach/4, so that a lookup with a small error bound
+/// (the pretrace's) walks a filing whose spheres are not much larger than its validity spheres.
 /// Not thread-safe for writing; any number of concurrent readers while nobody writes.
 class RecordOctree {
 public:
@@ -30,39 +32,32 @@ public:
     /// Mutable access for neighbour clamping: the radius may only shrink (the filing stays conservative).
     IrradianceRecord& record(std::uint32_t index) { return m_records[index]; }
     std::size_t size() const { return m_records.size(); }
-    double reach() const { return m_reach; }
+    double reach() const { return m_filings.front().reach; }
 
     /// Calls `visit(index)` for each record whose filed sphere may contain `q` (a superset of the records valid at q
     /// for any error bound ≤ reach), walking from the root to the leaf that holds q; deterministic order.
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
-        if (m_root < 0 || !is_finite(q)) return;
-        const Node& root = m_nodes[static_cast<std::size_t>(m_root)];
-        for (int a = 0; a < 3; ++a) {
-            if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
-        }
-        // Multi-resolution lookup (Ward, Rubinstein & Clear 1988): the records of every node from the root down
-        // to the leaf that holds q.
-        std::int32_t node = m_root;
-        while (node >= 0) {
-            const Node& n = m_nodes[static_cast<std::size_t>(node)];
-            for (const std::uint32_t index : n.records) visit(index);
-            const double half = 0.5 * n.size;
-            int octant = 0;
-            for (int a = 0; a < 3; ++a) {
-                if (q[a] >= n.min[a] + half) octant |= 1 << a;
-            }
-            node = n.children[static_cast<std::size_t>(octant)];
-        }
+        walk(m_filings.front(), q, [&](const Node& n) {
+            for (const std::uint32_t index : n.index) visit(index);
+        });
     }
-    /// Each record's position, normal and radius at filing, packed apart from its gradients so that lookups can
-    /// reject most candidates without touching the whole record (the radius may since have shrunk, never grown).
-    struct Key {
-        Vec3 position;
-        Vec3 normal;
-        double radius = 0.0;
-    };
-    const std::vector<Key>& keys() const { return m_keys; }
+    /// Calls `visit(index)` for the records with |q − position| < error_bound × radius (the radius at filing, which
+    /// is never smaller than the record's), from the tightest filing that holds them all; deterministic order,
+    /// but not visit()'s. Found by a branch-free scan of each node's packed positions and radii.
+    template <typename Visit>
+    void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
+        const Filing* filing = &m_filings.front();
+        for (const Filing& f : m_filings)
+            if (f.reach >= error_bound) filing = &f;
+        std::uint32_t near[kScanChunk];
+        walk(*filing, q, [&](const Node& n) {
+            for (std::size_t begin = 0; begin < n.index.size(); begin += kScanChunk) {
+                const std::size_t found = scan_near(n, q, error_bound, begin, near);
+                for (std::size_t i = 0; i < found; ++i) visit(near[i]);
+            }
+        });
+    }
     /// Calls `visit(index)` once for each record whose position lies within `radius` of `centre`.
     void for_each_within(const Vec3& centre, double radius, const std::function<void(std::uint32_t)>& visit) const;
 
@@ -71,19 +66,57 @@ private:
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
         Vec3 min;           ///< the cube [min, min + size)
         double size = 0.0;  ///< a power of two
-        std::vector<std::uint32_t> records;
+        /// The records filed here in insertion order: index, position and radius at filing, one array each.
+        std::vector<std::uint32_t> index;
+        std::vector<double> x, y, z, radius;
+        /// Of those, the records whose position lies in this node's cube (each record has one such home node in
+        /// the first filing), so that range queries test each record once.
+        std::vector<std::uint32_t> homes;
+    };
+    /// The nodes of one filing of every record, by spheres of radius reach × R_i.
+    struct Filing {
+        double reach = 1.0;
+        std::vector<Node> nodes;
+        std::int32_t root = -1;
     };
 
-    void grow_to_fit(const Vec3& lo, const Vec3& hi);
-    std::int32_t child(std::int32_t node, int octant);
-    void file(std::uint32_t index, std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size);
+    /// Calls `at(node)` for every node from `f`'s root down to the leaf that holds q (Ward, Rubinstein & Clear
+    /// 1988's multi-resolution lookup).
+    template <typename At>
+    static void walk(const Filing& f, const Vec3& q, At&& at) {
+        if (f.root < 0 || !is_finite(q)) return;
+        const Node& root = f.nodes[static_cast<std::size_t>(f.root)];
+        for (int a = 0; a < 3; ++a) {
+            if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
+        }
+        std::int32_t node = f.root;
+        while (node >= 0) {
+            const Node& n = f.nodes[static_cast<std::size_t>(node)];
+            at(n);
+            const double half = 0.5 * n.size;
+            int octant = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (q[a] >= n.min[a] + half) octant |= 1 << a;
+            }
+            node = n.children[static_cast<std::size_t>(octant)];
+        }
+    }
+
+    /// How many entries visit_near() tests in one scan.
+    static constexpr std::size_t kScanChunk = 64;
+    /// Writes to `near` the indices of the records among entries [begin, begin + kScanChunk) of `n` within
+    /// error_bound × radius of q; returns how many.
+    static std::size_t scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
+                                 std::uint32_t* near);
+    static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
+    static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
+    static std::int32_t child(Filing& f, std::int32_t node, int octant);
+    static void file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes, std::int32_t node,
+                     const Vec3& lo, const Vec3& hi, double target_size);
     void within(std::int32_t node, const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const;
 
-    double m_reach;
     std::vector<IrradianceRecord> m_records;
-    std::vector<Key> m_keys;
-    std::vector<Node> m_nodes;
-    std::int32_t m_root = -1;
+    std::vector<Filing> m_filings;  ///< reach, reach/2, reach/4
 };
 
 }  // namespace wardray::cache

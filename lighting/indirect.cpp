@@ -22,6 +22,18 @@ int rays_at_depth(const scene::RadiositySettings& rs, int depth) {
     return std::max(5, static_cast<int>(rs.count * std::ldexp(1.0, -depth)));
 }
 
+/// base^exponent as std::pow gives it, remembered per thread: every gather ray of a bounce asks the same.
+double gather_weight(double base, int exponent) {
+    thread_local double last_base = 0.0, last_value = 1.0;
+    thread_local int last_exponent = 0;
+    if (base != last_base || exponent != last_exponent) {
+        last_base = base;
+        last_exponent = exponent;
+        last_value = std::pow(base, exponent);
+    }
+    return last_value;
+}
+
 /// Cache mode: interpolate from the tile's cache view, or gather a new record when too few are valid.
 class CachedIrradiance final : public IndirectLight {
 public:
@@ -143,7 +155,7 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
     RayState next;
     next.level = static_cast<int>(1.5 * (state.gi_depth + 1));
     next.max_level = std::max(state.max_level, next.level + 1);
-    next.weight = std::max(rs.adc_bailout + kPovEpsilon, std::pow(0.5 * rs.brightness, state.gi_depth + 1));
+    next.weight = std::max(rs.adc_bailout + kPovEpsilon, gather_weight(0.5 * rs.brightness, state.gi_depth + 1));
     next.adc_bailout = rs.adc_bailout;
     next.gi_depth = state.gi_depth + 1;
     next.gather_ray = true;

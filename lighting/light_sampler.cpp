@@ -89,6 +89,12 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
         m_any_transparent = m_any_transparent || !opaque;
     }
     m_projected = ProjectedThrough::for_lights(scene);
+    for (const scene::Light& light : scene.lights) m_cones.push_back(spot_cone(light));
+}
+
+LightSampler::SpotCone LightSampler::spot_cone(const scene::Light& light) {
+    return {normalize(light.point_at - light.position), std::cos(light.radius * kDegrees),
+            std::cos(light.falloff * kDegrees)};
 }
 
 LightSampler::~LightSampler() = default;
@@ -236,13 +242,14 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     double attenuation = 1.0;
     if (light.type == Type::Spot) {
         // POV-Ray: cos α^tightness times the ramp from falloff (dark) to radius (full), angles in degrees.
-        const Vec3 axis = normalize(light.point_at - light.position);
-        const double cos_alpha = dot(-to_light, axis);
-        const double cos_radius = std::cos(light.radius * kDegrees);
-        const double cos_falloff = std::cos(light.falloff * kDegrees);
-        if (cos_alpha <= cos_falloff) return {};
-        if (light.tightness > 0.0) attenuation *= std::pow(cos_alpha, light.tightness);
-        if (cos_alpha < cos_radius) attenuation *= smooth_ramp(cos_falloff, cos_radius, cos_alpha);
+        const std::ptrdiff_t i = &light - m_scene.lights.data();
+        const SpotCone cone = i >= 0 && static_cast<std::size_t>(i) < m_cones.size() ? m_cones[i] : spot_cone(light);
+        const double cos_alpha = dot(-to_light, cone.axis);
+        if (cos_alpha <= cone.cos_falloff) return {};
+        // pow(x, 1) is x exactly; the common tightness 1 skips the call.
+        if (light.tightness == 1.0) attenuation *= cos_alpha;
+        else if (light.tightness > 0.0) attenuation *= std::pow(cos_alpha, light.tightness);
+        if (cos_alpha < cone.cos_radius) attenuation *= smooth_ramp(cone.cos_falloff, cone.cos_radius, cos_alpha);
     } else if (light.type == Type::Cylinder) {
         // POV-Ray's cylinder light: only points ahead of the light and within `falloff` of its axis are lit,
         // (1 − d/falloff)^tightness, with the same cubic ramp between radius and falloff (d: distance from the axis).
@@ -259,7 +266,9 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     }
     if (light.fade_distance > 0.0 && light.fade_power > 0.0 && distance > 0.0) {
         // POV-Ray: 2 / (1 + (d / fade_distance)^fade_power); no inverse-square law otherwise.
-        attenuation *= 2.0 / (1.0 + std::pow(distance / light.fade_distance, light.fade_power));
+        // The common fade_power 2 squares (correctly rounded, as pow is to within its last bit).
+        const double ratio = distance / light.fade_distance;
+        attenuation *= 2.0 / (1.0 + (light.fade_power == 2.0 ? ratio * ratio : std::pow(ratio, light.fade_power)));
     }
     if (attenuation <= 0.0) return {};
 

@@ -81,10 +81,19 @@ private:
     /// with `caustics`, each layer's also times POV-Ray's fake-caustics factor.
     Vec3 texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics) const;
 
+    /// A spotlight's cone, computed once per light instead of at every point it lights.
+    struct SpotCone {
+        Vec3 axis;                 ///< unit, from the light towards point_at
+        double cos_radius = 1.0;   ///< cos of the full-intensity half angle
+        double cos_falloff = 1.0;  ///< cos of the dark edge's half angle
+    };
+    static SpotCone spot_cone(const scene::Light& light);
+
     const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
-    bool m_any_transparent = false;
-    bool m_photon_shadows = false;  ///< a photon map carries the light refracted by photon targets      ///< some object can let light through (filter or transmit somewhere)
+    std::vector<SpotCone> m_cones;  ///< per light of m_scene.lights (meaningful for spotlights only)
+    bool m_any_transparent = false;  ///< some object can let light through (filter or transmit somewhere)
+    bool m_photon_shadows = false;   ///< a photon map carries the light refracted by photon targets
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
