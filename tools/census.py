@@ -1209,11 +1209,14 @@ def write_report(path, records, missing, info, extra=()):
     if missing:
         lines += [f"| not measured with this binary | {len(missing)} |"]
     n_stoch_match = sum(r["category"] == "match" for r in stochastic)
+    n_silent_known = sum(r["category"] == "differ-silently" and r["scene"] in KNOWN_REASONS for r in records)
     lines += [
         f"| stochastic (included above) | {len(stochastic)} ({n_stoch_match} match) |",
         "",
         f"Of the {clean} scenes that render with no \"not rendered yet\" warning (and POV-Ray renders), "
-        f"**{clean_match} match POV-Ray**; {counts['differ-silently']} scenes differ silently.",
+        f"**{clean_match} match POV-Ray**; {counts['differ-silently']} scenes differ silently, "
+        f"{n_silent_known} of them with a measured reason in tools/census_reasons.tsv (a tie, randomness, or "
+        f"POV-Ray's own quirk) and {counts['differ-silently'] - n_silent_known} unexplained.",
         "",
     ]
     if missing:
