@@ -94,8 +94,7 @@ void ObjectReader::apply_material(ObjectValue& ov, const MaterialValue& m, Modif
         }
     }
     if (m.interior_texture) add_interior_texture(ov, *m.interior_texture);
-    if (m.interior)
-        for (ObjectPart& part : ov.parts) part.object.interior = *m.interior;
+    if (m.interior) set_interior(ov, *m.interior);
 }
 
 void ObjectReader::add_interior_texture(ObjectValue& ov, const Texture& tx) {
