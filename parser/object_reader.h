@@ -37,7 +37,11 @@ protected:
     /// Reads `material { ... }` after its keyword (material.cpp).
     MaterialValue parse_material_body(const Token& kw);
     /// Gives `ov` a material's texture (as a texture statement would), interior texture and interior.
-    void apply_material(ObjectValue& ov, const MaterialValue& m, ModifierState& state);
+    void apply_material(ObjectValue& ov, const MaterialValue& m, const Token& kw, ModifierState& state);
+    /// A texture statement (or a material's texture) at `kw`: POV-Ray compat (Link_Textures), it goes on top of
+    /// the object's texture when it has a plain one of its own (from an earlier texture, pigment, normal or finish
+    /// statement, or the declared object it copies), and else becomes its texture.
+    void add_texture(ObjectValue& ov, const Texture& tx, const Token& kw, ModifierState& state);
     /// The interior an `interior` modifier of `ov` changes: the object's own, or the union's.
     Interior own_interior(const ObjectValue& ov) const;
     /// Gives `ov` an interior (an `interior` or `material` modifier): its own, or a union's, which its parts that

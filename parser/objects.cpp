@@ -324,13 +324,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
              }},
             {"texture",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
-                 if (state.textured) {
-                     // POV-Ray compat: further texture statements are layers on top of the first.
-                     r.texture_to_modify(ov).layers.push_back(r.parse_texture_body(kw));
-                 } else {
-                     r.texture_to_modify(ov) = r.parse_texture_body(kw);
-                     state.textured = true;
-                 }
+                 r.add_texture(ov, r.parse_texture_body(kw), kw, state);
              }},
             {"no_shadow",
              [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_shadow); }},
