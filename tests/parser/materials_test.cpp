@@ -167,6 +167,30 @@ TEST(Objects, CopiesOfADeclaredObjectHaveInteriorsOfTheirOwn) {
     EXPECT_EQ(s.objects[3].interior.ior, 1.5);
 }
 
+TEST(Objects, TextureLayersOverTheObjectsOwnTexture) {
+    // POV-Ray's Link_Textures: glasschess.pov's blocks say pigment { rgbf 0.9 } and then texture { Glass }, which
+    // goes on top; so does a texture given to a copy of a textured object. Without a texture of its own the
+    // statement is the object's texture.
+    const Scene s = parse_ok(R"(
+        #declare Glass = texture { pigment { rgbf <1, 1, 1, 1> } finish { specular 1 } }
+        #declare Red = sphere { 0, 1 texture { pigment { rgb x } } }
+        sphere { 0, 1 pigment { rgbf 0.9 } texture { Glass } }
+        object { Red texture { Glass } }
+        sphere { 0, 1 texture { Glass } }
+        union { sphere { 0, 1 } texture { pigment { rgb y } } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    ASSERT_EQ(s.objects[0].texture.layers.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color.filter, 0.9);
+    EXPECT_EQ(s.objects[0].texture.layers[0].finish.specular, 1.0);
+    ASSERT_EQ(s.objects[1].texture.layers.size(), 1u);
+    EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
+    EXPECT_EQ(s.objects[1].texture.layers[0].pigment.color.filter, 1.0);
+    EXPECT_TRUE(s.objects[2].texture.layers.empty());
+    EXPECT_TRUE(s.objects[3].texture.layers.empty());
+    EXPECT_EQ(s.objects[3].texture.pigment.color.g, 1.0);
+}
+
 TEST(Objects, MaterialRejectsWhatIsNotAMaterial) {
     const ParseResult r = parse_string("global_settings { assumed_gamma 1 }\n#declare P = pigment { rgb 1 }\n"
                                        "sphere { 0, 1 material { P } }\n",
