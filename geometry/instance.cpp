@@ -125,6 +125,9 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     if (!object.clipped_by.empty()) {
         // Only the parts of the surface inside every clipping object remain.
         auto clips = std::make_shared<std::vector<ShapeInstance>>();
+        // POV-Ray compat (Quadric::Compute_BBox at clipped_by): a clipped quadric's box is its own where it has
+        // one, within the clips'.
+        if (const auto* q = std::get_if<QuadricShape>(&inst.m_shape)) local = q->clipped_bounds();
         for (const scene::Object& c : object.clipped_by) {
             auto ci = create(c, index);
             if (!ci) return std::nullopt;
@@ -163,6 +166,13 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d.
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     SurfaceHits hits;
+    if (m_cull_by_bounds) {
+        // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
+        double s0 = 0.0, s1 = 0.0;
+        if (!slab_interval(m_world_bounds->lower, m_world_bounds->upper, origin, direction, s0, s1) ||
+            s1 < 1e-4 / length(direction))
+            return hits;
+    }
     if (m_bounds && !ray_in_bounds(local)) return hits;
     const SurfaceHits object_hits =
         std::visit([&](const auto& s) { return s.intersect_all(local, t_min, t_max); }, m_shape);

@@ -57,6 +57,10 @@ public:
     bool visible_to(RayKind kind) const;
     /// True for points inside the object (after `inverse`, and within every clipping object).
     bool inside(const Vec3& p_world) const;
+    /// POV-Ray compat (Find_Intersection): a top-level object is tested only on rays that meet its bounding box,
+    /// which changes the picture only where a clipped surface leaves its clip's box (a cylinder clipped by a
+    /// height field, whose inside reaches down without end); set for the clipped top-level objects.
+    void cull_by_bounds() { m_cull_by_bounds = m_clips != nullptr && m_world_bounds.has_value(); }
     /// Bounds of the surface, or nothing when the surface is unbounded (planes, quadrics).
     const std::optional<Bounds>& world_bounds() const { return m_world_bounds; }
     /// Bounds of the inside region, or nothing when it is unbounded (inverse objects, planes, discs).
@@ -91,6 +95,7 @@ private:
     bool m_no_image = false;
     bool m_no_reflection = false;
     bool m_no_radiosity = false;
+    bool m_cull_by_bounds = false;
 };
 
 }  // namespace wardray::geometry

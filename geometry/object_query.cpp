@@ -9,8 +9,10 @@ namespace wardray::geometry {
 
 std::optional<scene::QueryHit> ObjectQuery::trace(const scene::Object& object, const Vec3& origin,
                                                    const Vec3& direction) const {
-    const auto instance = ShapeInstance::create(object, 0);
+    auto instance = ShapeInstance::create(object, 0);
     if (!instance || !is_finite(origin) || !is_finite(direction) || direction == Vec3{}) return std::nullopt;
+    // POV-Ray's trace() goes through Find_Intersection, which tests the object's bounding box first.
+    instance->cull_by_bounds();
     const auto hit = instance->nearest(origin, direction, 0.0, std::numeric_limits<double>::infinity());
     if (!hit) return std::nullopt;
     return scene::QueryHit{hit->position, hit->normal};

@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "core/constants.h"
 #include "geometry/shape.h"
 #include "scene/scene.h"
 
@@ -18,8 +19,9 @@ public:
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
     /// Planes are unbounded: always nothing.
     std::optional<Bounds> bounds() const { return std::nullopt; }
-    /// True for points strictly below the plane (on the side opposite to the normal).
-    bool inside(const Vec3& p) const { return dot(m_normal, p) < m_distance; }
+    /// True for points below the plane (on the side opposite to the normal). POV-Ray compat (Plane::Inside):
+    /// points up to POV-Ray's epsilon above it count too, so a surface lying in the plane is inside it.
+    bool inside(const Vec3& p) const { return dot(m_normal, p) - m_distance < kPovEpsilon; }
     /// Signed distance to the plane (negative inside).
     double implicit(const Vec3& p) const { return dot(m_normal, p) - m_distance; }
 

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
+
 namespace wardray::geometry {
 
 std::optional<QuadricShape> QuadricShape::create(const scene::Quadric& q) {
@@ -26,6 +28,43 @@ Vec3 QuadricShape::gradient(const Vec3& p) const {
     return Vec3{2 * a.x * p.x + m.x * p.y + m.y * p.z, 2 * a.y * p.y + m.x * p.x + m.z * p.z,
                 2 * a.z * p.z + m.y * p.x + m.z * p.y} +
            m_q.linear;
+}
+
+std::optional<Bounds> QuadricShape::clipped_bounds() const {
+    // POV-Ray's coefficients: x² y² z² (A E H), half the mixed (B C F) and linear (D G I) ones, the constant J;
+    // those below its epsilon count as 0.
+    auto tiny = [](double v) { return std::fabs(v) < kPovEpsilon ? 0.0 : v; };
+    double a = tiny(m_q.squares.x), e = tiny(m_q.squares.y), h = tiny(m_q.squares.z);
+    double d = tiny(m_q.linear.x / 2.0), g = tiny(m_q.linear.y / 2.0), i = tiny(m_q.linear.z / 2.0);
+    double j = tiny(m_q.constant);
+    if (tiny(m_q.mixed.x / 2.0) != 0.0 || tiny(m_q.mixed.y / 2.0) != 0.0 || tiny(m_q.mixed.z / 2.0) != 0.0)
+        return std::nullopt;
+    // Linear terms: the centre moves to t, and the constant with it.
+    Vec3 t;
+    if (d != 0.0 || g != 0.0 || i != 0.0) {
+        auto centre = [&](double sq, double lin) { return sq != 0.0 ? -lin / sq : lin != 0.0 ? j / (2.0 * lin) : 0.0; };
+        t = {centre(a, d), centre(e, g), centre(h, i)};
+        d += a * t.x;
+        g += e * t.y;
+        i += h * t.z;
+        j -= t.x * (a * t.x + 2.0 * d) + t.y * (e * t.y + 2.0 * g) + t.z * (h * t.z + 2.0 * i);
+    }
+    if (a < 0.0) {
+        a = -a;
+        e = -e;
+        h = -h;
+        j = -j;
+    }
+    if (!(j < 0.0)) return std::nullopt;
+    constexpr double k_half_huge = 1e10;  // POV-Ray's BOUND_HUGE / 2
+    Vec3 lo{-k_half_huge, -k_half_huge, -k_half_huge}, hi{k_half_huge, k_half_huge, k_half_huge};
+    // POV-Ray's closed forms: all three squares positive, or two with the third 0.
+    if (e < 0.0 || h < 0.0 || int(a > 0.0) + int(e > 0.0) + int(h > 0.0) < 2) return std::nullopt;
+    // Ellipsoid, or a cylinder along the axis whose square is missing: the other axes reach sqrt(-J / square).
+    if (a > 0.0) lo.x = -(hi.x = std::sqrt(-j / a));
+    if (e > 0.0) lo.y = -(hi.y = std::sqrt(-j / e));
+    if (h > 0.0) lo.z = -(hi.z = std::sqrt(-j / h));
+    return Bounds{lo + t, hi + t};
 }
 
 SurfaceHits QuadricShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {

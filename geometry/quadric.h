@@ -18,6 +18,9 @@ public:
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
     /// Quadrics are treated as unbounded.
     std::optional<Bounds> bounds() const { return std::nullopt; }
+    /// POV-Ray's bounding box of a clipped quadric where it needs no clip box (Quadric::Compute_BBox): an ellipsoid
+    /// or a cylinder along an axis without mixed terms; nothing for the other forms.
+    std::optional<Bounds> clipped_bounds() const;
     /// True where the polynomial is negative.
     bool inside(const Vec3& p) const { return implicit(p) < 0.0; }
     /// The polynomial's value.

@@ -306,6 +306,7 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
             impl.skipped.push_back(i);
             continue;
         }
+        inst->cull_by_bounds();
         if (const auto& b = inst->world_bounds()) {
             impl.bounds = impl.bounds ? impl.bounds->merged(*b) : *b;
             if (inst->is_plain_mesh()) impl.meshes.push_back(*inst);

@@ -19,14 +19,14 @@
 
 namespace wardray::lighting {
 
-bool InteriorStack::contains(std::uint32_t o) const {
+bool InteriorStack::contains(const scene::Object& o) const {
     for (int i = 0; i < size; ++i)
-        if (objects[i] == o) return true;
+        if (scene::same_interior(*objects[i], o)) return true;
     return false;
 }
 
-void InteriorStack::push(std::uint32_t o) {
-    if (size < kMax) objects[size++] = o;
+void InteriorStack::push(const scene::Object& o) {
+    if (size < kMax) objects[size++] = &o;
 }
 
 namespace {
@@ -40,15 +40,15 @@ bool in_light_group(const scene::Object& o, int group) {
 
 }  // namespace
 
-bool hollow_ray(const scene::Scene& scene, const InteriorStack& interiors) {
+bool hollow_ray(const InteriorStack& interiors) {
     for (int i = 0; i < interiors.size; ++i)
-        if (!scene.objects[interiors.objects[i]].interior.hollow) return false;
+        if (!interiors.objects[i]->interior.hollow) return false;
     return true;
 }
 
-bool InteriorStack::remove(std::uint32_t o) {
+bool InteriorStack::remove(const scene::Object& o) {
     for (int i = size - 1; i >= 0; --i) {
-        if (objects[i] != o) continue;
+        if (!scene::same_interior(*objects[i], o)) continue;
         for (int j = i; j + 1 < size; ++j) objects[j] = objects[j + 1];
         --size;
         return true;
@@ -97,8 +97,10 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         const geometry::ObjectQuery query;
         for (std::size_t o = 0; o < crossings.size(); ++o) {
             const bool plane = std::holds_alternative<scene::Plane>(scene.objects[o].shape);
-            if (plane ? query.inside(scene.objects[o], origin) : crossings[o] % 2 == 1)
-                m_camera_interiors.push(static_cast<std::uint32_t>(o));
+            // POV-Ray compat: the top-level object's interior, once for the parts of a union that share it.
+            const scene::Object& object = scene.objects[o];
+            if ((plane ? query.inside(object, origin) : crossings[o] % 2 == 1) && !m_camera_interiors.contains(object))
+                m_camera_interiors.push(object);
         }
     }
     if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
@@ -118,7 +120,7 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     }
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
     // documentation describes, since media and fog then leave the camera's stretch of every ray out.
-    if ((m_media || !scene.fogs.empty()) && !hollow_ray(scene, m_camera_interiors))
+    if ((m_media || !scene.fogs.empty()) && !hollow_ray(m_camera_interiors))
         m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
                                 "expected.");
 }
@@ -157,7 +159,7 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     // atmosphere's media, then fog; a ray inside a non-hollow object passes none of them, nor does a radiosity
     // gather ray, or anything it leads to, unless the radiosity block says `media on` (apply_media checks its own).
     const bool volume = (m_rainbows || m_atmosphere) && (!state.gather_ray || m_volume_on_gathers) &&
-                        hollow_ray(m_scene, state.interiors);
+                        hollow_ray(state.interiors);
     if (volume && m_rainbows)
         colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
                                    cache::seed_from(ray.origin, direction, 0x5241494E));

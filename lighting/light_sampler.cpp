@@ -154,7 +154,7 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
     // inside no non-hollow object.
     auto fog_over = [&](double from, double to) {
         Vec3 t{1.0, 1.0, 1.0};
-        if (!fog.any() || !(to > from) || !hollow_ray(m_scene, interiors)) return t;
+        if (!fog.any() || !(to > from) || !hollow_ray(interiors)) return t;
         const media::Segment stretch{p + dir * from, dir, to - from};
         if (fog.media) t = m_media->transmittance(m_media->atmosphere(), stretch);
         if (fog.fog) t = t * fog.fog->transmittance(stretch);
@@ -174,9 +174,9 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         if (m_opaque[hit->object]) return {};
         // POV-Ray compat (ComputeShadowColour): the media of the interiors the ray is in dim it, media_attenuation
         // or not, when none of them is a non-hollow object.
-        if (m_media && interiors.size > 0 && hollow_ray(m_scene, interiors)) {
+        if (m_media && interiors.size > 0 && hollow_ray(interiors)) {
             media::MediaList inside;
-            for (int i = 0; i < interiors.size; ++i) inside.add(m_scene.objects[interiors.objects[i]].interior.media);
+            for (int i = 0; i < interiors.size; ++i) inside.add(interiors.objects[i]->interior.media);
             if (!inside.empty())
                 filter = filter * m_media->transmittance(inside, media::Segment{p + dir * t_origin, dir,
                                                                                  hit->t - t_origin});
@@ -188,19 +188,19 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         // POV-Ray compat (ComputeShadowTexture): a surface met from inside shows its interior texture.
         const bool inside = !object.interior_texture.empty() && dot(hit->normal, dir) > 0.0;
         const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
-        const double caustics = m_scene.objects[hit->object].interior.caustics;
+        const double caustics = object.interior.caustics;
         if (caustics != 0.0) {
             Caustics c{caustics, dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal, dir, {}};
             filter = filter * texture_filter(texture, hit->position, &c);
         } else {
             filter = filter * texture_filter(texture, hit->position, nullptr);
         }
-        const scene::Interior& interior = m_scene.objects[hit->object].interior;
-        if (interiors.contains(hit->object) && interior.fade_power > 0.0 &&
+        const scene::Interior& interior = object.interior;
+        if (interiors.contains(object) && interior.fade_power > 0.0 &&
             std::fabs(interior.fade_distance) > kPovEpsilon)
             filter = filter * media::interior_fade(interior, hit->t - t_origin);
         // Entering adds the interior, leaving removes it (POV-Ray's ComputeShadowMedia bookkeeping).
-        if (interiors.size == 0 || !interiors.remove(hit->object)) interiors.push(hit->object);
+        if (interiors.size == 0 || !interiors.remove(object)) interiors.push(object);
         if (max_abs_component(filter) < kPovEpsilon) return {};
         t_origin = hit->t;
         t0 = hit->t + m_geometry.self_intersection_offset(hit->position);

@@ -30,7 +30,7 @@ private:
 Vec3 Integrator::apply_media(const geometry::Ray& ray, const Vec3& direction, double depth, bool hit,
                              const RayState& state, const Vec3& colour, TraceContext& ctx) const {
     // POV-Ray compat: media fill only hollow objects; a ray inside a non-hollow one sees none.
-    if (!hollow_ray(m_scene, state.interiors)) return colour;
+    if (!hollow_ray(state.interiors)) return colour;
     // POV-Ray compat (GetRadiosityQualityFlags): gather rays' paths see media only with the radiosity block's
     // `media on`.
     if (state.gather_ray && !(m_scene.global.radiosity && m_scene.global.radiosity->media)) return colour;
@@ -40,8 +40,7 @@ Vec3 Integrator::apply_media(const geometry::Ray& ray, const Vec3& direction, do
     // The media of every interior the ray is in act together (ComputeTextureColour, only where a surface is hit).
     if (hit && state.interiors.size > 0) {
         media::MediaList inside;
-        for (int i = 0; i < state.interiors.size; ++i)
-            inside.add(m_scene.objects[state.interiors.objects[i]].interior.media);
+        for (int i = 0; i < state.interiors.size; ++i) inside.add(state.interiors.objects[i]->interior.media);
         c = m_media->along(inside, segment, c, lights);
     }
     // Then the atmosphere's media (TraceRay, before fog).

@@ -130,8 +130,9 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     layers[layer_count++] = &texture;
 
     const double bailout = state.adc_bailout;
-    const std::uint32_t object_id = s.hit->object;
-    const scene::Interior& interior = m_scene.objects[object_id].interior;
+    // POV-Ray compat: the interior is the leaf's (a CSG child's own, or the one it shares with its parent).
+    const scene::Object& owner = *s.object;
+    const scene::Interior& interior = owner.interior;
     Vec3 colour;
     Vec3 filter{1.0, 1.0, 1.0};  // what the layers so far let through
     double trans = 1.0;
@@ -172,10 +173,9 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
             // POV-Ray's ComputeRelativeIOR from the interiors the ray is in.
             const InteriorStack& in = state.interiors;
             if (in.size == 0) ior = interior.ior;
-            else if (in.contains(object_id))
-                ior = in.size == 1 ? 1.0 / interior.ior
-                                   : m_scene.objects[in.objects[in.size - 1]].interior.ior / interior.ior;
-            else ior = interior.ior / m_scene.objects[in.objects[in.size - 1]].interior.ior;
+            else if (in.contains(owner))
+                ior = in.size == 1 ? 1.0 / interior.ior : in.top().interior.ior / interior.ior;
+            else ior = interior.ior / in.top().interior.ior;
         }
         r.reflectivity = reflectivity(f, cos_i, ior, r.weight);
         // Metallic reflection is tinted by the pigment away from grazing angles.
@@ -229,7 +229,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
         // POV-Ray's interior fade over the distance travelled inside.
         Vec3 fade{1.0, 1.0, 1.0};
-        if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kPovEpsilon)
+        if (state.interiors.contains(owner) && std::fabs(interior.fade_distance) > kPovEpsilon)
             fade = media::interior_fade(interior, s.depth);
         colour += total_internal ? fade * through : fade * through * filter;
     }
@@ -278,22 +278,22 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const s
     next.weight = weight;
     // POV-Ray's interior bookkeeping: entering pushes the object, leaving the innermost pops it; the relative
     // index is outside over inside (the atmosphere's index is 1).
-    const std::uint32_t id = s.hit->object;
-    const double inner = m_scene.objects[id].interior.ior;
+    const scene::Object& owner = *s.object;
+    const double inner = owner.interior.ior;
     InteriorStack& in = next.interiors;
-    auto top_ior = [&]() { return m_scene.objects[in.objects[in.size - 1]].interior.ior; };
+    auto top_ior = [&]() { return in.top().interior.ior; };
     double ior = 1.0;
     if (in.size == 0) {
-        in.push(id);
+        in.push(owner);
         ior = 1.0 / inner;
-    } else if (in.objects[in.size - 1] == id) {
-        in.remove(id);
+    } else if (scene::same_interior(in.top(), owner)) {
+        in.remove(owner);
         ior = in.size == 0 ? inner : inner / top_ior();
-    } else if (in.remove(id)) {
+    } else if (in.remove(owner)) {
         ior = 1.0;
     } else {
         ior = top_ior() / inner;
-        in.push(id);
+        in.push(owner);
     }
     const Vec3& p = s.hit->position;
     const double offset = m_geometry.self_intersection_offset(p);

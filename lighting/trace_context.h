@@ -9,6 +9,7 @@
 
 namespace wardray::scene {
 struct Scene;
+struct Object;
 }  // namespace wardray::scene
 
 namespace wardray::cache {
@@ -54,22 +55,25 @@ struct TraceContext {
     Vec3 irradiance;
 };
 
-/// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), by object index.
+/// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), each named by the object whose
+/// surface the ray crossed (a CSG leaf): objects that share an interior (scene::same_interior) count as one.
 struct InteriorStack {
     static constexpr int kMax = 16;
-    std::array<std::uint32_t, kMax> objects{};
+    std::array<const scene::Object*, kMax> objects{};
     int size = 0;
 
-    /// True when the ray is inside object `o`.
-    bool contains(std::uint32_t o) const;
-    /// Enters object `o` (ignored beyond kMax interiors).
-    void push(std::uint32_t o);
-    /// Leaves object `o`; false when the ray was not inside it.
-    bool remove(std::uint32_t o);
+    /// True when the ray is inside the interior of object `o`.
+    bool contains(const scene::Object& o) const;
+    /// Enters the interior of `o` (ignored beyond kMax interiors).
+    void push(const scene::Object& o);
+    /// Leaves the interior of `o`; false when the ray was not inside it.
+    bool remove(const scene::Object& o);
+    /// The innermost interior's object (size > 0).
+    const scene::Object& top() const { return *objects[size - 1]; }
 };
 
 /// POV-Ray's IsHollowRay: the ray is inside no object whose interior is not hollow (fog reaches it).
-bool hollow_ray(const scene::Scene& scene, const InteriorStack& interiors);
+bool hollow_ray(const InteriorStack& interiors);
 
 /// What travels with a ray through the recursion: POV-Ray's trace level, weight (for adc_bailout) and interiors.
 struct RayState {

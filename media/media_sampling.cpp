@@ -458,6 +458,19 @@ void Walk::regular(const scene::Media& im, bool all_constant) {
 
 }  // namespace
 
+namespace {
+
+/// Calls `f` on every medium of the interiors of `o` and its CSG children (a child's own interior is the one rays
+/// inside it see).
+template <typename F>
+void for_each_interior_media(const scene::Object& o, const F& f) {
+    for (const scene::Media& m : o.interior.media) f(m);
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const scene::Object& child : csg->children) for_each_interior_media(child, f);
+}
+
+}  // namespace
+
 ParticipatingMedia::ParticipatingMedia(const scene::Scene& scene)
     : m_scene(scene), m_noise_generator(scene.global.noise_generator) {
     m_atmosphere.add(scene.media);
@@ -472,14 +485,14 @@ ParticipatingMedia::ParticipatingMedia(const scene::Scene& scene)
     };
     for (const scene::Media& m : scene.media) thresholds(m);
     for (const scene::Object& o : scene.objects)
-        for (const scene::Media& m : o.interior.media) thresholds(m);
+        for_each_interior_media(o, thresholds);
 }
 
 bool ParticipatingMedia::in_scene(const scene::Scene& scene) {
     if (!scene.media.empty()) return true;
-    for (const scene::Object& o : scene.objects)
-        if (!o.interior.media.empty()) return true;
-    return false;
+    bool any = false;
+    for (const scene::Object& o : scene.objects) for_each_interior_media(o, [&](const scene::Media&) { any = true; });
+    return any;
 }
 
 Vec3 ParticipatingMedia::along(const MediaList& media, const Segment& segment, const Vec3& colour,

@@ -385,9 +385,9 @@ void AppearanceReader::parse_reflection_block(Finish& f) {
     }
 }
 
-Interior AppearanceReader::parse_interior_body(const Token& /*kw*/) {
+Interior AppearanceReader::parse_interior_body(const Token& /*kw*/, const Interior& base) {
     expect("{");
-    Interior in;
+    Interior in = base;
     expand_macros();
     if (const Token& first = peek(); first.kind == TokenKind::Identifier && !is_keyword(first.text) &&
                                      lookup(first.text) != nullptr) {

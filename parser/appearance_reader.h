@@ -35,8 +35,9 @@ protected:
     Texture parse_tiles(const Token& kw);
     /// Reads the pigment, normal and finish identifiers that may open a plain texture's items.
     void parse_texture_part_identifiers(Texture& tx);
-    /// Reads `interior { ... }` after its keyword.
-    Interior parse_interior_body(const Token& kw);
+    /// Reads `interior { ... }` after its keyword. Its items change `base` (POV-Ray's Parse_Interior changes the
+    /// object's interior in place), unless it opens with a declared interior, which replaces it.
+    Interior parse_interior_body(const Token& kw, const Interior& base = {});
     /// Reads `media { ... }` after its keyword (media.cpp).
     Media parse_media_body(const Token& kw);
     /// Reads `scattering { type, colour ... }` into the media.

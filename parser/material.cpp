@@ -80,22 +80,31 @@ MaterialValue ObjectReader::parse_material_body(const Token& /*kw*/) {
     }
 }
 
-void ObjectReader::apply_material(ObjectValue& ov, const MaterialValue& m, ModifierState& state) {
-    if (m.texture) {
-        // As a texture statement would: the first replaces the object's texture, later ones are layers over it.
-        Texture& tx = texture_to_modify(ov);
-        if (state.textured) {
-            std::optional<Texture> linked = std::move(tx);
-            link_texture(linked, *m.texture);
-            tx = std::move(*linked);
-        } else {
-            tx = *m.texture;
-            state.textured = true;
-        }
+void ObjectReader::add_texture(ObjectValue& ov, const Texture& tx, const Token& kw, ModifierState& state) {
+    const bool compound = ov.compound || ov.parts.size() != 1;
+    const bool own = state.textured || (compound ? ov.texture.has_value() : ov.parts.front().has_texture);
+    Texture& to = texture_to_modify(ov);
+    state.textured = true;
+    if (!own) {
+        to = tx;
+        return;
     }
+    if (to.map_pattern.type != Pattern::Type::None || !to.texture_map.empty()) {
+        warn(kw, "POV-Ray cannot layer a texture over a patterned one (it stops with an error); this texture "
+                 "replaces it");
+        to = tx;
+        return;
+    }
+    std::optional<Texture> linked = std::move(to);
+    link_texture(linked, tx);
+    to = std::move(*linked);
+}
+
+void ObjectReader::apply_material(ObjectValue& ov, const MaterialValue& m, const Token& kw, ModifierState& state) {
+    // As a texture statement would: over the object's own texture, when it has one.
+    if (m.texture) add_texture(ov, *m.texture, kw, state);
     if (m.interior_texture) add_interior_texture(ov, *m.interior_texture);
-    if (m.interior)
-        for (ObjectPart& part : ov.parts) part.object.interior = *m.interior;
+    if (m.interior) set_interior(ov, *m.interior);
 }
 
 void ObjectReader::add_interior_texture(ObjectValue& ov, const Texture& tx) {
@@ -113,7 +122,7 @@ void ObjectReader::add_interior_texture(ObjectValue& ov, const Texture& tx) {
 }
 
 void ObjectReader::read_material_modifier(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
-    r.apply_material(ov, r.parse_material_body(kw), state);
+    r.apply_material(ov, r.parse_material_body(kw), kw, state);
 }
 
 void ObjectReader::read_interior_texture(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {

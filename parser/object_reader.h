@@ -37,7 +37,18 @@ protected:
     /// Reads `material { ... }` after its keyword (material.cpp).
     MaterialValue parse_material_body(const Token& kw);
     /// Gives `ov` a material's texture (as a texture statement would), interior texture and interior.
-    void apply_material(ObjectValue& ov, const MaterialValue& m, ModifierState& state);
+    void apply_material(ObjectValue& ov, const MaterialValue& m, const Token& kw, ModifierState& state);
+    /// A texture statement (or a material's texture) at `kw`: POV-Ray compat (Link_Textures), it goes on top of
+    /// the object's texture when it has a plain one of its own (from an earlier texture, pigment, normal or finish
+    /// statement, or the declared object it copies), and else becomes its texture.
+    void add_texture(ObjectValue& ov, const Texture& tx, const Token& kw, ModifierState& state);
+    /// The interior an `interior` modifier of `ov` changes: the object's own, or the union's.
+    Interior own_interior(const ObjectValue& ov) const;
+    /// Gives `ov` an interior (an `interior` or `material` modifier): its own, or a union's, which its parts that
+    /// have none share.
+    void set_interior(ObjectValue& ov, const Interior& in);
+    /// Gives a copy of a declared object interior ids of its own (POV-Ray's Copy_Object copies each interior).
+    void fresh_interior_ids(ObjectValue& ov);
     /// Gives `ov` an interior texture: layered over its own, or to each part of a union that has none.
     void add_interior_texture(ObjectValue& ov, const Texture& tx);
     /// The `material`, `interior_texture` and `double_illuminate` modifiers (material.cpp).
@@ -76,6 +87,7 @@ protected:
     virtual std::vector<Object> parse_object_list(const Token& kw, const std::vector<Object>* bounded_by) = 0;
 
     int m_light_group_count = 0;  ///< the light groups numbered so far (Light::group)
+    std::uint32_t m_interior_ids = 0;  ///< the interior ids given so far (Object::interior_id)
 };
 
 }  // namespace wardray::parser

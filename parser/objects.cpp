@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
@@ -57,6 +58,33 @@ void place_patches(Object& o, const Transform& tr) {
         for (Object& child : csg->children) place_patches(child, tr);
 }
 
+// POV-Ray compat (Transform_Object): a transform moves the media of every interior down the CSG tree.
+void transform_interiors(Object& o, const Transform& tr) {
+    for (Media& m : o.interior.media) transform_media(m, tr);
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) transform_interiors(child, tr);
+}
+
+// POV-Ray compat (Set_CSG_Children_Flag): `hollow` on a CSG is given to every child below it that did not say
+// `hollow` itself.
+void set_children_hollow(Object& o, bool hollow) {
+    auto* csg = std::get_if<Csg>(&o.shape);
+    if (csg == nullptr) return;
+    for (Object& child : csg->children) {
+        if (child.hollow_set) continue;
+        child.interior.hollow = hollow;
+        set_children_hollow(child, hollow);
+    }
+}
+
+// Gives `o` the interior `in`, keeping its own `hollow` (an object flag in POV-Ray, not an interior item).
+void replace_interior(Object& o, const Interior& in, std::uint32_t id) {
+    const bool hollow = o.interior.hollow;
+    o.interior = in;
+    o.interior.hollow = hollow;
+    o.interior_id = id;
+}
+
 /// Sets the flag `flag` (no_shadow, no_image, ...) on every part of the object.
 void set_flag(ObjectValue& ov, bool Object::*flag) {
     for (ObjectPart& part : ov.parts) part.object.*flag = true;
@@ -97,14 +125,15 @@ namespace {
 void copy_declared(ObjectValue& ov, const ObjectValue& declared) {
     constexpr std::size_t k_room = 8;
     // Every member, named so a new one fails to compile here until it is copied too.
-    auto& [parts, lights, compound, texture] = ov;
-    const auto& [from_parts, from_lights, from_compound, from_texture] = declared;
+    auto& [parts, lights, compound, texture, interior_id] = ov;
+    const auto& [from_parts, from_lights, from_compound, from_texture, from_interior_id] = declared;
     parts.clear();
     parts.reserve(from_parts.size() + k_room);
     parts.insert(parts.end(), from_parts.begin(), from_parts.end());
     lights = from_lights;
     compound = from_compound;
     texture = from_texture;
+    interior_id = from_interior_id;
 }
 
 }  // namespace
@@ -118,7 +147,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         if (v == nullptr) fail_undeclared(kw);
         const ObjectValue& declared = *std::get<Boxed<ObjectValue>>(*v);
         count_objects(kw, object_count(declared));
-        return declared;
+        ObjectValue copy = declared;
+        fresh_interior_ids(copy);
+        return copy;
     }
     if (w == "light_group") return parse_light_group(kw);
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
@@ -151,6 +182,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         next();
         ov = *std::get<Boxed<ObjectValue>>(*copied);
         count_objects(kw, object_count(ov));
+        fresh_interior_ids(ov);
     } else if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
         // POV-Ray compat: a tiny rotation "to fix cracks in text that lies along an axis".
@@ -163,6 +195,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) {
                 count_objects(at, object_count(**o));  // before copying, so a huge copy is never made
                 copy_declared(ov, **o);
+                fresh_interior_ids(ov);
             }
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
             parse_object_modifiers(ov, ov.compound);
@@ -182,6 +215,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
                 count_objects(id, object_count(**o));  // before copying, so a huge copy is never made
                 copy_declared(ov, **o);
+                fresh_interior_ids(ov);
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");
             }
@@ -255,8 +289,8 @@ void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
         part.object.transform = part.object.transform.then(tr);
         transform_textures(part.object, part.has_texture, tr);
         place_patches(part.object, tr);
-        // POV-Ray compat (Transform_Interior): the interior's media move with the object.
-        for (Media& m : part.object.interior.media) transform_media(m, tr);
+        // POV-Ray compat (Transform_Interior): the interiors' media move with the object.
+        transform_interiors(part.object, tr);
     }
     if (ov.texture) transform_texture(*ov.texture, tr);
     for (Light& l : ov.lights) transform_light(l, tr);
@@ -290,13 +324,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
              }},
             {"texture",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state) {
-                 if (state.textured) {
-                     // POV-Ray compat: further texture statements are layers on top of the first.
-                     r.texture_to_modify(ov).layers.push_back(r.parse_texture_body(kw));
-                 } else {
-                     r.texture_to_modify(ov) = r.parse_texture_body(kw);
-                     state.textured = true;
-                 }
+                 r.add_texture(ov, r.parse_texture_body(kw), kw, state);
              }},
             {"no_shadow",
              [](ObjectReader&, ObjectValue& ov, const Token&, ModifierState&) { set_flag(ov, &Object::no_shadow); }},
@@ -350,12 +378,18 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                      if (auto* c = std::get_if<Sor>(&part.object.shape)) c->open = true;
                  }
              }},
-            // POV-Ray compat: `hollow` on a CSG sets it on the children too; the interior rays see is the top-level
-            // object's here, so setting it on every part is the same.
+            // POV-Ray compat: `hollow` on a CSG (a union's parts here) sets it on the children that did not say it
+            // themselves, down the tree.
             {"hollow",
              [](ObjectReader& r, ObjectValue& ov, const Token&, ModifierState&) {
                  const bool hollow = r.parse_bool_optional();
-                 for (ObjectPart& part : ov.parts) part.object.interior.hollow = hollow;
+                 const bool single = !ov.compound && ov.parts.size() == 1;
+                 for (ObjectPart& part : ov.parts) {
+                     if (!single && part.object.hollow_set) continue;
+                     part.object.interior.hollow = hollow;
+                     part.object.hollow_set = part.object.hollow_set || single;
+                     set_children_hollow(part.object, hollow);
+                 }
              }},
             {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
             // POV-Ray compat: an acceleration hint of height fields, blobs and meshes; the picture is the same.
@@ -377,13 +411,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
              }},
             {"interior",
              [](ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState&) {
-                 const Interior interior = r.parse_interior_body(kw);
-                 // POV-Ray compat: `hollow` is the object's flag, kept whether it comes before or after.
-                 for (ObjectPart& part : ov.parts) {
-                     const bool hollow = part.object.interior.hollow;
-                     part.object.interior = interior;
-                     part.object.interior.hollow = hollow;
-                 }
+                 r.set_interior(ov, r.parse_interior_body(kw, r.own_interior(ov)));
              }},
             {"interior_texture", &read_interior_texture},
             {"material", &read_material_modifier},
@@ -401,6 +429,47 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected an object modifier or '}' but found '" + w + "'");
         }
+    }
+}
+
+Interior ObjectReader::own_interior(const ObjectValue& ov) const {
+    if (!ov.compound && ov.parts.size() == 1) return ov.parts.front().object.interior;
+    for (const ObjectPart& part : ov.parts)
+        if (ov.interior_id != 0 && part.object.interior_id == ov.interior_id) return part.object.interior;
+    return {};
+}
+
+void ObjectReader::set_interior(ObjectValue& ov, const Interior& in) {
+    if (!ov.compound && ov.parts.size() == 1) {
+        Object& o = ov.parts.front().object;
+        replace_interior(o, in, o.interior_id != 0 ? o.interior_id : ++m_interior_ids);
+        return;
+    }
+    // POV-Ray compat (Post_Process): a union's interior goes to the children that have none of their own, and
+    // they share it.
+    if (ov.interior_id == 0) ov.interior_id = ++m_interior_ids;
+    for (ObjectPart& part : ov.parts)
+        if (part.object.interior_id == 0 || part.object.interior_id == ov.interior_id)
+            replace_interior(part.object, in, ov.interior_id);
+}
+
+void ObjectReader::fresh_interior_ids(ObjectValue& ov) {
+    std::map<std::uint32_t, std::uint32_t> ids;
+    auto fresh = [&](std::uint32_t& id) {
+        if (id == 0) return;
+        auto [it, added] = ids.try_emplace(id, 0);
+        if (added) it->second = ++m_interior_ids;
+        id = it->second;
+    };
+    fresh(ov.interior_id);
+    std::vector<Object*> pending;
+    for (ObjectPart& part : ov.parts) pending.push_back(&part.object);
+    while (!pending.empty()) {
+        Object* o = pending.back();
+        pending.pop_back();
+        fresh(o->interior_id);
+        if (auto* csg = std::get_if<Csg>(&o->shape))
+            for (Object& child : csg->children) pending.push_back(&child);
     }
 }
 

@@ -387,9 +387,18 @@ std::optional<Object> Parser::as_single_object(ObjectValue& ov) {
     node.no_radiosity = first.no_radiosity;
     node.has_texture = ov.texture.has_value();
     node.texture = ov.texture.value_or(default_texture());
+    node.interior.hollow = first.interior.hollow;
+    // The union's own interior becomes the node's, which the parts that shared it inherit.
+    node.interior_id = ov.interior_id;
     Csg csg;
     for (ObjectPart& part : ov.parts) {
         part.object.has_texture = part.has_texture;
+        if (ov.interior_id != 0 && part.object.interior_id == ov.interior_id) {
+            const bool hollow = node.interior.hollow;
+            node.interior = part.object.interior;
+            node.interior.hollow = hollow;
+            part.object.interior_id = 0;
+        }
         csg.children.push_back(std::move(part.object));
     }
     node.shape = std::move(csg);
@@ -402,6 +411,7 @@ void Parser::make_union_node(ObjectValue& ov) {
     ov.parts.clear();
     ov.compound = false;
     ov.texture.reset();
+    ov.interior_id = 0;
     if (!node) return;
     ObjectPart part;
     part.has_texture = node->has_texture;

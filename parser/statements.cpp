@@ -153,15 +153,25 @@ void inherit_textures(Object& o) {
     }
 }
 
-// POV-Ray compat: an `ior` or `caustics` given in a plain texture's finish (3.1 syntax) becomes the object's interior ior, down
-// the tree, once the textures are inherited (Post_Process).
-void promote_finish_ior(Object& o) {
+// POV-Ray compat (Post_Process), down the tree once the textures are inherited: a child without an interior of its
+// own shares its CSG parent's (keeping its own `hollow`), and an `ior` or `caustics` given in a plain texture's
+// finish (3.1 syntax) becomes the object's interior's.
+void inherit_interiors(Object& o) {
     const Texture& tx = o.texture;
     const bool plain = tx.map_pattern.type == Pattern::Type::None && tx.texture_map.empty();
     if (plain && tx.finish.legacy_ior >= 0.0) o.interior.ior = tx.finish.legacy_ior;
     if (plain && tx.finish.legacy_caustics >= 0.0) o.interior.caustics = tx.finish.legacy_caustics;
-    if (auto* csg = std::get_if<Csg>(&o.shape))
-        for (Object& child : csg->children) promote_finish_ior(child);
+    auto* csg = std::get_if<Csg>(&o.shape);
+    if (csg == nullptr) return;
+    for (Object& child : csg->children) {
+        if (child.interior_id == 0) {
+            const bool hollow = child.interior.hollow;
+            child.interior = o.interior;
+            child.interior.hollow = hollow;
+            child.interior_id = o.interior_id;
+        }
+        inherit_interiors(child);
+    }
 }
 
 // POV-Ray compat (Post_Process): a CSG's photon flags that are set override its children's, down the tree.
@@ -217,6 +227,7 @@ void SceneReader::warn_uv_unsupported(const Object& o, bool in_csg) {
 void SceneReader::place_object(ObjectValue ov) {
     renumber_light_groups(ov);
     for (const ObjectPart& part : ov.parts) warn_uv_unsupported(part.object, false);
+    std::uint32_t shared_interior = 0;
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.
@@ -226,7 +237,13 @@ void SceneReader::place_object(ObjectValue ov) {
             part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
         inherit_textures(part.object);
-        promote_finish_ior(part.object);
+        // POV-Ray compat (Post_Process): a top-level object without an interior gets a new one, which the parts
+        // of a union without one share.
+        if (part.object.interior_id == 0) {
+            if (shared_interior == 0) shared_interior = ++m_interior_ids;
+            part.object.interior_id = shared_interior;
+        }
+        inherit_interiors(part.object);
         promote_photons(part.object);
         m_builder.add_object(std::move(part.object));
     }

@@ -71,6 +71,8 @@ struct ObjectValue {
     std::vector<Light> lights;
     bool compound = false;            ///< a union: its texture goes to the parts without one
     std::optional<Texture> texture;   ///< the union's own texture
+    /// The union's own interior, when it has one: the parts with this Object::interior_id share it.
+    std::uint32_t interior_id = 0;
 };
 
 /// The camera as written, before resolution to the final vectors.

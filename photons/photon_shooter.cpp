@@ -62,7 +62,7 @@ struct Unit {
     Aim aim;
     Vec3 light_direction;  ///< parallel, spot and cylinder lights: towards point_at
     double spread = 0.0, dtheta = 0.0, max_theta = 0.0;
-    std::vector<std::uint32_t> light_interiors;  ///< the objects containing the light's position
+    std::vector<const scene::Object*> light_interiors;  ///< the objects containing the light's position
 };
 
 void collect_parts(const scene::Object& o, std::vector<const scene::Object*>& out) {

@@ -28,13 +28,20 @@ bool switch_on(scene::PhotonSwitch object, scene::PhotonSwitch light) {
            (object != scene::PhotonSwitch::Off && light == scene::PhotonSwitch::On);
 }
 
+/// The index of the innermost entry of `interiors` that has the interior of `o`, or -1.
+std::ptrdiff_t find_interior(const std::vector<const scene::Object*>& interiors, const scene::Object& o) {
+    for (auto i = static_cast<std::ptrdiff_t>(interiors.size()) - 1; i >= 0; --i)
+        if (scene::same_interior(*interiors[i], o)) return i;
+    return -1;
+}
+
 }  // namespace
 
-std::vector<std::uint32_t> objects_containing(const scene::Scene& scene, const Vec3& p) {
-    std::vector<std::uint32_t> out;
+std::vector<const scene::Object*> objects_containing(const scene::Scene& scene, const Vec3& p) {
+    std::vector<const scene::Object*> out;
     const geometry::ObjectQuery query;
-    for (std::size_t o = 0; o < scene.objects.size(); ++o)
-        if (query.inside(scene.objects[o], p)) out.push_back(static_cast<std::uint32_t>(o));
+    for (const scene::Object& o : scene.objects)
+        if (query.inside(o, p) && find_interior(out, o) < 0) out.push_back(&o);
     return out;
 }
 
@@ -136,10 +143,10 @@ void PhotonTracer::texture(const scene::Texture& tx, const Vec3& p, std::vector<
 void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::vector<const scene::Pattern*>& warps,
                            const geometry::Hit& hit, const Vec3& raw, const RayIn& ray, Vec3 colour, double weight,
                            Path& path) const {
-    const std::uint32_t id = hit.object;
-    const scene::Interior& interior = m_scene.objects[id].interior;
-    const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[id];
-    const bool inside_this = std::find(ray.interiors.begin(), ray.interiors.end(), id) != ray.interiors.end();
+    // POV-Ray compat: the interior is the leaf's (a CSG child's own, or the one it shares with its parent).
+    const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
+    const scene::Interior& interior = leaf.interior;
+    const bool inside_this = find_interior(ray.interiors, leaf) >= 0;
     // POV-Ray's interior fade over the stretch travelled inside.
     if (inside_this && interior.fade_power > 0.0 && std::fabs(interior.fade_distance) > kPovEpsilon)
         colour = colour * media::interior_fade(interior, hit.t);
@@ -159,9 +166,9 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
     if (path.pass_this) {
         // POV-Ray compat: a pass_through object lets the photon on unchanged, and its depth is not taken back.
         RayIn next{hit.position, ray.dir, ray.interiors};
-        auto it = std::find(next.interiors.begin(), next.interiors.end(), id);
-        if (it != next.interiors.end()) next.interiors.erase(it);
-        else next.interiors.push_back(id);
+        const std::ptrdiff_t i = find_interior(next.interiors, leaf);
+        if (i >= 0) next.interiors.erase(next.interiors.begin() + i);
+        else next.interiors.push_back(&leaf);
         trace(next, colour, weight, path);
         return;
     }
@@ -199,7 +206,7 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
         double ior = 1.0;
         if (layer.finish.reflection_fresnel) {
             const auto& in = ray.interiors;
-            const double top = in.empty() ? 1.0 : m_scene.objects[in.back()].interior.ior;
+            const double top = in.empty() ? 1.0 : in.back()->interior.ior;
             if (in.empty()) ior = interior.ior;
             else if (inside_this) ior = in.size() == 1 ? 1.0 / interior.ior : top / interior.ior;
             else ior = interior.ior / top;
@@ -245,24 +252,24 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
 bool PhotonTracer::refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw, const RayIn& ray,
                            const Vec3& colour, const Vec3& filter, double weight, Path& path) const {
     // POV-Ray's interior bookkeeping and relative index, as for camera rays.
-    const std::uint32_t id = hit.object;
-    const double inner = m_scene.objects[id].interior.ior;
+    const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
+    const double inner = leaf.interior.ior;
     RayIn next{hit.position, ray.dir, ray.interiors};
     auto& in = next.interiors;
-    auto top_ior = [&]() { return m_scene.objects[in.back()].interior.ior; };
+    auto top_ior = [&]() { return in.back()->interior.ior; };
     double ior = 1.0;
     if (in.empty()) {
-        in.push_back(id);
+        in.push_back(&leaf);
         ior = 1.0 / inner;
-    } else if (in.back() == id) {
+    } else if (scene::same_interior(*in.back(), leaf)) {
         in.pop_back();
         ior = in.empty() ? inner : inner / top_ior();
-    } else if (auto it = std::find(in.begin(), in.end(), id); it != in.end()) {
-        in.erase(it);
+    } else if (const std::ptrdiff_t i = find_interior(in, leaf); i >= 0) {
+        in.erase(in.begin() + i);
         ior = 1.0;
     } else {
         ior = top_ior() / inner;
-        in.push_back(id);
+        in.push_back(&leaf);
     }
     if (std::fabs(ior - 1.0) < kPovEpsilon) {
         trace(next, colour * filter, weight, path);

@@ -22,11 +22,11 @@ struct ShotUnit {
     double spread = 0.0;   ///< POV-Ray's photonSpread: the angle (or, parallel, the distance) between photons
     bool parallel = false;
     /// The objects that contain the light's position (the ray starts inside them), for photons that start there.
-    const std::vector<std::uint32_t>* light_interiors = nullptr;
+    const std::vector<const scene::Object*>* light_interiors = nullptr;
 };
 
 /// The objects of `scene` that contain `p` (POV-Ray starts a photon's ray inside them).
-std::vector<std::uint32_t> objects_containing(const scene::Scene& scene, const Vec3& p);
+std::vector<const scene::Object*> objects_containing(const scene::Scene& scene, const Vec3& p);
 
 /// Traces photons; stateless, so one instance serves every thread.
 class PhotonTracer {
@@ -42,7 +42,9 @@ private:
     struct Path;
     struct RayIn {
         Vec3 origin, dir;
-        std::vector<std::uint32_t> interiors;  ///< the objects the ray is inside, innermost last
+        /// The interiors the ray is inside, innermost last, each named by an object that has it (as
+        /// lighting::InteriorStack).
+        std::vector<const scene::Object*> interiors;
     };
     /// POV-Ray's PhotonTrace::TraceRay.
     void trace(const RayIn& ray, Vec3 colour, double weight, Path& path) const;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string_view>
 #include <type_traits>
 #include <variant>
@@ -58,7 +59,14 @@ struct Object {
     Shape shape;
     Transform transform;  ///< object space to world space, in the order the keywords appeared
     Texture texture;
+    /// The interior rays see inside this object: its own, or after parsing its CSG parent's when it has none.
     Interior interior;
+    /// Which interior this is (POV-Ray's Interior pointer): objects with the same nonzero id share one interior
+    /// (the children that inherit it from their CSG parent), which POV-Ray's ray interior list counts once. 0
+    /// while parsing means none of its own yet; an object built without the parser with 0 is its own interior.
+    std::uint32_t interior_id = 0;
+    /// `hollow` was given on this object itself (POV-Ray's HOLLOW_SET_FLAG): a CSG's `hollow` leaves it alone.
+    bool hollow_set = false;
     bool inverse = false;
     bool no_shadow = false;
     bool no_image = false;
@@ -83,6 +91,12 @@ struct Object {
     SourceLoc loc;
     bool operator==(const Object&) const = default;
 };
+
+/// POV-Ray's test of two objects' Interior pointers: true when `a` and `b` have one interior (the same object, or
+/// an interior a CSG's children share).
+inline bool same_interior(const Object& a, const Object& b) {
+    return &a == &b || (a.interior_id != 0 && a.interior_id == b.interior_id);
+}
 
 namespace detail {
 

@@ -197,5 +197,35 @@ TEST(HeightField, FunctionImageSamplesTheUnitSquareFromTheTop) {
     expect_height(1, 1, 0.125);
 }
 
+TEST(HeightField, ClippedQuadricIsCulledByTheClipBoxAsPovRayDoes) {
+    // hfclip.pov: an infinite cylinder quadric clipped by a height field. The field's inside reaches down without
+    // end, but POV-Ray tests a clipped top-level object only on rays that meet its bounding box (the clip's box,
+    // narrowed to the cylinder's own x and z extent): trace() from POV-Ray 3.7 finds the wall at y = 0.5 and
+    // nothing at y = -0.5, and min_extent is <-1, 0.0156, -1> for this field (heights 0.0078 to 0.9883, scale 2).
+    parser::ParseOptions options;
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\n"
+        "quadric { <1, 0, 1>, <0, 0, 0>, <0, 0, 0>, -1\n"
+        "  clipped_by { height_field { function 9, 9 { 0.0078 + 0.98 * x } translate <-0.5, 0, -0.5> "
+        "scale <6, 2, 6> } } }",
+        "hfclip.pov", options);
+    ASSERT_TRUE(r.ok());
+    const scene::Object& o = r.scene->objects.front();
+    auto culled = ShapeInstance::create(o, 0);
+    ASSERT_TRUE(culled);
+    culled->cull_by_bounds();
+    ASSERT_TRUE(culled->world_bounds());
+    EXPECT_DOUBLE_EQ(culled->world_bounds()->lower.x, -1.0);
+    EXPECT_DOUBLE_EQ(culled->world_bounds()->upper.z, 1.0);
+    const auto wall = culled->nearest({0, 0.5, -5}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_TRUE(wall);
+    EXPECT_NEAR(wall->t, 4.0, 1e-9);
+    EXPECT_FALSE(culled->nearest({0, -0.5, -5}, {0, 0, 1}, 0.0, 1e30));
+    // Below the field its inside still holds, so a CSG child (never culled) keeps the wall there.
+    const auto child = ShapeInstance::create(o, 0);
+    ASSERT_TRUE(child);
+    EXPECT_TRUE(child->nearest({0, -0.5, -5}, {0, 0, 1}, 0.0, 1e30));
+}
+
 }  // namespace
 }  // namespace wardray::geometry

@@ -164,6 +164,9 @@ TEST(DirectLighting, FogDimsLightsWithMediaAttenuationAndFillsOnlyHollowObjects)
     // Black fog of distance 5: the camera ray (1 unit) keeps exp(-1/5); a light 10 units away with
     // media_attenuation is dimmed by exp(-10/5) more (POV-Ray's ComputeShadowMedia).
     scene::Scene scene = floor_scene();
+    // The camera where radiance_at's rays start (its default, the origin, lies in the floor, which POV-Ray's plane
+    // inside test counts as inside it).
+    scene.camera.location = {0.0, 1.0, 0.0};
     scene.lights.push_back(point_light({0, 10, 0}));
     scene::Fog fog;
     fog.distance = 5.0;

@@ -101,6 +101,96 @@ TEST(Objects, MaterialFromAnArrayElement) {
     EXPECT_EQ(s.objects[0].interior.ior, 1.3);
 }
 
+/// The CSG children of `o` (a merge or other CSG node).
+const std::vector<Object>& children(const Object& o) { return std::get<Csg>(o.shape).children; }
+
+TEST(Objects, CsgChildrenKeepTheirOwnInteriorAndShareTheInheritedOne) {
+    // POV-Ray's Post_Process: a child without an interior shares its CSG's; one with its own keeps it (wineglass.pov
+    // merges glass parts that each have their own), in a merge and in a union alike; `hollow` on the CSG reaches
+    // the children that did not say it themselves.
+    const Scene s = parse_ok(R"(
+        #declare I = interior { ior 1.45 fade_distance 2 fade_power 1 }
+        merge {
+          cylinder { 0, y, 1 interior { I } }
+          sphere { 0, 1 hollow off }
+          sphere { x, 1 }
+          interior { ior 1.3 }
+          hollow
+        }
+        union {
+          cylinder { 0, y, 1 interior { ior 1.9 } }
+          sphere { 0, 1 }
+          sphere { x, 1 }
+          interior { ior 1.2 }
+        }
+        sphere { 0, 1 interior { ior 1.5 fade_distance 3 } interior { ior 1.7 } }
+        union { sphere { 0, 1 } sphere { x, 1 } }
+    )");
+    ASSERT_EQ(s.objects.size(), 7u);
+    const std::vector<Object>& merged = children(s.objects[0]);
+    ASSERT_EQ(merged.size(), 3u);
+    EXPECT_EQ(merged[0].interior.ior, 1.45);
+    EXPECT_EQ(merged[0].interior.fade_distance, 2.0);
+    EXPECT_EQ(merged[1].interior.ior, 1.3);
+    EXPECT_EQ(merged[2].interior.ior, 1.3);
+    EXPECT_FALSE(same_interior(merged[0], merged[1]));
+    EXPECT_TRUE(same_interior(merged[1], merged[2]));
+    EXPECT_TRUE(same_interior(merged[1], s.objects[0]));
+    EXPECT_TRUE(merged[0].interior.hollow);
+    EXPECT_FALSE(merged[1].interior.hollow);
+    EXPECT_TRUE(merged[2].interior.hollow);
+    // The union's parts: its interior goes only to those without one, and they share it.
+    EXPECT_EQ(s.objects[1].interior.ior, 1.9);
+    EXPECT_EQ(s.objects[2].interior.ior, 1.2);
+    EXPECT_EQ(s.objects[3].interior.ior, 1.2);
+    EXPECT_FALSE(same_interior(s.objects[1], s.objects[2]));
+    EXPECT_TRUE(same_interior(s.objects[2], s.objects[3]));
+    EXPECT_FALSE(same_interior(s.objects[0], s.objects[2]));
+    // A second interior statement changes the object's interior in place (POV-Ray's Parse_Interior).
+    EXPECT_EQ(s.objects[4].interior.ior, 1.7);
+    EXPECT_EQ(s.objects[4].interior.fade_distance, 3.0);
+    // A union without an interior: its parts share the new one POV-Ray gives it.
+    EXPECT_TRUE(same_interior(s.objects[5], s.objects[6]));
+    EXPECT_FALSE(same_interior(s.objects[4], s.objects[5]));
+}
+
+TEST(Objects, CopiesOfADeclaredObjectHaveInteriorsOfTheirOwn) {
+    // POV-Ray's Copy_Object copies the interior: two copies of one glass union are two interiors.
+    const Scene s = parse_ok(R"(
+        #declare U = union { sphere { 0, 1 } sphere { x, 1 } interior { ior 1.5 } }
+        union { object { U } object { U translate y } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_TRUE(same_interior(s.objects[0], s.objects[1]));
+    EXPECT_TRUE(same_interior(s.objects[2], s.objects[3]));
+    EXPECT_FALSE(same_interior(s.objects[0], s.objects[2]));
+    EXPECT_EQ(s.objects[3].interior.ior, 1.5);
+}
+
+TEST(Objects, TextureLayersOverTheObjectsOwnTexture) {
+    // POV-Ray's Link_Textures: glasschess.pov's blocks say pigment { rgbf 0.9 } and then texture { Glass }, which
+    // goes on top; so does a texture given to a copy of a textured object. Without a texture of its own the
+    // statement is the object's texture.
+    const Scene s = parse_ok(R"(
+        #declare Glass = texture { pigment { rgbf <1, 1, 1, 1> } finish { specular 1 } }
+        #declare Red = sphere { 0, 1 texture { pigment { rgb x } } }
+        sphere { 0, 1 pigment { rgbf 0.9 } texture { Glass } }
+        object { Red texture { Glass } }
+        sphere { 0, 1 texture { Glass } }
+        union { sphere { 0, 1 } texture { pigment { rgb y } } }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    ASSERT_EQ(s.objects[0].texture.layers.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color.filter, 0.9);
+    EXPECT_EQ(s.objects[0].texture.layers[0].finish.specular, 1.0);
+    ASSERT_EQ(s.objects[1].texture.layers.size(), 1u);
+    EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
+    EXPECT_EQ(s.objects[1].texture.layers[0].pigment.color.filter, 1.0);
+    EXPECT_TRUE(s.objects[2].texture.layers.empty());
+    EXPECT_TRUE(s.objects[3].texture.layers.empty());
+    EXPECT_EQ(s.objects[3].texture.pigment.color.g, 1.0);
+}
+
 TEST(Objects, MaterialRejectsWhatIsNotAMaterial) {
     const ParseResult r = parse_string("global_settings { assumed_gamma 1 }\n#declare P = pigment { rgb 1 }\n"
                                        "sphere { 0, 1 material { P } }\n",
