@@ -300,6 +300,14 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradients = options.gi_gradients;
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
+    // POV-Ray compat: a mesh_camera's rays start on its mesh, and the objects they start inside are those around
+    // the first ray's origin (the first pixel, in reading order, that has a ray: the first POV-Ray traces).
+    if (scene.camera.type == scene::Camera::Type::MeshCamera) {
+        const camera::CameraModel model(scene.camera, options.width, options.height, scene.global.noise_generator);
+        for (int i = 0; i < options.width * options.height && !settings.camera_origin; ++i)
+            if (const auto first = model.ray(i % options.width + 0.5, i / options.width + 0.5))
+                settings.camera_origin = first->origin;
+    }
     // The photon pass runs here, in the integrator's construction, when the scene has a photons block.
     illumination.integrator = std::make_unique<lighting::Integrator>(scene, geometry, settings);
     for (const std::string& limitation : illumination.integrator->limitations())

@@ -118,8 +118,11 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         shape = make_shape(object.shape);
     }
     if (!shape) return std::nullopt;
+    // POV-Ray compat: an inverted plane is the plane with its normal and distance negated (Plane::Invert).
+    const auto* plane = std::get_if<PlaneShape>(&*shape);
+    if (plane && inverted) shape = AnyShape(plane->inverted());
     ShapeInstance inst(*shape, object, index);
-    inst.m_inverse = inverted && !csg;
+    inst.m_inverse = inverted && !csg && !plane;
     std::optional<Bounds> local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
     if (!object.clipped_by.empty()) {

@@ -19,9 +19,12 @@ public:
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
     /// Planes are unbounded: always nothing.
     std::optional<Bounds> bounds() const { return std::nullopt; }
-    /// True for points below the plane (on the side opposite to the normal). POV-Ray compat (Plane::Inside):
-    /// points up to POV-Ray's epsilon above it count too, so a surface lying in the plane is inside it.
+    /// True for points below the plane (on the side opposite to the normal) and those on it. POV-Ray compat:
+    /// Plane::Inside tests dot(n̂, p) - d < EPSILON, so a CSG keeps a surface that coincides with a plane's.
     bool inside(const Vec3& p) const { return dot(m_normal, p) - m_distance < kPovEpsilon; }
+    /// The plane with its inside and outside swapped. POV-Ray compat: `inverse` negates a plane's normal and
+    /// distance (Plane::Invert), so the points on it stay inside, which flipping the inside test would lose.
+    PlaneShape inverted() const { return PlaneShape(-m_normal, -m_distance); }
     /// Signed distance to the plane (negative inside).
     double implicit(const Vec3& p) const { return dot(m_normal, p) - m_distance; }
 

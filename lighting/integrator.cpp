@@ -79,10 +79,11 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         m_indirect = make_reference_irradiance(*this, options.reference_rays);
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
-    // crossings along one ray from the camera.
+    // crossings along one ray from the camera. POV-Ray finds it once, at the origin of the first camera ray
+    // (InitRayContainerState), which for a mesh_camera is on the camera mesh, not at `location` (an offset there).
     {
         std::vector<int> crossings(scene.objects.size(), 0);
-        const Vec3 origin = scene.camera.location;
+        const Vec3 origin = options.camera_origin.value_or(scene.camera.location);
         const Vec3 dir = normalize(Vec3{0.1234, 0.9871, 0.0456});
         double t0 = geometry.self_intersection_offset(origin);
         for (int i = 0; i < 4096; ++i) {

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct IntegratorOptions {
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
     double footprint = 0.0;
+    /// Where camera rays start, for finding the objects they start inside, when that is not the camera's
+    /// location (mesh_camera: its first ray's origin on the camera mesh); nothing: the camera's location.
+    std::optional<Vec3> camera_origin;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it

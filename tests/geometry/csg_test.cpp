@@ -184,6 +184,39 @@ TEST(Csg, IntersectionWithPlaneIsBounded) {
     EXPECT_NEAR(h->t, 4.75, 1e-12);
 }
 
+// POV-Ray compat: a plane's inside includes the points on it (Plane::Inside's EPSILON), and `inverse` negates
+// the plane, so they stay inside then too. radiosity_36.pov's walls cut a box and a tunnel whose floors coincide
+// at y = 0.3: the box cut's floor is kept wherever rounding puts the hit, and no ray falls through the floor.
+TEST(Csg, CoincidentFloorOfABoxCutAndAnInversePlaneIsKept) {
+    scene::Csg tunnel;
+    tunnel.op = scene::Csg::Op::Intersection;
+    tunnel.children.push_back(make_object(scene::Box{{-2, -1, -12}, {2, 2.3, 12}}));
+    scene::Object above = make_object(scene::Plane{{0, 1, 0}, 0.3});
+    above.inverse = true;
+    tunnel.children.push_back(above);
+    scene::Csg walls;
+    walls.op = scene::Csg::Op::Difference;
+    walls.children.push_back(make_object(scene::Box{{-10, -0.1, -10}, {10, 4, 10}}));
+    walls.children.push_back(make_object(scene::Box{{-9, 0.3, -9}, {9, 3.5, 9}}));
+    walls.children.push_back(make_object(tunnel));
+    const auto inst = ShapeInstance::create(make_object(walls), 0);
+    ASSERT_TRUE(inst);
+    Random rng(11);
+    int through = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3 origin{rng.uniform(-1.5, 1.5), rng.uniform(0.5, 3.0), rng.uniform(-8, 8)};
+        const Vec3 dir = normalize(Vec3{rng.uniform(-0.5, 0.5), -1.0, rng.uniform(-0.5, 0.5)});
+        const auto h = inst->nearest(origin, dir, 0.0, 1e30);
+        ASSERT_TRUE(h);
+        if (std::fabs(h->position.y - 0.3) > 1e-9) ++through;
+    }
+    EXPECT_EQ(through, 0);
+    const auto plane = ShapeInstance::create(above, 0);
+    EXPECT_TRUE(plane->inside({0, 0.3, 0}));
+    EXPECT_TRUE(plane->inside({0, 0.3 - 1e-11, 0}));
+    EXPECT_FALSE(plane->inside({0, 0.2, 0}));
+}
+
 TEST(Csg, ClippedByKeepsOnlyTheSurfaceInsideTheClip) {
     scene::Object obj = make_object(scene::Sphere{{0, 0, 0}, 1});
     obj.clipped_by.push_back(make_object(scene::Plane{{0, 0, 1}, 0.0}));

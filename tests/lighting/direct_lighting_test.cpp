@@ -30,8 +30,10 @@ scene::Light point_light(const Vec3& p, double intensity = 1.0) {
     return l;
 }
 
-// Radiance seen looking straight down at floor point (x, 0, z) from height 1.
-double radiance_at(const scene::Scene& scene, double x, double z, GiMode gi = GiMode::Off) {
+// Radiance seen looking straight down at floor point (x, 0, z) from height 1. The camera is put where the ray
+// starts (above the floor: at the default location it would lie on the floor plane, which counts as inside it).
+double radiance_at(scene::Scene scene, double x, double z, GiMode gi = GiMode::Off) {
+    scene.camera.location = {x, 1.0, z};
     const geometry::SceneGeometry geometry(scene);
     const Integrator integrator(scene, geometry, {gi});
     TraceContext counters;
