@@ -14,11 +14,12 @@
 #include "geometry/disc.h"
 #include "geometry/height_field.h"
 #include "geometry/isosurface.h"
+#include "geometry/julia_fractal.h"
 #include "geometry/lathe.h"
 #include "geometry/mesh.h"
 #include "geometry/plane.h"
 #include "geometry/quadric.h"
-#include "geometry/quartic.h"
+#include "geometry/poly.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/sor.h"
 #include "geometry/sphere.h"
@@ -32,8 +33,8 @@ namespace wardray::geometry {
 
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
-                              QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, IsosurfaceShape, HeightFieldShape, CsgShape>;
+                              QuadricShape, PolyShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
+                              TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).
