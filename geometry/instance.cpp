@@ -133,6 +133,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
             clips->push_back(std::move(*ci));
         }
         inst.m_clips = std::move(clips);
+        inst.keep_all_crossings();
         if (local && local->empty()) local = Bounds{local->lower, local->lower};
         if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
@@ -164,8 +165,16 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     SurfaceHits hits;
     if (m_bounds && !ray_in_bounds(local)) return hits;
-    const SurfaceHits object_hits =
-        std::visit([&](const auto& s) { return s.intersect_all(local, t_min, t_max); }, m_shape);
+    const SurfaceHits object_hits = std::visit(
+        [&](const auto& s) {
+            // POV-Ray compat (MIN_ISECT_DEPTH): a shape that stops at its first crossing loses the ray when that
+            // crossing lies within 1e-4 of the ray's origin, as POV-Ray then discards it.
+            if constexpr (requires { s.stops_at_first_crossing(); })
+                if (s.stops_at_first_crossing())
+                    return s.intersect_all(local, std::fmax(t_min, 1e-4 / length(direction)), t_max);
+            return s.intersect_all(local, t_min, t_max);
+        },
+        m_shape);
     for (const SurfaceHit& h : object_hits) {
         if (m_clips) {
             const Vec3 p = local.origin + h.t * local.direction;

@@ -65,6 +65,13 @@ public:
     /// Signed implicit function in object space at the world point (0 on the surface, negative inside the
     /// shape before `inverse`); for tests and diagnostics.
     double object_implicit(const Vec3& p_world) const;
+    /// POV-Ray compat (IS_CHILD_OBJECT): shapes that report only their first crossing on their own (julia_fractal)
+    /// report every crossing as CSG children and clipped objects.
+    void keep_all_crossings() {
+        std::visit([](auto& s) {
+            if constexpr (requires { s.keep_all_crossings(); }) s.keep_all_crossings();
+        }, m_shape);
+    }
     /// The object's index in scene::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
     const Transform& transform() const { return m_transform; }

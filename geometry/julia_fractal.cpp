@@ -281,6 +281,7 @@ SurfaceHits JuliaFractalShape::intersect_all(const LocalRay& ray, double t_min, 
         const double t = depth / len;
         const Vec3 normal = orbit_normal(orbit.data(), m_f.max_iteration);
         if (t > t_min && t < t_max && length(normal) > 0.0) hits.push({t, normal, !current});
+        if (m_first_only) return hits;
         // POV-Ray compat: the march goes on from the point past the change, while the depth stays at the crossing.
         dist = dist_next;
         current = next;

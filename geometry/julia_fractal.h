@@ -22,7 +22,12 @@ public:
     /// Returns nothing for non-finite parameters.
     static std::optional<JuliaFractalShape> create(const scene::JuliaFractal& fractal);
 
-    /// The changes of state POV-Ray finds along the ray with t in (t_min, t_max), in order.
+    /// The changes of state POV-Ray finds along the ray with t in (t_min, t_max), in order. POV-Ray compat: on its
+    /// own the fractal stops at its first crossing, which is then the only one, or none when it lies before t_min.
+    /// Every crossing counts (a CSG child or a clipped object).
+    void keep_all_crossings() { m_first_only = false; }
+    /// True unless keep_all_crossings() was called.
+    bool stops_at_first_crossing() const { return m_first_only; }
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
     /// The cube around the bounding sphere.
     std::optional<Bounds> bounds() const { return Bounds{{-m_radius, -m_radius, -m_radius}, {m_radius, m_radius, m_radius}}; }
@@ -49,6 +54,7 @@ private:
     scene::JuliaFractal m_f;
     double m_radius = 2.0;      ///< of the bounding sphere
     double m_exit = 4.0;        ///< the escape value of |z|²
+    bool m_first_only = true;
 };
 
 }  // namespace wardray::geometry
