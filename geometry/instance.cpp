@@ -167,12 +167,11 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
     if (m_bounds && !ray_in_bounds(local)) return hits;
     const SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
-            // POV-Ray compat (MIN_ISECT_DEPTH): a shape that stops at its first crossing loses the ray when that
-            // crossing lies within 1e-4 of the ray's origin, as POV-Ray then discards it.
-            if constexpr (requires { s.stops_at_first_crossing(); })
-                if (s.stops_at_first_crossing())
-                    return s.intersect_all(local, std::fmax(t_min, 1e-4 / length(direction)), t_max);
-            return s.intersect_all(local, t_min, t_max);
+            // POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray discards crossings within 1e-4 of a ray's origin; shapes
+            // whose crossings are found only to a tolerance (julia_fractal) would see their own surface there.
+            if constexpr (requires { s.k_min_isect_depth; })
+                return s.intersect_all(local, std::fmax(t_min, s.k_min_isect_depth / length(direction)), t_max);
+            else return s.intersect_all(local, t_min, t_max);
         },
         m_shape);
     for (const SurfaceHit& h : object_hits) {

@@ -26,8 +26,8 @@ public:
     /// own the fractal stops at its first crossing, which is then the only one, or none when it lies before t_min.
     /// Every crossing counts (a CSG child or a clipped object).
     void keep_all_crossings() { m_first_only = false; }
-    /// True unless keep_all_crossings() was called.
-    bool stops_at_first_crossing() const { return m_first_only; }
+    /// POV-Ray's MIN_ISECT_DEPTH: crossings nearer the ray's origin (along the parent-space direction) are lost.
+    static constexpr double k_min_isect_depth = 1e-4;
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
     /// The cube around the bounding sphere.
     std::optional<Bounds> bounds() const { return Bounds{{-m_radius, -m_radius, -m_radius}, {m_radius, m_radius, m_radius}}; }
