@@ -19,6 +19,14 @@ std::size_t term_count(int order) {
 
 }  // namespace
 
+void Parser::parse_poly_order(Poly& p) {
+    const Token at = peek();
+    // POV-Ray compat: the order is truncated to a whole number.
+    p.order = static_cast<int>(parse_float());
+    if (p.order < 2 || p.order > k_max_order) fail(at, std::string("the order of a ") + p.keyword() + " must be 2 to 35");
+    accept(",");
+}
+
 void Parser::parse_poly_coefficients(Poly& p) {
     // One vector of any length: read the terms one by one so no 5-component limit applies.
     p.coefficients.assign(term_count(p.order), 0.0);
@@ -46,10 +54,7 @@ Poly Parser::read_cubic(const Token& kw) {
 Poly Parser::read_poly(const Token& kw) {
     Poly p;
     p.kind = Poly::Kind::Poly;
-    const Token at = peek();
-    p.order = static_cast<int>(parse_float());
-    if (p.order < 2 || p.order > k_max_order) fail(at, "the order of a poly must be 2 to 35");
-    accept(",");
+    parse_poly_order(p);
     parse_poly_coefficients(p);
     return p;
 }
@@ -57,10 +62,7 @@ Poly Parser::read_poly(const Token& kw) {
 Poly Parser::read_polynomial(const Token& kw) {
     Poly p;
     p.kind = Poly::Kind::Polynomial;
-    const Token at = peek();
-    p.order = static_cast<int>(parse_float());
-    if (p.order < 2 || p.order > k_max_order) fail(at, "the order of a polynomial must be 2 to 35");
-    accept(",");
+    parse_poly_order(p);
     p.coefficients.assign(term_count(p.order), 0.0);
     while (is_word(peek(), "xyz")) {
         next();

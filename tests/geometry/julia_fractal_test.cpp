@@ -173,28 +173,7 @@ TEST(JuliaFractal, TinyAndHugeScalesGiveTheSameCrossings) {
     f.function = Function::Cube;
     f.max_iteration = 8;
     f.step = 1.0 / 30.0;
-    const auto unit = ShapeInstance::create(make_object(f), 0);
-    ASSERT_TRUE(unit);
-    Random rng(5);
-    int hits_seen = 0;
-    for (double s : {1e-4, 1e4}) {
-        const auto scaled = ShapeInstance::create(make_object(f, Transform::scaling({s, s, s})), 0);
-        ASSERT_TRUE(scaled);
-        for (int k = 0; k < 200; ++k) {
-            const Vec3 o = rng.direction() * 3.0;
-            const Vec3 d = rng.vec(-0.5, 0.5) - o;
-            const SurfaceHits a = unit->intersect_all(o, d, 0.0, 1e30);
-            const SurfaceHits b = scaled->intersect_all(o * s, d * s, 0.0, 1e30);
-            ASSERT_EQ(a.size(), b.size());
-            for (std::size_t i = 0; i < a.size(); ++i) {
-                ASSERT_TRUE(std::isfinite(b[i].t) && is_finite(b[i].normal));
-                EXPECT_NEAR(a[i].t, b[i].t, 1e-9 * a[i].t);
-                EXPECT_NEAR(dot(a[i].normal, b[i].normal), 1.0, 1e-9);
-                ++hits_seen;
-            }
-        }
-    }
-    EXPECT_GT(hits_seen, 50);
+    EXPECT_GT(test::check_scale_invariance(f, 5, 200, 3.0, 1e-9, 1e-9), 50);
 }
 
 TEST(JuliaFractal, HypercomplexFunctionsGiveFiniteCrossings) {
