@@ -170,7 +170,7 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
             // POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray discards crossings within 1e-4 of a ray's origin; shapes
             // whose crossings are found only to a tolerance (julia_fractal) would see their own surface there.
             if constexpr (requires { s.k_min_isect_depth; })
-                return s.intersect_all(local, std::fmax(t_min, s.k_min_isect_depth / length(direction)), t_max);
+                return s.intersect_all(local, t_min, t_max, s.k_min_isect_depth / length(direction));
             else return s.intersect_all(local, t_min, t_max);
         },
         m_shape);

@@ -210,16 +210,22 @@ Vec3 JuliaFractalShape::normal_at(const Vec3& p) const {
     return orbit_normal(orbit.data(), m_f.max_iteration);
 }
 
-SurfaceHits JuliaFractalShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+SurfaceHits JuliaFractalShape::intersect_all(const LocalRay& ray, double t_min, double t_max,
+                                             double t_min_depth) const {
     SurfaceHits hits;
     const double len = length(ray.direction);
     if (!(len > 0.0) || !std::isfinite(len)) return hits;
     const Vec3 u = ray.direction / len;
-    // Depths are distances along u; the ray parameter is depth / len.
-    const double depth_limit = t_max * len;
+    // POV-Ray compat: a ray asked about beyond MIN_ISECT_DEPTH is a new ray from there (as POV-Ray starts shadow
+    // rays again at each transparent surface); the march, its bound and its depth floor start at its origin.
+    const double t_start = t_min > t_min_depth ? t_min : 0.0;
+    const Vec3 origin = t_start > 0.0 ? ray.origin + t_start * ray.direction : ray.origin;
+    const double t_floor = std::fmax(t_min, t_start + t_min_depth);
+    // Depths are distances along u from the origin; the ray parameter is t_start + depth / len.
+    const double depth_limit = (t_max - t_start) * len;
     // The bounding sphere, as POV-Ray's Sphere::Intersect tests it.
-    const double oc2 = dot(ray.origin, ray.origin);
-    const double closest = -dot(ray.origin, u);
+    const double oc2 = dot(origin, origin);
+    const double closest = -dot(origin, u);
     const double r2 = m_radius * m_radius;
     if (oc2 >= r2 && closest < k_epsilon) return hits;
     const double half2 = r2 - oc2 + closest * closest;
@@ -230,7 +236,7 @@ SurfaceHits JuliaFractalShape::intersect_all(const LocalRay& ray, double t_min, 
     depth = std::fmax(depth, k_tolerance);
 
     std::vector<Quad> orbit(static_cast<std::size_t>(m_f.max_iteration) + 1);
-    Vec3 next_point = ray.origin + depth * u;
+    Vec3 next_point = origin + depth * u;
     double dist = m_f.step, dist_next = m_f.step;
     bool current = iterate(next_point, orbit.data(), &dist, u);
     // A ray starting inside steps off its start first.
@@ -278,9 +284,9 @@ SurfaceHits JuliaFractalShape::intersect_all(const LocalRay& ray, double t_min, 
         } else if (last != current) {
             iterate(point, orbit.data());
         }
-        const double t = depth / len;
+        const double t = t_start + depth / len;
         const Vec3 normal = orbit_normal(orbit.data(), m_f.max_iteration);
-        if (t > t_min && t < t_max && length(normal) > 0.0) hits.push({t, normal, !current});
+        if (t > t_floor && t < t_max && length(normal) > 0.0) hits.push({t, normal, !current});
         if (m_first_only) return hits;
         // POV-Ray compat: the march goes on from the point past the change, while the depth stays at the crossing.
         dist = dist_next;

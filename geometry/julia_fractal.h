@@ -28,7 +28,8 @@ public:
     void keep_all_crossings() { m_first_only = false; }
     /// POV-Ray's MIN_ISECT_DEPTH: crossings nearer the ray's origin (along the parent-space direction) are lost.
     static constexpr double k_min_isect_depth = 1e-4;
-    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max) const;
+    /// Crossings before `t_min_depth` (POV-Ray's MIN_ISECT_DEPTH as a ray parameter) are lost.
+    SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max, double t_min_depth = 0.0) const;
     /// The cube around the bounding sphere.
     std::optional<Bounds> bounds() const { return Bounds{{-m_radius, -m_radius, -m_radius}, {m_radius, m_radius, m_radius}}; }
     /// True where the orbit does not escape (POV-Ray's Inside).

@@ -146,7 +146,7 @@ TEST(JuliaFractal, NormalsAreTheGradientOfTheOrbitsEscapeValue) {
     EXPECT_GE(checked, 50);
 }
 
-TEST(JuliaFractal, AloneItStopsAtTheFirstCrossingAndLosesTheRayBeforeMinIsectDepth) {
+TEST(JuliaFractal, AloneItStopsAtTheFirstCrossingLosesItBeforeMinIsectDepthAndRestartsBeyond) {
     scene::JuliaFractal f;
     f.c = {-0.083, 0.0, -0.83, -0.025};
     f.max_iteration = 8;
@@ -165,6 +165,15 @@ TEST(JuliaFractal, AloneItStopsAtTheFirstCrossingAndLosesTheRayBeforeMinIsectDep
     const Vec3 p = o + (every[0].t - 1e-6) * d;
     EXPECT_TRUE(inst->intersect_all(p, d, 1e-9, 1e30).empty());
     EXPECT_GE(all.intersect_all({p, d}, 1e-9, 1e30).size(), 1u);
+    // Asked about from beyond the first crossing, the ray starts again there (as POV-Ray's shadow rays do at each
+    // transparent surface) and finds the next crossing, as a ray from that point would.
+    const double t_past = every[0].t + 1e-3;
+    const SurfaceHits next = inst->intersect_all(o, d, t_past, 1e30);
+    const SurfaceHits from_there = inst->intersect_all(o + t_past * d, d, 0.0, 1e30);
+    ASSERT_EQ(next.size(), 1u);
+    ASSERT_EQ(from_there.size(), 1u);
+    EXPECT_NEAR(next[0].t, t_past + from_there[0].t, 1e-12);
+    EXPECT_GT(next[0].t, every[0].t);
 }
 
 TEST(JuliaFractal, TinyAndHugeScalesGiveTheSameCrossings) {
