@@ -16,6 +16,7 @@ std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
         const bool flip = (csg.op == scene::Csg::Op::Difference && i > 0) != inverted;
         auto inst = ShapeInstance::create(csg.children[i], 0, flip);
         if (!inst) return std::nullopt;
+        inst->keep_all_crossings();
         children->push_back(std::move(*inst));
     }
     switch (csg.op) {

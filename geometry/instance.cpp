@@ -139,6 +139,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
             clips->push_back(std::move(*ci));
         }
         inst.m_clips = std::move(clips);
+        inst.keep_all_crossings();
         if (local && local->empty()) local = Bounds{local->lower, local->lower};
         if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
@@ -177,8 +178,15 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
             return hits;
     }
     if (m_bounds && !ray_in_bounds(local)) return hits;
-    const SurfaceHits object_hits =
-        std::visit([&](const auto& s) { return s.intersect_all(local, t_min, t_max); }, m_shape);
+    const SurfaceHits object_hits = std::visit(
+        [&](const auto& s) {
+            // POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray discards crossings within 1e-4 of a ray's origin; shapes
+            // whose crossings are found only to a tolerance (julia_fractal) would see their own surface there.
+            if constexpr (requires { s.k_min_isect_depth; })
+                return s.intersect_all(local, t_min, t_max, s.k_min_isect_depth / length(direction));
+            else return s.intersect_all(local, t_min, t_max);
+        },
+        m_shape);
     for (const SurfaceHit& h : object_hits) {
         if (m_clips) {
             const Vec3 p = local.origin + h.t * local.direction;

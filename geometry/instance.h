@@ -14,11 +14,12 @@
 #include "geometry/disc.h"
 #include "geometry/height_field.h"
 #include "geometry/isosurface.h"
+#include "geometry/julia_fractal.h"
 #include "geometry/lathe.h"
 #include "geometry/mesh.h"
 #include "geometry/plane.h"
 #include "geometry/quadric.h"
-#include "geometry/quartic.h"
+#include "geometry/poly.h"
 #include "geometry/scene_geometry.h"
 #include "geometry/sor.h"
 #include "geometry/sphere.h"
@@ -32,8 +33,8 @@ namespace wardray::geometry {
 
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
-                              QuadricShape, QuarticShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, IsosurfaceShape, HeightFieldShape, CsgShape>;
+                              QuadricShape, PolyShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
+                              TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape, CsgShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).
@@ -68,6 +69,13 @@ public:
     /// Signed implicit function in object space at the world point (0 on the surface, negative inside the
     /// shape before `inverse`); for tests and diagnostics.
     double object_implicit(const Vec3& p_world) const;
+    /// POV-Ray compat (IS_CHILD_OBJECT): shapes that report only their first crossing on their own (julia_fractal)
+    /// report every crossing as CSG children and clipped objects.
+    void keep_all_crossings() {
+        std::visit([](auto& s) {
+            if constexpr (requires { s.keep_all_crossings(); }) s.keep_all_crossings();
+        }, m_shape);
+    }
     /// The object's index in scene::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
     const Transform& transform() const { return m_transform; }

@@ -7,7 +7,7 @@ namespace wardray::geometry {
 
 namespace {
 
-constexpr int kMaxDegree = 6;
+constexpr int kMaxDegree = 35;
 
 double evaluate(const double* c, int degree, double x) {
     double v = c[degree];

@@ -3,7 +3,7 @@
 
 namespace wardray::geometry {
 
-/// Finds the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi] (degree 1..6), sorted
+/// Finds the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi] (degree 1..35), sorted
 /// ascending, into roots (room for `degree` values); returns their count. Each sign change between consecutive
 /// critical points is bracketed and refined by safeguarded Newton steps, so no root is lost to cancellation as
 /// in closed-form quartic formulas; double roots without a sign change (grazing rays) may be missed.

@@ -38,6 +38,10 @@ private:
 #undef WARDRAY_SHAPE_READER
     /// Reads one triangle (or smooth_triangle when `smooth`) of a mesh.
     void parse_triangle(Mesh& mesh, bool smooth);
+    /// The order of `poly` and `polynomial` (2 to 35) and its comma; the coefficient vector of `cubic` and `poly`:
+    /// as many floats as the order has monomials, in `< >`.
+    void parse_poly_order(Poly& p);
+    void parse_poly_coefficients(Poly& p);
     /// Reads `ttf "font" "string" thickness, offset` and lays the glyphs out (the font through the library path).
     Text parse_text_parameters(const Token& kw);
     /// Reads a lathe's spline type and points.

@@ -233,6 +233,7 @@ void SceneReader::place_object(ObjectValue ov) {
         // its bounds; CSG, polynomials, text and quadrics keep them.
         const Shape& shape = part.object.shape;
         if (!ov.compound && !std::holds_alternative<Csg>(shape) && !std::holds_alternative<Quartic>(shape) &&
+            !std::holds_alternative<Poly>(shape) &&
             !std::holds_alternative<Text>(shape) && !std::holds_alternative<Quadric>(shape))
             part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());

@@ -160,6 +160,42 @@ struct Quartic {
     bool operator==(const Quartic&) const = default;
 };
 
+/// POV-Ray's `cubic { <a0, ..., a19> }`, `poly { order, <a0, ...> }` and `polynomial { order, xyz(i, j, k): a, ... }`:
+/// the sum of a_i times the monomials x^i y^j z^k (i + j + k <= order) in the order of `quartic`; inside where
+/// below POV-Ray's tolerance 1e-4.
+struct Poly {
+    enum class Kind { Cubic, Poly, Polynomial };
+    Kind kind = Kind::Poly;
+    /// The keyword this polynomial was written with (one per Kind, in its order).
+    const char* keyword() const {
+        static constexpr const char* names[] = {"cubic", "poly", "polynomial"};
+        return names[static_cast<int>(kind)];
+    }
+    int order = 2;
+    std::vector<double> coefficients;  ///< (order + 1)(order + 2)(order + 3) / 6 of them
+    bool operator==(const Poly&) const = default;
+};
+
+/// POV-Ray's `julia_fractal { <c> [quaternion | hypercomplex] [sqr | cube | reciprocal | exp | ln | sin | asin | cos |
+/// acos | tan | atan | sinh | asinh | cosh | acosh | tanh | atanh | pwr(a, b)] [max_iteration n] [precision p]
+/// [slice <4-vector>, d] }`: the 3-D slice of the filled Julia set of z -> f(z) + c in 4-D (quaternions or
+/// hypercomplex numbers), the fourth coordinate w taken from the slice plane.
+struct JuliaFractal {
+    enum class Algebra { Quaternion, Hypercomplex };
+    enum class Function { Exp, Ln, Sin, Asin, Cos, Acos, Tan, Atan, Sinh, Asinh, Cosh, Acosh, Tanh, Atanh, Pwr, Sqr,
+                          Cube, Reciprocal };
+    std::array<double, 4> c{1.0, 0.0, 0.0, 0.0};
+    Algebra algebra = Algebra::Quaternion;
+    Function function = Function::Sqr;
+    double exponent_re = 0.0;  ///< pwr's exponent
+    double exponent_im = 0.0;
+    int max_iteration = 20;
+    double step = 1.0 / 20.0;                  ///< 1 / precision
+    std::array<double, 4> slice{0.0, 0.0, 0.0, 1.0};  ///< unit normal of the slice hyperplane
+    double slice_distance = 0.0;
+    bool operator==(const JuliaFractal&) const = default;
+};
+
 /// POV-Ray's `prism { [spline type] [linear_sweep | conic_sweep] height1, height2, n, <u, v>... [open] }`: the 2-D
 /// outline (sub-polygons close when their first curve point repeats; even-odd rule) in the x-z plane (u -> x,
 /// v -> z), swept along y; conic_sweep scales the outline by y (apex at the origin). The spline types are those of
@@ -284,6 +320,10 @@ struct HeightField {
     X(quadric, Quadric)               \
     X(superellipsoid, Superellipsoid) \
     X(quartic, Quartic)               \
+    X(cubic, Poly)                    \
+    X(poly, Poly)                     \
+    X(polynomial, Poly)               \
+    X(julia_fractal, JuliaFractal)    \
     X(prism, Prism)                   \
     X(lathe, Lathe)                   \
     X(sor, Sor)                       \

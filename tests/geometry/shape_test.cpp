@@ -235,6 +235,10 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"superellipsoid", "superellipsoid { <1, 1> }"},
     {"quartic", "quartic { <0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, "
                 "0, 0, 1, 0, -1> }"},
+    {"cubic", "cubic { <0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1> }"},
+    {"poly", "poly { 2, <1, 0, 0, 0, 1, 0, 0, 1, 0, -1> sturm }"},
+    {"polynomial", "polynomial { 2, xyz(2, 0, 0): 1, xyz(0, 2, 0): 1, xyz(0, 0, 2): 1, xyz(0, 0, 0): -1 }"},
+    {"julia_fractal", "julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15 }"},
     {"prism", "prism { linear_sweep 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }"},
     {"lathe", "lathe { linear_spline 3, <0, 0>, <1, 0.5>, <0, 1> }"},
     {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},

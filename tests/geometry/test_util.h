@@ -124,4 +124,35 @@ inline void check_shape(const std::function<scene::Shape(Random&)>& make, bool s
     EXPECT_LE(inside_failures, checked / 100) << "of " << checked;
 }
 
+/// Crossings of `shape` and of its copies scaled by 1e-4 and 1e4, along rays from `distance` away aimed within
+/// ±0.5 of the origin (scaled alike), agree: the same count, t within `t_tolerance` (relative), normals within
+/// `normal_tolerance`, all finite. Returns how many crossings were compared.
+inline int check_scale_invariance(const scene::Shape& shape, std::uint64_t seed, int rays, double distance,
+                                  double t_tolerance, double normal_tolerance) {
+    Random rng(seed);
+    const auto unit = ShapeInstance::create(make_object(shape), 0);
+    EXPECT_TRUE(unit);
+    if (!unit) return 0;
+    int compared = 0;
+    for (double s : {1e-4, 1e4}) {
+        const auto scaled = ShapeInstance::create(make_object(shape, Transform::scaling({s, s, s})), 0);
+        EXPECT_TRUE(scaled);
+        if (!scaled) return compared;
+        for (int k = 0; k < rays; ++k) {
+            const Vec3 o = rng.direction() * distance;
+            const Vec3 d = rng.vec(-0.5, 0.5) - o;
+            const SurfaceHits a = unit->intersect_all(o, d, 0.0, 1e30);
+            const SurfaceHits b = scaled->intersect_all(o * s, d * s, 0.0, 1e30);
+            EXPECT_EQ(a.size(), b.size()) << "scale " << s << " ray " << k;
+            for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+                EXPECT_TRUE(std::isfinite(b[i].t) && is_finite(b[i].normal));
+                EXPECT_NEAR(a[i].t, b[i].t, t_tolerance * a[i].t);
+                EXPECT_NEAR(dot(a[i].normal, b[i].normal), 1.0, normal_tolerance);
+                ++compared;
+            }
+        }
+    }
+    return compared;
+}
+
 }  // namespace wardray::geometry::test

@@ -299,8 +299,8 @@ TEST(Objects, ZeroScaleIsChangedToOne) {
 TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     // Features chosen among those far from being rendered, so the test outlives the work on shapes and textures.
     const Scene s = parse_ok(R"(
-        julia_fractal { <-0.083, 0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15 }
-        julia_fractal { <0.1, 0, 0, 0> }
+        ovus { 1, 0.5 }
+        ovus { 2, 1 }
         sphere { 0, 1 pigment { tiling 1 } }
         #declare Thing = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 1, 1>, 1 }
         object { Thing }
@@ -309,7 +309,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     ASSERT_EQ(s.objects.size(), 2u);
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
-    const std::vector<std::string> expected = {"julia_fractal is not rendered yet",
+    const std::vector<std::string> expected = {"ovus is not rendered yet",
                                                "pigment pattern 'tiling' is not rendered yet",
                                                "sphere_sweep is not rendered yet"};
     EXPECT_EQ(messages, expected);
