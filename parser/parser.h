@@ -66,6 +66,11 @@ private:
     // --- pattern parameters and warps (pattern_params.cpp) ---
     int parse_pattern_parameters(const Token& t, Pattern& pat);
     bool parse_pattern_extra(const Token& t, Pattern& pat);
+    // --- the slope pattern (pattern_slope.cpp) ---
+    /// Reads what follows `slope` into `pat.slope`.
+    void parse_slope_parameters(const Token& kw, Pattern& pat);
+    /// Reads `[, lo, hi]` after a slope or altitude vector: the range's start and width (0 for none).
+    void parse_slope_range(double& lo, double& range, const char* what);
     void parse_warp(const Token& kw, Pattern& pat);
     void check_black_hole(const Token& at, Warp& w);
     std::vector<SlopeMapEntry> parse_slope_map();

@@ -96,10 +96,28 @@ struct Warp {
     X(pigment_pattern, PigmentPattern) \
     X(function, Function)         \
     X(density_file, DensityFile)  \
-    X(object, Object)
+    X(object, Object)             \
+    X(slope, Slope)               \
+    X(aoi, Aoi)                   \
+    X(facets, Facets)
 
 struct Pigment;
 struct Object;
+
+/// `slope { [point_at] <slope>, lo, hi altitude <altitude>, lo, hi }` as POV-Ray 3.7 keeps it (Vals.Slope): unit
+/// vectors, each part's weight (slope_len + altitude_len = 1) and each range's start and width (0: no range).
+struct SlopeParams {
+    Vec3 slope_vector;     ///< unit; with point_at, the point the slope is measured towards
+    Vec3 altitude_vector;  ///< unit, or zero without altitude
+    double slope_len = 1.0;
+    double altitude_len = 0.0;
+    double slope_lo = 0.0;
+    double slope_range = 0.0;
+    double altitude_lo = 0.0;
+    double altitude_range = 0.0;
+    bool point_at = false;
+    bool operator==(const SlopeParams&) const = default;
+};
 
 /// A density_file's voxels as POV-Ray's df3 stores them (x fastest, then y, then z), each value raw / max.
 struct DensityFile {
@@ -151,6 +169,9 @@ struct Pattern {
     double control0 = 1.0;  ///< quilted
     double control1 = 1.0;
     int arms = 0;           ///< spiral1, spiral2
+    SlopeParams slope;      ///< slope
+    double facets_size = 0.1;    ///< facets `size` (its `metric` is crackle_metric)
+    double facets_coords = 0.0;  ///< facets `coords`: 0 picks by the normal, else by the point, tilting by this
     PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     function::SharedFunction function;  ///< the `function { ... }` pattern's function
