@@ -208,6 +208,24 @@ void Parser::parse_bump_map(const Token& kw, Normal& n) {
     n.slope_map.clear();
 }
 
+void Parser::parse_image_pattern(const Token& kw, Pattern& pat) {
+    // POV-Ray's Parse_Image_Pattern: the image's stored values (no gamma unless given), grey or alpha.
+    expect("{");
+    Token alpha_at;
+    bool alpha = false;
+    ImageMap map = parse_image_block(kw, ImageBlock::BumpMap, [&](const Token& t) {
+        if (!is_word(t, "use_alpha")) return false;
+        alpha_at = next();
+        alpha = true;
+        return true;
+    });
+    map.use_alpha = alpha;
+    // POV-Ray compat: with an alpha channel use_alpha takes it, which the reader does not return.
+    if (alpha && map.image->has_alpha) warn_unsupported(alpha_at, "image_pattern use_alpha of an image with an alpha channel");
+    pat.image = std::make_shared<const ImageMap>(std::move(map));
+    pat.frequency = 0.0;
+}
+
 void Parser::parse_material_map(const Token& kw, Texture& tx) {
     // POV-Ray's Parse_Material_Map: a new texture whose image picks one of the textures listed after it.
     expect("{");

@@ -91,6 +91,8 @@ private:
     bool is_colour_array_next();
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
     void parse_image_map(const Token& kw, Pigment& p);
+    /// Reads `image_pattern { ... }` after its keyword into `pat` (an image read like a bump map's).
+    void parse_image_pattern(const Token& kw, Pattern& pat);
     /// Reads `bump_map { ... }` after its keyword into `n`.
     void parse_bump_map(const Token& kw, Normal& n);
     /// Reads `material_map { ... }` after its keyword: `tx` becomes the material map.

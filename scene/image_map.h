@@ -43,6 +43,8 @@ struct ImageMap {
     /// bump_map and material_map: the palette index rather than the colour (`use_index`; a material_map always
     /// takes an index image's index).
     bool use_index = false;
+    /// image_pattern `use_alpha`: the red channel of an image without alpha (the only kind read here).
+    bool use_alpha = false;
     bool operator==(const ImageMap&) const = default;
 };
 

@@ -99,7 +99,8 @@ struct Warp {
     X(object, Object)             \
     X(slope, Slope)               \
     X(aoi, Aoi)                   \
-    X(facets, Facets)
+    X(facets, Facets)             \
+    X(image_pattern, ImagePattern)
 
 struct Pigment;
 struct Object;
@@ -177,6 +178,7 @@ struct Pattern {
     function::SharedFunction function;  ///< the `function { ... }` pattern's function
     std::shared_ptr<const DensityFile> density_file;  ///< density_file df3 "file"
     std::shared_ptr<const Object> object;             ///< object { OBJECT a, b }: the object (compared by identity)
+    std::shared_ptr<const ImageMap> image;            ///< image_pattern { png "file" ... } (compared by identity)
     int density_interpolation = 0;                    ///< density_file: 0 none, 1 trilinear, 2 tricubic
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.

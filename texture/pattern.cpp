@@ -12,6 +12,7 @@
 #include "texture/facets.h"
 #include "texture/fractal.h"
 #include "texture/function_pattern.h"
+#include "texture/image_map.h"
 #include "texture/noise.h"
 #include "texture/object_pattern.h"
 #include "texture/pattern_blocks.h"
