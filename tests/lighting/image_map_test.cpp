@@ -1,9 +1,11 @@
-// image_map: texels placed, decoded and interpolated as POV-Ray 3.7's image maps do, on a 2 x 2 test image.
+// image_map: texels placed, decoded and interpolated as POV-Ray 3.7's image maps do, on a 2 x 2 test image; and
+// image_pattern's value from the same image as POV-Ray's image_pattern takes it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "parser/parse.h"
+#include "texture/pattern.h"
 #include "texture/pigment.h"
 
 namespace wardray::lighting {
@@ -19,13 +21,14 @@ std::shared_ptr<const scene::ImageData> two_by_two(const std::filesystem::path&,
     return image;
 }
 
-scene::Pigment image_pigment(const std::string& items) {
+// The pigment `pigment { BLOCK { png "file" ITEMS } }` (an image_map, or an image_pattern) on the test image.
+scene::Pigment image_pigment(const std::string& items, const std::string& block = "image_map") {
     parser::ParseOptions options;
     options.read_image = two_by_two;
     options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");  // the stand-in file is read from there
     // The file must exist for the search; the scene itself serves.
     const parser::ParseResult r = parser::parse_string(
-        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { " + block + " { png \"" WARDRAY_SOURCE_DIR
         "/scenes/default.pov\" " + items + " } } }",
         "test.pov", options);
     EXPECT_TRUE(r.ok());
@@ -72,6 +75,30 @@ TEST(ImageMap, SphericalMapsLatitudeUp) {
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, 1.0, 0.1}, 2).r, 0.5, 1e-6);
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).b, 1.0, 1e-6);
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).r, 0.0, 1e-6);
+}
+
+TEST(ImagePattern, IsTheGreyLevelOfTheStoredTexel) {
+    const scene::Pattern pat = image_pigment("", "image_pattern").pattern;
+    ASSERT_EQ(pat.type, scene::Pattern::Type::ImagePattern);
+    EXPECT_EQ(pat.frequency, 0.0);
+    // POV-Ray's greyscale 0.297 r + 0.589 g + 0.114 b of the values as stored (no gamma decoding), clipped to 1.
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0.75, 0}, 2), 0.297 * 0.5, 1e-7);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0.25, 0}, 2), 0.114, 1e-7);
+    EXPECT_DOUBLE_EQ(texture::pattern_value(pat, {0.75, 0.25, 0}, 2), 1.0);
+    // The image repeats; use_index still takes the grey level, as POV-Ray's does.
+    EXPECT_NEAR(texture::pattern_value(pat, {3.25, -0.75, 0}, 2), 0.114, 1e-7);
+    const scene::Pattern index = image_pigment("use_index", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(index, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+}
+
+TEST(ImagePattern, UseAlphaWithoutAlphaTakesRedAndOnceLeavesZero) {
+    const scene::Pattern alpha = image_pigment("use_alpha", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(alpha, {0.25, 0.75, 0}, 2), 0.5, 1e-7);
+    EXPECT_EQ(texture::pattern_value(alpha, {0.75, 0.75, 0}, 2), 0.0);
+    const scene::Pattern once = image_pigment("once", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(once, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+    EXPECT_EQ(texture::pattern_value(once, {1.5, 0.5, 0}, 2), 0.0);
 }
 
 }  // namespace
