@@ -1,5 +1,5 @@
 // Parity scene: image_pattern in pigments, normals and texture maps (planar, spherical and cylindrical maps,
-// interpolate, once, use_index, use_alpha of an image without alpha).
+// interpolate, once, use_index, use_alpha with and without alpha) and a palette image_map with its alpha.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -21,4 +21,5 @@ Ball(1, 1) texture { image_pattern { png "Mount1.png" map_type 1 interpolate 2 }
     [0.3 pigment { rgb <0.2, 0.6, 0.2> } finish { Fin }]
     [0.6 pigment { rgb <0.8, 0.7, 0.5> } finish { Fin }] } } }
 Ball(2, 1) pigment { image_pattern { png "test.png" } pigment_map { [0 rgb 0.2] [1 checker rgb 1, rgb <1, 0.3, 0.3> scale 0.1] } } finish { Fin } }
-Ball(3, 1) pigment { image_pattern { png "bumpmap_.png" map_type 1 } color_map { Ramp } frequency 2 triangle_wave } finish { Fin } }
+Ball(3, 1) pigment { image_map { png "fract003.png" map_type 1 } } finish { Fin } }
+Ball(1.5, 0.5) pigment { image_pattern { png "plasma2.png" use_alpha } color_map { Ramp } } finish { Fin } scale 0.3 }

@@ -101,5 +101,41 @@ TEST(ImagePattern, UseAlphaWithoutAlphaTakesRedAndOnceLeavesZero) {
     EXPECT_EQ(texture::pattern_value(once, {1.5, 0.5, 0}, 2), 0.0);
 }
 
+// A 2 x 1 palette image whose entry 1 is 40 % opaque (a tRNS chunk): rows from the top, indices 0 and 1.
+std::shared_ptr<const scene::ImageData> palette_with_alpha(const std::filesystem::path&, bool& encoded, std::string&) {
+    auto image = std::make_shared<scene::ImageData>();
+    image->width = 2;
+    image->height = 1;
+    image->rgb = {1, 0, 0, 0, 0, 1};
+    image->index = {0, 1};
+    image->palette_size = 2;
+    image->palette_alpha = {1.0f, 0.4f};
+    image->has_alpha = true;
+    encoded = true;
+    return image;
+}
+
+TEST(ImageMap, PaletteAlphaIsEachEntrysTransmitWhichFilterLeaves) {
+    parser::ParseOptions options;
+    options.read_image = palette_with_alpha;
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+        "/scenes/default.pov\" filter 1, 0.25 } } }\nsphere { 0, 1 pigment { image_pattern { png \"" WARDRAY_SOURCE_DIR
+        "/scenes/default.pov\" use_alpha } } }",
+        "test.pov", options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.diagnostics.empty());  // the alpha is rendered: no warning
+    const scene::Pigment& p = r.scene->objects.at(0).texture.pigment;
+    const Color opaque = texture::evaluate_pigment(p, {0.25, 0.5, 0}, 2);
+    const Color clear = texture::evaluate_pigment(p, {0.75, 0.5, 0}, 2);
+    EXPECT_FLOAT_EQ(opaque.transmit, 0.0f);
+    EXPECT_FLOAT_EQ(clear.transmit, 0.6f);
+    EXPECT_FLOAT_EQ(clear.filter, 0.25f);
+    // image_pattern's use_alpha takes the transmit of an image with alpha.
+    const scene::Pattern& alpha = r.scene->objects.at(1).texture.pigment.pattern;
+    EXPECT_NEAR(texture::pattern_value(alpha, {0.75, 0.5, 0}, 2), 0.6, 1e-7);
+    EXPECT_EQ(texture::pattern_value(alpha, {0.25, 0.5, 0}, 2), 0.0);
+}
+
 }  // namespace
 }  // namespace wardray::lighting
