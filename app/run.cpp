@@ -74,9 +74,19 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         // A palette PNG's indices too (bump_map use_index, material_map, image_map filter N).
         int w = 0, h = 0;
         std::vector<std::uint8_t> index;
-        if (render::read_png_palette_indices(file, w, h, index, image->palette_size) && w == image->width &&
-            h == image->height)
+        std::vector<float> entry_rgb, entry_alpha;
+        if (render::read_png_palette_indices(file, w, h, index, image->palette_size, &entry_rgb, &entry_alpha) &&
+            w == image->width && h == image->height) {
+            if (!entry_alpha.empty() && encoded) {
+                // With a tRNS chunk the colours come from the palette as stored (OpenImageIO's are premultiplied)
+                // and each entry's alpha is kept.
+                for (std::size_t at = 0; at < index.size(); ++at)
+                    if (index[at] < image->palette_size)
+                        for (int c = 0; c < 3; ++c) image->rgb[at * 3 + c] = entry_rgb[index[at] * 3u + c];
+                image->palette_alpha = std::move(entry_alpha);
+            }
             image->index = std::move(index);
+        }
         return image;
     };
     parse_options.read_height_grid = [](const fs::path& file, std::string& error, std::string& unsupported) {

@@ -17,6 +17,7 @@
 #include "media/participating_media.h"
 #include "media/sky.h"
 #include "scene/scene.h"
+#include "texture/surface_point.h"
 
 namespace wardray::geometry {
 class SceneGeometry;
@@ -82,6 +83,9 @@ private:
         Vec3 direction;                           ///< unit direction of the incoming ray
         double depth = 0.0;                       ///< distance from the ray's origin
         const InteriorStack* interiors = nullptr;  ///< the interiors the incoming ray is in
+        /// What slope and aoi read: shared by the copies made for map entries, its normal tilted by each layer's
+        /// normal as POV-Ray's PNormal is.
+        texture::SurfacePoint* surface = nullptr;
         /// POV-Ray compat: false on gather rays' paths, which see no phong or specular and area lights as points.
         bool highlights = true;
     };

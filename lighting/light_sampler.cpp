@@ -99,7 +99,8 @@ LightSampler::SpotCone LightSampler::spot_cone(const scene::Light& light) {
 
 LightSampler::~LightSampler() = default;
 
-Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics) const {
+Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics,
+                                  texture::SurfacePoint& surface) const {
     if (!texture.texture_map.empty()) {
         const Vec3 tp = texture::warp_point(texture.map_pattern, p);
         // The map's pattern warps the normals of the entries' layers (fake caustics only).
@@ -110,27 +111,27 @@ Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, 
             Vec3 sum;
             float total = 0.0f;
             for (const auto& e : texture.texture_map) {
-                sum += texture_filter(e.texture, tp, caustics) * e.value;
+                sum += texture_filter(e.texture, tp, caustics, surface) * e.value;
                 total += static_cast<float>(e.value);
             }
             filter = sum / static_cast<double>(total);
         } else if (texture.material_map) {
             const auto& map = texture.texture_map;
             const int i = texture::material_map_index(*texture.material_map, tp, static_cast<int>(map.size()));
-            filter = texture_filter(map[static_cast<std::size_t>(i)].texture, tp, caustics);
+            filter = texture_filter(map[static_cast<std::size_t>(i)].texture, tp, caustics, surface);
         } else {
-            const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator);
+            const double v = texture::pattern_value(texture.map_pattern, tp, m_noise_generator, &surface);
             const auto& map = texture.texture_map;
             const texture::MapLookup m =
                 texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
-            filter = texture_filter(map[m.cur].texture, tp, caustics);
+            filter = texture_filter(map[m.cur].texture, tp, caustics, surface);
             if (m.prev != m.cur)
-                filter = filter * m.fraction + texture_filter(map[m.prev].texture, tp, caustics) * (1.0 - m.fraction);
+                filter = filter * m.fraction + texture_filter(map[m.prev].texture, tp, caustics, surface) * (1.0 - m.fraction);
         }
         if (caustics) caustics->warps.pop_back();
         return filter;
     }
-    Vec3 filter = media::filter_colour(texture::evaluate_pigment(texture.pigment, p, m_noise_generator));
+    Vec3 filter = media::filter_colour(texture::evaluate_pigment(texture.pigment, p, m_noise_generator, &surface));
     if (caustics) {
         // POV-Ray's fake caustics (ComputeShadowTexture): each layer's transmitted colour times
         // 1 + |n·d|^power, n the layer's (perturbed) normal and d the shadow ray's direction, so light through a
@@ -138,13 +139,14 @@ Vec3 LightSampler::texture_filter(const scene::Texture& texture, const Vec3& p, 
         Vec3 n = caustics->raw_normal;
         if (texture.normal.pattern.type != scene::Pattern::Type::None) {
             for (const scene::Pattern* w : caustics->warps) n = texture::warp_normal(*w, n);
-            n = texture::perturb_normal(texture.normal, n, p, m_noise_generator);
+            n = texture::perturb_normal(texture.normal, n, p, m_noise_generator, &surface);
+            surface.normal = n;  // POV-Ray compat: the layers after see this normal (its PNormal)
             for (auto it = caustics->warps.rbegin(); it != caustics->warps.rend(); ++it)
                 n = texture::unwarp_normal(**it, n);
         }
         filter = filter * (1.0 + std::pow(std::fabs(dot(n, caustics->direction)), caustics->power));
     }
-    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p, caustics);
+    for (const scene::Texture& layer : texture.layers) filter = filter * texture_filter(layer, p, caustics, surface);
     return filter;
 }
 
@@ -189,11 +191,14 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         const bool inside = !object.interior_texture.empty() && dot(hit->normal, dir) > 0.0;
         const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
         const double caustics = object.interior.caustics;
+        // POV-Ray compat (ComputeShadowColour): patterns see the normal turned against the shadow ray.
+        const Vec3 raw = dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal;
+        texture::SurfacePoint surface{hit->position, raw, dir};
         if (caustics != 0.0) {
-            Caustics c{caustics, dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal, dir, {}};
-            filter = filter * texture_filter(texture, hit->position, &c);
+            Caustics c{caustics, raw, dir, {}};
+            filter = filter * texture_filter(texture, hit->position, &c, surface);
         } else {
-            filter = filter * texture_filter(texture, hit->position, nullptr);
+            filter = filter * texture_filter(texture, hit->position, nullptr, surface);
         }
         const scene::Interior& interior = object.interior;
         if (interiors.contains(object) && interior.fade_power > 0.0 &&

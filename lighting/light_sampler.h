@@ -9,6 +9,7 @@
 #include "media/medium.h"
 #include "media/participating_media.h"
 #include "scene/scene.h"
+#include "texture/surface_point.h"
 
 namespace wardray::geometry {
 class SceneGeometry;
@@ -78,8 +79,10 @@ private:
         std::vector<const scene::Pattern*> warps;
     };
     /// The filter colour of an object's texture at a point (its layers' filter·colour + transmit, multiplied);
-    /// with `caustics`, each layer's also times POV-Ray's fake-caustics factor.
-    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics) const;
+    /// with `caustics`, each layer's also times POV-Ray's fake-caustics factor. `surface` is the shadow ray's
+    /// intersection as slope and aoi read it.
+    Vec3 texture_filter(const scene::Texture& texture, const Vec3& p, Caustics* caustics,
+                        texture::SurfacePoint& surface) const;
 
     /// A spotlight's cone, computed once per light instead of at every point it lights.
     struct SpotCone {

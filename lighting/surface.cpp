@@ -50,6 +50,8 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.depth = depth;
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
+    texture::SurfacePoint surface{hit.position, s.raw_normal, direction};
+    s.surface = &surface;
     std::vector<const scene::Pattern*> warps;
     // POV-Ray compat: a surface met from inside shows its interior texture, when it has one.
     const bool inside = !object.interior_texture.empty() && dot(hit.normal, direction) > 0.0;
@@ -89,7 +91,7 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
         warps.pop_back();
         return colour;
     }
-    const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator);
+    const double value = texture::pattern_value(pattern, s.p_texture, m_noise_generator, s.surface);
     const texture::MapLookup m =
         texture::search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
     warps.push_back(&pattern);
@@ -154,12 +156,14 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         if (layer->normal.perturbs()) {
             for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
             n = texture::perturb_normal(layer->normal, n, layer->normal.uv_mapping ? s.p_uv : s.p_texture,
-                                        m_noise_generator);
+                                        m_noise_generator, s.surface);
+            // POV-Ray compat: the layers' pigments and the layers after see this normal (its PNormal).
+            s.surface->normal = n;
             for (auto it = warps.rbegin(); it != warps.rend(); ++it) n = texture::unwarp_normal(**it, n);
         }
         if (reflection_count == 0) top_normal = n;
         const Color pc = texture::evaluate_pigment(layer->pigment, layer->pigment.uv_mapping ? s.p_uv : s.p_texture,
-                                                   m_noise_generator);
+                                                   m_noise_generator, s.surface);
         const Vec3 pigment = pc.rgb();
         const scene::Finish& f = layer->finish;
 

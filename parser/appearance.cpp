@@ -258,6 +258,7 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         // texture_map patterns: `texture { gradient y texture_map { ... } }` or `checker texture {..} texture {..}`.
         const int count = parse_pattern_keyword(t, tx.map_pattern);
         const bool list_inside = take_pattern_list_open();
+        if (tx.map_pattern.type == Pattern::Type::Facets) fail(t, "Keyword 'facets' can only be used in a normal statement.");
         if (count >= 0) {
             tx.texture_map.clear();
             for (int i = 0; i < count && is_word(peek(), "texture"); ++i) {

@@ -38,6 +38,23 @@ std::uint16_t colour16_height(std::uint16_t r, std::uint16_t g, std::uint16_t b)
     return static_cast<std::uint16_t>(grey * 65535.0f);
 }
 
+/// A POT file (a GIF of twice the width): the left half's palette index is each height's high byte, the right
+/// half's its low byte, taken as a 16-bit grey image (POV-Ray's Gif::Read for POT files). The GIF reader gives
+/// heights of index * 256.
+std::shared_ptr<const HeightGrid> pot_heights(const HeightGrid& gif) {
+    auto grid = std::make_shared<HeightGrid>();
+    grid->width = gif.width / 2;
+    grid->height = gif.height;
+    grid->heights.resize(static_cast<std::size_t>(grid->width) * grid->height);
+    for (int z = 0; z < grid->height; ++z)
+        for (int x = 0; x < grid->width; ++x) {
+            const unsigned high = gif.at(x, z) / 256u, low = gif.at(x + grid->width, z) / 256u;
+            grid->heights[static_cast<std::size_t>(z) * grid->width + x] =
+                grey16_height(static_cast<std::uint16_t>(high << 8 | low));
+        }
+    return grid;
+}
+
 }  // namespace
 
 HeightField Parser::read_height_field(const Token& kw) {
@@ -92,6 +109,7 @@ HeightField Parser::read_height_field(const Token& kw) {
         }
         hf.grid = std::move(grid);
     } else {
+        const bool pot = is_word(first, "pot");
         if (first.kind == TokenKind::Identifier && is_height_image_type(first.text)) next();
         const Token file = peek();
         const std::string name = parse_string();
@@ -114,6 +132,10 @@ HeightField Parser::read_height_field(const Token& kw) {
             } else {
                 m_height_grids.emplace(key, hf.grid);
             }
+        }
+        if (hf.grid && pot) {
+            if (hf.grid->width % 2 != 0) fail(file, "Invalid width for POT file");
+            hf.grid = pot_heights(*hf.grid);
         }
         if (hf.grid && (hf.grid->width < 2 || hf.grid->height < 2))
             fail(file, "a height_field image needs at least 2 by 2 pixels");

@@ -61,7 +61,8 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
                       '\n' + std::to_string(working.gamma) + std::to_string(handling) +
                       std::to_string(m_version >= 3.7) + (colour ? "c" : "v");
     if (auto it = m_images.find(key); it != m_images.end()) {
-        if (it->second->has_alpha && colour) warn_unsupported(at, "image_map alpha channel");
+        if (it->second->has_alpha && it->second->palette_alpha.empty() && colour)
+            warn_unsupported(at, "image_map alpha channel");
         return it->second;
     }
     bool encoded = false;
@@ -70,7 +71,7 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
     // POV-Ray takes transparency from an alpha channel; the reader does not return it.
     // Bump maps and material maps use only the colours or indices.
-    if (stored->has_alpha && colour) warn_unsupported(at, "image_map alpha channel");
+    if (stored->has_alpha && stored->palette_alpha.empty() && colour) warn_unsupported(at, "image_map alpha channel");
     auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
@@ -158,6 +159,12 @@ ImageMap Parser::parse_image_block(const Token& kw, ImageBlock block, const std:
     }
     map.image = read_image_file(file, name, file_gamma, image_map, type);
     const ImageData& img = *map.image;
+    // POV-Ray compat: a palette PNG's alpha is each entry's transmit, 1 − alpha, which filter and transmit change.
+    if (img.indexed() && !img.palette_alpha.empty()) {
+        map.palette_ft.resize(static_cast<std::size_t>(img.palette_size));
+        for (std::size_t i = 0; i < map.palette_ft.size() && i < img.palette_alpha.size(); ++i)
+            map.palette_ft[i].transmit = 1.0f - img.palette_alpha[i];
+    }
     for (const PaletteSetting& s : palette) {
         double& all = s.transmit ? map.transmit_all : map.filter_all;
         if (s.index < 0) all = s.value;
@@ -206,6 +213,25 @@ void Parser::parse_bump_map(const Token& kw, Normal& n) {
     n.pattern.type = Pattern::Type::None;
     n.normal_map.clear();
     n.slope_map.clear();
+}
+
+void Parser::parse_image_pattern(const Token& kw, Pattern& pat) {
+    // POV-Ray's Parse_Image_Pattern: the image's stored values (no gamma unless given), grey or alpha.
+    expect("{");
+    Token alpha_at;
+    bool alpha = false;
+    ImageMap map = parse_image_block(kw, ImageBlock::BumpMap, [&](const Token& t) {
+        if (!is_word(t, "use_alpha")) return false;
+        alpha_at = next();
+        alpha = true;
+        return true;
+    });
+    map.use_alpha = alpha;
+    // POV-Ray compat: with an alpha channel use_alpha takes it, which the reader does not return.
+    if (alpha && map.image->has_alpha && map.image->palette_alpha.empty())
+        warn_unsupported(alpha_at, "image_pattern use_alpha of an image with an alpha channel");
+    pat.image = std::make_shared<const ImageMap>(std::move(map));
+    pat.frequency = 0.0;
 }
 
 void Parser::parse_material_map(const Token& kw, Texture& tx) {

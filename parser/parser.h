@@ -70,6 +70,11 @@ private:
     // --- pattern parameters and warps (pattern_params.cpp) ---
     int parse_pattern_parameters(const Token& t, Pattern& pat);
     bool parse_pattern_extra(const Token& t, Pattern& pat);
+    // --- the slope pattern (pattern_slope.cpp) ---
+    /// Reads what follows `slope` into `pat.slope`.
+    void parse_slope_parameters(const Token& kw, Pattern& pat);
+    /// Reads `[, lo, hi]` after a slope or altitude vector: the range's start and width (0 for none).
+    void parse_slope_range(double& lo, double& range, const char* what);
     void parse_warp(const Token& kw, Pattern& pat);
     void check_black_hole(const Token& at, Warp& w);
     std::vector<SlopeMapEntry> parse_slope_map();
@@ -90,6 +95,8 @@ private:
     bool is_colour_array_next();
     /// Reads `image_map { ... }` after its keyword into `p` (parser/image_map.cpp).
     void parse_image_map(const Token& kw, Pigment& p);
+    /// Reads `image_pattern { ... }` after its keyword into `pat` (an image read like a bump map's).
+    void parse_image_pattern(const Token& kw, Pattern& pat);
     /// Reads `bump_map { ... }` after its keyword into `n`.
     void parse_bump_map(const Token& kw, Normal& n);
     /// Reads `material_map { ... }` after its keyword: `tx` becomes the material map.

@@ -62,6 +62,12 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
             pat.density_interpolation = 0;
             return 0;
         }
+        case PType::Slope:
+            parse_slope_parameters(t, pat);
+            return 0;
+        case PType::ImagePattern:
+            parse_image_pattern(t, pat);
+            return 0;
         case PType::Quilted:
             pat.control0 = pat.control1 = 1.0;
             pat.frequency = 0.0;

@@ -115,6 +115,11 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
             pat.crackle_offset = 0.0;
             pat.crackle_solid = false;
             break;
+        case PType::Facets:
+            pat.facets_size = 0.1;
+            pat.facets_coords = 0.0;
+            pat.crackle_metric = 2.0;
+            break;
         case PType::Checker:
             pat.frequency = 0.0;
             return 2;
@@ -231,7 +236,14 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         pat.crackle_form = parse_vector();
     } else if (w == "metric") {
         next();
-        pat.crackle_metric = parse_float();
+        // POV-Ray compat: the metric is the first component of a vector.
+        pat.crackle_metric = parse_vector().x;
+    } else if (w == "size" && pat.type == PType::Facets) {
+        next();
+        pat.facets_size = parse_float();
+    } else if (w == "coords" && pat.type == PType::Facets) {
+        next();
+        pat.facets_coords = parse_float();
     } else if (w == "offset") {
         next();
         pat.crackle_offset = parse_float();
@@ -389,6 +401,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         if (t.kind == TokenKind::Identifier && !is_color_keyword(t)) {
             const int count = parse_pattern_keyword(t, p.pattern);
             const bool list_inside = take_pattern_list_open();
+            if (p.pattern.type == PType::Facets) fail(t, "Keyword 'facets' can only be used in a normal statement.");
             if (count > 0) parse_pigment_list(p, count);
             if (list_inside) expect("}");
             if (count >= 0 || parse_pattern_modifier(t, p.pattern)) continue;

@@ -128,7 +128,8 @@ void PhotonTracer::texture(const scene::Texture& tx, const Vec3& p, std::vector<
         for (const auto& e : map) total += static_cast<float>(e.value);
         for (const auto& e : map) texture(e.texture, tp, warps, hit, raw, ray, colour * (e.value / total), weight, path);
     } else {
-        const double v = texture::pattern_value(pattern, tp, m_noise_generator);
+        const texture::SurfacePoint at{hit.position, raw, ray.dir};
+        const double v = texture::pattern_value(pattern, tp, m_noise_generator, &at);
         const texture::MapLookup m = texture::search_map(v, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
         if (m.prev == m.cur) {
             texture(map[m.cur].texture, tp, warps, hit, raw, ray, colour, weight, path);
@@ -188,16 +189,18 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
     Vec3 filter{1.0, 1.0, 1.0};
     double trans = 1.0;
     Vec3 top_normal = raw, normal = raw;
+    texture::SurfacePoint at{hit.position, raw, ray.dir};
     for (std::size_t li = 0; li < count && trans > m_bailout; ++li) {
         const scene::Texture& layer = *layers[li];
         normal = raw;
         if (layer.normal.pattern.type != scene::Pattern::Type::None) {
             for (const scene::Pattern* w : warps) normal = texture::warp_normal(*w, normal);
-            normal = texture::perturb_normal(layer.normal, normal, p, m_noise_generator);
+            normal = texture::perturb_normal(layer.normal, normal, p, m_noise_generator, &at);
+            at.normal = normal;  // POV-Ray compat: the layers' pigments see this normal (its PNormal)
             for (auto it = warps.rbegin(); it != warps.rend(); ++it) normal = texture::unwarp_normal(**it, normal);
         }
         if (li == 0) top_normal = normal;
-        const Color pc = texture::evaluate_pigment(layer.pigment, p, m_noise_generator);
+        const Color pc = texture::evaluate_pigment(layer.pigment, p, m_noise_generator, &at);
         // POV-Ray compat (photon pass): the layer's colour is filtered by the layers above before it tints the
         // metallic reflection and the filter.
         const Vec3 lay = pc.rgb() * filter;

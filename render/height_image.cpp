@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/film.h"
+#include "render/gif_reader.h"
 
 namespace wardray::render {
 
@@ -131,8 +132,18 @@ std::shared_ptr<const scene::HeightGrid> read_height_grid(const std::filesystem:
     const std::string head = file_head(path, 18);
     if (head.size() >= 8 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return read_png(path, error);
     if (head.size() >= 4 && head.compare(0, 4, "GIF8") == 0) {
-        unsupported = "height_field GIF or POT image (palette indices)";
-        return nullptr;
+        // POV-Ray compat: a GIF's height is its palette index times 256, as for any palette image.
+        const std::optional<GifIndices> gif = read_gif_indices(path, error);
+        if (!gif) return nullptr;
+        auto grid = std::make_shared<scene::HeightGrid>();
+        grid->width = gif->width;
+        grid->height = gif->height;
+        grid->heights.resize(gif->index.size());
+        for (int y = 0; y < gif->height; ++y)
+            for (int x = 0; x < gif->width; ++x)
+                grid->heights[static_cast<std::size_t>(gif->height - 1 - y) * gif->width + x] =
+                    static_cast<std::uint16_t>(gif->index[static_cast<std::size_t>(y) * gif->width + x] * 256u);
+        return grid;
     }
     const std::string ext = path.extension().string();
     if ((ext == ".tga" || ext == ".TGA") && head.size() >= 3 && (head[2] == 1 || head[2] == 9)) {

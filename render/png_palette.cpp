@@ -10,7 +10,8 @@
 namespace wardray::render {
 
 bool read_png_palette_indices(const std::filesystem::path& path, int& width, int& height,
-                              std::vector<std::uint8_t>& indices, int& palette_size) {
+                              std::vector<std::uint8_t>& indices, int& palette_size, std::vector<float>* entry_rgb,
+                              std::vector<float>* entry_alpha) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file) return false;
     png_byte signature[8];
@@ -42,6 +43,21 @@ bool read_png_palette_indices(const std::filesystem::path& path, int& width, int
     png_colorp palette = nullptr;
     int entries = 0;
     png_get_PLTE(png, info, &palette, &entries);
+    if (entry_rgb) {
+        entry_rgb->clear();
+        for (int i = 0; i < entries; ++i)
+            for (png_byte c : {palette[i].red, palette[i].green, palette[i].blue})
+                entry_rgb->push_back(static_cast<float>(c) / 255.0f);
+    }
+    png_bytep trans = nullptr;
+    int trans_count = 0;
+    if (entry_alpha) {
+        entry_alpha->clear();
+        if (png_get_tRNS(png, info, &trans, &trans_count, nullptr) != 0 && trans != nullptr) {
+            entry_alpha->assign(static_cast<std::size_t>(entries), 1.0f);
+            for (int i = 0; i < trans_count && i < entries; ++i) (*entry_alpha)[i] = static_cast<float>(trans[i]) / 255.0f;
+        }
+    }
     data.resize(static_cast<std::size_t>(w) * h);
     rows.resize(h);
     for (png_uint_32 y = 0; y < h; ++y) rows[y] = data.data() + static_cast<std::size_t>(y) * w;

@@ -14,11 +14,13 @@ struct ImageData {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  ///< width * height * 3
-    bool has_alpha = false;  ///< the file has an alpha channel, which is not read
+    bool has_alpha = false;  ///< the file has an alpha channel (read only as a palette PNG's palette_alpha)
     /// A palette image's colour index of each texel, rows from the top (POV-Ray's colour-mapped images); empty for
     /// other images.
     std::vector<std::uint8_t> index;
     int palette_size = 0;
+    /// A palette PNG's alpha per palette entry (its tRNS chunk); empty for an opaque one.
+    std::vector<float> palette_alpha;
     bool indexed() const { return !index.empty(); }
 };
 
@@ -43,6 +45,8 @@ struct ImageMap {
     /// bump_map and material_map: the palette index rather than the colour (`use_index`; a material_map always
     /// takes an index image's index).
     bool use_index = false;
+    /// image_pattern `use_alpha`: the red channel of an image without alpha (the only kind read here).
+    bool use_alpha = false;
     bool operator==(const ImageMap&) const = default;
 };
 

@@ -96,10 +96,29 @@ struct Warp {
     X(pigment_pattern, PigmentPattern) \
     X(function, Function)         \
     X(density_file, DensityFile)  \
-    X(object, Object)
+    X(object, Object)             \
+    X(slope, Slope)               \
+    X(aoi, Aoi)                   \
+    X(facets, Facets)             \
+    X(image_pattern, ImagePattern)
 
 struct Pigment;
 struct Object;
+
+/// `slope { [point_at] <slope>, lo, hi altitude <altitude>, lo, hi }` as POV-Ray 3.7 keeps it (Vals.Slope): unit
+/// vectors, each part's weight (slope_len + altitude_len = 1) and each range's start and width (0: no range).
+struct SlopeParams {
+    Vec3 slope_vector;     ///< unit; with point_at, the point the slope is measured towards
+    Vec3 altitude_vector;  ///< unit, or zero without altitude
+    double slope_len = 1.0;
+    double altitude_len = 0.0;
+    double slope_lo = 0.0;
+    double slope_range = 0.0;
+    double altitude_lo = 0.0;
+    double altitude_range = 0.0;
+    bool point_at = false;
+    bool operator==(const SlopeParams&) const = default;
+};
 
 /// A density_file's voxels as POV-Ray's df3 stores them (x fastest, then y, then z), each value raw / max.
 struct DensityFile {
@@ -151,11 +170,15 @@ struct Pattern {
     double control0 = 1.0;  ///< quilted
     double control1 = 1.0;
     int arms = 0;           ///< spiral1, spiral2
+    SlopeParams slope;      ///< slope
+    double facets_size = 0.1;    ///< facets `size` (its `metric` is crackle_metric)
+    double facets_coords = 0.0;  ///< facets `coords`: 0 picks by the normal, else by the point, tilting by this
     PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     function::SharedFunction function;  ///< the `function { ... }` pattern's function
     std::shared_ptr<const DensityFile> density_file;  ///< density_file df3 "file"
     std::shared_ptr<const Object> object;             ///< object { OBJECT a, b }: the object (compared by identity)
+    std::shared_ptr<const ImageMap> image;            ///< image_pattern { png "file" ... } (compared by identity)
     int density_interpolation = 0;                    ///< density_file: 0 none, 1 trilinear, 2 tricubic
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.

@@ -4,6 +4,7 @@
 #include "core/color.h"
 #include "core/vec3.h"
 #include "scene/image_map.h"
+#include "scene/texture.h"
 
 namespace wardray::texture {
 
@@ -19,6 +20,9 @@ bool image_position(const scene::ImageMap& map, const Vec3& p, double& x, double
 /// palette index there (interpolated and truncated), -1 for an image without a palette (POV-Ray's
 /// image_colour_at).
 Color image_color_at(const scene::ImageMap& map, double x, double y, int& index);
+
+/// `image_pattern`: the image's grey level at `p` (its red channel with use_alpha), 0 off the image.
+double image_pattern_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
 
 /// material_map: which of `count` materials the map picks at `p` (POV-Ray's material_map).
 int material_map_index(const scene::ImageMap& map, const Vec3& p, int count);

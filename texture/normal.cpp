@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "texture/facets.h"
 #include "texture/image_map.h"
 #include "texture/noise.h"
 #include "texture/pattern.h"
@@ -86,7 +87,8 @@ double slope_map_value(const std::vector<scene::SlopeMapEntry>& map, double valu
 
 }  // namespace
 
-Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator) {
+Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator,
+                    const SurfacePoint* surface) {
     const scene::Pattern& pat = normal.pattern;
     if (normal.bump_map) {
         // POV-Ray's bump_map: the image's normal in pattern space, carried back out.
@@ -103,32 +105,34 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
         Vec3 sum;
         float total = 0.0f;
         for (const scene::NormalMapEntry& e : normal.normal_map) {
-            sum += perturb_normal(e.normal, local, tp, noise_generator) * e.value;
+            sum += perturb_normal(e.normal, local, tp, noise_generator, surface) * e.value;
             total += static_cast<float>(e.value);
         }
         return unwarp_normal(pat, sum / static_cast<double>(total));
     }
     if (!normal.normal_map.empty()) {
         // normal_map: the entries perturb the normal in this pattern's space and the results are blended.
-        const double value = pattern_value(pat, tp, noise_generator);
+        const double value = pattern_value(pat, tp, noise_generator, surface);
         const auto& map = normal.normal_map;
         const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
         const Vec3 local = warp_normal(pat, n);
-        Vec3 result = perturb_normal(map[m.cur].normal, local, tp, noise_generator);
+        Vec3 result = perturb_normal(map[m.cur].normal, local, tp, noise_generator, surface);
         if (m.prev != m.cur) {
-            const Vec3 other = perturb_normal(map[m.prev].normal, local, tp, noise_generator);
+            const Vec3 other = perturb_normal(map[m.prev].normal, local, tp, noise_generator, surface);
             result = other * (1.0 - m.fraction) + result * m.fraction;
         }
         return unwarp_normal(pat, result);
     }
     Vec3 local = warp_normal(pat, n);
-    if (is_normal_only(pat.type)) {
+    if (pat.type == Type::Facets) {
+        local = facets_normal(pat, tp, local);
+    } else if (is_normal_only(pat.type)) {
         local += normal_only_offset(normal, tp, generator);
     } else {
         // POV-Ray compat: the slope of any other pattern from four samples, scaled by −5 (its fudge factor).
         const double amount = normal.amount * -5.0 * (0.02 / normal.delta);
         for (const Vec3& dir : kPyramid) {
-            double v = pattern_value(pat, tp + dir * normal.delta, noise_generator);
+            double v = pattern_value(pat, tp + dir * normal.delta, noise_generator, surface);
             if (!normal.slope_map.empty()) v = slope_map_value(normal.slope_map, v);
             local += dir * (v * amount);
         }

@@ -3,12 +3,15 @@
 
 #include "scene/scene.h"
 #include "core/vec3.h"
+#include "texture/surface_point.h"
 
 namespace wardray::texture {
 
 /// POV-Ray's Perturb_Normal: `n` (unit, world space, facing the viewer) tilted by `normal` at `p` (the point in
-/// the normal's enclosing space). Returns a unit vector.
-Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator);
+/// the normal's enclosing space). Returns a unit vector. `surface`, the intersection being shaded if any, is what
+/// slope and aoi read.
+Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator,
+                    const SurfacePoint* surface = nullptr);
 
 /// A unit normal carried into a pattern's space (POV-Ray's Warp_Normal: the transpose of pattern→world).
 Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n);

@@ -5,14 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 #include "core/constants.h"
 #include "texture/density_file.h"
+#include "texture/facets.h"
 #include "texture/fractal.h"
 #include "texture/function_pattern.h"
+#include "texture/image_map.h"
 #include "texture/noise.h"
 #include "texture/object_pattern.h"
 #include "texture/pattern_blocks.h"
+#include "texture/slope.h"
 
 namespace wardray::texture {
 
@@ -336,12 +340,25 @@ double cycloidal(double v) {
     return 0.0 - std::sin((0.0 - (v + std::floor(0.0 - v))) * kTwoPi);
 }
 
-double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator) {
+namespace {
+
+// A `<keyword>_pattern` function, given the surface when it takes one (slope, aoi, pigment_pattern).
+template <typename F>
+double call_pattern(F f, const scene::Pattern& pat, const Vec3& p, int generator, const SurfacePoint* surface) {
+    if constexpr (std::is_invocable_v<F, const scene::Pattern&, const Vec3&, int, const SurfacePoint*>)
+        return f(pat, p, generator, surface);
+    else
+        return f(pat, p, generator);
+}
+
+}  // namespace
+
+double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator, const SurfacePoint* surface) {
     // One case per pattern of WARDRAY_PATTERNS, each calling its `<keyword>_pattern`: a listed pattern without
     // its evaluation fails to compile here.
 #define WARDRAY_PATTERN_CASE(keyword, Enumerator) \
     case Type::Enumerator:                        \
-        return keyword##_pattern(pat, p, generator);
+        return call_pattern(keyword##_pattern, pat, p, generator, surface);
     switch (pat.type) {
         case Type::None:
             return 0.0;
@@ -351,9 +368,9 @@ double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator
     return 0.0;
 }
 
-double pattern_value(const scene::Pattern& pat, const Vec3& p, int noise_generator) {
+double pattern_value(const scene::Pattern& pat, const Vec3& p, int noise_generator, const SurfacePoint* surface) {
     const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
-    double value = raw_pattern_value(pat, p, generator);
+    double value = raw_pattern_value(pat, p, generator, surface);
     // POV-Ray compat: frequency and phase wrap with fmod(…, 1.00001); negative results fold into [0, 1).
     if (pat.frequency != 0.0) value = std::fmod(value * pat.frequency + pat.phase, 1.00001);
     if (value < 0.0) value -= std::floor(value);

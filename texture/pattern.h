@@ -3,6 +3,7 @@
 
 #include "scene/scene.h"
 #include "core/vec3.h"
+#include "texture/surface_point.h"
 
 namespace wardray::texture {
 
@@ -10,12 +11,15 @@ namespace wardray::texture {
 /// classic turbulence displacement (POV-Ray's Warp_EPoint; marble and wood apply their turbulence themselves).
 Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p);
 
-/// The raw pattern function at a point of pattern space (before frequency, phase and wave shaping).
-double raw_pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise_generator);
+/// The raw pattern function at a point of pattern space (before frequency, phase and wave shaping); `surface` is
+/// the intersection being shaded, if any (slope and aoi read it).
+double raw_pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise_generator,
+                         const SurfacePoint* surface = nullptr);
 
 /// POV-Ray's Evaluate_TPat: the raw value, then frequency and phase, then the wave type.
 /// `noise_generator` is the scene's default, used when the pattern does not name its own.
-double pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise_generator);
+double pattern_value(const scene::Pattern& pattern, const Vec3& p, int noise_generator,
+                     const SurfacePoint* surface = nullptr);
 
 /// `quilted`'s displacement in its unit cell (POV-Ray's quilted normal adds it, scaled, to the normal).
 Vec3 quilted_offset(const scene::Pattern& pattern, const Vec3& p);

@@ -4,6 +4,7 @@
 
 #include "scene/texture.h"
 #include "core/vec3.h"
+#include "texture/surface_point.h"
 
 namespace wardray::texture {
 
@@ -13,7 +14,7 @@ double square_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
 double triangular_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
 /// `cubic`: 0..5 for the six pyramids around the axes (+x, +y, +z, −x, −y, −z).
 double cubic_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
-/// `pigment_pattern { pigment }`: the pigment's grey level at the point.
-double pigment_pattern_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
+/// `pigment_pattern { pigment }`: the pigment's grey level at the point (on `surface`, when shading one).
+double pigment_pattern_pattern(const scene::Pattern& pat, const Vec3& p, int generator, const SurfacePoint* surface);
 
 }  // namespace wardray::texture

@@ -3,6 +3,7 @@
 
 #include "scene/scene.h"
 #include "core/vec3.h"
+#include "texture/surface_point.h"
 
 namespace wardray::texture {
 
@@ -10,15 +11,19 @@ namespace wardray::texture {
 inline double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c.z; }
 
 /// The five-component colour of `pigment` at `p` (in the pigment's enclosing space: world space for an object's
-/// pigment). Solid pigments return their colour without evaluating anything.
-inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator);
+/// pigment). Solid pigments return their colour without evaluating anything. `surface` is the intersection
+/// being shaded, if any.
+inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator,
+                              const SurfacePoint* surface = nullptr);
 
 /// The pattern path of evaluate_pigment (POV-Ray's Compute_Pigment for patterned pigments).
-Color evaluate_patterned_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator);
+Color evaluate_patterned_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator,
+                                 const SurfacePoint* surface);
 
-inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator) {
+inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator,
+                              const SurfacePoint* surface) {
     if (pigment.is_solid()) return pigment.color;
-    return evaluate_patterned_pigment(pigment, p, noise_generator);
+    return evaluate_patterned_pigment(pigment, p, noise_generator, surface);
 }
 
 /// Linear interpolation of all five components: a + f·(b − a).

@@ -1,9 +1,11 @@
-// image_map: texels placed, decoded and interpolated as POV-Ray 3.7's image maps do, on a 2 x 2 test image.
+// image_map: texels placed, decoded and interpolated as POV-Ray 3.7's image maps do, on a 2 x 2 test image; and
+// image_pattern's value from the same image as POV-Ray's image_pattern takes it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "parser/parse.h"
+#include "texture/pattern.h"
 #include "texture/pigment.h"
 
 namespace wardray::lighting {
@@ -19,13 +21,14 @@ std::shared_ptr<const scene::ImageData> two_by_two(const std::filesystem::path&,
     return image;
 }
 
-scene::Pigment image_pigment(const std::string& items) {
+// The pigment `pigment { BLOCK { png "file" ITEMS } }` (an image_map, or an image_pattern) on the test image.
+scene::Pigment image_pigment(const std::string& items, const std::string& block = "image_map") {
     parser::ParseOptions options;
     options.read_image = two_by_two;
     options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");  // the stand-in file is read from there
     // The file must exist for the search; the scene itself serves.
     const parser::ParseResult r = parser::parse_string(
-        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { " + block + " { png \"" WARDRAY_SOURCE_DIR
         "/scenes/default.pov\" " + items + " } } }",
         "test.pov", options);
     EXPECT_TRUE(r.ok());
@@ -72,6 +75,66 @@ TEST(ImageMap, SphericalMapsLatitudeUp) {
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, 1.0, 0.1}, 2).r, 0.5, 1e-6);
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).b, 1.0, 1e-6);
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.1, -1.0, 0.1}, 2).r, 0.0, 1e-6);
+}
+
+TEST(ImagePattern, IsTheGreyLevelOfTheStoredTexel) {
+    const scene::Pattern pat = image_pigment("", "image_pattern").pattern;
+    ASSERT_EQ(pat.type, scene::Pattern::Type::ImagePattern);
+    EXPECT_EQ(pat.frequency, 0.0);
+    // POV-Ray's greyscale 0.297 r + 0.589 g + 0.114 b of the values as stored (no gamma decoding), clipped to 1.
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0.75, 0}, 2), 0.297 * 0.5, 1e-7);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+    EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0.25, 0}, 2), 0.114, 1e-7);
+    EXPECT_DOUBLE_EQ(texture::pattern_value(pat, {0.75, 0.25, 0}, 2), 1.0);
+    // The image repeats; use_index still takes the grey level, as POV-Ray's does.
+    EXPECT_NEAR(texture::pattern_value(pat, {3.25, -0.75, 0}, 2), 0.114, 1e-7);
+    const scene::Pattern index = image_pigment("use_index", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(index, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+}
+
+TEST(ImagePattern, UseAlphaWithoutAlphaTakesRedAndOnceLeavesZero) {
+    const scene::Pattern alpha = image_pigment("use_alpha", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(alpha, {0.25, 0.75, 0}, 2), 0.5, 1e-7);
+    EXPECT_EQ(texture::pattern_value(alpha, {0.75, 0.75, 0}, 2), 0.0);
+    const scene::Pattern once = image_pigment("once", "image_pattern").pattern;
+    EXPECT_NEAR(texture::pattern_value(once, {0.75, 0.75, 0}, 2), 0.589, 1e-7);
+    EXPECT_EQ(texture::pattern_value(once, {1.5, 0.5, 0}, 2), 0.0);
+}
+
+// A 2 x 1 palette image whose entry 1 is 40 % opaque (a tRNS chunk): rows from the top, indices 0 and 1.
+std::shared_ptr<const scene::ImageData> palette_with_alpha(const std::filesystem::path&, bool& encoded, std::string&) {
+    auto image = std::make_shared<scene::ImageData>();
+    image->width = 2;
+    image->height = 1;
+    image->rgb = {1, 0, 0, 0, 0, 1};
+    image->index = {0, 1};
+    image->palette_size = 2;
+    image->palette_alpha = {1.0f, 0.4f};
+    image->has_alpha = true;
+    encoded = true;
+    return image;
+}
+
+TEST(ImageMap, PaletteAlphaIsEachEntrysTransmitWhichFilterLeaves) {
+    parser::ParseOptions options;
+    options.read_image = palette_with_alpha;
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+        "/scenes/default.pov\" filter 1, 0.25 } } }\nsphere { 0, 1 pigment { image_pattern { png \"" WARDRAY_SOURCE_DIR
+        "/scenes/default.pov\" use_alpha } } }",
+        "test.pov", options);
+    ASSERT_TRUE(r.ok());
+    EXPECT_TRUE(r.diagnostics.empty());  // the alpha is rendered: no warning
+    const scene::Pigment& p = r.scene->objects.at(0).texture.pigment;
+    const Color opaque = texture::evaluate_pigment(p, {0.25, 0.5, 0}, 2);
+    const Color clear = texture::evaluate_pigment(p, {0.75, 0.5, 0}, 2);
+    EXPECT_FLOAT_EQ(opaque.transmit, 0.0f);
+    EXPECT_FLOAT_EQ(clear.transmit, 0.6f);
+    EXPECT_FLOAT_EQ(clear.filter, 0.25f);
+    // image_pattern's use_alpha takes the transmit of an image with alpha.
+    const scene::Pattern& alpha = r.scene->objects.at(1).texture.pigment.pattern;
+    EXPECT_NEAR(texture::pattern_value(alpha, {0.75, 0.5, 0}, 2), 0.6, 1e-7);
+    EXPECT_EQ(texture::pattern_value(alpha, {0.25, 0.5, 0}, 2), 0.0);
 }
 
 }  // namespace

@@ -484,12 +484,27 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         static const std::map<std::string_view, const char*> parameters = {
             {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
             {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}, {"function", " { x + y }"},
-            {"density_file", " df3 \"/usr/share/povray-3.7/include/spiral.df3\""}, {"object", " { sphere { 0, 1 } }"}};
+            {"density_file", " df3 \"/usr/share/povray-3.7/include/spiral.df3\""}, {"object", " { sphere { 0, 1 } }"},
+            {"slope", " { y, 0, 1 altitude x }"}, {"image_pattern", " { png \"/usr/share/povray-3.7/include/Mount1.png\" }"}};
         const auto sample = parameters.find(keyword);
         const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
+        if (keyword == "facets") {
+            // POV-Ray compat: facets is a normal pattern only.
+            EXPECT_EQ(parse_ok("sphere { 0, 1 normal { facets } }").objects[0].texture.normal.pattern.type, type);
+            continue;
+        }
+        // image_pattern reads its file through the renderer's reader: a one-texel stand-in.
+        ParseOptions options = test::default_options();
+        options.read_image = [](const std::filesystem::path&, bool&, std::string&) {
+            auto image = std::make_shared<ImageData>();
+            image->width = image->height = 1;
+            image->rgb = {0.5f, 0.5f, 0.5f};
+            return std::shared_ptr<const ImageData>(image);
+        };
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
-                                 " } }\nsphere { 0, 1 texture { " + pattern +
-                                 " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }");
+                                     " } }\nsphere { 0, 1 texture { " + pattern +
+                                     " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }",
+                                 options);
         ASSERT_EQ(s.objects.size(), 2u);
         EXPECT_EQ(s.objects[0].texture.pigment.pattern.type, type);
         EXPECT_EQ(s.objects[0].texture.normal.pattern.type, type);
