@@ -27,7 +27,7 @@ void SourceStream::count_objects(const Token& at, std::size_t n) {
 }
 
 void SourceStream::count_copies(const Token& at, std::size_t n) {
-    constexpr std::size_t k_copies_per_object = 5;
+    constexpr std::size_t k_copies_per_object = 10;
     m_objects_copied += n;
     if (m_objects_copied / k_copies_per_object > m_options.max_objects) {
         report(make_diagnostic(Severity::Error, at,

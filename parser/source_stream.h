@@ -126,7 +126,7 @@ protected:
     void count_objects(const Token& at, std::size_t n);
     /// Gives back `n` objects counted as copies whose value is freed (a declared object redeclared).
     void uncount_objects(std::size_t n) { m_objects_created -= std::min(n, m_objects_created); }
-    /// Counts `n` objects copied at `at` (and created, see count_objects); past five times
+    /// Counts `n` objects copied at `at` (and created, see count_objects); past ten times
     /// ParseOptions::max_objects copied in all, an error there ends the parse (a growing object copied in a loop).
     void count_copies(const Token& at, std::size_t n);
     /// Past ParseOptions::max_memory_bytes of growth since the parse began, an error at `at` ends the parse.
