@@ -100,8 +100,9 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     if (options.max_string_length) parse_options.max_string_length = *options.max_string_length;
     if (options.max_memory_file) parse_options.max_memory_file_bytes = *options.max_memory_file;
     // The command line's budgets: an object costs about 3.7 KB while parsing, so an endless object-making loop stops
-    // within a second or two and about 400 MB; the switches raise them for scenes that really are that large.
-    parse_options.max_objects = options.max_objects.value_or(100'000);
+    // within a second or two and under 1 GB; the switches raise them for scenes that really are that large. A
+    // user's city of 4,000 domed towers holds 92,000 objects (108,000 counted with its CSG children).
+    parse_options.max_objects = options.max_objects.value_or(250'000);
     parse_options.max_memory_bytes = static_cast<std::size_t>(options.max_memory.value_or(1024)) << 20;
     // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
     parse_options.defer_library_declarations = !options.check_only;

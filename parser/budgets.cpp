@@ -26,6 +26,19 @@ void SourceStream::count_objects(const Token& at, std::size_t n) {
     throw FatalError{};
 }
 
+void SourceStream::count_copies(const Token& at, std::size_t n) {
+    constexpr std::size_t k_copies_per_object = 10;
+    m_objects_copied += n;
+    if (m_objects_copied / k_copies_per_object > m_options.max_objects) {
+        report(make_diagnostic(Severity::Error, at,
+                               "the scene copied more than the limit of " +
+                                   std::to_string(m_options.max_objects * k_copies_per_object) +
+                                   " objects (a loop copying a growing object?); raise it with --max-objects"));
+        throw FatalError{};
+    }
+    count_objects(at, n);
+}
+
 void SourceStream::check_memory(const Token& at) {
     const std::size_t now = resident_bytes();
     if (now <= m_resident_at_start || now - m_resident_at_start <= m_options.max_memory_bytes) return;

@@ -122,11 +122,13 @@ namespace {
 
 /// `object { Declared }`: a copy of the declared object whose parts leave room for a few more, so a union that
 /// adds shapes after it (`#declare U = union { object { U } sphere { ... } }`) does not move every part again.
-void copy_declared(ObjectValue& ov, const ObjectValue& declared) {
+void copy_declared(ObjectValue& ov, const ObjectValue& declared, std::size_t charged) {
     constexpr std::size_t k_room = 8;
     // Every member, named so a new one fails to compile here until it is copied too.
-    auto& [parts, lights, compound, texture, interior_id] = ov;
-    const auto& [from_parts, from_lights, from_compound, from_texture, from_interior_id] = declared;
+    auto& [parts, lights, compound, texture, interior_id, copied] = ov;
+    const auto& [from_parts, from_lights, from_compound, from_texture, from_interior_id, from_copied] = declared;
+    copied = charged;  // the copy's own charge (the declared value keeps its own `from_copied`)
+    static_cast<void>(from_copied);
     parts.clear();
     parts.reserve(from_parts.size() + k_room);
     parts.insert(parts.end(), from_parts.begin(), from_parts.end());
@@ -146,8 +148,10 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         const Value* v = lookup(w);
         if (v == nullptr) fail_undeclared(kw);
         const ObjectValue& declared = *std::get<Boxed<ObjectValue>>(*v);
-        count_objects(kw, object_count(declared));
+        const std::size_t charged = object_count(declared);
+        count_copies(kw, charged);
         ObjectValue copy = declared;
+        copy.copied = charged;
         fresh_interior_ids(copy);
         return copy;
     }
@@ -181,7 +185,8 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
     if (copied != nullptr) {
         next();
         ov = *std::get<Boxed<ObjectValue>>(*copied);
-        count_objects(kw, object_count(ov));
+        ov.copied = object_count(ov);
+        count_copies(kw, ov.copied);
         fresh_interior_ids(ov);
     } else if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
@@ -193,8 +198,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         const Token at = peek();
         if ((element = take_array_element())) {
             if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) {
-                count_objects(at, object_count(**o));  // before copying, so a huge copy is never made
-                copy_declared(ov, **o);
+                const std::size_t charged = object_count(**o);
+                count_copies(at, charged);  // before copying, so a huge copy is never made
+                copy_declared(ov, **o, charged);
                 fresh_interior_ids(ov);
             }
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
@@ -213,8 +219,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             if (std::holds_alternative<Unsupported>(*v)) {
                 // Already warned about where it was declared; the object is left out.
             } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
-                count_objects(id, object_count(**o));  // before copying, so a huge copy is never made
-                copy_declared(ov, **o);
+                const std::size_t charged = object_count(**o);
+                count_copies(id, charged);  // before copying, so a huge copy is never made
+                copy_declared(ov, **o, charged);
                 fresh_interior_ids(ov);
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");
@@ -227,6 +234,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         Csg csg;
         csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
         read_csg_children(ov, [&](ObjectValue& child) {
+            ov.copied += child.copied;
             if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
         });
         add_shape(std::move(csg));
@@ -234,6 +242,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         // union: children first, then the union's own modifiers.
         ov.compound = true;
         read_csg_children(ov, [&](ObjectValue& child) {
+            ov.copied += child.copied;
             if (child.texture)
                 for (ObjectPart& part : child.parts)
                     if (!part.has_texture) {

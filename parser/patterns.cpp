@@ -393,8 +393,11 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         }
         if (t.kind == TokenKind::EndOfFile) fail(kw, "'" + kw.text + "' has no closing '" + close + "'");
         if (is_word(t, "uv_mapping")) {
-            // POV-Ray compat: the rest of the pigment is evaluated at the surface's (u, v, 0).
+            // POV-Ray compat: the rest of the pigment is evaluated at the surface's (u, v, 0). It is a pigment
+            // of its own (Parse_Item_Into_Blend_List), so it may start with a pigment identifier
+            // (`pigment { uv_mapping Declared }`).
             next();
+            parse_pigment_start(p);
             p.uv_mapping = true;
             continue;
         }
@@ -518,7 +521,9 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a normal item but found " + describe_token(t));
         if (is_word(t, "uv_mapping")) {
+            // As in a pigment: the rest is a normal of its own, which may start with a normal identifier.
             next();
+            parse_normal_start(n);
             n.uv_mapping = true;
             continue;
         }

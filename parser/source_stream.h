@@ -1,6 +1,7 @@
 // SourceStream: the files a parse reads, the position in their tokens, and the diagnostics it reports.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -123,6 +124,11 @@ protected:
 
     /// Counts `n` objects created at `at`; past ParseOptions::max_objects an error there ends the parse.
     void count_objects(const Token& at, std::size_t n);
+    /// Gives back `n` objects counted as copies whose value is freed (a declared object redeclared).
+    void uncount_objects(std::size_t n) { m_objects_created -= std::min(n, m_objects_created); }
+    /// Counts `n` objects copied at `at` (and created, see count_objects); past ten times
+    /// ParseOptions::max_objects copied in all, an error there ends the parse (a growing object copied in a loop).
+    void count_copies(const Token& at, std::size_t n);
     /// Past ParseOptions::max_memory_bytes of growth since the parse began, an error at `at` ends the parse.
     /// Reads the resident size, so callers ask every few thousand tokens.
     void check_memory(const Token& at);
@@ -178,6 +184,7 @@ protected:
     const ParseOptions& m_options;
     std::vector<ReadRoot> m_read_roots;  ///< the folders the scene may read, made on first use
     std::size_t m_objects_created = 0;
+    std::size_t m_objects_copied = 0;  ///< every object copied, never given back: bounds quadratic copying
     std::size_t m_resident_at_start = 0;  ///< the process's resident bytes when the parse began
     std::vector<std::unique_ptr<SourceFile>> m_files;
     std::map<std::string, std::uint32_t> m_file_index;  ///< resolved path -> index, so re-includes do not re-lex

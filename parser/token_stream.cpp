@@ -170,18 +170,24 @@ Value* TokenStream::find_slot(const std::string& name) {
 
 void TokenStream::declare(const std::string& name, Value v, bool local) {
     before_rebinding(name);
+    // The copies a declared object held are freed when it is rebound (`#declare U = union { object { U } ... }`):
+    // the object budget counts them no longer.
+    auto rebind = [this](Value& slot, Value&& with) {
+        if (const auto* o = std::get_if<Boxed<ObjectValue>>(&slot); o && o->sole()) uncount_objects((*o)->copied);
+        slot = std::move(with);
+    };
     // POV-Ray compat: #local binds in the innermost scope (include file or macro); #declare rebinds the innermost
     // existing name, a macro's local included, and creates a global only when the name is new.
     if (!local) {
         for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
             const auto found = it->find(name);
             if (found == it->end()) continue;
-            found->second = std::move(v);
+            rebind(found->second, std::move(v));
             return;
         }
     }
     auto& scope = local ? m_scopes.back() : m_scopes.front();
-    scope[name] = std::move(v);
+    rebind(scope[name], std::move(v));
 }
 
 std::vector<std::string> TokenStream::known_names() const {

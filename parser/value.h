@@ -73,6 +73,10 @@ struct ObjectValue {
     std::optional<Texture> texture;   ///< the union's own texture
     /// The union's own interior, when it has one: the parts with this Object::interior_id share it.
     std::uint32_t interior_id = 0;
+    /// The objects charged to the parse's object budget as copies of declared objects; a redeclaration that
+    /// drops this value gives them back, so `#declare U = union { object { U } ... }` repeated costs one
+    /// object per new part, not one per part copied.
+    std::size_t copied = 0;
 };
 
 /// The camera as written, before resolution to the final vectors.
@@ -148,6 +152,8 @@ public:
     Boxed(T item) : m_item(std::make_shared<const T>(std::move(item))) {}  // NOLINT: converts like the item
     const T& operator*() const { return *m_item; }
     const T* operator->() const { return m_item.get(); }
+    /// Whether this is the item's only holder (dropping it frees the item).
+    bool sole() const { return m_item.use_count() == 1; }
 
 private:
     std::shared_ptr<const T> m_item;

@@ -181,6 +181,25 @@ TEST(Budgets, TheObjectThatCrossesTheLimitIsNamed) {
     EXPECT_EQ(copies.diagnostics[0].loc.line, 3u);
 }
 
+TEST(Budgets, AUnionRedeclaredAroundItselfCountsEachNewPartOnce) {
+    // `#declare U = union { object { U } sphere { ... } }` 1,400 times (as a user's scene does) copies about a
+    // million parts in all, but holds only 1,401: the copies of a value a redeclaration drops are given back.
+    ParseOptions o = test::default_options();
+    o.max_objects = 250'000;  // the command line's default
+    const std::string scene = "#declare U = sphere { 0, 1 }\n#for (I, 1, 1400)\n"
+                              "  #declare U = union { object { U } sphere { <I, 0, 0>, 1 } }\n#end\nobject { U }\n";
+    const ParseResult r = parse_string(scene, "t.pov", o);
+    ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
+    EXPECT_EQ(r.scene->objects.size(), 1401u);
+    // Copies placed in the scene are kept, so they still count.
+    o.max_objects = 2'000;
+    const ParseResult held = parse_string("#declare U = union { #for (I, 1, 100) sphere { I * x, 1 } #end }\n"
+                                          "#for (I, 1, 30)\n  #declare Keep = U;\n  #declare U = object { U }\n"
+                                          "  object { Keep }\n#end\n", "t.pov", o);
+    ASSERT_FALSE(held.ok());
+    EXPECT_NE(held.diagnostics[0].message.find("raise it with --max-objects"), std::string::npos);
+}
+
 TEST(Budgets, AnEndlessObjectLoopStopsWithinSeconds) {
     ParseOptions o = test::default_options();
     o.max_loop_iterations = 1'000'000'000;

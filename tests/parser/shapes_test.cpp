@@ -200,6 +200,27 @@ TEST(Mesh, UvMappingStaysInUvSpace) {
     EXPECT_NE(test::all_diagnostics(r).find("uv_mapping on sphere is not rendered yet"), std::string::npos);
 }
 
+// `pigment { uv_mapping Declared }`: the item after uv_mapping is a pigment of its own (POV-Ray's
+// Parse_Item_Into_Blend_List), so it may be a declared pigment (or normal), modified by what follows.
+TEST(Mesh, UvMappingTakesADeclaredPigmentOrNormal) {
+    const Scene s = parse_ok(R"(
+        #declare P = pigment { color rgb <0.8, 0.2, 0.1> }
+        #declare N = normal { bumps 0.5 }
+        mesh2 {
+          vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <1, 1, 0> } uv_vectors { 3, <0, 0>, <1, 0>, <1, 1> }
+          face_indices { 1, <0, 1, 2> }
+          texture { pigment { uv_mapping P } normal { uv_mapping N scale 2 } }
+        }
+    )");
+    const Texture& t = s.objects[0].texture;
+    EXPECT_TRUE(t.pigment.uv_mapping);
+    EXPECT_EQ(t.pigment.color.r, 0.8);
+    EXPECT_EQ(t.pigment.color.g, 0.2);
+    EXPECT_TRUE(t.normal.uv_mapping);
+    EXPECT_EQ(t.normal.pattern.type, Pattern::Type::Bumps);
+    EXPECT_EQ(t.normal.pattern.transform.point({1, 1, 1}), (Vec3{2, 2, 2}));
+}
+
 // POV-Ray reads the commas between quartic coefficients as optional (primitiv.pov, hyptorus.pov), and a mesh2 face
 // is followed by texture indices only when a float comes next (shapes.inc writes `F1+A, F2+A` with vector F1, F2).
 TEST(Mesh, OptionalCommasAndFaceIndicesFromVectorIdentifiers) {
