@@ -52,8 +52,6 @@ Why set_quality(U u, Options& o) {
 
 Why set_output_alpha(U u, Options& o) {
     o.output_alpha = u.sign.value_or(true);
-    if (o.output_alpha)
-        o.warnings.push_back("Output_Alpha (+UA) is not rendered yet: the image is written without alpha");
     return std::nullopt;
 }
 
@@ -135,7 +133,8 @@ constexpr OptionSpec kFrameOptions[] = {
          return u.value.empty() ? Why{} : Why{"takes no value"};
      }},
     {.letters = "UA", .ini_flag = "Output_Alpha", .kind = K::Flag, .usage = "+UA",
-     .help = "alpha channel (not rendered yet: a warning)", .set = set_output_alpha},
+     .help = "alpha channel: PNG (and EXR) with alpha where the background shows, as POV-Ray writes it",
+     .set = set_output_alpha},
     {.letters = "Q", .ini_key = "Quality", .kind = K::Value, .usage = "+Qn",
      .help = "quality 0..11 (9); below 9 is not rendered yet (a warning)", .set = set_quality},
     {.letters = "BS", .ini_key = "Render_Block_Size", .kind = K::Value, .usage = "+BSn",

@@ -298,6 +298,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
     settings.reference_rays = options.gi_rays;
     settings.gradients = options.gi_gradients;
+    settings.output_alpha = options.output_alpha;
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     // The photon pass runs here, in the integrator's construction, when the scene has a photons block.
@@ -331,6 +332,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
                           antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
+    settings.alpha = options.output_alpha;
     settings.communicator = communicator;
     RenderedFrame frame{render::render_image(
         scene, *illumination.integrator, settings, [&](double f) { progress.update("render", f); },
@@ -345,7 +347,8 @@ bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination
     const Options& options = job.options;
     if (options.write_output) {
         const render::OutputGamma gamma = render::output_gamma(scene.global, options.file_gamma, options.display_gamma);
-        if (auto error = render::write_image(result.film, job.output, job.format, gamma)) {
+        if (auto error = render::write_image(result.film, job.output, job.format, gamma,
+                                             result.alpha ? &*result.alpha : nullptr)) {
             std::cerr << "wardray: error: " << *error << "\n";
             return false;
         }

@@ -16,6 +16,7 @@
 #include "photons/photon_map.h"
 #include "photons/photon_shooter.h"
 #include "texture/noise.h"
+#include "texture/pigment.h"
 
 namespace wardray::lighting {
 
@@ -118,6 +119,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     }
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
     // documentation describes, since media and fog then leave the camera's stretch of every ray out.
+    if (options.output_alpha && (m_media || !scene.rainbows.empty()))
+        m_limitations.push_back("Output_Alpha: participating media and rainbows do not change the alpha channel "
+                                "(not rendered yet)");
     if ((m_media || !scene.fogs.empty()) && !hollow_ray(scene, m_camera_interiors))
         m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
                                 "expected.");
@@ -131,6 +135,7 @@ Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) c
     state.adc_bailout = m_scene.global.adc_bailout;
     state.max_level = m_scene.global.max_trace_level;
     state.interiors = m_camera_interiors;
+    state.alpha_background = m_options.output_alpha;
     return trace(ray, state, false, ctx);
 }
 
@@ -146,10 +151,14 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     const Vec3 direction = ray.direction / scale;
     Vec3 colour;
     double depth = INFINITY;
+    double transmit = 0.0;  // Output_Alpha: the background showing through, POV-Ray's transmit channel
     if (hit) {
         depth = hit->t * scale;
         if (hit_distance) *hit_distance = depth;
         colour = shade(*hit, direction, depth, state, ctx);
+        if (state.alpha_background) transmit = ctx.transmit;
+    } else if (state.alpha_background) {
+        colour = m_sky.radiance_with_alpha(direction, transmit);
     } else {
         colour = m_sky.radiance(direction);
     }
@@ -162,7 +171,13 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
         colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
                                    cache::seed_from(ray.origin, direction, 0x5241494E));
     if (m_media) colour = apply_media(ray, direction, depth, hit.has_value(), state, colour, ctx);
-    if (volume && m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    if (volume && m_atmosphere) {
+        const media::Segment segment{ray.origin, direction, depth};
+        colour = m_atmosphere->along_segment(colour, segment);
+        // POV-Ray compat (ComputeFog): the fog's attenuation dims the transmit channel by its grey level.
+        if (transmit > 0.0) transmit *= texture::grey(m_atmosphere->transmittance(segment));
+    }
+    ctx.transmit = transmit;
     return colour;
 }
 

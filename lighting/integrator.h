@@ -42,6 +42,9 @@ struct IntegratorOptions {
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
     double footprint = 0.0;
+    /// Output_Alpha (+UA): camera rays see the background as transparent, and the transmit of what they see is
+    /// left in TraceContext::transmit (1 − alpha).
+    bool output_alpha = false;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it

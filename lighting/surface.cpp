@@ -68,7 +68,12 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     if (count == 1) return shade_texture(*textures[0], s, warps, state, ctx);
     // POV-Ray compat: a triangle with a texture per corner blends the three lit colours.
     Vec3 colour;
-    for (int k = 0; k < 3; ++k) colour += shade_texture(*textures[k], s, warps, state, ctx) * weights[k];
+    double transmit = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        colour += shade_texture(*textures[k], s, warps, state, ctx) * weights[k];
+        transmit += ctx.transmit * weights[k];
+    }
+    ctx.transmit = transmit;
     return colour;
 }
 
@@ -95,8 +100,10 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
     warps.push_back(&pattern);
     Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, ctx);
     if (m.prev != m.cur) {
+        const double transmit = ctx.transmit;
         const Vec3 other = shade_texture(map[m.prev].texture, s, warps, state, ctx);
         colour = colour * m.fraction + other * (1.0 - m.fraction);
+        ctx.transmit = transmit * m.fraction + ctx.transmit * (1.0 - m.fraction);
     }
     warps.pop_back();
     return colour;
@@ -108,12 +115,15 @@ Vec3 Integrator::shade_average(const scene::Texture& texture, const Surface& s,
     // POV-Ray's ComputeAverageTextureColours: the entries lit on their own, weighted by their map values.
     warps.push_back(&texture.map_pattern);
     Vec3 sum;
+    double transmit = 0.0;
     float total = 0.0f;
     for (const scene::TextureMapEntry& e : texture.texture_map) {
         sum += shade_texture(e.texture, s, warps, state, ctx) * e.value;
+        transmit += ctx.transmit * e.value;
         total += static_cast<float>(e.value);
     }
     warps.pop_back();
+    ctx.transmit = transmit / static_cast<double>(total);
     return sum / static_cast<double>(total);
 }
 
@@ -224,6 +234,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
 
     // Light from behind the surface: straight through (ior 1) or refracted by the interior.
     bool total_internal = false;
+    double transmit = 0.0;  // Output_Alpha: how much of the transparent background shows through the surface
     if (trans > bailout) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
@@ -232,6 +243,9 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         if (state.interiors.contains(object_id) && std::fabs(interior.fade_distance) > kPovEpsilon)
             fade = media::interior_fade(interior, s.depth);
         colour += total_internal ? fade * through : fade * through * filter;
+        // POV-Ray compat (ComputeLightedTexture): the background's transmit seen through the surface, scaled by the
+        // grey of the interior fade and by the layers' transparency; none after total internal reflection.
+        if (state.alpha_background && !total_internal) transmit = texture::grey(fade) * ctx.transmit * trans;
     }
 
     for (std::size_t i = 0; i < reflection_count; ++i) {
@@ -248,6 +262,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         }
         colour += r.reflectivity * reflected;
     }
+    ctx.transmit = transmit;
     return colour;
 }
 
@@ -262,6 +277,7 @@ Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const s
     }
     RayState next = state;
     next.weight = weight;
+    next.alpha_background = false;  // POV-Ray compat (ComputeReflection): a mirror shows the background opaque
     const Vec3& p = s.hit->position;
     const geometry::Ray ray{p, normalize(d), m_geometry.self_intersection_offset(p), 1e30,
                             geometry::RayKind::Reflection};
