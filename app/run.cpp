@@ -111,6 +111,13 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     return parse_options;
 }
 
+// True when the scene file's text holds `word` (a cheap look for keywords wardray reads but does not render).
+bool scene_mentions(const fs::path& scene, const std::string& word) {
+    std::ifstream in(scene, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return text.find(word) != std::string::npos;
+}
+
 // The irradiance cache for +RFI: the records of the radiosity file, or (with a warning) an empty cache.
 void load_cache_file(cache::IrradianceCache& irradiance_cache, const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -299,6 +306,11 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.reference_rays = options.gi_rays;
     settings.gradients = options.gi_gradients;
     settings.output_alpha = options.output_alpha;
+    settings.quality = options.quality;
+    // POV-Ray uses pigments' quick_color up to +Q5; wardray reads and drops it.
+    if (options.quality <= 5 && scene_mentions(options.scene, "quick_col"))
+        std::cerr << options.scene.string() << ": warning: quick_color is not rendered yet: at +Q"
+                  << options.quality << " POV-Ray uses it, wardray the pigment\n";
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     // The photon pass runs here, in the integrator's construction, when the scene has a photons block.

@@ -62,11 +62,16 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     : m_scene(scene),
       m_geometry(geometry),
       m_options(options),
+      m_quality(quality_features(options.quality)),
       m_lights(scene, geometry),
       m_sky(scene),
       m_atmosphere(media::make_atmosphere(scene)) {
     m_volume_on_gathers = scene.global.radiosity.has_value() && scene.global.radiosity->media;
-    if (!scene.rainbows.empty())
+    // POV-Ray compat (+Q): below quality 9 no media, fog or rainbows; below 5 area lights are points; below 4
+    // nothing casts a shadow.
+    m_lights.limit_quality(m_quality.shadows, m_quality.area_lights, m_quality.volume);
+    if (!m_quality.volume) m_atmosphere.reset();
+    if (m_quality.volume && !scene.rainbows.empty())
         m_rainbows = std::make_unique<const media::Rainbows>(scene.rainbows, scene.global.noise_generator);
     // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
     // `#version 3.6` (or older) still gets it.
@@ -74,9 +79,11 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     m_noise_generator = scene.global.noise_generator;
     texture::set_number_of_waves(scene.global.number_of_waves);
     // Indirect light only for a radiosity block with --gi on: through the cache, or by brute force.
-    if (scene.global.radiosity.has_value() && options.gi == GiMode::Cache)
+    // POV-Ray compat (+Q): radiosity and photons only from quality 9.
+    const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
+    if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
-    else if (scene.global.radiosity.has_value() && options.gi == GiMode::Reference)
+    else if (radiosity && options.gi == GiMode::Reference)
         m_indirect = make_reference_irradiance(*this, options.reference_rays);
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
@@ -102,8 +109,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
                 m_camera_interiors.push(static_cast<std::uint32_t>(o));
         }
     }
-    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
-    if (scene.global.photons) {
+    if (m_quality.volume && media::ParticipatingMedia::in_scene(scene))
+        m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    if (scene.global.photons && m_quality.advanced_light) {
         // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
         // shot it turn black (LightSampler).
         m_photon_stats = std::make_unique<photons::PhotonStats>();

@@ -160,7 +160,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         const scene::Texture* layer = layers[li];
         if (trans <= bailout) break;
         Vec3 n = s.raw_normal;
-        if (layer->normal.perturbs()) {
+        if (m_quality.normals && layer->normal.perturbs()) {
             for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
             n = texture::perturb_normal(layer->normal, n, layer->normal.uv_mapping ? s.p_uv : s.p_texture,
                                         m_noise_generator);
@@ -171,6 +171,14 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
                                                    m_noise_generator);
         const Vec3 pigment = pc.rgb();
         const scene::Finish& f = layer->finish;
+        if (!m_quality.lighting) {
+            // POV-Ray compat (+Q0, +Q1, Q_FULL_AMBIENT): the layer's pigment replaces the colour, unlit; layers
+            // below are reached as the layers' transparency allows.
+            colour = pigment;
+            filter = filter * (pigment * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});
+            trans = std::min(1.0, std::fabs(texture::grey(filter)));
+            continue;
+        }
 
         LayerReflection r;
         r.weight = state.weight * trans;
@@ -235,7 +243,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     // Light from behind the surface: straight through (ior 1) or refracted by the interior.
     bool total_internal = false;
     double transmit = 0.0;  // Output_Alpha: how much of the transparent background shows through the surface
-    if (trans > bailout) {
+    if (trans > bailout && m_quality.refraction) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
         // POV-Ray's interior fade over the distance travelled inside.
@@ -248,7 +256,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         if (state.alpha_background && !total_internal) transmit = texture::grey(fade) * ctx.transmit * trans;
     }
 
-    for (std::size_t i = 0; i < reflection_count; ++i) {
+    for (std::size_t i = 0; i < (m_quality.reflection ? reflection_count : 0); ++i) {
         const LayerReflection& r = reflections[i];
         const scene::Finish& finish = layers[i]->finish;
         // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
