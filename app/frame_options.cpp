@@ -129,7 +129,7 @@ constexpr OptionSpec kFrameOptions[] = {
          return u.value.empty() ? Why{} : Why{"takes no value"};
      }},
     {.letters = "UA", .ini_flag = "Output_Alpha", .kind = K::Flag, .usage = "+UA",
-     .help = "alpha channel: PNG (and EXR) with alpha where the background shows, as POV-Ray writes it",
+     .help = "alpha channel: PNG (and EXR) with alpha where the background shows, as POV-Ray",
      .set = set_output_alpha},
     {.letters = "Q", .ini_key = "Quality", .kind = K::Value, .usage = "+Qn",
      .help = "quality 0..11 (9), as POV-Ray 3.7: 0-1 pigments only, 2-3 no shadows, 4 no\n"
