@@ -1,10 +1,14 @@
 // The wardray command: the options, then one scene loaded, built, rendered and written; --check's report.
 #include "app/app.h"
 
+#include <unistd.h>
+
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
 
+#include "app/cache_carry.h"
 #include "app/diff_command.h"
 #include "app/options.h"
 #include "app/process_group.h"
@@ -68,7 +72,8 @@ void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint
 
 // One frame of the job from its file to its image: each step prints why it fails; returns the exit status. Shared
 // among processes, every rank loads and builds the scene, they render it together, and rank 0 writes it.
-int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start, ProcessGroup& group) {
+int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start, ProcessGroup& group,
+                     CacheCarry& carry) {
     const std::optional<LoadedScene> loaded = load_scene(job.options, frame.clock);
     if (!group.agree(loaded.has_value(), "parse the scene")) return kExitScene;
     const scene::Scene& scene = loaded->scene;
@@ -81,9 +86,17 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     warn_skipped_objects(scene, built->geometry->skipped_objects());
     Illumination illumination = build_illumination(scene, *built->geometry, job.options);
     if (illumination.cache && job.options.radiosity_load) group.share_cache(*illumination.cache);
+    // --gi-carry: the previous frame's records (every rank holds the same ones after a shared render).
+    if (illumination.cache) {
+        const auto counts = carry.start(scene, *illumination.cache);
+        if (counts && job.options.verbose && group.root())
+            std::cerr << "wardray: " << frame.output.string() << ": carried " << counts->first
+                      << " irradiance records, dropped " << counts->second << "\n";
+    }
     const RenderedFrame rendered =
         render_frame(scene, illumination, job.options, job.region, group.communicator());
     for (const Diagnostic& w : built->geometry->shape_warnings()) std::cerr << format_diagnostic(w);
+    if (illumination.cache) carry.finish(scene, *illumination.cache);
     const auto write_start = Clock::now();
     Job frame_job = job;
     frame_job.output = frame.output;
@@ -100,8 +113,69 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     return kExitOk;
 }
 
+// Frames of an animation split among the ranks: each renders whole frames on its own (the image is the one a plain
+// run makes), round by round, and sends them to rank 0, which alone writes. `frames` are those left to render.
+int run_frames_split(const Job& job, const std::vector<const Frame*>& frames, ProcessGroup& group) {
+    const auto ranks = static_cast<std::size_t>(group.size());
+    const auto rank = static_cast<std::size_t>(group.rank());
+    for (std::size_t round = 0; round < frames.size(); round += ranks) {
+        bool ok = true;
+        std::string image;
+        if (round + rank < frames.size()) {
+            Frame frame = *frames[round + rank];
+            // Another rank writes its frame to a local temporary file and hands the bytes to rank 0.
+            const std::filesystem::path local =
+                group.root() ? frame.output
+                             : std::filesystem::temp_directory_path() /
+                                   ("wardray-" + std::to_string(::getpid()) + "-" + frame.output.filename().string());
+            frame.output = local;
+            ProcessGroup alone{ProcessGroup::Alone{}};
+            CacheCarry none(CarryMode::Off);
+            ok = render_one_frame(job, frame, Clock::now(), alone, none) == kExitOk;
+            if (ok && !group.root()) {
+                std::ifstream in(local, std::ios::binary);
+                image.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+                ok = static_cast<bool>(in) || in.eof();
+                std::error_code ec;
+                std::filesystem::remove(local, ec);
+            }
+        }
+        if (!group.agree(ok, "render its frame")) return kExitScene;
+        const std::vector<render::Bytes> all = group.gather(render::Bytes(image.begin(), image.end()));
+        bool written = true;
+        for (std::size_t r = 1; group.root() && r < all.size() && round + r < frames.size(); ++r) {
+            const Frame& frame = *frames[round + r];
+            const auto error = render::write_atomically(frame.output, [&](const std::filesystem::path& tmp)
+                                                                           -> std::optional<std::string> {
+                std::ofstream out(tmp, std::ios::binary);
+                out.write(reinterpret_cast<const char*>(all[r].data()), static_cast<std::streamsize>(all[r].size()));
+                out.close();
+                if (!out) return std::string("write failed");
+                return std::nullopt;
+            });
+            if (error) std::cerr << "wardray: error: " << *error << "\n";
+            written = written && !error;
+            if (!error && job.options.verbose)
+                std::cerr << "wardray: wrote " << frame.output.string() << " (rendered by rank " << r << ")\n";
+        }
+        if (!group.agree(written, "write the output")) return kExitScene;
+    }
+    return kExitOk;
+}
+
+// True when the frames may go to the ranks whole: several frames rendered afresh, with no per-frame file beside
+// the image (the radiosity file, statistics, --aov) that only a render shared frame by frame writes.
+bool frames_split(const Job& job, const ProcessGroup& group) {
+    const Options& o = job.options;
+    return group.shared() && job.frames.size() > 1 && !o.check_only && o.gi_carry == CarryMode::Off &&
+           !o.radiosity_load && !o.radiosity_save && !o.stats && !o.aov_irradiance && !o.aov_records;
+}
+
 // One scene, each frame of it parsed afresh (POV-Ray compat); +C skips the frames whose image already exists.
 int run_frames(const Job& job, Clock::time_point start, ProcessGroup& group) {
+    CacheCarry carry(job.options.gi_carry);
+    const bool split = frames_split(job, group);
+    std::vector<const Frame*> left;
     for (const Frame& frame : job.frames) {
         std::error_code ec;
         // Rank 0 writes the images, so its folder decides what +C keeps.
@@ -112,11 +186,16 @@ int run_frames(const Job& job, Clock::time_point start, ProcessGroup& group) {
                 std::cerr << "wardray: " << frame.output.string() << " exists; kept (+C)\n";
             continue;
         }
+        if (split) {
+            left.push_back(&frame);
+            continue;
+        }
         const Clock::time_point frame_start = &frame == &job.frames.front() ? start : Clock::now();
-        if (const int status = render_one_frame(job, frame, frame_start, group); status != kExitOk) return status;
+        if (const int status = render_one_frame(job, frame, frame_start, group, carry); status != kExitOk)
+            return status;
         if (job.options.check_only) break;
     }
-    return kExitOk;
+    return split ? run_frames_split(job, left, group) : kExitOk;
 }
 
 int run_scene(Options options, const std::string& argv0, Clock::time_point start) {

@@ -41,19 +41,13 @@ Why set_region_edge(std::string_view text, std::optional<double>& out) {
     return std::nullopt;
 }
 
-// POV-Ray's +Q0..+Q11. wardray renders everything at once: 9 and above are all the same in POV-Ray 3.7.
+// POV-Ray's +Q0..+Q11 (lighting/quality.h): 9 and above are all the same in POV-Ray 3.7.
 Why set_quality(U u, Options& o) {
-    if (auto why = set_int(u.value, 0, 11, "expected a quality 0..11", o.quality)) return why;
-    if (o.quality < 9)
-        o.warnings.push_back("quality " + std::to_string(o.quality) +
-                             " is not rendered yet: the image is rendered at quality 9");
-    return std::nullopt;
+    return set_int(u.value, 0, 11, "expected a quality 0..11", o.quality);
 }
 
 Why set_output_alpha(U u, Options& o) {
     o.output_alpha = u.sign.value_or(true);
-    if (o.output_alpha)
-        o.warnings.push_back("Output_Alpha (+UA) is not rendered yet: the image is written without alpha");
     return std::nullopt;
 }
 
@@ -135,9 +129,13 @@ constexpr OptionSpec kFrameOptions[] = {
          return u.value.empty() ? Why{} : Why{"takes no value"};
      }},
     {.letters = "UA", .ini_flag = "Output_Alpha", .kind = K::Flag, .usage = "+UA",
-     .help = "alpha channel (not rendered yet: a warning)", .set = set_output_alpha},
+     .help = "alpha channel: PNG (and EXR) with alpha where the background shows, as POV-Ray",
+     .set = set_output_alpha},
     {.letters = "Q", .ini_key = "Quality", .kind = K::Value, .usage = "+Qn",
-     .help = "quality 0..11 (9); below 9 is not rendered yet (a warning)", .set = set_quality},
+     .help = "quality 0..11 (9), as POV-Ray 3.7: 0-1 pigments only, 2-3 no shadows, 4 no\n"
+             "area lights, 5 no refraction, 6-7 no reflection or normals, 8 no media,\n"
+             "fog, radiosity or photons",
+     .set = set_quality},
     {.letters = "BS", .ini_key = "Render_Block_Size", .kind = K::Value, .usage = "+BSn",
      .help = "render block size (32), the unit of antialiasing decisions",
      .set = [](U u, Options& o) {

@@ -181,6 +181,14 @@ Why set_gi_gradients(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_gi_carry(const OptionUse& use, Options& o) {
+    if (use.value == "all") o.gi_carry = CarryMode::All;
+    else if (use.value == "still") o.gi_carry = CarryMode::Still;
+    else if (use.value == "off") o.gi_carry = CarryMode::Off;
+    else return "must be all, still or off";
+    return std::nullopt;
+}
+
 Why set_no_pretrace(const OptionUse&, Options& o) {
     o.pretrace = false;
     return std::nullopt;
@@ -251,6 +259,10 @@ constexpr OptionSpec kOptions[] = {
      .set = [](U u, Options& o) { return set_count(u.value, 1, 1000000, "needs a count 1..1000000", o.gi_rays); }},
     {.long_name = "--gi-gradients", .kind = K::Value, .usage = "--gi-gradients=on|off",
      .help = "cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)", .set = set_gi_gradients},
+    {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
+     .help = "animation: carry the irradiance cache from frame to frame, every record\n"
+             "(all) or those no changed object covers 1 % of the hemisphere of (still)",
+     .set = set_gi_carry},
     {.long_name = "--no-pretrace", .kind = K::None, .usage = "--no-pretrace",
      .help = "cache mode: skip the pretrace passes", .set = set_no_pretrace},
     {.long_name = "--aov", .kind = K::TwoValues, .usage = "--aov irradiance|records FILE",

@@ -37,6 +37,11 @@ struct RegionOptions {
     friend bool operator==(const RegionOptions&, const RegionOptions&) = default;
 };
 
+/// --gi-carry: how irradiance records cross from frame to frame of an animation: not at all (each frame afresh,
+/// POV-Ray's default), all of them (as +RFI +RFO do through the file), or only those whose surroundings did not
+/// change (app/cache_carry.h).
+enum class CarryMode { Off, All, Still };
+
 /// Everything the command line (or an INI setting) can set. Defaults are POV-Ray's.
 struct Options {
     std::filesystem::path scene;                    ///< empty: the bundled default scene
@@ -61,6 +66,7 @@ struct Options {
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
     bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
     std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca
+    CarryMode gi_carry = CarryMode::Off;                  ///< --gi-carry=all|still|off
     std::optional<std::filesystem::path> aov_irradiance;  ///< --aov irradiance FILE: indirect irradiance alone
     std::optional<std::filesystem::path> aov_records;     ///< --aov records FILE: the image with the records as dots
     std::vector<std::pair<std::string, double>> declares;

@@ -18,6 +18,10 @@ class ProcessGroup {
 public:
     /// Joins the processes started with this one (none for a plain run).
     ProcessGroup();
+    /// This process on its own inside a shared run (a frame one rank renders alone): no communicator, and what it
+    /// prints goes where the run's group sends it.
+    struct Alone {};
+    explicit ProcessGroup(Alone) {}
     ~ProcessGroup();
     ProcessGroup(const ProcessGroup&) = delete;
     ProcessGroup& operator=(const ProcessGroup&) = delete;
@@ -27,6 +31,12 @@ public:
     bool shared() const { return m_comm != nullptr; }
     /// Rank 0, or the only process: the one that prints and writes.
     bool root() const { return !m_comm || m_comm->rank() == 0; }
+    int rank() const { return m_comm ? m_comm->rank() : 0; }
+    int size() const { return m_comm ? m_comm->size() : 1; }
+    /// Every process's `mine` on rank 0, in rank order; empty elsewhere (collective).
+    std::vector<render::Bytes> gather(const render::Bytes& mine) {
+        return m_comm ? m_comm->gather(mine) : std::vector<render::Bytes>{mine};
+    }
 
     /// True when every process succeeded at `what` ("parse the scene"); otherwise rank 0 prints each failed
     /// rank's messages (when it did not fail the same way itself) and one line naming the ranks, and every process

@@ -122,6 +122,13 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     return parse_options;
 }
 
+// True when the scene file's text holds `word` (a cheap look for keywords wardray reads but does not render).
+bool scene_mentions(const fs::path& scene, const std::string& word) {
+    std::ifstream in(scene, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return text.find(word) != std::string::npos;
+}
+
 // The irradiance cache for +RFI: the records of the radiosity file, or (with a warning) an empty cache.
 void load_cache_file(cache::IrradianceCache& irradiance_cache, const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -309,6 +316,12 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
     settings.reference_rays = options.gi_rays;
     settings.gradients = options.gi_gradients;
+    settings.output_alpha = options.output_alpha;
+    settings.quality = options.quality;
+    // POV-Ray uses pigments' quick_color up to +Q5; wardray reads and drops it.
+    if (options.quality <= 5 && scene_mentions(options.scene, "quick_col"))
+        std::cerr << options.scene.string() << ": warning: quick_color is not rendered yet: at +Q"
+                  << options.quality << " POV-Ray uses it, wardray the pigment\n";
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     // POV-Ray compat: a mesh_camera's rays start on its mesh, and the objects they start inside are those around
@@ -350,6 +363,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
                           antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
     settings.irradiance_aov = options.aov_irradiance.has_value();
+    settings.alpha = options.output_alpha;
     settings.communicator = communicator;
     RenderedFrame frame{render::render_image(
         scene, *illumination.integrator, settings, [&](double f) { progress.update("render", f); },
@@ -364,7 +378,8 @@ bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination
     const Options& options = job.options;
     if (options.write_output) {
         const render::OutputGamma gamma = render::output_gamma(scene.global, options.file_gamma, options.display_gamma);
-        if (auto error = render::write_image(result.film, job.output, job.format, gamma)) {
+        if (auto error = render::write_image(result.film, job.output, job.format, gamma,
+                                             result.alpha ? &*result.alpha : nullptr)) {
             std::cerr << "wardray: error: " << *error << "\n";
             return false;
         }

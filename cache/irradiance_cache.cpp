@@ -201,6 +201,28 @@ const std::vector<IrradianceRecord>& IrradianceCache::records(int depth) const {
     return m_octrees.at(static_cast<std::size_t>(depth)).records();
 }
 
+std::size_t IrradianceCache::keep_records(const std::function<bool(const IrradianceRecord&)>& keep) {
+    if (m_in_pass) throw std::logic_error("IrradianceCache::keep_records during a pass");
+    std::size_t dropped = 0;
+    for (auto& per_depth : m_records_per_pass) std::fill(per_depth.begin(), per_depth.end(), 0);
+    for (std::size_t d = 0; d < m_octrees.size(); ++d) {
+        RecordOctree kept(m_octrees[d].reach());
+        for (const IrradianceRecord& r : m_octrees[d].records()) {
+            if (!keep(r)) {
+                ++dropped;
+                continue;
+            }
+            kept.insert(r);
+            const auto pass = static_cast<std::size_t>(r.pass);
+            if (m_records_per_pass.size() <= pass)
+                m_records_per_pass.resize(pass + 1, std::vector<std::uint64_t>(m_octrees.size()));
+            ++m_records_per_pass[pass][d];
+        }
+        m_octrees[d] = std::move(kept);
+    }
+    return dropped;
+}
+
 CacheStatistics IrradianceCache::statistics() const {
     CacheStatistics s;
     s.records = m_records_per_pass;

@@ -1,6 +1,7 @@
 // IrradianceCache: one record octree per bounce depth, filled in passes by tiles and merged in tile order.
 #pragma once
 
+#include <functional>
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
@@ -109,6 +110,10 @@ public:
     void add(const IrradianceRecord& record);
     /// The records of `depth` in insertion order.
     const std::vector<IrradianceRecord>& records(int depth) const;
+    /// Keeps only the records `keep` accepts, each depth's in its order, refiled as they are (no neighbour
+    /// clamping): a cache carried to the next frame of an animation without the records that frame invalidates.
+    /// Returns how many were dropped. Outside a pass (std::logic_error inside one).
+    std::size_t keep_records(const std::function<bool(const IrradianceRecord&)>& keep);
     /// Totals so far (lookups of the open pass are counted when it ends).
     CacheStatistics statistics() const;
 

@@ -16,6 +16,7 @@
 #include "photons/photon_map.h"
 #include "photons/photon_shooter.h"
 #include "texture/noise.h"
+#include "texture/pigment.h"
 
 namespace wardray::lighting {
 
@@ -61,11 +62,16 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     : m_scene(scene),
       m_geometry(geometry),
       m_options(options),
+      m_quality(quality_features(options.quality)),
       m_lights(scene, geometry),
       m_sky(scene),
       m_atmosphere(media::make_atmosphere(scene)) {
     m_volume_on_gathers = scene.global.radiosity.has_value() && scene.global.radiosity->media;
-    if (!scene.rainbows.empty())
+    // POV-Ray compat (+Q): below quality 9 no media, fog or rainbows; below 5 area lights are points; below 4
+    // nothing casts a shadow.
+    m_lights.limit_quality(m_quality.shadows, m_quality.area_lights, m_quality.volume);
+    if (!m_quality.volume) m_atmosphere.reset();
+    if (m_quality.volume && !scene.rainbows.empty())
         m_rainbows = std::make_unique<const media::Rainbows>(scene.rainbows, scene.global.noise_generator);
     // POV-Ray compat: with radiosity on, a 3.7 scene's `ambient` is not light; a scene that says
     // `#version 3.6` (or older) still gets it.
@@ -73,9 +79,11 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     m_noise_generator = scene.global.noise_generator;
     texture::set_number_of_waves(scene.global.number_of_waves);
     // Indirect light only for a radiosity block with --gi on: through the cache, or by brute force.
-    if (scene.global.radiosity.has_value() && options.gi == GiMode::Cache)
+    // POV-Ray compat (+Q): radiosity and photons only from quality 9.
+    const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
+    if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
-    else if (scene.global.radiosity.has_value() && options.gi == GiMode::Reference)
+    else if (radiosity && options.gi == GiMode::Reference)
         m_indirect = make_reference_irradiance(*this, options.reference_rays);
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
@@ -104,8 +112,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
                 m_camera_interiors.push(object);
         }
     }
-    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
-    if (scene.global.photons) {
+    if (m_quality.volume && media::ParticipatingMedia::in_scene(scene))
+        m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    if (scene.global.photons && m_quality.advanced_light) {
         // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
         // shot it turn black (LightSampler).
         m_photon_stats = std::make_unique<photons::PhotonStats>();
@@ -121,6 +130,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     }
     // POV-Ray 3.7 has this warning commented out (View::CheckCameraHollowObject); wardray gives it, as the
     // documentation describes, since media and fog then leave the camera's stretch of every ray out.
+    if (options.output_alpha && (m_media || !scene.rainbows.empty()))
+        m_limitations.push_back("Output_Alpha: participating media and rainbows do not change the alpha channel "
+                                "(not rendered yet)");
     if ((m_media || !scene.fogs.empty()) && !hollow_ray(m_camera_interiors))
         m_limitations.push_back("Camera is inside a non-hollow object. Fog and participating media may not work as "
                                 "expected.");
@@ -134,6 +146,7 @@ Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) c
     state.adc_bailout = m_scene.global.adc_bailout;
     state.max_level = m_scene.global.max_trace_level;
     state.interiors = m_camera_interiors;
+    state.alpha_background = m_options.output_alpha;
     return trace(ray, state, false, ctx);
 }
 
@@ -149,10 +162,14 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
     const Vec3 direction = ray.direction / scale;
     Vec3 colour;
     double depth = INFINITY;
+    double transmit = 0.0;  // Output_Alpha: the background showing through, POV-Ray's transmit channel
     if (hit) {
         depth = hit->t * scale;
         if (hit_distance) *hit_distance = depth;
         colour = shade(*hit, direction, depth, state, ctx);
+        if (state.alpha_background) transmit = ctx.transmit;
+    } else if (state.alpha_background) {
+        colour = m_sky.radiance_with_alpha(direction, transmit);
     } else {
         colour = m_sky.radiance(direction);
     }
@@ -165,7 +182,13 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
         colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
                                    cache::seed_from(ray.origin, direction, 0x5241494E));
     if (m_media) colour = apply_media(ray, direction, depth, hit.has_value(), state, colour, ctx);
-    if (volume && m_atmosphere) colour = m_atmosphere->along_segment(colour, media::Segment{ray.origin, direction, depth});
+    if (volume && m_atmosphere) {
+        const media::Segment segment{ray.origin, direction, depth};
+        colour = m_atmosphere->along_segment(colour, segment);
+        // POV-Ray compat (ComputeFog): the fog's attenuation dims the transmit channel by its grey level.
+        if (transmit > 0.0) transmit *= texture::grey(m_atmosphere->transmittance(segment));
+    }
+    ctx.transmit = transmit;
     return colour;
 }
 

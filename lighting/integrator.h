@@ -11,6 +11,7 @@
 #include "core/vec3.h"
 #include "lighting/indirect_light.h"
 #include "lighting/light_sampler.h"
+#include "lighting/quality.h"
 #include "lighting/trace_context.h"
 #include "media/medium.h"
 #include "media/rainbow.h"
@@ -47,6 +48,11 @@ struct IntegratorOptions {
     /// Where camera rays start, for finding the objects they start inside, when that is not the camera's
     /// location (mesh_camera: its first ray's origin on the camera mesh); nothing: the camera's location.
     std::optional<Vec3> camera_origin;
+    /// Output_Alpha (+UA): camera rays see the background as transparent, and the transmit of what they see is
+    /// left in TraceContext::transmit (1 − alpha).
+    bool output_alpha = false;
+    /// +Q: POV-Ray's quality level, 0..11 (lighting/quality.h); 9 and above render everything.
+    int quality = 9;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it
@@ -143,6 +149,7 @@ private:
     const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
     IntegratorOptions m_options;
+    QualityFeatures m_quality;
     LightSampler m_lights;
     std::unique_ptr<const IndirectLight> m_indirect;  ///< null without a radiosity block or with --gi=off
     media::Sky m_sky;

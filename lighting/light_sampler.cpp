@@ -228,6 +228,7 @@ Vec3 LightSampler::light_in_medium(const scene::Light& light, const Vec3& p, con
 Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3* n, const InteriorStack& interiors,
                             bool area_lights, Vec3& to_light, TraceContext& ctx) const {
     using Type = scene::Light::Type;
+    area_lights = area_lights && m_area_lights;
     double distance = 0.0;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
         // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
@@ -278,6 +279,8 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     if (attenuation <= 0.0) return {};
 
     const Vec3 colour = light.color.rgb() * attenuation;
+    // POV-Ray compat (+Q below 4): no shadow ray at all, so no projected_through either.
+    if (!m_shadows) return colour;
     if (!m_projected.empty() && !light.projected_through.empty()) {
         // POV-Ray's TracePointLightShadowRay: only through the object, and shadows only on the way to it.
         const std::ptrdiff_t i = &light - m_scene.lights.data();

@@ -39,6 +39,17 @@ public:
     /// (POV-Ray's ComputeShadowColour), unless the lit surface ignores photons (TraceContext::lit_ignores_photons).
     void use_photon_shadows() { m_photon_shadows = true; }
 
+    /// POV-Ray's quality flags (+Q): without `shadows` light reaches every point it faces, without `area_lights`
+    /// an area light is a point light at its centre, without `volume` neither fog nor media dim a light.
+    void limit_quality(bool shadows, bool area_lights, bool volume) {
+        m_shadows = shadows;
+        m_area_lights = area_lights;
+        if (!volume) {
+            m_fog.reset();
+            m_media.reset();
+        }
+    }
+
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
     /// `area_lights` false (on a gather ray's path) an area light counts as a point light at its centre. `to_light`
@@ -97,6 +108,8 @@ private:
     std::vector<SpotCone> m_cones;  ///< per light of m_scene.lights (meaningful for spotlights only)
     bool m_any_transparent = false;  ///< some object can let light through (filter or transmit somewhere)
     bool m_photon_shadows = false;   ///< a photon map carries the light refracted by photon targets
+    bool m_shadows = true;           ///< +Q4 and up: shadow rays are traced
+    bool m_area_lights = true;       ///< +Q5 and up: area lights are sampled over their area
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation

@@ -70,7 +70,12 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     if (count == 1) return shade_texture(*textures[0], s, warps, state, ctx);
     // POV-Ray compat: a triangle with a texture per corner blends the three lit colours.
     Vec3 colour;
-    for (int k = 0; k < 3; ++k) colour += shade_texture(*textures[k], s, warps, state, ctx) * weights[k];
+    double transmit = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        colour += shade_texture(*textures[k], s, warps, state, ctx) * weights[k];
+        transmit += ctx.transmit * weights[k];
+    }
+    ctx.transmit = transmit;
     return colour;
 }
 
@@ -97,8 +102,10 @@ Vec3 Integrator::shade_texture(const scene::Texture& texture, Surface s, std::ve
     warps.push_back(&pattern);
     Vec3 colour = shade_texture(map[m.cur].texture, s, warps, state, ctx);
     if (m.prev != m.cur) {
+        const double transmit = ctx.transmit;
         const Vec3 other = shade_texture(map[m.prev].texture, s, warps, state, ctx);
         colour = colour * m.fraction + other * (1.0 - m.fraction);
+        ctx.transmit = transmit * m.fraction + ctx.transmit * (1.0 - m.fraction);
     }
     warps.pop_back();
     return colour;
@@ -110,12 +117,15 @@ Vec3 Integrator::shade_average(const scene::Texture& texture, const Surface& s,
     // POV-Ray's ComputeAverageTextureColours: the entries lit on their own, weighted by their map values.
     warps.push_back(&texture.map_pattern);
     Vec3 sum;
+    double transmit = 0.0;
     float total = 0.0f;
     for (const scene::TextureMapEntry& e : texture.texture_map) {
         sum += shade_texture(e.texture, s, warps, state, ctx) * e.value;
+        transmit += ctx.transmit * e.value;
         total += static_cast<float>(e.value);
     }
     warps.pop_back();
+    ctx.transmit = transmit / static_cast<double>(total);
     return sum / static_cast<double>(total);
 }
 
@@ -153,7 +163,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         const scene::Texture* layer = layers[li];
         if (trans <= bailout) break;
         Vec3 n = s.raw_normal;
-        if (layer->normal.perturbs()) {
+        if (m_quality.normals && layer->normal.perturbs()) {
             for (const scene::Pattern* w : warps) n = texture::warp_normal(*w, n);
             n = texture::perturb_normal(layer->normal, n, layer->normal.uv_mapping ? s.p_uv : s.p_texture,
                                         m_noise_generator, s.surface);
@@ -166,6 +176,14 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
                                                    m_noise_generator, s.surface);
         const Vec3 pigment = pc.rgb();
         const scene::Finish& f = layer->finish;
+        if (!m_quality.lighting) {
+            // POV-Ray compat (+Q0, +Q1, Q_FULL_AMBIENT): the layer's pigment replaces the colour, unlit; layers
+            // below are reached as the layers' transparency allows.
+            colour = pigment;
+            filter = filter * (pigment * pc.filter + Vec3{pc.transmit, pc.transmit, pc.transmit});
+            trans = std::min(1.0, std::fabs(texture::grey(filter)));
+            continue;
+        }
 
         LayerReflection r;
         r.weight = state.weight * trans;
@@ -228,7 +246,8 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
 
     // Light from behind the surface: straight through (ior 1) or refracted by the interior.
     bool total_internal = false;
-    if (trans > bailout) {
+    double transmit = 0.0;  // Output_Alpha: how much of the transparent background shows through the surface
+    if (trans > bailout && m_quality.refraction) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
         // POV-Ray's interior fade over the distance travelled inside.
@@ -236,9 +255,12 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         if (state.interiors.contains(owner) && std::fabs(interior.fade_distance) > kPovEpsilon)
             fade = media::interior_fade(interior, s.depth);
         colour += total_internal ? fade * through : fade * through * filter;
+        // POV-Ray compat (ComputeLightedTexture): the background's transmit seen through the surface, scaled by the
+        // grey of the interior fade and by the layers' transparency; none after total internal reflection.
+        if (state.alpha_background && !total_internal) transmit = texture::grey(fade) * ctx.transmit * trans;
     }
 
-    for (std::size_t i = 0; i < reflection_count; ++i) {
+    for (std::size_t i = 0; i < (m_quality.reflection ? reflection_count : 0); ++i) {
         const LayerReflection& r = reflections[i];
         const scene::Finish& finish = layers[i]->finish;
         // POV-Ray compat: after total internal reflection the top normal's reflection is already counted.
@@ -252,6 +274,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
         }
         colour += r.reflectivity * reflected;
     }
+    ctx.transmit = transmit;
     return colour;
 }
 
@@ -266,6 +289,7 @@ Vec3 Integrator::reflect(const Surface& s, const Vec3& n, double weight, const s
     }
     RayState next = state;
     next.weight = weight;
+    next.alpha_background = false;  // POV-Ray compat (ComputeReflection): a mirror shows the background opaque
     const Vec3& p = s.hit->position;
     const geometry::Ray ray{p, normalize(d), m_geometry.self_intersection_offset(p), 1e30,
                             geometry::RayKind::Reflection};

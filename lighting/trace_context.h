@@ -53,6 +53,9 @@ struct TraceContext {
     bool capture_irradiance = false;
     bool captured = false;
     Vec3 irradiance;
+    /// Output_Alpha: how much of the transparent background the last traced ray (or shaded surface) lets through,
+    /// POV-Ray's transmit channel of its colour; 0 on rays that see the background opaque.
+    double transmit = 0.0;
 };
 
 /// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), each named by the object whose
@@ -83,6 +86,9 @@ struct RayState {
     double adc_bailout = 0.0;  ///< POV-Ray's ticket bailout: the scene's, or radiosity's inside a gather
     int gi_depth = 0;          ///< radiosity bounce depth: 0 for camera paths, +1 per gather
     bool gather_ray = false;   ///< on a gather ray's path: highlights are left out (POV-Ray compat)
+    /// Output_Alpha (+UA): the background is transparent on this ray (POV-Ray's alphaBackground: camera rays and
+    /// the rays they refract or transmit; reflected and gather rays see it opaque).
+    bool alpha_background = false;
     std::uint64_t path_seed = 0;  ///< reference mode: tells the independent paths of one pixel apart
     InteriorStack interiors;
 };

@@ -20,7 +20,11 @@ public:
     /// Sets the camera; a later camera statement replaces it.
     void set_camera(const Camera& camera) { m_scene.camera = camera; }
     /// Sets the background colour.
-    void set_background(const Color& color) { m_scene.background = color; }
+    void set_background(const Color& color, bool legacy = false) {
+        m_scene.background = color;
+        m_scene.background_given = true;
+        m_scene.background_legacy = legacy;
+    }
     /// Sets the sky sphere; a later one replaces it.
     void set_sky_sphere(SkySphere sky) { m_scene.sky_sphere = std::move(sky); }
     /// True once a sky_sphere statement was read.
@@ -31,6 +35,7 @@ public:
     void add_rainbow(Rainbow rainbow) { m_scene.rainbows.push_back(std::move(rainbow)); }
     /// POV-Ray compat: an effective #version below 3.7 (none given counts as 3.62) layers sky pigments the 3.6 way.
     void set_legacy_sky(bool legacy) {
+        m_scene.legacy_version = legacy;
         if (m_scene.sky_sphere) m_scene.sky_sphere->legacy_layering = legacy;
     }
     /// A scene-level media block: part of the atmosphere.

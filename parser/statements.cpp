@@ -51,7 +51,7 @@ void SceneReader::parse_statement() {
         {"background",
          [](SceneReader& r, const Token&) {
              r.expect("{");
-             r.m_builder.set_background(r.parse_color());
+             r.m_builder.set_background(r.parse_color(), !(r.m_version_given && r.m_version >= 3.7));
              r.expect("}");
          }},
         {"sky_sphere",

@@ -159,11 +159,14 @@ std::optional<std::string> write_atomically(
     return std::nullopt;
 }
 
-std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format) {
+std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format,
+                                       const Film* alpha) {
     return write_atomically(path, [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
         switch (format) {
-            case ImageFormat::Png: return write_png(film, tmp);
-            case ImageFormat::Exr: return write_exr(film, tmp);
+            case ImageFormat::Png:
+                return write_png(film, tmp, transcoding(GammaCurve::neutral(), GammaCurve::srgb()), GammaCurve::srgb(),
+                                 alpha);
+            case ImageFormat::Exr: return write_exr(film, tmp, alpha);
             case ImageFormat::Hdr: return write_hdr(film, tmp);
         }
         return std::string("unknown image format");

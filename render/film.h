@@ -51,7 +51,10 @@ std::optional<std::string> write_atomically(
 
 /// Writes `film` to `path` in `format`: first under a temporary name in the same folder, renamed over `path`
 /// only when complete, so a failed write never leaves a partial image. Returns an error message or nothing.
-std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format);
+/// With `alpha` (Output_Alpha: each pixel's alpha in its red channel, the colours associated with it), PNG and EXR
+/// get an alpha channel; HDR has none and holds the associated colours.
+std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format,
+                                       const Film* alpha = nullptr);
 
 /// Installs SIGINT/SIGTERM/SIGHUP handlers that delete an image file still being written, then exit with
 /// 128 + the signal number, so an interrupted run never leaves a partial file behind.

@@ -85,8 +85,8 @@ namespace {
 
 // The libpng calls, in a function of their own: libpng reports errors by longjmp, so only plain locals may
 // live across its setjmp (the caller owns the file and the row buffer). Returns false on a libpng error.
-bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row, const GammaTranscoding& encoding,
-                    const GammaCurve& file_gamma) {
+bool write_png_rows(std::FILE* file, const Film& film, const Film* alpha, unsigned char* row,
+                    const GammaTranscoding& encoding, const GammaCurve& file_gamma) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!info) {
@@ -98,7 +98,8 @@ bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row, const
         return false;
     }
     png_init_io(png, file);
-    png_set_IHDR(png, info, film.width(), film.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+    png_set_IHDR(png, info, film.width(), film.height(), 8, alpha ? PNG_COLOR_TYPE_RGB_ALPHA : PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (file_gamma.kind == GammaCurve::Kind::Srgb)
         png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -110,6 +111,20 @@ bool write_png_rows(std::FILE* file, const Film& film, unsigned char* row, const
     const bool plain_srgb = encoding == transcoding(GammaCurve::neutral(), GammaCurve::srgb());
     for (int y = 0; y < film.height(); ++y) {
         const float* src = data + static_cast<std::size_t>(y) * row_size;
+        if (alpha) {
+            const float* a_src = alpha->data().data() + static_cast<std::size_t>(y) * row_size;
+            for (int x = 0; x < film.width(); ++x) {
+                float r = src[3 * x], g = src[3 * x + 1], b = src[3 * x + 2], a = a_src[3 * x];
+                unassociate_alpha(r, g, b, a);
+                unsigned char* out = row + 4 * static_cast<std::size_t>(x);
+                out[0] = encode8(encoding, r);
+                out[1] = encode8(encoding, g);
+                out[2] = encode8(encoding, b);
+                out[3] = encode8(transcoding(GammaCurve::neutral(), GammaCurve::neutral()), a);
+            }
+            png_write_row(png, row);
+            continue;
+        }
         if (plain_srgb)
             for (std::size_t i = 0; i < row_size; ++i) row[i] = encode_srgb8(src[i]);
         else
@@ -127,24 +142,34 @@ std::optional<std::string> write_png(const Film& film, const std::filesystem::pa
     return write_png(film, path, transcoding(GammaCurve::neutral(), GammaCurve::srgb()), GammaCurve::srgb());
 }
 
+void unassociate_alpha(float& r, float& g, float& b, float& a) {
+    const float bright = 0.297f * r + 0.589f * g + 0.114f * b;
+    if (bright > a) a = std::min(1.0f, bright);
+    const float divisor = a == 0.0f ? 1.0e-6f : a;
+    r /= divisor;
+    g /= divisor;
+    b /= divisor;
+}
+
 std::optional<std::string> write_png(const Film& film, const std::filesystem::path& path,
-                                     const GammaTranscoding& encoding, const GammaCurve& file_gamma) {
+                                     const GammaTranscoding& encoding, const GammaCurve& file_gamma,
+                                     const Film* alpha) {
     File file(std::fopen(path.c_str(), "wb"));
     if (!file) return std::string("cannot open for writing");
-    std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * 3);
-    if (!write_png_rows(file.get(), film, row.data(), encoding, file_gamma))
+    std::vector<unsigned char> row(static_cast<std::size_t>(film.width()) * (alpha ? 4 : 3));
+    if (!write_png_rows(file.get(), film, alpha, row.data(), encoding, file_gamma))
         return std::string("libpng failed while writing");
     if (std::fflush(file.get()) != 0 || std::ferror(file.get())) return std::string("write failed");
     return std::nullopt;
 }
 
-std::optional<std::string> write_exr(const Film& film, const std::filesystem::path& path) {
+std::optional<std::string> write_exr(const Film& film, const std::filesystem::path& path, const Film* alpha) {
     try {
         std::vector<Imf::Rgba> pixels(static_cast<std::size_t>(film.width()) * film.height());
         const std::vector<float>& data = film.data();
         for (std::size_t i = 0; i < pixels.size(); ++i)
-            pixels[i] = Imf::Rgba(data[3 * i], data[3 * i + 1], data[3 * i + 2], 1.0f);
-        Imf::RgbaOutputFile out(path.c_str(), film.width(), film.height(), Imf::WRITE_RGB);
+            pixels[i] = Imf::Rgba(data[3 * i], data[3 * i + 1], data[3 * i + 2], alpha ? alpha->data()[3 * i] : 1.0f);
+        Imf::RgbaOutputFile out(path.c_str(), film.width(), film.height(), alpha ? Imf::WRITE_RGBA : Imf::WRITE_RGB);
         out.setFrameBuffer(pixels.data(), 1, film.width());
         out.writePixels(film.height());
     } catch (const std::exception& e) {

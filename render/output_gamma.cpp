@@ -17,16 +17,16 @@ double antialias_gamma_on_working_values(double antialias_gamma, const GammaCurv
 }
 
 std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format,
-                                       const OutputGamma& gamma) {
+                                       const OutputGamma& gamma, const Film* alpha) {
     if (format == ImageFormat::Png) {
         const GammaTranscoding encoding = transcoding(gamma.working, gamma.file);
         return write_atomically(path, [&](const std::filesystem::path& tmp) {
-            return write_png(film, tmp, encoding, gamma.file);
+            return write_png(film, tmp, encoding, gamma.file, alpha);
         });
     }
     // HDR and EXR hold linear light whatever File_Gamma says.
     const GammaTranscoding to_linear = transcoding(gamma.working, GammaCurve::neutral());
-    if (to_linear.is_neutral()) return write_image(film, path, format);
+    if (to_linear.is_neutral()) return write_image(film, path, format, alpha);
     Film linear(film.width(), film.height());
     for (int y = 0; y < film.height(); ++y) {
         for (int x = 0; x < film.width(); ++x) {
@@ -34,7 +34,7 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
             linear.set_pixel(x, y, {to_linear.encode(c.x), to_linear.encode(c.y), to_linear.encode(c.z)});
         }
     }
-    return write_image(linear, path, format);
+    return write_image(linear, path, format, alpha);
 }
 
 }  // namespace wardray::render

@@ -28,8 +28,9 @@ OutputGamma output_gamma(const scene::GlobalSettings& global, const GammaCurve& 
 /// first, so a power law `g` turns +AG `a` into a / g (sRGB working gamma is taken as 2.2).
 double antialias_gamma_on_working_values(double antialias_gamma, const GammaCurve& working);
 
-/// Writes `film` (working-gamma values) to `path` as `format` with `gamma`, atomically as write_image does.
+/// Writes `film` (working-gamma values) to `path` as `format` with `gamma`, atomically as write_image does; with
+/// `alpha`, PNG and EXR get an alpha channel (see write_image).
 std::optional<std::string> write_image(const Film& film, const std::filesystem::path& path, ImageFormat format,
-                                       const OutputGamma& gamma);
+                                       const OutputGamma& gamma, const Film* alpha = nullptr);
 
 }  // namespace wardray::render

@@ -13,15 +13,15 @@ public:
     explicit SubdivisionGrid(int size) : m_size(size), m_colour(size * size), m_sampled(size * size, 0) {}
     void clear() { std::fill(m_sampled.begin(), m_sampled.end(), 0); }
     bool sampled(int i, int j) const { return m_sampled[j * m_size + i] != 0; }
-    const Vec3& at(int i, int j) const { return m_colour[j * m_size + i]; }
-    void set(int i, int j, const Vec3& c) {
+    const Rgbt& at(int i, int j) const { return m_colour[j * m_size + i]; }
+    void set(int i, int j, const Rgbt& c) {
         m_colour[j * m_size + i] = c;
         m_sampled[j * m_size + i] = 1;
     }
 
 private:
     int m_size;
-    std::vector<Vec3> m_colour;
+    std::vector<Rgbt> m_colour;
     std::vector<char> m_sampled;
 };
 
@@ -41,9 +41,9 @@ struct Subdivider {
     // POV-Ray's SubdivideOnePixel: the square of half-width d centred on (cx, cy), its corners at grid (i, j) and
     // (i + step, j + step). When any two corners differ by the threshold and levels remain, the edge midpoints and
     // the centre are traced and each quarter is subdivided; else the square is its corners' mean.
-    Vec3 subdivide(double cx, double cy, double d, int i, int j, int step, int level) {
-        const Vec3 c00 = grid.at(i, j), c01 = grid.at(i, j + step);
-        const Vec3 c10 = grid.at(i + step, j), c11 = grid.at(i + step, j + step);
+    Rgbt subdivide(double cx, double cy, double d, int i, int j, int step, int level) {
+        const Rgbt c00 = grid.at(i, j), c01 = grid.at(i, j + step);
+        const Rgbt c10 = grid.at(i + step, j), c11 = grid.at(i + step, j + step);
         const double g = aa.gamma, t = aa.threshold;
         const bool differ = encoded_distance(c00, c01, g) >= t || encoded_distance(c00, c10, g) >= t ||
                             encoded_distance(c00, c11, g) >= t || encoded_distance(c01, c10, g) >= t ||
@@ -72,7 +72,7 @@ void render_block_recursive(const Sampler& sample, Film& film, int x0, int y0, i
     // again here so that a block depends on nothing outside it.
     const int w = x1 - x0 + 1;
     const int h = y1 - y0 + 1;
-    std::vector<Vec3> corner(static_cast<std::size_t>(w) * h);
+    std::vector<Rgbt> corner(static_cast<std::size_t>(w) * h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) corner[y * w + x] = sample(x0 + x, y0 + y);
     const int size = 1 << aa.depth;
@@ -86,9 +86,9 @@ void render_block_recursive(const Sampler& sample, Film& film, int x0, int y0, i
             grid.set(0, size, corner[(y + 1) * w + x]);
             grid.set(size, 0, corner[y * w + x + 1]);
             grid.set(size, size, corner[(y + 1) * w + x + 1]);
-            const Vec3 c = sub.subdivide(x0 + x + 0.5, y0 + y + 0.5, 0.5, 0, 0, size, aa.depth - 1);
+            const Rgbt c = sub.subdivide(x0 + x + 0.5, y0 + y + 0.5, 0.5, 0, 0, size, aa.depth - 1);
             if (grid.sampled(size / 2, size / 2)) ++counters.supersampled;
-            film.set_pixel(x0 + x, y0 + y, c);
+            sample.store(film, x0 + x, y0 + y, c);
         }
     }
 }

@@ -22,11 +22,11 @@ namespace {
 
 // Averages a depth x depth grid of (jittered) samples over pixel (x, y) with its centre sample `centre`:
 // (centre + Σ samples) / (depth² + 1), as POV-Ray's method 1 does.
-Vec3 supersample(const Sampler& sample, int x, int y, const Vec3& centre, const AntialiasSettings& aa) {
+Rgbt supersample(const Sampler& sample, int x, int y, const Rgbt& centre, const AntialiasSettings& aa) {
     const double step = 1.0 / aa.depth;
     const double range = 0.5 - 0.5 * step;
     const double jitter_scale = aa.jitter / aa.depth;
-    Vec3 sum = centre;
+    Rgbt sum = centre;
     for (int j = 0; j < aa.depth; ++j) {
         for (int i = 0; i < aa.depth; ++i) {
             const double sx = x + 0.5 - range + i * step;
@@ -46,7 +46,7 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
                               const AntialiasSettings& aa, TileCounters& counters) {
     const int w = x1 - x0 + 1;  // one extra column on the left
     const int h = y1 - y0 + 1;  // one extra row on top
-    std::vector<Vec3> colour(static_cast<std::size_t>(w) * h);
+    std::vector<Rgbt> colour(static_cast<std::size_t>(w) * h);
     std::vector<char> done(colour.size(), 0);
     auto at = [&](int x, int y) { return static_cast<std::size_t>(y - y0 + 1) * w + (x - x0 + 1); };
     for (int x = x0 - 1; x < x1; ++x) {
@@ -79,7 +79,7 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
         }
     }
     for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) film.set_pixel(x, y, colour[at(x, y)]);
+        for (int x = x0; x < x1; ++x) sample.store(film, x, y, colour[at(x, y)]);
 }
 
 
@@ -158,6 +158,7 @@ std::vector<double> pretrace_sizes(const scene::RadiositySettings& rs, int width
 RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
     RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt, {}, {}};
+    if (settings.alpha) result.alpha.emplace(settings.width, settings.height);
     const camera::CameraModel camera(scene.camera, settings.width, settings.height, scene.global.noise_generator);
     // Focal blur only when the camera asks for it: a scene without it pays nothing.
     std::optional<camera::FocalBlur> blur;
@@ -251,14 +252,15 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     const auto final_start = std::chrono::steady_clock::now();
     run_pass(true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
         const Sampler sample(camera, blur ? &*blur : nullptr, integrator, tile_counters[tile],
-                             result.irradiance ? &*result.irradiance : nullptr);
+                             result.irradiance ? &*result.irradiance : nullptr,
+                             result.alpha ? &*result.alpha : nullptr);
         if (settings.antialias.enabled && settings.antialias.method == 2) {
             render_block_recursive(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
         } else if (settings.antialias.enabled) {
             render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
         } else {
             for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) result.film.set_pixel(x, y, sample.centre(x, y));
+                for (int x = x0; x < x1; ++x) sample.store(result.film, x, y, sample.centre(x, y));
         }
     });
     result.passes.push_back(
@@ -269,15 +271,19 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         result.supersampled_pixels += t.supersampled;
     }
     // Across processes, process 0 now receives the other processes' tiles and counters.
-    exchange.gather_image(final_tiles, result.film, result.irradiance ? &*result.irradiance : nullptr, result.rays,
-                          result.non_finite_pixels, result.supersampled_pixels);
+    exchange.gather_image(final_tiles, result.film, result.irradiance ? &*result.irradiance : nullptr,
+                          result.alpha ? &*result.alpha : nullptr, result.rays, result.non_finite_pixels,
+                          result.supersampled_pixels);
     result.ranks = exchange.ranks();
     result.waves = exchange.waves();
     if (settings.region) {
         // The whole tiles the region touches were rendered; POV-Ray writes the pixels outside it black.
         for (int y = 0; y < settings.height; ++y)
             for (int x = 0; x < settings.width; ++x)
-                if (!settings.region->contains(x, y)) result.film.set_pixel(x, y, Vec3{});
+                if (!settings.region->contains(x, y)) {
+                    result.film.set_pixel(x, y, Vec3{});
+                    if (result.alpha) result.alpha->set_pixel(x, y, Vec3{});
+                }
     }
     return result;
 }

@@ -49,6 +49,9 @@ struct RenderSettings {
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
     bool irradiance_aov = false;  ///< keep each pixel's indirect irradiance (at its centre sample) in a second film
+    /// Output_Alpha (+UA): keep each pixel's alpha in a film of its own (the integrator must see the background
+    /// as transparent: IntegratorOptions::output_alpha).
+    bool alpha = false;
     /// Processes to share the render with (rendering across MPI ranks); null: this process renders every tile. The
     /// image, the cache and the counters are the same either way; only process 0's result holds the whole image.
     Communicator* communicator = nullptr;
@@ -72,6 +75,7 @@ struct RenderResult {
     std::uint64_t supersampled_pixels = 0;
     std::vector<PassTiming> passes;
     std::optional<Film> irradiance;  ///< RenderSettings::irradiance_aov: indirect irradiance per pixel, else empty
+    std::optional<Film> alpha;       ///< RenderSettings::alpha: each pixel's alpha (all three channels), else empty
     std::vector<RankStatistics> ranks;  ///< each process's share, by rank, when the render was shared among several
     std::vector<WaveStatistics> waves;  ///< and each wave's work and exchange
 };

@@ -177,7 +177,7 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
     m_wave_stats.push_back(stats);
 }
 
-void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance,
+void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance, Film* alpha,
                                 lighting::RayCounters& rays, std::uint64_t& non_finite, std::uint64_t& supersampled) {
     if (!m_comm) {
         m_ranks.clear();
@@ -191,7 +191,8 @@ void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, F
     out.put(supersampled);
     for (const TileRect& t : mine) {
         out.put(t);
-        for (const Film* f : {static_cast<const Film*>(&film), static_cast<const Film*>(irradiance)}) {
+        for (const Film* f : {static_cast<const Film*>(&film), static_cast<const Film*>(irradiance),
+                              static_cast<const Film*>(alpha)}) {
             if (!f) continue;
             for (int y = t.y0; y < t.y1; ++y)
                 for (int x = t.x0; x < t.x1; ++x) {
@@ -219,7 +220,7 @@ void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, F
                 const auto t = in.get<TileRect>();
                 if (t.x0 < 0 || t.y0 < 0 || t.x1 > film.width() || t.y1 > film.height())
                     throw std::runtime_error("tile exchange: a process sent pixels outside the image");
-                for (Film* f : {&film, irradiance}) {
+                for (Film* f : {&film, irradiance, alpha}) {
                     if (!f) continue;
                     for (int y = t.y0; y < t.y1; ++y)
                         for (int x = t.x0; x < t.x1; ++x) {

@@ -64,11 +64,11 @@ public:
     struct TileRect {
         int tile, x0, y0, x1, y1;
     };
-    /// After the final pass: the pixels of `mine` (and of `irradiance` when given), the counters and each process's
-    /// statistics go to process 0, whose films then hold the whole image and whose totals are everyone's
+    /// After the final pass: the pixels of `mine` (and of `irradiance` and `alpha` when given), the counters and each
+    /// process's statistics go to process 0, whose films then hold the whole image and whose totals are everyone's
     /// (collective). Other processes keep only their own.
-    void gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance, lighting::RayCounters& rays,
-                      std::uint64_t& non_finite, std::uint64_t& supersampled);
+    void gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance, Film* alpha,
+                      lighting::RayCounters& rays, std::uint64_t& non_finite, std::uint64_t& supersampled);
 
     /// Every process's statistics, by rank, on process 0 once gather_image() has run; empty elsewhere and for
     /// one process.

@@ -86,6 +86,16 @@ TEST(Mpi, DirectLightImageIsTheOneProcessOne) {
     expect_same_across_ranks(dir, "../direct.pov +W96 +H72 +BS16 +A0.1 +WT1 -Odirect.exr", {"direct.exr"});
 }
 
+TEST(Mpi, AnimationFramesSplitOverRanksAreTheOneProcessFrames) {
+    // Issue 20: frames rendered afresh go to the ranks whole (rank 0 writes them all); each is the plain run's.
+    const fs::path dir = fresh_dir("frames");
+    std::ofstream(dir / "anim.pov") << kDirectScene << "sphere { <2 * clock - 1, 1.8, 0>, 0.3 pigment { rgb 1 } }\n";
+    expect_same_across_ranks(dir, "../anim.pov +KFI1 +KFF4 +W64 +H48 +A0.1 +WT1",
+                             {"anim1.png", "anim2.png", "anim3.png", "anim4.png"});
+    // The frames differ from each other, so a rank writing the wrong frame would show.
+    EXPECT_NE(read_file(dir / "1" / "anim1.png"), read_file(dir / "1" / "anim4.png"));
+}
+
 TEST(Mpi, RankThatFailsToParseFailsTheRunWithNoImage) {
     const fs::path dir = fresh_dir("parse_failure");
     std::ofstream(dir / "scene.pov") << kDirectScene;
