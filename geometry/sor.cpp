@@ -145,7 +145,8 @@ SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_
     const auto& [u, o, s0, len] = *line;
     double b0, b1;
     if (!slab_interval(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
-    auto push = [&](double s, const Vec3& normal) {
+    // Structured bindings copied into the lambda by name: clang 14 cannot capture them by reference.
+    auto push = [&, s0 = s0, len = len](double s, const Vec3& normal) {
         const double t = (s0 + s) / len;
         if (t > t_min && t < t_max) hits.push({t, normal, dot(normal, ray.direction) < 0.0});
     };

@@ -138,7 +138,9 @@ protected:
     /// The most stack the descent may use: frames are larger in sanitizer and debug builds, where 400 levels
     /// can exceed the default 8 MiB stack, so the guard also measures the stack itself.
     static constexpr std::ptrdiff_t k_max_stack_bytes = std::ptrdiff_t{4} << 20;
+public:
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
+    /// Public so the function compiler (a friend of a derived class, which clang does not let through) can use it.
     class NestingGuard {
     public:
         /// Counts one level of the descent's own nesting at `at`.
@@ -153,6 +155,8 @@ protected:
         SourceStream& m_stream;
         std::size_t& m_depth;
     };
+
+protected:
     /// POV-Ray compat: while a directive reads its operands (a #declare's value included) and while a float,
     /// vector or colour value reads its operators, the brace depth they started at; a directive met at that depth
     /// ends what is being read. Blocks opened inside (objects, pigments, ...) and the inside of an operand ('(',

@@ -216,16 +216,17 @@ struct Pigment {
     bool operator==(const Pigment&) const = default;
 };
 
-inline bool PigmentRef::operator==(const PigmentRef& other) const {
-    return pigment == other.pigment || (pigment && other.pigment && *pigment == *other.pigment);
-}
-
 /// One `[value pigment]` entry of a pigment map.
 struct PigmentMapEntry {
     double value = 0.0;
     Pigment pigment;
     bool operator==(const PigmentMapEntry&) const = default;
 };
+
+// Defined once PigmentMapEntry is complete: comparing pigments compares their pigment maps (clang needs it).
+inline bool PigmentRef::operator==(const PigmentRef& other) const {
+    return pigment == other.pigment || (pigment && other.pigment && *pigment == *other.pigment);
+}
 
 struct NormalMapEntry;
 

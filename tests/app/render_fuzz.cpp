@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <memory>
 #include <string_view>
 
@@ -24,8 +25,10 @@ namespace {
 
 using namespace wardray;
 
+constexpr const char* k_system_includes = "/usr/share/povray-3.7/include";
+
 // The parser's small guard rails (as parser_fuzz), with the hooks the app gives it, minus image reading: the
-// scene's folder does not exist, so no file is read and none is written.
+// scene's folder does not exist, so no file but the system include files is read and none is written.
 parser::ParseOptions fuzz_options() {
     parser::ParseOptions o;
     o.file_writes = parser::ParseOptions::FileWrites::Refuse;
@@ -36,6 +39,9 @@ parser::ParseOptions fuzz_options() {
     o.max_string_length = 100'000;
     o.max_objects = 20'000;
     o.max_memory_bytes = std::size_t{512} << 20;
+    // The system include folder, so seeds from the example scenes get past `#include "colors.inc"` to the
+    // renderer (declarations there are read only when used, so an input pays for what it names).
+    if (std::error_code ec; std::filesystem::is_directory(k_system_includes, ec)) o.library_paths = {k_system_includes};
     o.image_width = 8;
     o.image_height = 6;
     static const geometry::ObjectQuery query;
