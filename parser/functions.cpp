@@ -370,7 +370,9 @@ Numeric Evaluator::parse_geometry_query(const Token& name) {
         const bool no_direction = length(*direction) == 0.0;
         for (const ObjectPart& part : ov->parts) {
             if (no_direction) break;
-            const std::optional<QueryHit> hit = q.trace(part.object, *origin, *direction);
+            // POV-Ray compat: the direction is normalised first, so an isosurface's solver, which steps by the
+            // ray's length, finds the same first root whatever length the scene gives.
+            const std::optional<QueryHit> hit = q.trace(part.object, *origin, normalize(*direction));
             if (!hit) continue;
             const double d = length(hit->point - *origin);
             if (!best || d < best_distance) {

@@ -87,6 +87,27 @@ TEST(SceneQuery, TraceWithAZeroDirectionMisses) {
     EXPECT_EQ(c.z, 3.0);
 }
 
+/// Answers every trace with origin + direction: the point shows which direction the geometry layer was given.
+class DirectionEcho : public FakeQuery {
+public:
+    std::optional<QueryHit> trace(const Object&, const Vec3& origin, const Vec3& direction) const override {
+        return QueryHit{origin + direction, direction};
+    }
+};
+
+TEST(SceneQuery, TraceNormalisesItsDirection) {
+    // POV-Ray's Parse_Trace normalises the direction before intersecting; an isosurface's solver steps by the ray's
+    // length, so isocacti.pov's trace(Body, Orig, -Orig) found a deeper root when the length 50 was passed on.
+    const DirectionEcho q;
+    const Scene s = test::parse_ok("#declare Ball = sphere { <0, 0, 0>, 1 }\n"
+                                   "sphere { trace(Ball, <1, 2, 3>, <0, 0, -50>), 1 }\n",
+                                   with_query(q));
+    const Vec3 c = first_center(s);
+    EXPECT_NEAR(c.x, 1.0, 1e-12);
+    EXPECT_NEAR(c.y, 2.0, 1e-12);
+    EXPECT_NEAR(c.z, 2.0, 1e-12);
+}
+
 TEST(SceneQuery, TraceTakesTheNearestPartOfAUnion) {
     const FakeQuery q;
     const Scene s = test::parse_ok("#declare U = union { sphere { <0, 0, 9>, 1 } sphere { <0, 0, 4>, 1 } }\n"
