@@ -118,13 +118,16 @@ std::shared_ptr<const scene::ImageData> palette_with_alpha(const std::filesystem
 TEST(ImageMap, PaletteAlphaIsEachEntrysTransmitWhichFilterLeaves) {
     parser::ParseOptions options;
     options.read_image = palette_with_alpha;
+    options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");  // the stand-in file is read from there
     const parser::ParseResult r = parser::parse_string(
         "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
         "/scenes/default.pov\" filter 1, 0.25 } } }\nsphere { 0, 1 pigment { image_pattern { png \"" WARDRAY_SOURCE_DIR
         "/scenes/default.pov\" use_alpha } } }",
         "test.pov", options);
-    ASSERT_TRUE(r.ok());
-    EXPECT_TRUE(r.diagnostics.empty());  // the alpha is rendered: no warning
+    std::string diagnostics;
+    for (const auto& d : r.diagnostics) diagnostics += format_diagnostic(d);
+    ASSERT_TRUE(r.ok()) << diagnostics;
+    EXPECT_TRUE(r.diagnostics.empty()) << diagnostics;  // the alpha is rendered: no warning
     const scene::Pigment& p = r.scene->objects.at(0).texture.pigment;
     const Color opaque = texture::evaluate_pigment(p, {0.25, 0.5, 0}, 2);
     const Color clear = texture::evaluate_pigment(p, {0.75, 0.5, 0}, 2);
