@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 
 #include "core/constants.h"
@@ -121,9 +122,17 @@ double s_curve(double t) { return t * t * (3.0 - 2.0 * t); }
 
 // One lattice axis: the wrapped 12-bit cell index and the offset inside the cell.
 // POV-Ray compat: negative coordinates round with (int)(x - (1 - EPSILON)), not floor.
+// A double outside int's range (or NaN) gives INT_MIN, as x86's conversion that POV-Ray's (int) cast compiles to
+// does, instead of undefined behaviour.
+int to_int_as_x86(double v) {
+    constexpr double k_limit = 2147483648.0;  // 2^31
+    return v >= -k_limit && v < k_limit ? static_cast<int>(v) : std::numeric_limits<int>::min();
+}
+
 void lattice(double x, int& cell, double& frac) {
-    const int tmp = x >= 0.0 ? static_cast<int>(x) : static_cast<int>(x - (1.0 - kEpsilon));
-    cell = (tmp - kNoiseMin) & 0xFFF;
+    const int tmp = x >= 0.0 ? to_int_as_x86(x) : to_int_as_x86(x - (1.0 - kEpsilon));
+    // Unsigned, so the offset by NOISE_MIN wraps instead of overflowing near INT_MAX; the low 12 bits are the same.
+    cell = static_cast<int>((static_cast<unsigned>(tmp) - static_cast<unsigned>(kNoiseMin)) & 0xFFFu);
     frac = x - tmp;
 }
 
@@ -181,7 +190,7 @@ double solid_noise(const Vec3& p) {
     double r0[3], r1[3];
     for (int a = 0; a < 3; ++a) {
         const double v = p[a] + kRollover;
-        const int it = static_cast<int>(std::floor(v));
+        const int it = to_int_as_x86(std::floor(v));
         b0[a] = it & (Tables::kEntries - 1);
         b1[a] = (b0[a] + 1) & (Tables::kEntries - 1);
         r0[a] = v - it;

@@ -201,5 +201,17 @@ TEST(Reflection, MaxTraceLevelStopsTheRecursion) {
     EXPECT_NEAR(look_down(mirrors, "global_settings { max_trace_level 5 }\n").x, 0.625, 1e-12);
 }
 
+TEST(Noise, CoordinatesBeyondIntRangeAreFiniteAsInPovRay) {
+    // POV-Ray 3.7.0.10 printed these (f_noise3d, generator 2): its (int) cast of an out-of-range coordinate gives
+    // x86's INT_MIN, which wardray reproduces without the undefined behaviour (a render-fuzz finding).
+    EXPECT_NEAR(texture::noise({1e10, -1e10, 3e9}, 2), 0.0, 1e-11);
+    EXPECT_NEAR(texture::noise({0.3, 5e9, -0.7}, 2), 1.0, 1e-11);
+    for (int generator = 1; generator <= 3; ++generator) {
+        for (const Vec3& p : {Vec3{-3e9, 2.2e9, 1e18}, Vec3{2147483647.5, -2147483648.5, 0}})
+            EXPECT_TRUE(std::isfinite(texture::noise(p, generator))) << generator << " " << p.x;
+    }
+}
+
 }  // namespace
 }  // namespace wardray::lighting
+
