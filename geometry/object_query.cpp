@@ -7,12 +7,23 @@
 
 namespace wardray::geometry {
 
+struct ObjectQuery::Placed {
+    scene::Object object;
+    std::optional<ShapeInstance> instance;
+};
+
 std::optional<scene::QueryHit> ObjectQuery::trace(const scene::Object& object, const Vec3& origin,
                                                    const Vec3& direction) const {
-    auto instance = ShapeInstance::create(object, 0);
+    if (!m_traced || !(m_traced->object == object)) {
+        auto placed = std::make_shared<Placed>();
+        placed->object = object;
+        placed->instance = ShapeInstance::create(placed->object, 0);  // built from the copy it points at
+        // POV-Ray's trace() goes through Find_Intersection, which tests the object's bounding box first.
+        if (placed->instance) placed->instance->cull_by_bounds();
+        m_traced = std::move(placed);
+    }
+    const std::optional<ShapeInstance>& instance = m_traced->instance;
     if (!instance || !is_finite(origin) || !is_finite(direction) || direction == Vec3{}) return std::nullopt;
-    // POV-Ray's trace() goes through Find_Intersection, which tests the object's bounding box first.
-    instance->cull_by_bounds();
     const auto hit = instance->nearest(origin, direction, 0.0, std::numeric_limits<double>::infinity());
     if (!hit) return std::nullopt;
     return scene::QueryHit{hit->position, hit->normal};

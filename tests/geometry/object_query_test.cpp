@@ -26,6 +26,22 @@ TEST(ObjectQuery, TraceFindsTheNearestSurfaceAndItsNormal) {
     EXPECT_FALSE(q.trace(stretched_sphere(), {1, 10, 6}, {0, 0, 0}));  // no direction
 }
 
+TEST(ObjectQuery, TraceKeepsNoStalePlacementWhenTheObjectChanges) {
+    // trace() keeps the last object it placed; a different object (or the same one moved) is placed afresh,
+    // and a temporary object gone after the call leaves the kept copy valid.
+    const ObjectQuery q;
+    for (int turn = 0; turn < 3; ++turn) {
+        scene::Object moved = stretched_sphere();
+        moved.transform = moved.transform.then(Transform::translation({0, -1.0 * turn, 0}));
+        const auto a = q.trace(moved, {1, 10, 6}, {0, -1, 0});
+        ASSERT_TRUE(a);
+        EXPECT_NEAR(a->point.y, 4.0 - turn, 1e-12) << turn;
+        const auto b = q.trace(stretched_sphere(), {1, 10, 6}, {0, -1, 0});
+        ASSERT_TRUE(b);
+        EXPECT_NEAR(b->point.y, 4.0, 1e-12) << turn;
+    }
+}
+
 TEST(ObjectQuery, InsideFollowsTransformAndInverse) {
     const ObjectQuery q;
     scene::Object o = stretched_sphere();
