@@ -123,11 +123,13 @@ std::optional<Transform> Transform::from_pov_matrix(const std::array<double, 12>
 Transform Transform::then(const Transform& next) const {
     if (m_identity) return next;
     if (next.m_identity) return *this;
+    // POV-Ray compat: the inverse is composed from the two inverses, (next ∘ this)^-1 = this^-1 ∘ next^-1, as
+    // POV-Ray composes its transforms, never re-inverted: re-inverting judged woods.inc's `bozo scale
+    // <0.01, 0.01, 100000>` under `rotate x*90` singular (det 10 against a largest entry of 1e5) and dropped it.
     const Matrix34 f = multiply(next.m_forward, m_forward);
     const bool invertible = m_invertible && next.m_invertible;
-    Matrix34 inv = identity_matrix();
-    if (invertible && !invert(f, inv)) return Transform(f, identity_matrix(), false);
-    return Transform(f, inv, invertible);
+    if (!invertible) return Transform(f, identity_matrix(), false);
+    return Transform(f, multiply(m_inverse, next.m_inverse), true);
 }
 
 Transform Transform::inverse() const {

@@ -1,4 +1,5 @@
 // Tests of the guard rails: each limit stops the parse with an error that names the limit and its switch.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -104,6 +105,22 @@ TEST(Limits, SingularMatricesAsPovRayTreatsThem) {
     const ParseResult r = test::parse_fail("sphere { 0, 1 matrix <1, 1, 0,  1, 1, 0,  0, 0, 1,  0, 0, 0> }\n");
     EXPECT_EQ(first_error(r), "matrix is singular: it flattens space, so the object has no inverse");
     EXPECT_EQ(r.diagnostics[0].loc.column, 15u);
+}
+
+// A composed transform's inverse is the composition of the inverses, as POV-Ray composes them: re-inverting the
+// product judged woods.inc's `scale <0.01, 0.01, 100000>` followed by `rotate x*90` singular and dropped it.
+TEST(Limits, StretchedThenRotatedTransformKeepsItsInverse) {
+    const Scene s = test::parse_ok("sphere { 0, 1 scale <0.01, 0.01, 100000> rotate x*90 translate <1, 2, 3> }\n");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Transform& xf = s.objects[0].transform;
+    ASSERT_TRUE(xf.is_invertible());
+    for (const Vec3 p : {Vec3{0.3, -0.7, 2.0}, Vec3{-50, 4e4, 1e-3}}) {
+        const Vec3 back = xf.inverse_point(xf.point(p));
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(back[k], p[k], 1e-9 * (1 + std::fabs(p[k]))) << k;
+    }
+    // Object space z (stretched 1e5) lies along world -y after the rotation.
+    const Vec3 q = xf.inverse_point(Vec3{1, 2 - 1e5, 3});
+    EXPECT_NEAR(q[2], 1.0, 1e-9);
 }
 
 // An object redeclared from its own value inherits the warnings of what it holds once per declaration; collecting
