@@ -378,6 +378,24 @@ void attach_user_geometry(GeometryData& impl) {
 
 }  // namespace
 
+namespace {
+
+// POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray ignores every crossing nearer than 1e-4 to a ray's origin, which is
+// how its users' idiom of a second surface a hair (1e-8) inside another, such as a drink's surface against its
+// glass, renders: the second crossing is not seen. At scenes smaller than one unit the depth shrinks with the
+// scene (1e-4 of its magnitude), so that a scene scaled down draws what it draws at unit size.
+double min_isect_depth_of(const GeometryData& impl, const Vec3& direction) {
+    return 1e-4 * std::fmin(1.0, impl.magnitude) / length(direction);
+}
+
+// A ray's t_min raised to MIN_ISECT_DEPTH; a query that reaches behind its origin (t_min < 0) asks for the whole
+// line and keeps its range.
+double first_t(const GeometryData& impl, const Ray& ray) {
+    return ray.t_min < 0.0 ? ray.t_min : std::fmax(ray.t_min, min_isect_depth_of(impl, ray.direction));
+}
+
+}  // namespace
+
 SceneGeometry::~SceneGeometry() = default;
 
 std::optional<Hit> SceneGeometry::intersect(const Ray& ray) const {
@@ -388,9 +406,10 @@ std::optional<Hit> SceneGeometry::intersect(const Ray& ray) const {
     rtcInitIntersectContext(&q.base);
     q.origin = ray.origin;
     q.direction = ray.direction;
-    q.t_min = ray.t_min;
+    q.t_min = first_t(*m_impl, ray);
     q.t_best = ray.t_max;
     q.kind = ray.kind;
+    if (!(q.t_min < q.t_best)) return std::nullopt;
     // Unbounded shapes first: their nearest hit shortens the BVH traversal.
     for (const ShapeInstance& inst : m_impl->unbounded) {
         if (!inst.visible_to(ray.kind)) continue;
@@ -409,15 +428,16 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     if (!is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
         std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max))
         return false;
+    const double t_min = first_t(*m_impl, ray);
+    if (!(t_min < ray.t_max)) return false;
     for (const ShapeInstance& inst : m_impl->unbounded)
-        if (inst.visible_to(RayKind::Shadow) &&
-            !inst.intersect_all(ray.origin, ray.direction, ray.t_min, ray.t_max).empty())
+        if (inst.visible_to(RayKind::Shadow) && !inst.intersect_all(ray.origin, ray.direction, t_min, ray.t_max).empty())
             return true;
     QueryContext q;
     rtcInitIntersectContext(&q.base);
     q.origin = ray.origin;
     q.direction = ray.direction;
-    q.t_min = ray.t_min;
+    q.t_min = t_min;
     q.t_best = ray.t_max;
     q.kind = RayKind::Shadow;
     m_impl->trace(q, true);
@@ -435,6 +455,10 @@ std::vector<Diagnostic> SceneGeometry::shape_warnings() const {
         if (const auto* iso = std::get_if<IsosurfaceShape>(&inst.shape()))
             if (auto w = iso->gradient_warning()) out.push_back(std::move(*w));
     return out;
+}
+
+double SceneGeometry::min_isect_parameter(const Vec3& direction) const {
+    return min_isect_depth_of(*m_impl, direction);
 }
 
 double SceneGeometry::self_intersection_offset(const Vec3& p) const {

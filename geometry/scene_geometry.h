@@ -63,6 +63,10 @@ public:
     /// Like the free self_intersection_offset(), with a floor of 1e-6 of the scene's magnitude so that points
     /// at or near the origin still get an offset that matches the size of the objects around them.
     double self_intersection_offset(const Vec3& p) const;
+    /// POV-Ray's MIN_ISECT_DEPTH as a ray parameter along `direction`: intersect() and occluded() see no crossing
+    /// nearer than this to the ray's origin (1e-4, or 1e-4 of the scene's magnitude below one unit). A walk that
+    /// goes on past a crossing along the same ray skips this much after it, as POV-Ray's new ray from there would.
+    double min_isect_parameter(const Vec3& direction) const;
 
 private:
     struct Impl;

@@ -208,7 +208,9 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         if (interiors.size == 0 || !interiors.remove(object)) interiors.push(object);
         if (max_abs_component(filter) < kPovEpsilon) return {};
         t_origin = hit->t;
-        t0 = hit->t + m_geometry.self_intersection_offset(hit->position);
+        // POV-Ray compat: its shadow ray starts anew at the crossing, so the next crossing must be MIN_ISECT_DEPTH on.
+        t0 = hit->t + std::fmax(m_geometry.self_intersection_offset(hit->position),
+                                m_geometry.min_isect_parameter(dir));
     }
     return filter * fog_over(t_origin, distance);
 }

@@ -207,6 +207,27 @@ TEST(SceneGeometry, TRangeIsOpen) {
     EXPECT_DOUBLE_EQ(behind->t, -4.0);
 }
 
+// POV-Ray compat (MIN_ISECT_DEPTH): no crossing nearer than 1e-4 to a ray's origin is seen, so a surface a hair
+// (1e-8) past another is skipped by the ray that starts on the first; one 2e-4 past it is seen. A scene smaller
+// than one unit keeps the proportion: the same rays at 1e-3 of the size skip and see the same surfaces.
+TEST(SceneGeometry, CrossingsNearerThanMinIsectDepthAreNotSeen) {
+    for (const double s : {1.0, 1e-3}) {
+        scene::Scene scene;
+        scene.objects.push_back(make_object(scene::Sphere{{0, 0, 0}, 1.0 * s}));
+        scene.objects.push_back(make_object(scene::Sphere{{0, 0, 0}, (1.0 + 1e-8) * s}));
+        scene.objects.push_back(make_object(scene::Sphere{{0, 0, 0}, (1.0 + 2e-4) * s}));
+        const SceneGeometry g(scene);
+        const Ray outward{{0, 0, 1.0 * s}, {0, 0, 1}, 1e-12 * s, 1e30};
+        const auto h = g.intersect(outward);
+        ASSERT_TRUE(h) << s;
+        EXPECT_EQ(h->object, 2u) << s;
+        EXPECT_NEAR(h->t, 2e-4 * s, 1e-9 * s) << s;
+        EXPECT_TRUE(g.occluded(Ray{{0, 0, 1.0 * s}, {0, 0, 1}, 1e-12 * s, 3e-4 * s})) << s;
+        EXPECT_FALSE(g.occluded(Ray{{0, 0, 1.0 * s}, {0, 0, 1}, 1e-12 * s, 1.5e-4 * s})) << s;
+        EXPECT_DOUBLE_EQ(g.min_isect_parameter({0, 0, 2}), 0.5e-4 * std::fmin(1.0, (1.0 + 2e-4) * s)) << s;
+    }
+}
+
 // The same scene and rays scaled by s give the same t (rays keep their direction vectors scaled by s too).
 TEST(SceneGeometry, ScaleInvariance) {
     Random rng(11);
