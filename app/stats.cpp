@@ -109,7 +109,9 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
     if (const photons::PhotonStats* ph = illumination.integrator ? illumination.integrator->photon_stats() : nullptr)
         stats["photons"] = {{"units", ph->units},         {"spacing", ph->spacing},
                             {"shot", ph->shot},           {"stored", ph->stored},
+                            {"media_stored", ph->media_stored},
                             {"gather_radius", ph->gather_radius},
+                            {"media_gather_radius", ph->media_gather_radius},
                             {"shoot_seconds", ph->shoot_seconds}, {"build_seconds", ph->build_seconds}};
     if (!result.ranks.empty()) stats["processes"] = process_stats(result);
     auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {

@@ -118,11 +118,9 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
         // shot it turn black (LightSampler).
         m_photon_stats = std::make_unique<photons::PhotonStats>();
-        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats);
+        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats, &m_media_photons);
         if (m_photons) m_lights.use_photon_shadows();
-        // POV-Ray dims photons by the media they cross; the photon pass here does not see media yet.
-        if (m_photons && m_media)
-            m_limitations.push_back("photons crossing media are not dimmed by them (not rendered yet)");
+        if (m_media_photons) m_media_gather = std::make_unique<const photons::MediaPhotonGather>(*m_media_photons);
         for (const scene::Light& light : scene.lights)
             if (m_photons && !light.projected_through.empty())
                 m_limitations.push_back("photons of a light with projected_through are shot as if it had none (not "

@@ -28,6 +28,7 @@ struct Hit;
 
 namespace wardray::photons {
 class PhotonMap;
+class MediaPhotonGather;
 struct Gathered;
 struct PhotonStats;
 }  // namespace wardray::photons
@@ -160,6 +161,8 @@ private:
     bool m_ambient_is_light = true;
     int m_noise_generator = 2;
     std::unique_ptr<const photons::PhotonMap> m_photons;  ///< null without photons, or when none were stored
+    std::unique_ptr<const photons::PhotonMap> m_media_photons;  ///< the photons kept in media, or null
+    std::unique_ptr<const photons::MediaPhotonGather> m_media_gather;  ///< reads m_media_photons for media/
     std::unique_ptr<photons::PhotonStats> m_photon_stats;
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them
     std::vector<std::string> m_limitations;

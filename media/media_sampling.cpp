@@ -159,9 +159,11 @@ public:
     Walk(const scene::Scene& scene, const Thresholds& thresholds, int noise, const MediaList& media,
          const Segment& segment, double depth, const LightQuery* lights)
         : m_scene(scene), m_thresholds(thresholds), m_noise(noise), m_media(media), m_ray(segment), m_depth(depth),
-          m_lights(lights), m_random(segment) {}
+          m_lights(lights), m_photons(lights ? lights->photons() : nullptr), m_random(segment) {}
 
     Vec3 run(const Vec3& colour);
+    /// POV-Ray's ComputeMediaAndDepositPhotons and DepositMediaPhotons.
+    Vec3 deposit(const Vec3& colour, const PhotonDeposit& d, std::vector<DepositPoint>& out);
 
 private:
     void light_entries();
@@ -180,7 +182,9 @@ private:
     const MediaList& m_media;
     Segment m_ray;
     double m_depth;
-    const LightQuery* m_lights;  ///< null on a shadow ray
+    const LightQuery* m_lights;  ///< null on a shadow ray and on a photon's ray
+    const MediaPhotons* m_photons;  ///< null without photons in media
+    std::vector<MediaPhotons::Sample> m_gathered;
     Random m_random;
     bool m_use_scattering = false;
     double m_aa_threshold = 0.0;
@@ -219,6 +223,43 @@ Vec3 Walk::run(const Vec3& colour) {
         od += iv.od * n;
     }
     return colour * exp3(-od) + te;
+}
+
+Vec3 Walk::deposit(const Vec3& colour, const PhotonDeposit& d, std::vector<DepositPoint>& out) {
+    const scene::Media* im = m_media.items[0];
+    bool use_extinction = false;
+    for (int i = 0; i < m_media.size; ++i) {
+        const scene::Media& m = *m_media.items[i];
+        if (m.intervals > im->intervals) im = &m;
+        use_extinction = use_extinction || !is_zero(m.absorption) || !is_zero(m.scattering);
+        m_use_scattering = m_use_scattering || !is_zero(m.scattering);
+    }
+    // POV-Ray compat: media without extinction neither dim the photon nor keep any of it.
+    if (!use_extinction) return colour;
+    // The lit and sampling intervals as for a camera ray: the lights' cones split the ray.
+    std::vector<LitInterval> lit;
+    light_entries();
+    lit_intervals(lit);
+    sample_intervals(lit, *im);
+    for (Interval& iv : m_intervals) {
+        // One photon every step · factor; past max_steps, max_steps photons spaced wider.
+        int n = static_cast<int>(iv.ds / (d.step * d.factor));
+        double factor = d.factor;
+        if (n > d.max_steps) {
+            n = d.max_steps;
+            factor = iv.ds / (d.step * n);
+        }
+        for (int j = 0; j < n; ++j) {
+            const double d0 = (j + 0.5 + m_random.uniform() * d.jitter - 0.5 * d.jitter) / n;
+            Vec3 c, od;
+            sample(iv, d0, c, od, 2);
+            if (m_use_scattering) out.push_back({iv.s0 + d0 * iv.ds, factor});
+        }
+    }
+    // POV-Ray compat: an interval without a sample divides 0 by 0 here (NaN).
+    Vec3 od;
+    for (const Interval& iv : m_intervals) od += iv.od / static_cast<double>(iv.samples);
+    return colour * exp3(-od);
 }
 
 void Walk::light_entries() {
@@ -342,13 +383,23 @@ void Walk::sample(Interval& iv, double d0, Vec3& col, Vec3& od, int method) {
     }
     od = extinction * iv.ds;
     if (method != 3) iv.od += od;
-    if (!shadow && m_use_scattering && iv.lit) {
-        for (const LightEntry& e : m_entries) {
-            if (d1 < e.s0 || d1 > e.s1) continue;
-            Vec3 to_light;
-            const Vec3 light = m_lights->arriving(e.light, h, to_light);
-            if (light == Vec3{}) continue;
-            emission += scattering * light * phase(to_light);
+    if (!shadow && m_use_scattering) {
+        if (iv.lit) {
+            for (const LightEntry& e : m_entries) {
+                if (d1 < e.s0 || d1 > e.s1) continue;
+                Vec3 to_light;
+                const Vec3 light = m_lights->arriving(e.light, h, to_light);
+                if (light == Vec3{}) continue;
+                emission += scattering * light * phase(to_light);
+            }
+        }
+        // POV-Ray's ComputeMediaPhotons, lit interval or not: the photons within a sphere of radius r, each
+        // scattered by the phase function, over the sphere's volume 4/3 π r³ (Jensen & Christensen 1998, eq. 7).
+        if (m_photons) {
+            const double r = m_photons->gather(h, m_gathered);
+            Vec3 sum;
+            for (const MediaPhotons::Sample& ph : m_gathered) sum += scattering * ph.colour * phase(ph.to_origin);
+            if (r > 0.0) emission += sum * (3.0 / (4.0 * std::numbers::pi * r * r * r));
         }
     }
     // Method 3 attenuates in order later; the others assume constant extinction over the interval.
@@ -501,6 +552,14 @@ Vec3 ParticipatingMedia::along(const MediaList& media, const Segment& segment, c
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
     Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, &lights);
     return walk.run(colour);
+}
+
+Vec3 ParticipatingMedia::deposit_photons(const MediaList& media, const Segment& segment, const Vec3& colour,
+                                         const PhotonDeposit& deposit, std::vector<DepositPoint>& out) const {
+    if (media.empty() || !(deposit.step > 0.0)) return colour;
+    const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr);
+    return walk.deposit(colour, deposit, out);
 }
 
 Vec3 ParticipatingMedia::transmittance(const MediaList& media, const Segment& segment) const {

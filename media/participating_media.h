@@ -24,6 +24,20 @@ struct MediaList {
     bool empty() const { return size == 0; }
 };
 
+/// The photons the photon pass left in media, as the media gather reads them (photons/ implements it).
+class MediaPhotons {
+public:
+    /// One gathered photon: its flux and the unit direction towards where it came from.
+    struct Sample {
+        Vec3 colour;
+        Vec3 to_origin;
+    };
+    virtual ~MediaPhotons() = default;
+    /// POV-Ray's gatherPhotonsAdaptive in a medium (no normal): the photons around `p` into `out`, and the radius
+    /// of the sphere they were gathered from.
+    virtual double gather(const Vec3& p, std::vector<Sample>& out) const = 0;
+};
+
 /// What a medium scatters towards the eye needs from the integrator: the light reaching a point inside it.
 class LightQuery {
 public:
@@ -31,6 +45,24 @@ public:
     /// The light from `scene.lights[light]` arriving at `p` as POV-Ray's TestShadow sees it (attenuated, shadowed,
     /// dimmed by media on the way); `to_light` receives the unit direction towards the light. Zero when none.
     virtual Vec3 arriving(std::size_t light, const Vec3& p, Vec3& to_light) const = 0;
+    /// The media photon map, or null (no photons in media).
+    virtual const MediaPhotons* photons() const { return nullptr; }
+};
+
+/// How a photon's ray deposits photons in media (POV-Ray's DepositMediaPhotons): one photon every
+/// `step · factor` along the ray, at most `max_steps` per sampling interval.
+struct PhotonDeposit {
+    double step = 0.0;  ///< the photon spacing at the segment's start: spread · distance (spread when parallel)
+    double factor = 1.0;  ///< `media max_steps, factor`: the spacing factor
+    int max_steps = 0;
+    double jitter = 0.4;  ///< the photons block's jitter
+};
+
+/// One photon deposited along a segment: its distance from the segment's origin and its interval's spacing factor
+/// (larger than PhotonDeposit::factor where max_steps capped the count).
+struct DepositPoint {
+    double t = 0.0;
+    double factor = 1.0;
 };
 
 /// POV-Ray 3.7's MediaFunction::ComputeMedia: lit intervals, sampling intervals, sampling methods 1 to 3, and the
@@ -47,6 +79,11 @@ public:
     Vec3 along(const MediaList& media, const Segment& segment, const Vec3& colour, const LightQuery& lights) const;
     /// What passes along the segment (extinction only): POV-Ray's ComputeMedia on a shadow ray.
     Vec3 transmittance(const MediaList& media, const Segment& segment) const;
+    /// A photon's ray through `media` (POV-Ray's ComputeMediaAndDepositPhotons): where it leaves photons, into
+    /// `out`, and the photon's colour at the far end. POV-Ray compat: a sampling interval too short for one photon
+    /// makes the colour NaN (its 0/0 optical depth), so the photon carries nothing further.
+    Vec3 deposit_photons(const MediaList& media, const Segment& segment, const Vec3& colour,
+                         const PhotonDeposit& deposit, std::vector<DepositPoint>& out) const;
 
     /// The scene-level media (the atmosphere); empty when the scene has none.
     const MediaList& atmosphere() const { return m_atmosphere; }

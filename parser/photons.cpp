@@ -103,8 +103,6 @@ void SceneReader::parse_photons(const Token& kw, PhotonSettings& ph) {
             accept(",");
             ph.media_factor = starts_value(peek()) ? parse_float() : 1.0;
             if (ph.media_factor <= 0.0) fail(t, "media spacing factor must be greater than zero.");
-            // Photons are not deposited in media yet: media are lit as without photons.
-            if (ph.media_steps > 0) warn_unsupported(t, "photons in media");
         } else if (w == "jitter") {
             ph.jitter = parse_float();
         } else if (w == "max_trace_level") {

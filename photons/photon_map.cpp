@@ -48,7 +48,7 @@ Vec3 photon_direction(const Photon& p) {
     return {std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi)};
 }
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings)
+PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media)
     : m_photons(std::move(photons)),
       m_gather_max(settings.gather_max),
       m_gather_min(settings.gather_min),
@@ -56,7 +56,7 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& s
       m_expand_min(settings.expand_min) {
     if (m_photons.empty()) return;
     build(0, static_cast<int>(m_photons.size()));
-    estimate_radius(settings);
+    estimate_radius(settings, media);
 }
 
 void PhotonMap::build(int begin, int end) {
@@ -126,26 +126,32 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     for (const auto& e : heap) out.photons.push_back(e.second);
 }
 
-void PhotonMap::gather_adaptive(const Vec3& p, const Vec3& n, Gathered& out) const {
-    gather(p, m_min_radius, &n, out);
+void PhotonMap::gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) const {
+    gather(p, m_min_radius, n, out);
     double previous = out.photons.size() / (out.radius * out.radius);
     if (previous == 0.0) previous = 1e-16;
     // POV-Ray's gatherNumSteps is 2: at most one wider gather, at the radius plus twice it.
     if (static_cast<int>(out.photons.size()) >= m_gather_min) return;
     Gathered wider;
-    gather(p, m_min_radius + m_radius_step, &n, wider);
+    gather(p, m_min_radius + m_radius_step, n, wider);
     const double density = wider.photons.size() / (wider.radius * wider.radius);
     const int found = static_cast<int>(wider.photons.size());
     if ((density - previous) / previous < m_expand_tolerance || (found < m_expand_min && found > 0))
         out = std::move(wider);
 }
 
-void PhotonMap::estimate_radius(const scene::PhotonSettings& settings) {
-    m_min_radius = settings.radius;
+void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool media) {
+    m_min_radius = media ? settings.media_radius : settings.radius;
+    // The photons' density around a point: per area on surfaces, per volume in media (4/3 π r³).
+    auto density_of = [media](const Gathered& g) {
+        const double r = g.radius;
+        return media ? 3.0 * g.photons.size() / (4.0 * std::numbers::pi * r * r * r)
+                     : g.photons.size() / (std::numbers::pi * r * r);
+    };
     if (m_min_radius <= 0.0) {
-        // POV-Ray's setGatherOptions: the mean density n / (π r²) of the gather_max photons around sampled
-        // photons gives the radius that holds gather_max photons on average; it grows by up to 21 times with the
-        // fraction of samples whose density at that radius is under 70 % (but over 5 %) of the mean.
+        // POV-Ray's setGatherOptions: the mean density of the gather_max photons around sampled photons gives the
+        // radius that holds gather_max photons on average; it grows by up to 21 times with the fraction of
+        // samples whose density at that radius is under 70 % (but over 5 %) of the mean.
         const int n = static_cast<int>(m_photons.size());
         const int samples = std::clamp(n / 20, 100, 1000);
         Random rng(0x50484F544F4E53ull);
@@ -153,23 +159,35 @@ void PhotonMap::estimate_radius(const scene::PhotonSettings& settings) {
         double sum = 0.0;
         for (int i = 0; i < samples; ++i) {
             gather(m_photons[rng.below(n)].point(), 10000000.0, nullptr, g);
-            const double density =
-                g.radius > 0.0 ? g.photons.size() / (std::numbers::pi * g.radius * g.radius) : (i > 0 ? sum / i : 0.0);
+            const double density = g.radius > 0.0 ? density_of(g) : (i > 0 ? sum / i : 0.0);
             sum += density;
         }
         const double mean = sum / samples;
-        m_min_radius = mean > 0.0 ? std::sqrt(m_gather_max / (mean * std::numbers::pi)) : 1.0;
+        // POV-Ray compat: the cube root is pow(x, 0.3333).
+        m_min_radius = !(mean > 0.0) ? 1.0
+                       : media       ? std::pow(3.0 * m_gather_max / (mean * std::numbers::pi * 4.0), 0.3333)
+                                     : std::sqrt(m_gather_max / (mean * std::numbers::pi));
         int sparse = 0;
         for (int i = 0; i < samples; ++i) {
             gather(m_photons[rng.below(n)].point(), m_min_radius, nullptr, g);
             if (g.radius <= 0.0) continue;
-            const double density = g.photons.size() / (std::numbers::pi * g.radius * g.radius);
+            const double density = density_of(g);
             if (density < mean * 0.7 && density > mean * 0.05) ++sparse;
         }
         m_min_radius *= 1.0 + 20.0 * static_cast<double>(sparse) / samples;
     }
-    m_min_radius *= settings.radius_multiplier;
+    m_min_radius *= media ? settings.media_radius_multiplier : settings.radius_multiplier;
+    // POV-Ray compat: a media map's radius is doubled.
+    if (media) m_min_radius *= 2.0;
     m_radius_step = m_min_radius * 2.0;
+}
+
+double MediaPhotonGather::gather(const Vec3& p, std::vector<Sample>& out) const {
+    Gathered g;
+    m_map.gather_adaptive(p, nullptr, g);
+    out.clear();
+    for (const Photon* ph : g.photons) out.push_back({photon_colour(*ph), photon_direction(*ph)});
+    return g.radius;
 }
 
 }  // namespace wardray::photons

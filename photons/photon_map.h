@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "media/participating_media.h"
 #include "scene/settings.h"
 
 namespace wardray::photons {
@@ -40,7 +41,8 @@ class PhotonMap {
 public:
     /// Builds the kd-tree over `photons` (their order decides nothing but ties) and POV-Ray's gather radius
     /// (setGatherOptions: estimated from the photons' density unless the settings give it), with a fixed seed.
-    PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings);
+    /// `media`: a map of photons in media, whose radius comes from their density in volume (POV-Ray's mediaMap).
+    PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media = false);
 
     std::size_t size() const { return m_photons.size(); }
     /// The photons in the kd-tree's order.
@@ -53,13 +55,15 @@ public:
     void gather(const Vec3& p, double size, const Vec3* n, Gathered& out) const;
     /// POV-Ray's gatherPhotonsAdaptive: gather at the map's radius, and once more at three times it when too few
     /// photons were found and the density does not drop by more than expand_thresholds says.
-    void gather_adaptive(const Vec3& p, const Vec3& n, Gathered& out) const;
+    void gather_adaptive(const Vec3& p, const Vec3& n, Gathered& out) const { gather_adaptive(p, &n, out); }
+    /// The same without a normal (in a medium: a sphere, not a disc).
+    void gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) const;
 
 private:
     void build(int begin, int end);
     void search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
                 std::vector<std::pair<double, const Photon*>>& heap) const;
-    void estimate_radius(const scene::PhotonSettings& settings);
+    void estimate_radius(const scene::PhotonSettings& settings, bool media);
 
     std::vector<Photon> m_photons;
     int m_gather_max = 100;
@@ -68,6 +72,16 @@ private:
     int m_expand_min = 35;
     double m_min_radius = 0.0;
     double m_radius_step = 0.0;
+};
+
+/// The media photon map as the media gather reads it (POV-Ray's ComputeMediaPhotons through its PhotonGatherer).
+class MediaPhotonGather final : public media::MediaPhotons {
+public:
+    explicit MediaPhotonGather(const PhotonMap& map) : m_map(map) {}
+    double gather(const Vec3& p, std::vector<Sample>& out) const override;
+
+private:
+    const PhotonMap& m_map;
 };
 
 }  // namespace wardray::photons

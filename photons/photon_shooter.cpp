@@ -158,7 +158,7 @@ double attenuation(const scene::Light& light, const Vec3& dir, const Vec3& axis,
 
 /// Shoots one row (one theta) of a unit; returns whether a photon of it reached the target.
 bool shoot_row(const Unit& u, double theta, std::uint64_t seed, const PhotonTracer& tracer, std::vector<Photon>& out,
-               std::uint64_t& shot, double jitter) {
+               std::vector<Photon>& media_out, std::uint64_t& shot, double jitter) {
     const scene::Light& light = *u.light;
     Random rng(seed);
     double dphi = 2.0 * std::numbers::pi;
@@ -197,7 +197,7 @@ bool shoot_row(const Unit& u, double theta, std::uint64_t seed, const PhotonTrac
                 const double a = attenuation(light, dir, u.light_direction, from_axis) / (nx * ny);
                 ++shot;
                 if (a < 0.00001) continue;
-                hit = tracer.shoot(shot_unit, origin, dir, light.color.rgb() * a, out) || hit;
+                hit = tracer.shoot(shot_unit, origin, dir, light.color.rgb() * a, out, media_out) || hit;
             }
         }
     }
@@ -213,7 +213,8 @@ bool photons_replace_shadow(const scene::Object& blocker, const scene::Light& li
 }
 
 std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
-                                               PhotonStats& stats, void (*progress)(std::uint64_t)) {
+                                               PhotonStats& stats, std::unique_ptr<const PhotonMap>* media_map,
+                                               void (*progress)(std::uint64_t)) {
     const auto t0 = std::chrono::steady_clock::now();
     const scene::PhotonSettings& settings = *scene.global.photons;
     // The units: every global light but fill lights, with every target, in scene order (POV-Ray 3.7 shoots no
@@ -238,7 +239,7 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
     stats.spacing = spacing;
     stats.units = units.size();
     const PhotonTracer tracer(scene, geometry);
-    std::vector<Photon> photons;
+    std::vector<Photon> photons, media_photons;
     for (std::size_t ui = 0; ui < units.size(); ++ui) {
         const Unit& u = units[ui];
         const int rows = static_cast<int>(std::ceil(u.max_theta / u.dtheta));
@@ -248,18 +249,19 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
         bool hit_once = false, stopped = false;
         for (int first = 0; first < rows && !stopped; first += kBatch) {
             const int last = std::min(rows, first + kBatch);
-            std::vector<std::vector<Photon>> row_photons(last - first);
+            std::vector<std::vector<Photon>> row_photons(last - first), row_media(last - first);
             std::vector<std::uint64_t> row_shot(last - first, 0);
             std::vector<char> row_hit(last - first, 0);
             tbb::parallel_for(first, last, [&](int r) {
                 const double theta = r * u.dtheta;
                 if (!(theta < u.max_theta)) return;
                 row_hit[r - first] = shoot_row(u, theta, mix_seed(ui + 1, r), tracer, row_photons[r - first],
-                                               row_shot[r - first], settings.jitter);
+                                               row_media[r - first], row_shot[r - first], settings.jitter);
             });
             for (int r = first; r < last; ++r) {
                 const std::size_t i = r - first;
                 photons.insert(photons.end(), row_photons[i].begin(), row_photons[i].end());
+                media_photons.insert(media_photons.end(), row_media[i].begin(), row_media[i].end());
                 stats.shot += row_shot[i];
                 hit_once = hit_once || row_hit[i];
                 if (hit_once && !row_hit[i] && r * u.dtheta > settings.autostop * u.max_theta) {
@@ -267,15 +269,25 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
                     break;
                 }
             }
-            if (progress) progress(photons.size());
+            if (progress) progress(photons.size() + media_photons.size());
         }
     }
     stats.stored = photons.size();
+    stats.media_stored = media_photons.size();
     const auto t1 = std::chrono::steady_clock::now();
     stats.shoot_seconds = std::chrono::duration<double>(t1 - t0).count();
-    if (photons.empty()) return nullptr;
-    auto map = std::make_unique<const PhotonMap>(std::move(photons), settings);
-    stats.gather_radius = map->min_gather_radius();
+    if (media_map) {
+        media_map->reset();
+        if (!media_photons.empty()) {
+            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true);
+            stats.media_gather_radius = (*media_map)->min_gather_radius();
+        }
+    }
+    std::unique_ptr<const PhotonMap> map;
+    if (!photons.empty()) {
+        map = std::make_unique<const PhotonMap>(std::move(photons), settings);
+        stats.gather_radius = map->min_gather_radius();
+    }
     stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     return map;
 }

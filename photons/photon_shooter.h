@@ -20,9 +20,11 @@ namespace wardray::photons {
 struct PhotonStats {
     std::uint64_t shot = 0;
     std::uint64_t stored = 0;
+    std::uint64_t media_stored = 0;  ///< photons kept in media (`media` in the photons block)
     std::size_t units = 0;       ///< light-and-target pairs shot
     double spacing = 0.0;        ///< the surface spacing used (after `count`'s estimate)
     double gather_radius = 0.0;  ///< the map's gather radius
+    double media_gather_radius = 0.0;  ///< the media map's
     double shoot_seconds = 0.0;
     double build_seconds = 0.0;
 };
@@ -30,9 +32,12 @@ struct PhotonStats {
 /// POV-Ray's photon pass for a scene whose global_settings enable photons: the units (each light but fill lights
 /// with each target, in scene order), `count`'s spacing estimate, the shooting (rows of each unit in parallel, each
 /// row seeded by its unit and index, so the photons are the same for any number of threads), and the map. Null
-/// when no photon was stored. `progress`, when set, is called now and then with the photons stored so far.
+/// when no photon was stored on a surface. `media_map`, when given, receives the map of the photons kept in media
+/// (null when none). `progress`, when set, is called now and then with the photons stored so far.
 std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
-                                               PhotonStats& stats, void (*progress)(std::uint64_t) = nullptr);
+                                               PhotonStats& stats,
+                                               std::unique_ptr<const PhotonMap>* media_map = nullptr,
+                                               void (*progress)(std::uint64_t) = nullptr);
 
 /// POV-Ray's ComputeShadowColour test: with a photon map, a shadow ray through `blocker` (a target that refracts
 /// photons of `light`) is black, since the photons carry that light.

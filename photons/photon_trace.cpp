@@ -11,6 +11,7 @@
 #include "core/constants.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
+#include "media/participating_media.h"
 #include "media/transmittance.h"
 #include "photons/reflectivity.h"
 #include "texture/normal.h"
@@ -49,6 +50,7 @@ std::vector<const scene::Object*> objects_containing(const scene::Scene& scene, 
 struct PhotonTracer::Path {
     const ShotUnit* unit = nullptr;
     std::vector<Photon>* out = nullptr;
+    std::vector<Photon>* media_out = nullptr;
     int level = 0;
     bool pass_prev = true;
     bool pass_this = false;
@@ -61,13 +63,17 @@ PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeome
     const scene::PhotonSettings& s = *scene.global.photons;
     m_max_level = s.max_trace_level >= 0 ? s.max_trace_level : scene.global.max_trace_level;
     m_bailout = s.adc_bailout >= 0.0 ? s.adc_bailout : scene.global.adc_bailout;
+    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<const media::ParticipatingMedia>(scene);
 }
 
+PhotonTracer::~PhotonTracer() = default;
+
 bool PhotonTracer::shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour,
-                         std::vector<Photon>& out) const {
+                         std::vector<Photon>& out, std::vector<Photon>& media_out) const {
     Path path;
     path.unit = &unit;
     path.out = &out;
+    path.media_out = &media_out;
     RayIn ray{origin, dir, {}};
     ray.interiors = origin == unit.light->position && unit.light_interiors ? *unit.light_interiors
                                                                             : objects_containing(m_scene, origin);
@@ -148,6 +154,7 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
     const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
     const scene::Interior& interior = leaf.interior;
     const bool inside_this = find_interior(ray.interiors, leaf) >= 0;
+    if (m_media) through_media(hit, ray, colour, path);
     // POV-Ray's interior fade over the stretch travelled inside.
     if (inside_this && interior.fade_power > 0.0 && std::fabs(interior.fade_distance) > kPovEpsilon)
         colour = colour * media::interior_fade(interior, hit.t);
@@ -293,6 +300,45 @@ bool PhotonTracer::refract(const geometry::Hit& hit, const Vec3& normal, const V
     next.dir = normalize(ray.dir * ior + local * (ior * cos_n - std::sqrt(t)));
     trace(next, colour * filter, weight, path);
     return false;
+}
+
+void PhotonTracer::through_media(const geometry::Hit& hit, const RayIn& ray, Vec3& colour, Path& path) const {
+    // POV-Ray compat: media act only in hollow objects, and only those of the objects the ray is in (the
+    // atmosphere's keep no photons and, in the photon pass, do not dim them).
+    media::MediaList list;
+    for (const scene::Object* o : ray.interiors) {
+        if (!o->interior.hollow) return;
+        list.add(o->interior.media);
+    }
+    if (list.empty()) return;
+    const media::Segment segment{ray.origin, ray.dir, hit.t};
+    const scene::PhotonSettings& settings = *m_scene.global.photons;
+    if (path.level <= 1 || path.pass_prev || settings.media_steps <= 0) {
+        colour = colour * m_media->transmittance(list, segment);
+        return;
+    }
+    // POV-Ray's DepositMediaPhotons and addMediaPhoton: each photon kept along the ray carries the flux of the
+    // stretch of beam it stands for, colour · factor · spread · distance (its length) times spread² · distance²
+    // (its cross-section), undoing the light's fade; distances from the light.
+    const ShotUnit& unit = *path.unit;
+    const scene::Light& light = *unit.light;
+    media::PhotonDeposit deposit;
+    deposit.step = unit.parallel ? unit.spread : unit.spread * path.depth;
+    deposit.factor = settings.media_factor;
+    deposit.max_steps = settings.media_steps;
+    deposit.jitter = settings.jitter;
+    std::vector<media::DepositPoint> points;
+    const Vec3 incoming = colour;
+    colour = m_media->deposit_photons(list, segment, incoming, deposit, points);
+    for (const media::DepositPoint& d : points) {
+        const double depth = path.depth + d.t;
+        double a = 1.0;
+        if (light.fade_power > 0.0 && std::fabs(light.fade_distance) > kPovEpsilon)
+            a = 2.0 / (1.0 + std::pow(depth / light.fade_distance, light.fade_power));
+        Vec3 flux = incoming * (d.factor * unit.spread * a * unit.spread * unit.spread);
+        if (!unit.parallel) flux = flux * (depth * depth * depth);
+        path.media_out->push_back(make_photon(ray.origin + ray.dir * d.t, flux, ray.origin));
+    }
 }
 
 void PhotonTracer::reflect(const geometry::Hit& hit, const Vec3& n, const Vec3& raw, const RayIn& ray,

@@ -3,10 +3,15 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "photons/photon_map.h"
 #include "scene/scene.h"
+
+namespace wardray::media {
+class ParticipatingMedia;
+}  // namespace wardray::media
 
 namespace wardray::geometry {
 class SceneGeometry;
@@ -33,10 +38,15 @@ class PhotonTracer {
 public:
     PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
 
-    /// Follows a photon of `colour` from `origin` along the unit `dir`, appending what it stores to `out`; true
-    /// when it reached the unit's target (POV-Ray's hitObject, for autostop).
-    bool shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour,
-               std::vector<Photon>& out) const;
+    PhotonTracer(const PhotonTracer&) = delete;
+    PhotonTracer& operator=(const PhotonTracer&) = delete;
+    ~PhotonTracer();
+
+    /// Follows a photon of `colour` from `origin` along the unit `dir`, appending what it stores on surfaces to
+    /// `out` and in media to `media_out`; true when it reached the unit's target (POV-Ray's hitObject, for
+    /// autostop).
+    bool shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour, std::vector<Photon>& out,
+               std::vector<Photon>& media_out) const;
 
 private:
     struct Path;
@@ -59,12 +69,16 @@ private:
     /// POV-Ray's ComputeRefractionForPhotons; true on total internal reflection.
     bool refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
                  const Vec3& colour, const Vec3& filter, double weight, Path& path) const;
+    /// The media of the interiors the ray is in, between its origin and `hit`: they dim the photon and, past its
+    /// first bounce with `media` in the photons block, keep photons along the way (ComputeLightedTexture's media).
+    void through_media(const geometry::Hit& hit, const RayIn& ray, Vec3& colour, Path& path) const;
     /// POV-Ray's ComputeReflection for a photon.
     void reflect(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
                  const Vec3& colour, double weight, Path& path) const;
 
     const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;
+    std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media
     int m_max_level = 5;
     double m_bailout = 1.0 / 255.0;
     int m_noise_generator = 2;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "media/participating_media.h"
 #include "parser/parse.h"
@@ -165,6 +166,97 @@ TEST(MediaBlock, BadValuesAreErrorsAtTheirItem) {
         const parser::ParseResult r = parser::parse_string(bad, "bad.pov", options);
         EXPECT_FALSE(r.ok()) << bad;
     }
+}
+
+// A photon's ray through a medium leaves one photon every step · factor (POV-Ray's DepositMediaPhotons), evenly
+// spread with jitter 0; past max_steps it leaves max_steps, each standing for a longer stretch.
+TEST(MediaPhotonDeposit, OnePhotonPerStepUpToMaxSteps) {
+    scene::Media m;
+    m.scattering = {0.3, 0.3, 0.3};
+    m.extinction = 0.0;
+    m.absorption = {0.1, 0.0, 0.0};
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    PhotonDeposit d;
+    d.step = 0.1;
+    d.factor = 2.0;
+    d.max_steps = 100;
+    d.jitter = 0.0;
+    std::vector<DepositPoint> out;
+    const Vec3 c = media.deposit_photons(media.atmosphere(), kRay, {1.0, 1.0, 1.0}, d, out);
+    ASSERT_EQ(out.size(), 20u);  // 4 / (0.1 · 2)
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        EXPECT_NEAR(out[i].t, (i + 0.5) * 0.2, 1e-12);
+        EXPECT_EQ(out[i].factor, 2.0);
+    }
+    // The photon leaves dimmed by the absorption along the way.
+    EXPECT_NEAR(c.x, std::exp(-0.4), 1e-12);
+    EXPECT_NEAR(c.y, 1.0, 1e-12);
+    out.clear();
+    d.max_steps = 8;
+    media.deposit_photons(media.atmosphere(), kRay, {1.0, 1.0, 1.0}, d, out);
+    ASSERT_EQ(out.size(), 8u);
+    EXPECT_NEAR(out[0].factor, 4.0 / (0.1 * 8), 1e-12);
+    EXPECT_NEAR(out[7].t, 7.5 * 0.5, 1e-12);
+}
+
+// POV-Ray compat: a stretch shorter than one step keeps no photon and makes the photon's colour NaN (0/0 optical
+// depth), so everything it stores later is black; a medium without extinction keeps nothing and dims nothing.
+TEST(MediaPhotonDeposit, TooShortAStretchKillsThePhoton) {
+    scene::Media m;
+    m.scattering = {0.3, 0.3, 0.3};
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    PhotonDeposit d;
+    d.step = 0.1;
+    d.max_steps = 100;
+    std::vector<DepositPoint> out;
+    const Vec3 c = media.deposit_photons(media.atmosphere(), Segment{{}, {0.0, 0.0, 1.0}, 0.05}, {1, 1, 1}, d, out);
+    EXPECT_TRUE(out.empty());
+    EXPECT_TRUE(std::isnan(c.x));
+    scene::Media clear;
+    clear.emission = {0.5, 0.5, 0.5};
+    const scene::Scene s2 = scene_with(clear);
+    const ParticipatingMedia none(s2);
+    const Vec3 c2 = none.deposit_photons(none.atmosphere(), kRay, {1, 1, 1}, d, out);
+    EXPECT_TRUE(out.empty());
+    EXPECT_EQ(c2, (Vec3{1, 1, 1}));
+}
+
+// Photons in the medium light it like a light would (POV-Ray's ComputeMediaPhotons): photons of flux density F
+// (flux per volume) stand for a light of F arriving from their direction; here a uniform cloud of them, all from +y.
+class UniformPhotons final : public MediaPhotons {
+public:
+    double gather(const Vec3&, std::vector<Sample>& out) const override {
+        // 100 photons of flux 0.01 within radius 1: flux density 1 / (4/3 π).
+        out.assign(100, Sample{{0.01, 0.01, 0.01}, {0.0, 1.0, 0.0}});
+        return 1.0;
+    }
+};
+
+class PhotonsOnly final : public LightQuery {
+public:
+    Vec3 arriving(std::size_t, const Vec3&, Vec3& to_light) const override {
+        to_light = {0.0, 1.0, 0.0};
+        return {};
+    }
+    const MediaPhotons* photons() const override { return &m_photons; }
+
+private:
+    UniformPhotons m_photons;
+};
+
+TEST(MediaPhotonGather, PhotonsScatterLikeALightOfTheirFluxDensity) {
+    scene::Media m;
+    m.scattering = {0.2, 0.2, 0.2};
+    m.extinction = 0.0;
+    m.method = 2;
+    m.min_samples = m.max_samples = 4;
+    const scene::Scene s = scene_with(m);
+    const ParticipatingMedia media(s);
+    const double light = 1.0 / (4.0 / 3.0 * std::numbers::pi);
+    const Vec3 c = media.along(media.atmosphere(), kRay, {}, PhotonsOnly{});
+    EXPECT_NEAR(c.x, 0.2 * light * 4.0, 1e-9);
 }
 
 }  // namespace

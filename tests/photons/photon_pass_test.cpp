@@ -5,6 +5,7 @@
 
 #include <cstring>
 #include <numbers>
+#include <string>
 
 #include "../parser/test_util.h"
 #include "geometry/scene_geometry.h"
@@ -72,6 +73,88 @@ sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1.5 } }
     PhotonStats stats;
     EXPECT_FALSE(shoot_photons(scene, geometry, stats));
     EXPECT_EQ(stats.units, 0u);
+}
+
+// A clear hollow box of scattering medium under the light (a photon target, so every photon crosses it). POV-Ray
+// compat: a photon kept at distance D from the light carries the flux of a stretch spaced for the distance D0 at
+// which its ray entered the medium, so the photons' fluence is the light's I times D / D0 (POV-Ray's lights do not
+// fall off), whether max_steps caps their count or not; an absorbing medium dims the photons on the floor below.
+std::string medium_box(const char* media, const char* medium) {
+    return std::string("global_settings { photons { spacing 0.03 jitter 0 gather 20, 400 ") + media + R"( } }
+light_source { <0, 10, 0> color rgb <0.8, 0.6, 0.4> photons { refraction on } }
+plane { y, 0 pigment { rgb 1 } }
+box { <-1, 1, -1>, <1, 3, 1> hollow pigment { rgbf 1 }
+  interior { media { )" + medium + R"( } } photons { target } }
+)";
+}
+
+Vec3 media_fluence(const PhotonMap& map, const Vec3& p) {
+    const MediaPhotonGather gather(map);
+    std::vector<media::MediaPhotons::Sample> found;
+    const double r = gather.gather(p, found);
+    Vec3 flux;
+    for (const auto& ph : found) {
+        flux += ph.colour;
+        EXPECT_GT(ph.to_origin.y, 0.9);  // towards the light above
+    }
+    return flux / (4.0 / 3.0 * std::numbers::pi * r * r * r);
+}
+
+TEST(MediaPhotons, KeptPhotonsCarryTheLightsFluence) {
+    for (const char* media : {"media 400", "media 60"}) {
+        const scene::Scene scene = parser::test::parse_ok(medium_box(media, "scattering { 1, rgb 0.5 extinction 0 }"));
+        const geometry::SceneGeometry geometry(scene);
+        PhotonStats stats;
+        std::unique_ptr<const PhotonMap> media_map;
+        shoot_photons(scene, geometry, stats, &media_map);
+        ASSERT_TRUE(media_map) << media;
+        EXPECT_EQ(stats.media_stored, media_map->size());
+        EXPECT_GT(stats.media_stored, 100000u);
+        for (const Vec3 p : {Vec3{0.3, 2.0, 0.2}, Vec3{-0.4, 1.6, 0.3}, Vec3{0.2, 2.5, -0.4}}) {
+            const Vec3 f = media_fluence(*media_map, p);
+            const double expected = 0.8 * (10.0 - p.y) / 7.0;  // D / D0 along the ray from the light to p
+            EXPECT_NEAR(f.x, expected, expected * 0.08) << media << " at " << p.y;
+            EXPECT_NEAR(f.z / f.x, 0.5, 0.02);
+        }
+    }
+}
+
+TEST(MediaPhotons, AbsorbingMediumDimsThePhotonsBeyond) {
+    // Absorption 0.5 over the box's height 2: the floor's photons carry exp(−1/cos θ) of the light, with or without
+    // photons kept in the medium (an absorbing medium keeps none: it scatters nothing).
+    for (const char* media : {"media 100", ""}) {
+        const scene::Scene scene = parser::test::parse_ok(medium_box(media, "absorption 0.5"));
+        const geometry::SceneGeometry geometry(scene);
+        PhotonStats stats;
+        std::unique_ptr<const PhotonMap> media_map;
+        const auto map = shoot_photons(scene, geometry, stats, &media_map);
+        ASSERT_TRUE(map);
+        EXPECT_FALSE(media_map);
+        Gathered g;
+        map->gather_adaptive(Vec3{0.3, 0.0, -0.2}, {0, 1, 0}, g);
+        Vec3 flux;
+        for (const Photon* ph : g.photons) flux += photon_colour(*ph);
+        const double cos_theta = 10.0 / length(Vec3{0.3, -10.0, -0.2});
+        const double expected = 0.8 * cos_theta * std::exp(-0.5 * 2.0 / cos_theta);
+        EXPECT_NEAR(flux.x / (std::numbers::pi * g.radius * g.radius), expected, expected * 0.03) << media;
+    }
+}
+
+TEST(MediaPhotons, SameMediaMapForAnyNumberOfThreads) {
+    const scene::Scene scene = parser::test::parse_ok(medium_box("media 50", "scattering { 1, rgb 0.5 }"));
+    const geometry::SceneGeometry geometry(scene);
+    auto shoot = [&](int threads) {
+        PhotonStats stats;
+        std::unique_ptr<const PhotonMap> media_map;
+        tbb::task_arena(threads).execute([&] { shoot_photons(scene, geometry, stats, &media_map); });
+        return media_map;
+    };
+    const auto one = shoot(1);
+    const auto two = shoot(2);
+    ASSERT_TRUE(one && two);
+    ASSERT_EQ(one->size(), two->size());
+    EXPECT_EQ(one->min_gather_radius(), two->min_gather_radius());
+    EXPECT_EQ(std::memcmp(one->photons().data(), two->photons().data(), one->size() * sizeof(Photon)), 0);
 }
 
 TEST(PhotonBlocks, ReadAsPovRayReadsThem) {
