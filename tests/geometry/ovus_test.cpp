@@ -109,7 +109,7 @@ TEST(Ovus, JoinsAreTangentAndTheBoxIsPovRays) {
         // Horizontal rays at every height meet the surface with normals that turn smoothly (C1 joins).
         Vec3 last{};
         for (int k = 1; k < 400; ++k) {
-            const double y = -b + (b + b + t) * k / 400.0;
+            const double y = -b + (b + b + t) * (k + 0.37) / 400.0;  // off the joins, where POV-Ray has a gap
             const SurfaceHits h = egg->intersect_all(LocalRay{{-10.0, y, 0.0}, {1.0, 0.0, 0.0}}, 0.0, INFINITY);
             ASSERT_EQ(h.size(), 2u) << "y " << y;
             const Vec3 n = normalize(h[0].normal);
@@ -160,8 +160,9 @@ TEST(Ovus, ParserChecksRadiiAsPovRay) {
     EXPECT_FALSE(neg.ok());
     const parser::ParseResult big = parser::parse_string("ovus { 0.5, 1 }", "big.pov", parser::ParseOptions{});
     ASSERT_TRUE(big.ok());
-    ASSERT_EQ(big.scene->warnings.size(), 1u);
-    EXPECT_NE(big.scene->warnings[0].message.find("sphere"), std::string::npos);
+    int substitutes = 0;
+    for (const auto& w : big.scene->warnings) substitutes += w.message.find("a sphere is drawn") != std::string::npos;
+    EXPECT_EQ(substitutes, 1);
     // POV-Ray 3.7.0 has neither of 3.7.1's ovus keywords.
     EXPECT_FALSE(parser::parse_string("ovus { 1, 0.5 radius 3 }", "r.pov", parser::ParseOptions{}).ok());
 }
