@@ -17,6 +17,8 @@
 #include "geometry/julia_fractal.h"
 #include "geometry/lathe.h"
 #include "geometry/mesh.h"
+#include "geometry/ovus.h"
+#include "geometry/parametric.h"
 #include "geometry/plane.h"
 #include "geometry/quadric.h"
 #include "geometry/poly.h"
@@ -34,7 +36,8 @@ namespace wardray::geometry {
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, PolyShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape, CsgShape>;
+                              TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape, CsgShape,
+                              OvusShape, ParametricShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).

@@ -247,8 +247,10 @@ private:
             return;
         }
         const auto& params = m_prog.params();
+        // POV-Ray compat: u and v read the x and y arguments (the parameters of a parametric's functions).
+        const std::string_view alias = w == "u" ? "x" : w == "v" ? "y" : "";
         for (std::size_t i = 0; i < params.size(); ++i) {
-            if (params[i] != w) continue;
+            if (params[i] != w && (alias.empty() || params[i] != alias)) continue;
             m_p.next();
             m_prog.emit(op(Instruction::Op::Arg, static_cast<std::uint32_t>(i)));
             return;

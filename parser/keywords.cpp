@@ -36,8 +36,7 @@ const std::vector<std::string_view> k_reserved = {
 
 // Object kinds that are valid POV-Ray but not drawn yet (the drawn ones are WARDRAY_SHAPES, scene/shapes.h).
 const std::vector<std::string_view> k_unsupported_objects = {
-    "blob", "parametric", "sphere_sweep", "bicubic_patch", "ovus", "lemon", "intersection", "difference", "merge",
-    "light_group"};
+    "blob", "sphere_sweep", "bicubic_patch", "intersection", "difference", "merge", "light_group"};
 
 const std::vector<std::string_view> k_unsupported_blocks = {
     "media", "normal", "interior", "material",

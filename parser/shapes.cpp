@@ -94,6 +94,20 @@ Torus Parser::read_torus(const Token& kw) {
     return t;
 }
 
+Ovus Parser::read_ovus(const Token& kw) {
+    Ovus o;
+    const Token at = peek();
+    o.bottom_radius = parse_float();
+    accept(",");
+    o.top_radius = parse_float();
+    if (o.bottom_radius < 0.0 || o.top_radius < 0.0) fail(at, "both ovus radii must be positive");
+    // POV-Ray compat: POV-Ray 3.7.0 draws the top sphere alone then (geometry/ovus.cpp does the same).
+    if (!(o.top_radius < 2.0 * o.bottom_radius))
+        warn(kw, "ovus second radius should be less than twice first radius; a sphere is drawn instead, as "
+                 "POV-Ray substitutes it");
+    return o;
+}
+
 Mesh Parser::read_triangle(const Token& kw) {
     Mesh m;
     m.kind = Mesh::Kind::Triangle;

@@ -71,6 +71,15 @@ struct Torus {
     bool operator==(const Torus&) const = default;
 };
 
+/// POV-Ray 3.7's `ovus { bottom_radius, top_radius }`: a sphere of the bottom radius at the origin and one of the
+/// top radius centred at <0, bottom_radius, 0>, joined by a spindle-torus band whose radius is twice the larger
+/// one; with top_radius >= 2 bottom_radius just the top sphere (POV-Ray substitutes it with a warning).
+struct Ovus {
+    double bottom_radius = 1.0;
+    double top_radius = 0.5;
+    bool operator==(const Ovus&) const = default;
+};
+
 /// POV-Ray's `blob { [threshold T] component s, r, <c> | sphere { <c>, r, [strength] s [transforms] } |
 /// cylinder { <a>, <b>, r, [strength] s [transforms] } ... [sturm] [hierarchy] }`: the surface where the summed
 /// densities s (1 - d²/r²)² (d: distance to the centre, or to the segment a-b) equal T; inside where above it.
@@ -273,6 +282,26 @@ struct Isosurface {
     bool operator==(const Isosurface&) const = default;
 };
 
+/// POV-Ray's `parametric { function { x(u, v) }, function { y(u, v) }, function { z(u, v) } <u1, v1>, <u2, v2>
+/// [contained_by { box { c1, c2 } | sphere { c, r } }] [max_gradient g] [accuracy a] [precompute depth, x, y, z] }`:
+/// the surface (x(u, v), y(u, v), z(u, v)) over the uv rectangle, found by subdividing it with interval bounds
+/// from max_gradient; only the nearest crossing, no inside.
+struct Parametric {
+    std::array<function::SharedFunction, 3> functions;
+    double u_min = 0.0, v_min = 0.0, u_max = 1.0, v_max = 1.0;  ///< ordered so min <= max
+    bool sphere_container = false;
+    Vec3 corner1{-1.0, -1.0, -1.0};  ///< the container box, ordered so corner1 <= corner2
+    Vec3 corner2{1.0, 1.0, 1.0};
+    Vec3 center;                     ///< the container sphere
+    double radius = 1.0;
+    double accuracy = 0.001;
+    double max_gradient = 1.0;
+    int precompute_depth = 0;  ///< 0: no precompute, else 1..20
+    int precompute_axes = 0;   ///< bit 0 x, bit 1 y, bit 2 z: the coordinates whose bounds are precomputed
+    int noise_generator = 2;   ///< the scene's global noise_generator when the parametric was read
+    bool operator==(const Parametric&) const = default;
+};
+
 /// A height field's elevation grid as POV-Ray stores it: one 16-bit height (0..65535) per image pixel, row z = 0
 /// being the image's bottom row.
 struct HeightGrid {
@@ -310,6 +339,7 @@ struct HeightField {
     X(cone, Cone)                     \
     X(disc, Disc)                     \
     X(torus, Torus)                   \
+    X(ovus, Ovus)                     \
     X(blob, Blob)                     \
     X(bicubic_patch, BicubicPatch)    \
     X(triangle, Mesh)                 \
@@ -329,4 +359,5 @@ struct HeightField {
     X(sor, Sor)                       \
     X(text, Text)                     \
     X(isosurface, Isosurface)         \
+    X(parametric, Parametric)         \
     X(height_field, HeightField)

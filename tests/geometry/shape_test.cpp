@@ -223,6 +223,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"cone", "cone { 0, 1, y, 0.5 }"},
     {"disc", "disc { 0, y, 1 }"},
     {"torus", "torus { 1, 0.25 }"},
+    {"ovus", "ovus { 1, 0.5 }"},
     {"blob", "blob { threshold 0.5 sphere { 0, 1, 1 } }"},
     {"bicubic_patch", "bicubic_patch { type 1 u_steps 2 v_steps 2 <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,1>,"
                       "<2,1,1>,<3,1,0>, <0,2,0>,<1,2,1>,<2,2,1>,<3,2,0>, <0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }"},
@@ -244,6 +245,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},
     {"text", "text { ttf \"timrom.ttf\" \"A\", 0.5, 0 }"},
     {"isosurface", "isosurface { function { x*x + y*y + z*z - 1 } contained_by { sphere { 0, 2 } } }"},
+    {"parametric", "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }"},
     {"height_field", "height_field { function 4, 3 { x + y } smooth water_level 0.1 }"},
 };
 

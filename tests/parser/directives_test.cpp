@@ -381,7 +381,7 @@ TEST(Directives, StringComparisonAndRand) {
 }
 
 TEST(Directives, UnusedDeclarationsDoNotWarn) {
-    Scene s = parse_ok("#declare C = ovus { 1, 0.5 }\n#declare P = pigment { tiling 1 }\n"
+    Scene s = parse_ok("#declare C = pigment { pavement }\n#declare P = pigment { tiling 1 }\n"
                        "sphere { 0, 1 }\n");
     EXPECT_TRUE(s.warnings.empty());
     s = parse_ok("#declare P = pigment { tiling 1 }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
