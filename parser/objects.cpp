@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <memory>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
@@ -146,10 +147,14 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         // POV-Ray compat: a declared object's identifier alone is that object, without modifiers (Parse_Object).
         const Value* v = lookup(w);
         if (v == nullptr) fail_undeclared(kw);
-        ObjectValue copy;
-        copy_declared(copy, *std::get<Boxed<ObjectValue>>(*v));
-        fresh_interior_ids(copy);
-        return copy;
+        // Made in its own frame, so this one (on the stack once per nesting level) holds one ObjectValue, not two.
+        const auto copy_of = [this](const ObjectValue& declared) __attribute__((noinline)) {
+            ObjectValue copy;
+            copy_declared(copy, declared);
+            fresh_interior_ids(copy);
+            return copy;
+        };
+        return copy_of(*std::get<Boxed<ObjectValue>>(*v));
     }
     if (w == "light_group") return parse_light_group(kw);
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
@@ -201,7 +206,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         }
         const Token id = next();
         if (is_object_keyword(id)) {
-            ov = parse_object(id);
+            // Through the heap: a temporary here would double this frame, which deep nesting repeats.
+            const std::unique_ptr<ObjectValue> inner(new ObjectValue(parse_object(id)));
+            ov = std::move(*inner);
         } else if (is_word(id, "light_source")) {
             Light light = parse_light_body(id, &ov);
             ov.lights.push_back(std::move(light));
@@ -265,14 +272,16 @@ void ObjectReader::read_csg_children(ObjectValue& ov, const std::function<void(O
         const Token& t = peek();
         if (is_object_start(t)) {
             const Token child_kw = next();
-            ObjectValue child = parse_object(child_kw);
-            take_child(child);
-            for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+            // On the heap, built there in place: an ObjectValue is over 3 KB (its optional texture), and this frame
+            // is on the stack once per level of `union { union { ... } }`.
+            const std::unique_ptr<ObjectValue> child(new ObjectValue(parse_object(child_kw)));
+            take_child(*child);
+            for (Light& l : child->lights) ov.lights.push_back(std::move(l));
         } else if (is_word(t, "light_source")) {
             const Token lkw = next();
-            ObjectValue looks;
-            ov.lights.push_back(parse_light_body(lkw, &looks));
-            if (!looks.parts.empty()) take_child(looks);
+            const auto looks = std::make_unique<ObjectValue>();
+            ov.lights.push_back(parse_light_body(lkw, looks.get()));
+            if (!looks->parts.empty()) take_child(*looks);
         } else {
             return;
         }
