@@ -39,16 +39,19 @@ std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
             shape.m_region = merge_bounds(shape.m_region, k.region_bounds());
         }
     } else {
-        // Kept crossings of child i lie on child i's surface and inside every other child's region.
-        std::optional<Bounds> region;
-        for (const ShapeInstance& k : kids) region = intersect_bounds(region, k.region_bounds());
-        shape.m_region = region;
+        // Kept crossings of child i lie on child i's surface and inside every other child's region: the regions
+        // before i and after i, as running intersections from each end (linear in the children; boxes meet by
+        // componentwise min and max, so the grouping changes no bound).
+        const std::size_t n = kids.size();
+        std::vector<std::optional<Bounds>> after(n + 1);
+        for (std::size_t i = n; i-- > 0;) after[i] = intersect_bounds(kids[i].region_bounds(), after[i + 1]);
+        shape.m_region = after[0];
         bool first = true;
         std::optional<Bounds> surface;
-        for (std::size_t i = 0; i < kids.size(); ++i) {
-            std::optional<Bounds> b = kids[i].world_bounds();
-            for (std::size_t j = 0; j < kids.size(); ++j)
-                if (j != i) b = intersect_bounds(b, kids[j].region_bounds());
+        std::optional<Bounds> before;
+        for (std::size_t i = 0; i < n; ++i) {
+            std::optional<Bounds> b = intersect_bounds(intersect_bounds(kids[i].world_bounds(), before), after[i + 1]);
+            before = intersect_bounds(before, kids[i].region_bounds());
             if (b && b->empty()) continue;
             surface = first ? b : merge_bounds(surface, b);
             first = false;

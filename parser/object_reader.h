@@ -49,6 +49,8 @@ protected:
     void set_interior(ObjectValue& ov, const Interior& in);
     /// Gives a copy of a declared object interior ids of its own (POV-Ray's Copy_Object copies each interior).
     void fresh_interior_ids(ObjectValue& ov);
+    /// Gives `ov` parts of its own before they change, charging the copies to the object budget at `at`.
+    void own_parts(ObjectValue& ov, const Token& at);
     /// Gives `ov` an interior texture: layered over its own, or to each part of a union that has none.
     void add_interior_texture(ObjectValue& ov, const Texture& tx);
     /// The `material`, `interior_texture` and `double_illuminate` modifiers (material.cpp).

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <memory>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
@@ -18,24 +19,6 @@ bool is_object_keyword(const Token& t) {
 }
 
 namespace {
-
-// The objects a copy of `ov` creates: every node of its parts' CSG trees and their clipping and bounding objects,
-// counted without recursion (a tree a loop nested deeply must not overflow the stack here).
-std::size_t object_count(const ObjectValue& ov) {
-    std::vector<const Object*> pending;
-    for (const ObjectPart& part : ov.parts) pending.push_back(&part.object);
-    std::size_t count = 0;
-    while (!pending.empty()) {
-        const Object* o = pending.back();
-        pending.pop_back();
-        ++count;
-        if (const auto* csg = std::get_if<Csg>(&o->shape))
-            for (const Object& child : csg->children) pending.push_back(&child);
-        for (const Object& c : o->clipped_by) pending.push_back(&c);
-        for (const Object& b : o->bounded_by) pending.push_back(&b);
-    }
-    return count;
-}
 
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
 void transform_textures(Object& o, bool own_texture, const Transform& tr) {
@@ -120,40 +103,58 @@ bool ObjectReader::is_object_start(const Token& t) {
 
 namespace {
 
-/// `object { Declared }`: a copy of the declared object whose parts leave room for a few more, so a union that
-/// adds shapes after it (`#declare U = union { object { U } sphere { ... } }`) does not move every part again.
-void copy_declared(ObjectValue& ov, const ObjectValue& declared, std::size_t charged) {
-    constexpr std::size_t k_room = 8;
-    // Every member, named so a new one fails to compile here until it is copied too.
-    auto& [parts, lights, compound, texture, interior_id, copied] = ov;
-    const auto& [from_parts, from_lights, from_compound, from_texture, from_interior_id, from_copied] = declared;
-    copied = charged;  // the copy's own charge (the declared value keeps its own `from_copied`)
-    static_cast<void>(from_copied);
-    parts.clear();
-    parts.reserve(from_parts.size() + k_room);
-    parts.insert(parts.end(), from_parts.begin(), from_parts.end());
-    lights = from_lights;
-    compound = from_compound;
-    texture = from_texture;
-    interior_id = from_interior_id;
+// True when `node` is a CSG node of `op` that adds nothing of its own to its children, so that as the first child of
+// another node of `op` it can give that node its children instead: an intersection in an intersection, a merge in
+// a merge, a difference as a difference's first child (A - B - C), each without placement, texture, interior,
+// flags, clips or bounds.
+bool splices_into(const Object& node, Csg::Op op) {
+    // Every member, named so a new one fails to compile here until it is judged too.
+    const auto& [shape, transform, texture, interior, interior_id, hollow_set, inverse, no_shadow, no_image,
+                 no_reflection, no_radiosity, has_texture, uv_mapping, interior_texture, double_illuminate,
+                 light_groups, no_global_lights, photons, clipped_by, bounded_by, loc] = node;
+    static_cast<void>(texture);  // seen only through has_texture: the children without one inherit it
+    static_cast<void>(loc);
+    const auto* csg = std::get_if<Csg>(&shape);
+    if (csg == nullptr || csg->op != op || op == Csg::Op::Union) return false;
+    return transform == Transform{} && !has_texture && interior == Interior{} && interior_id == 0 && !hollow_set &&
+           !inverse && !no_shadow && !no_image && !no_reflection && !no_radiosity && !uv_mapping &&
+           interior_texture.empty() && !double_illuminate && light_groups.empty() && !no_global_lights &&
+           photons == ObjectPhotons{} && clipped_by.empty() && bounded_by.empty();
+}
+
+/// `object { Declared }`: a copy of the declared object that shares its parts (O(1)); nothing is charged to the
+/// object budget until the copy's parts are changed (ObjectReader::own_parts).
+void copy_declared(ObjectValue& ov, const ObjectValue& declared) {
+    ov = declared;
+    ov.copied = 0;
 }
 
 }  // namespace
 
+void ObjectReader::own_parts(ObjectValue& ov, const Token& at) {
+    if (!ov.parts.shared()) return;
+    const std::size_t charged = ov.parts.shared_objects();
+    count_copies(at, charged);  // before copying, so a huge copy is never made
+    ov.copied += charged;
+    static_cast<void>(ov.parts.begin());
+}
+
 ObjectValue ObjectReader::parse_object(const Token& kw) {
-    const NestingGuard guard(*this, kw);
+    // Objects nest as deep as the stack allows (POV-Ray reads 20,000 nested unions); the rest to k_max_nesting.
+    const NestingGuard guard(*this, kw, m_object_nesting, k_max_object_nesting);
     const TokenText& w = kw.text;
     if (!is_object_keyword(kw)) {
         // POV-Ray compat: a declared object's identifier alone is that object, without modifiers (Parse_Object).
         const Value* v = lookup(w);
         if (v == nullptr) fail_undeclared(kw);
-        const ObjectValue& declared = *std::get<Boxed<ObjectValue>>(*v);
-        const std::size_t charged = object_count(declared);
-        count_copies(kw, charged);
-        ObjectValue copy = declared;
-        copy.copied = charged;
-        fresh_interior_ids(copy);
-        return copy;
+        // Made in its own frame, so this one (on the stack once per nesting level) holds one ObjectValue, not two.
+        const auto copy_of = [this](const ObjectValue& declared) __attribute__((noinline)) {
+            ObjectValue copy;
+            copy_declared(copy, declared);
+            fresh_interior_ids(copy);
+            return copy;
+        };
+        return copy_of(*std::get<Boxed<ObjectValue>>(*v));
     }
     if (w == "light_group") return parse_light_group(kw);
     if (is_unsupported_object(w) && !is_shape_keyword(w) && w != "intersection" && w != "difference" && w != "merge") {
@@ -184,9 +185,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
     }
     if (copied != nullptr) {
         next();
-        ov = *std::get<Boxed<ObjectValue>>(*copied);
-        ov.copied = object_count(ov);
-        count_copies(kw, ov.copied);
+        copy_declared(ov, *std::get<Boxed<ObjectValue>>(*copied));
         fresh_interior_ids(ov);
     } else if (is_shape_keyword(w)) {
         add_shape(parse_shape_parameters(kw));
@@ -198,9 +197,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         const Token at = peek();
         if ((element = take_array_element())) {
             if (const auto* o = std::get_if<Boxed<ObjectValue>>(&*element)) {
-                const std::size_t charged = object_count(**o);
-                count_copies(at, charged);  // before copying, so a huge copy is never made
-                copy_declared(ov, **o, charged);
+                copy_declared(ov, **o);
                 fresh_interior_ids(ov);
             }
             else if (!std::holds_alternative<Unsupported>(*element)) fail(at, "this array element is not an object");
@@ -209,7 +206,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         }
         const Token id = next();
         if (is_object_keyword(id)) {
-            ov = parse_object(id);
+            // Through the heap: a temporary here would double this frame, which deep nesting repeats.
+            const std::unique_ptr<ObjectValue> inner(new ObjectValue(parse_object(id)));
+            ov = std::move(*inner);
         } else if (is_word(id, "light_source")) {
             Light light = parse_light_body(id, &ov);
             ov.lights.push_back(std::move(light));
@@ -219,9 +218,7 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             if (std::holds_alternative<Unsupported>(*v)) {
                 // Already warned about where it was declared; the object is left out.
             } else if (const auto* o = std::get_if<Boxed<ObjectValue>>(v)) {
-                const std::size_t charged = object_count(**o);
-                count_copies(id, charged);  // before copying, so a huge copy is never made
-                copy_declared(ov, **o, charged);
+                copy_declared(ov, **o);
                 fresh_interior_ids(ov);
             } else {
                 fail(id, "expected an object identifier but '" + id.text + "' is not an object");
@@ -234,8 +231,18 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         Csg csg;
         csg.op = w == "intersection" ? Csg::Op::Intersection : w == "difference" ? Csg::Op::Difference : Csg::Op::Merge;
         read_csg_children(ov, [&](ObjectValue& child) {
+            own_parts(child, kw);
             ov.copied += child.copied;
-            if (auto o = as_single_object(child)) csg.children.push_back(std::move(*o));
+            auto o = as_single_object(child);
+            if (!o) return;
+            // A first child that is the same operation and adds nothing of its own is the same node:
+            // `intersection { intersection { ... } ... }` nested any depth becomes one node (no deep tree to build,
+            // trace or free recursively). Its children then lead this node's, as they did inside it.
+            if (csg.children.empty() && splices_into(*o, csg.op)) {
+                csg.children = std::move(std::get<Csg>(o->shape).children);
+                return;
+            }
+            csg.children.push_back(std::move(*o));
         });
         add_shape(std::move(csg));
     } else {
@@ -250,10 +257,9 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
                         part.has_texture = true;
                     }
             // The parts move as one block: a union redeclared around its previous value (`#declare U = union {
-            // object { U } ... }`, many times over) then costs one copy of U per declaration, as in POV-Ray.
-            if (ov.parts.empty()) ov.parts = std::move(child.parts);
-            else ov.parts.insert(ov.parts.end(), std::make_move_iterator(child.parts.begin()),
-                                 std::make_move_iterator(child.parts.end()));
+            // object { U } ... }`, many times over) then shares U's parts, where POV-Ray copies them.
+            if (!ov.parts.empty()) own_parts(child, kw);  // two shared chains cannot be joined without a copy
+            ov.parts.append(std::move(child.parts));
         });
     }
     parse_object_modifiers(ov, ov.compound);
@@ -266,14 +272,16 @@ void ObjectReader::read_csg_children(ObjectValue& ov, const std::function<void(O
         const Token& t = peek();
         if (is_object_start(t)) {
             const Token child_kw = next();
-            ObjectValue child = parse_object(child_kw);
-            take_child(child);
-            for (Light& l : child.lights) ov.lights.push_back(std::move(l));
+            // On the heap, built there in place: an ObjectValue is over 3 KB (its optional texture), and this frame
+            // is on the stack once per level of `union { union { ... } }`.
+            const std::unique_ptr<ObjectValue> child(new ObjectValue(parse_object(child_kw)));
+            take_child(*child);
+            for (Light& l : child->lights) ov.lights.push_back(std::move(l));
         } else if (is_word(t, "light_source")) {
             const Token lkw = next();
-            ObjectValue looks;
-            ov.lights.push_back(parse_light_body(lkw, &looks));
-            if (!looks.parts.empty()) take_child(looks);
+            const auto looks = std::make_unique<ObjectValue>();
+            ov.lights.push_back(parse_light_body(lkw, looks.get()));
+            if (!looks->parts.empty()) take_child(*looks);
         } else {
             return;
         }
@@ -312,11 +320,13 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
         const Token t = peek();
         Transform tr;
         if (parse_transform_item(t, tr)) {
+            own_parts(ov, t);
             apply_transform(ov, tr);
             continue;
         }
         next();
         if (is_punct(t, "}")) return;
+        own_parts(ov, t);
         if (t.kind != TokenKind::Identifier) fail(t, "expected an object modifier or '}' but found '" + t.text + "'");
         const TokenText& w = t.text;
         using Modifier = void (*)(ObjectReader&, ObjectValue&, const Token&, ModifierState&);
@@ -463,6 +473,8 @@ void ObjectReader::set_interior(ObjectValue& ov, const Interior& in) {
 }
 
 void ObjectReader::fresh_interior_ids(ObjectValue& ov) {
+    // Shared parts without interiors keep being shared: nothing here to renumber.
+    if (ov.interior_id == 0 && !ov.parts.any_interior_id()) return;
     std::map<std::uint32_t, std::uint32_t> ids;
     auto fresh = [&](std::uint32_t& id) {
         if (id == 0) return;

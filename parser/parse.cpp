@@ -5,6 +5,7 @@
 #include <cstring>
 #include <new>
 
+#include "core/large_stack.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
 
@@ -62,6 +63,20 @@ void TokenStream::recover_after_error(std::size_t depth) {
 }
 
 ParseResult Parser::run(std::string text, const std::string& path) {
+    // Deeply nested objects (POV-Ray reads 20,000 nested unions) need more stack than a thread's default: the
+    // descent runs on a thread with room for them, reserved but committed only as far as it is used.
+    constexpr std::size_t k_parse_stack_bytes = std::size_t{1} << 30;
+    ParseResult result;
+    run_with_stack(k_parse_stack_bytes, [&](std::size_t stack_bytes) {
+        m_stack_base = static_cast<const char*>(__builtin_frame_address(0));
+        // A margin below the reserved size for the frames under the guard's last check.
+        if (stack_bytes != 0) m_max_stack_bytes = static_cast<std::ptrdiff_t>(stack_bytes / 8 * 7);
+        result = run_here(std::move(text), path);
+    });
+    return result;
+}
+
+ParseResult Parser::run_here(std::string text, const std::string& path) {
     ParseResult result;
     try {
         m_scopes.emplace_back();

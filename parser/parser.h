@@ -29,6 +29,8 @@ public:
     ParseResult run(std::string text, const std::string& path);
 
 private:
+    /// run() on the thread it made.
+    ParseResult run_here(std::string text, const std::string& path);
     // --- shapes (shapes.cpp) ---
     /// Reads a primitive's parameters after its '{' (the modifiers follow) with the keyword's reader.
     Shape parse_shape_parameters(const Token& kw) final;

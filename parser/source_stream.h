@@ -138,6 +138,9 @@ protected:
     /// The most stack the descent may use: frames are larger in sanitizer and debug builds, where 400 levels
     /// can exceed the default 8 MiB stack, so the guard also measures the stack itself.
     static constexpr std::ptrdiff_t k_max_stack_bytes = std::ptrdiff_t{4} << 20;
+    /// The deepest nesting of object statements (`union { union { ... } }`): POV-Ray reads 20,000 levels and
+    /// more; the parse runs on a thread with a large stack (Parser::run), and the stack guard still applies.
+    static constexpr std::size_t k_max_object_nesting = 1'000'000;
 public:
     /// Bounds the recursion of the descent so deeply nested input ends in an error, not a stack overflow.
     /// Public so the function compiler (a friend of a derived class, which clang does not let through) can use it.
@@ -146,7 +149,8 @@ public:
         /// Counts one level of the descent's own nesting at `at`.
         NestingGuard(SourceStream& stream, const Token& at) : NestingGuard(stream, at, stream.m_nesting) {}
         /// Counts in `depth` instead of the descent's own counter.
-        NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth);
+        NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth,
+                     std::size_t limit = k_max_nesting);
         ~NestingGuard() { --m_depth; }
         NestingGuard(const NestingGuard&) = delete;
         NestingGuard& operator=(const NestingGuard&) = delete;
@@ -183,7 +187,9 @@ protected:
     std::size_t m_nesting = 0;
     std::size_t m_directive_ends_value_at = k_directives_run;
     std::size_t m_directive_nesting = 0;  ///< directives running inside another directive's operands
-    const char* m_stack_base = nullptr;   ///< the stack address where this parser was made
+    const char* m_stack_base = nullptr;   ///< the stack address where this parser was made (or its parse began)
+    std::ptrdiff_t m_max_stack_bytes = k_max_stack_bytes;  ///< how much of the stack below it the descent may use
+    std::size_t m_object_nesting = 0;     ///< object statements being read, one inside the other
 
     const ParseOptions& m_options;
     std::vector<ReadRoot> m_read_roots;  ///< the folders the scene may read, made on first use

@@ -81,7 +81,9 @@ void SceneReader::parse_statement() {
     if (const Statement* statement = statements.find(w)) {
         (*statement)(*this, t);
     } else if (is_object_start(t)) {
-        place_object(parse_object(t));
+        ObjectValue ov = parse_object(t);
+        own_parts(ov, t);  // a placed copy of a declared object gets its own parts, charged to the budget here
+        place_object(std::move(ov));
     } else if (is_unsupported_block(w)) {
         warn_unsupported(t, w);
         skip_block(t);

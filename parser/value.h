@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "parser/namespaces.h"
+#include "parser/part_list.h"
 #include "parser/splines.h"
 
 namespace wardray::parser {
@@ -59,15 +60,9 @@ struct Numeric {
     }
 };
 
-/// One shape of a (flattened) object with whether it carries its own texture.
-struct ObjectPart {
-    Object object;
-    bool has_texture = false;
-};
-
 /// An object statement after flattening unions: its shapes and the lights it holds.
 struct ObjectValue {
-    std::vector<ObjectPart> parts;
+    PartList parts;  ///< shared with the declared object it was copied from until one of them changes
     std::vector<Light> lights;
     bool compound = false;            ///< a union: its texture goes to the parts without one
     std::optional<Texture> texture;   ///< the union's own texture

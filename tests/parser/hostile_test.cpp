@@ -236,5 +236,56 @@ TEST(DeepNesting, TwentyThousandUnionsNestedByALoopParseQuickly) {
     EXPECT_LT(seconds, 2.0);
 }
 
+// Uses of a declared object share its parts until they change them (PartList): a later #declare of the name, and
+// the transforms and textures of each use, must still leave every other use as POV-Ray's copies would be.
+TEST(SharedObjects, ARedeclaredNameLeavesEarlierUsesAsTheyWere) {
+    const Vec3 kOrigin{0, 0, 0};
+    const Scene s = test::parse_ok(
+        "#declare T = union { sphere { 0, 1 } box { -1, 1 } pigment { rgb x } }\n"
+        "#declare A = object { T translate x }\n"
+        "#declare B = object { T }\n"
+        "#declare T = union { sphere { 0, 2 } }\n"
+        "object { A }\n"
+        "object { B translate y pigment { rgb z } }\n"
+        "object { B }\n"
+        "object { T }\n");
+    ASSERT_EQ(s.objects.size(), 7u);
+    auto radius = [&](std::size_t i) { return std::get<Sphere>(s.objects[i].shape).radius; };
+    auto red = [&](std::size_t i) { return s.objects[i].texture.pigment.color.r; };
+    auto blue = [&](std::size_t i) { return s.objects[i].texture.pigment.color.b; };
+    // A: the first T, moved along x.
+    EXPECT_EQ(radius(0), 1.0);
+    EXPECT_TRUE(std::holds_alternative<Box>(s.objects[1].shape));
+    EXPECT_EQ(s.objects[0].transform.point(kOrigin), (Vec3{1, 0, 0}));
+    EXPECT_EQ(s.objects[1].transform.point(kOrigin), (Vec3{1, 0, 0}));
+    EXPECT_EQ(red(0), 1.0);
+    // B with its own transform and pigment, then B as declared: the first T, red, not moved.
+    EXPECT_EQ(radius(2), 1.0);
+    EXPECT_EQ(s.objects[2].transform.point(kOrigin), (Vec3{0, 1, 0}));
+    EXPECT_EQ(blue(2), 1.0);
+    EXPECT_EQ(red(2), 0.0);
+    EXPECT_EQ(radius(4), 1.0);
+    EXPECT_EQ(s.objects[4].transform.point(kOrigin), (Vec3{0, 0, 0}));
+    EXPECT_EQ(red(4), 1.0);
+    EXPECT_EQ(blue(4), 0.0);
+    // The redeclared T.
+    EXPECT_EQ(radius(6), 2.0);
+}
+
+TEST(SharedObjects, AUseOfALongDeclaredUnionCopiesNothingUntilPlaced) {
+    // 20,000 levels of `union { object { U } sphere { } }`: each level shares U's parts, so the loop is linear
+    // (the times are in docs/reports/deep_csg.md); the placed copies are whole and in order.
+    const Scene s = test::parse_ok("#declare U = sphere { 0, 1 }\n#for (I, 1, 20000)\n"
+                                   "  #declare U = union { object { U } sphere { <I, 0, 0>, 1 } }\n#end\n"
+                                   "object { U }\nobject { U translate y }\n");
+    ASSERT_EQ(s.objects.size(), 40002u);
+    for (std::size_t i = 0; i < 20001; ++i) {
+        const auto& a = std::get<Sphere>(s.objects[i].shape);
+        ASSERT_EQ(a.center, (Vec3{static_cast<double>(i), 0, 0})) << i;
+        ASSERT_EQ(std::get<Sphere>(s.objects[20001 + i].shape), a) << i;
+        ASSERT_EQ(s.objects[20001 + i].transform.point(a.center), (a.center + Vec3{0, 1, 0})) << i;
+    }
+}
+
 }  // namespace
 }  // namespace wardray::parser
