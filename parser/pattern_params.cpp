@@ -78,6 +78,12 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
             pat.arms = static_cast<short>(parse_float());
             pat.wave = WaveType::Triangle;
             return 0;
+        case PType::Tiling: {
+            // POV-Ray compat: the tiling number is kept as an unsigned char; numbers outside 1..27 tile squares.
+            const double n = parse_float();
+            pat.tiling_type = static_cast<int>(static_cast<unsigned char>(static_cast<int>(n)));
+            return 0;
+        }
         default:
             return 0;
     }
