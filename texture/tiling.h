@@ -10,7 +10,7 @@ namespace wardray::texture {
 /// `tiling N`: the value at the pattern-space point `p` (only x and z count).
 double tiling_pattern(const scene::Pattern& pat, const Vec3& p, int generator);
 
-/// The value of POV-Ray's tiling `type` (1..27; any other number is 1, the square tiling) at (x, z).
+/// The value of POV-Ray's tiling `type` (1..27; the parser refuses others, taken here as 1) at (x, z).
 double tiling_value(int type, double x, double z);
 
 }  // namespace wardray::texture

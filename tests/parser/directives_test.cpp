@@ -381,12 +381,12 @@ TEST(Directives, StringComparisonAndRand) {
 }
 
 TEST(Directives, UnusedDeclarationsDoNotWarn) {
-    Scene s = parse_ok("#declare C = ovus { 1, 0.5 }\n#declare P = pigment { tiling 1 }\n"
+    Scene s = parse_ok("#declare C = ovus { 1, 0.5 }\n#declare P = pigment { pavement }\n"
                        "sphere { 0, 1 }\n");
     EXPECT_TRUE(s.warnings.empty());
-    s = parse_ok("#declare P = pigment { tiling 1 }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
+    s = parse_ok("#declare P = pigment { pavement }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'tiling' is not rendered yet");
+    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'pavement' is not rendered yet");
     EXPECT_EQ(s.warnings[0].loc.line, 2u);  // where the feature is written
 }
 

@@ -301,7 +301,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     const Scene s = parse_ok(R"(
         ovus { 1, 0.5 }
         ovus { 2, 1 }
-        sphere { 0, 1 pigment { tiling 1 } }
+        sphere { 0, 1 pigment { pavement } }
         #declare Thing = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 1, 1>, 1 }
         object { Thing }
         box { 0, 1 }
@@ -310,7 +310,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
     const std::vector<std::string> expected = {"ovus is not rendered yet",
-                                               "pigment pattern 'tiling' is not rendered yet",
+                                               "pigment pattern 'pavement' is not rendered yet",
                                                "sphere_sweep is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
@@ -485,7 +485,7 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
             {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
             {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}, {"function", " { x + y }"},
             {"density_file", " df3 \"/usr/share/povray-3.7/include/spiral.df3\""}, {"object", " { sphere { 0, 1 } }"},
-            {"slope", " { y, 0, 1 altitude x }"}, {"image_pattern", " { png \"/usr/share/povray-3.7/include/Mount1.png\" }"}};
+            {"slope", " { y, 0, 1 altitude x }"}, {"tiling", " 5"}, {"image_pattern", " { png \"/usr/share/povray-3.7/include/Mount1.png\" }"}};
         const auto sample = parameters.find(keyword);
         const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         if (keyword == "facets") {
