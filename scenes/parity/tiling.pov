@@ -6,6 +6,7 @@ camera { orthographic location <0, 10, 0> direction <0, -1, 0> up <0, 0, 16.5> r
 light_source { <-10, 30, 12> color rgb 1 }
 background { rgb <0.1, 0.1, 0.12> }
 
+// The patterns are moved off the pixel grid: a pixel centre exactly on a tile edge takes either side by rounding.
 // A continuous map, so both each tile's band and its rise towards the edges show.
 #declare Bands = color_map {
     [0.00 rgb <0.10, 0.20, 0.80>] [0.30 rgb <0.90, 0.90, 0.20>] [0.34 rgb <0.95, 0.35, 0.10>]
@@ -17,12 +18,12 @@ background { rgb <0.1, 0.1, 0.12> }
 #declare T = 1;
 #while (T <= 14)
     Panel(T - 1)
-        pigment { tiling T color_map { Bands } scale 0.8 translate Centre(T - 1) }
+        pigment { tiling T color_map { Bands } scale 0.8 translate Centre(T - 1) + <0.013, 0, 0.029> }
         finish { ambient 0.25 diffuse 0.75 } }
     #declare T = T + 1;
 #end
 
 Panel(14)
     pigment { rgb <0.85, 0.8, 0.7> }
-    normal { tiling 2 bump_size 0.8 scale 0.6 translate Centre(14) }
+    normal { tiling 2 bump_size 0.8 scale 0.6 translate Centre(14) + <0.013, 0, 0.029> }
     finish { ambient 0.1 diffuse 0.9 } }

@@ -7,6 +7,7 @@ camera { orthographic location <0, 10, 0> direction <0, -1, 0> up <0, 0, 16.5> r
 light_source { <-10, 30, 12> color rgb 1 }
 background { rgb <0.1, 0.1, 0.12> }
 
+// The patterns are moved off the pixel grid: a pixel centre exactly on a tile edge takes either side by rounding.
 #declare Bands = color_map {
     [0.00 rgb <0.10, 0.20, 0.80>] [0.30 rgb <0.90, 0.90, 0.20>] [0.34 rgb <0.95, 0.35, 0.10>]
     [0.64 rgb <0.20, 0.80, 0.30>] [0.68 rgb <0.80, 0.30, 0.80>] [1.00 rgb <0.05, 0.05, 0.05>] }
@@ -17,14 +18,14 @@ background { rgb <0.1, 0.1, 0.12> }
 #declare T = 15;
 #while (T <= 27)
     Panel(T - 15)
-        pigment { tiling T color_map { Bands } scale 0.8 translate Centre(T - 15) }
+        pigment { tiling T color_map { Bands } scale 0.8 translate Centre(T - 15) + <0.013, 0, 0.029> }
         finish { ambient 0.25 diffuse 0.75 } }
     #declare T = T + 1;
 #end
 
 Panel(13)
     pigment { rgb <0.85, 0.8, 0.7> }
-    normal { tiling 26 bump_size 0.6 translate Centre(13) }
+    normal { tiling 26 bump_size 0.6 translate Centre(13) + <0.013, 0, 0.029> }
     finish { ambient 0.1 diffuse 0.9 } }
 
 Panel(14)
@@ -33,4 +34,4 @@ Panel(14)
             [0.0 pigment { rgb <0.9, 0.2, 0.1> } finish { ambient 0.3 diffuse 0.7 }]
             [0.5 pigment { rgb <0.9, 0.9, 0.9> } finish { ambient 0.3 diffuse 0.7 }]
             [1.0 pigment { rgb <0.1, 0.3, 0.9> } finish { ambient 0.3 diffuse 0.7 }] }
-        scale 0.7 translate Centre(14) } }
+        scale 0.7 translate Centre(14) + <0.013, 0, 0.029> } }
