@@ -47,7 +47,6 @@ const std::vector<std::string_view> k_unsupported_blocks = {
 // Pattern keywords and pattern items not rendered yet (the rendered patterns are WARDRAY_PATTERNS, scene/texture.h).
 const std::vector<std::string_view> k_patterns = {
     "pavement",
-    "tiling",
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
     "image_map", "tiles", "texture_map", "material_map", "warp"};
 

@@ -78,6 +78,14 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
             pat.arms = static_cast<short>(parse_float());
             pat.wave = WaveType::Triangle;
             return 0;
+        case PType::Tiling: {
+            // POV-Ray compat: the tiling number is kept as an unsigned char (so 261 is tiling 5), then checked.
+            const Token at = peek();
+            const double n = parse_float();
+            pat.tiling_type = static_cast<int>(static_cast<unsigned char>(static_cast<int>(n)));
+            if (pat.tiling_type < 1 || pat.tiling_type > 27) fail(at, "Tiling number must be between 1 and 27.");
+            return 0;
+        }
         default:
             return 0;
     }

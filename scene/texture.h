@@ -100,6 +100,7 @@ struct Warp {
     X(slope, Slope)               \
     X(aoi, Aoi)                   \
     X(facets, Facets)             \
+    X(tiling, Tiling)             \
     X(image_pattern, ImagePattern)
 
 struct Pigment;
@@ -170,6 +171,7 @@ struct Pattern {
     double control0 = 1.0;  ///< quilted
     double control1 = 1.0;
     int arms = 0;           ///< spiral1, spiral2
+    int tiling_type = 1;    ///< `tiling N`: POV-Ray's tiling 1..27
     SlopeParams slope;      ///< slope
     double facets_size = 0.1;    ///< facets `size` (its `metric` is crackle_metric)
     double facets_coords = 0.0;  ///< facets `coords`: 0 picks by the normal, else by the point, tilting by this

@@ -17,6 +17,7 @@
 #include "texture/object_pattern.h"
 #include "texture/pattern_blocks.h"
 #include "texture/slope.h"
+#include "texture/tiling.h"
 
 namespace wardray::texture {
 

@@ -381,12 +381,13 @@ TEST(Directives, StringComparisonAndRand) {
 }
 
 TEST(Directives, UnusedDeclarationsDoNotWarn) {
-    Scene s = parse_ok("#declare C = pigment { pavement }\n#declare P = pigment { tiling 1 }\n"
-                       "sphere { 0, 1 }\n");
+    Scene s = parse_ok("#declare C = finish { subsurface { translucency 0.5 } }\n"
+                       "#declare P = interior { dispersion 1.1 }\nsphere { 0, 1 }\n");
     EXPECT_TRUE(s.warnings.empty());
-    s = parse_ok("#declare P = pigment { tiling 1 }\n#declare Q = pigment { P }\nsphere { 0, 1 pigment { Q } }\n");
+    s = parse_ok("#declare F = finish { subsurface { translucency 0.5 } }\n#declare G = finish { F }\n"
+                 "sphere { 0, 1 finish { G } }\n");
     ASSERT_EQ(s.warnings.size(), 1u);
-    EXPECT_EQ(s.warnings[0].message, "pigment pattern 'tiling' is not rendered yet");
+    EXPECT_EQ(s.warnings[0].message, "subsurface is not rendered yet");
     EXPECT_EQ(s.warnings[0].loc.line, 2u);  // where the feature is written
 }
 

@@ -299,22 +299,22 @@ TEST(Objects, ZeroScaleIsChangedToOne) {
 TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     // Features chosen among those far from being rendered, so the test outlives the work on shapes and textures.
     const Scene s = parse_ok(R"(
-        sphere { 0, 1 pigment { pavement } }
-        sphere { 0, 2 pigment { pavement } }
-        sphere { 0, 1 pigment { tiling 1 } }
-        #declare Thing = sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 1, 1>, 1 }
+        sphere { 0, 1 finish { subsurface { translucency 0.5 } } }
+        sphere { 0, 2 finish { subsurface { translucency 0.5 } } }
+        sphere { 0, 1 interior { dispersion 1.1 } }
+        #declare Thing = sphere { 0, 1 interior { dispersion_samples 7 } }
         object { Thing }
         box { 0, 1 }
     )");
-    ASSERT_EQ(s.objects.size(), 4u);
+    ASSERT_EQ(s.objects.size(), 5u);
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
-    const std::vector<std::string> expected = {"pigment pattern 'pavement' is not rendered yet",
-                                               "pigment pattern 'tiling' is not rendered yet",
-                                               "sphere_sweep is not rendered yet"};
+    const std::vector<std::string> expected = {"subsurface is not rendered yet",
+                                               "interior dispersion is not rendered yet",
+                                               "interior dispersion_samples is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
-    EXPECT_EQ(s.warnings[0].loc.column, 33u);
+    EXPECT_EQ(s.warnings[0].loc.column, 32u);
 }
 
 TEST(Objects, OptionalCommasAndRelationsOnlyInParentheses) {
@@ -485,7 +485,7 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
             {"gradient", " y"},        {"mandel", " 20"},  {"julia", " <0.3, 0.2>, 20"}, {"magnet", " 1 mandel 20"},
             {"spiral1", " 3"},         {"spiral2", " 3"},  {"pigment_pattern", " { bozo }"}, {"function", " { x + y }"},
             {"density_file", " df3 \"/usr/share/povray-3.7/include/spiral.df3\""}, {"object", " { sphere { 0, 1 } }"},
-            {"slope", " { y, 0, 1 altitude x }"}, {"image_pattern", " { png \"/usr/share/povray-3.7/include/Mount1.png\" }"}};
+            {"slope", " { y, 0, 1 altitude x }"}, {"tiling", " 5"}, {"image_pattern", " { png \"/usr/share/povray-3.7/include/Mount1.png\" }"}};
         const auto sample = parameters.find(keyword);
         const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         if (keyword == "facets") {
