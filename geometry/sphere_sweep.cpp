@@ -291,8 +291,10 @@ SurfaceHits SphereSweepShape::intersect_all(const LocalRay& ray, double t_min, d
     std::sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.s < b.s; });
     // POV-Ray compat: its tolerance is a distance along the parent-space ray (t_min_depth over
     // k_min_isect_depth is one over its direction's length); without a depth, along the object-space one.
+    // MIN_ISECT_DEPTH itself is not applied: the roots are exact to rounding, and at small scales it would take
+    // away every shadow the sweep casts nearby.
     const double per_distance = t_min_depth > 0.0 ? t_min_depth / k_min_isect_depth : 1.0 / centred->length;
-    const double t_low = std::fmax(t_min, std::fmax(t_min_depth, m_tolerance * per_distance));
+    const double t_low = std::fmax(t_min, m_tolerance * per_distance);
     auto keep = [&](const Event& e) {
         const double t = (line.s0 + e.s) / centred->length;
         if (t > t_low && t < t_max) hits.push({t, e.normal, dot(e.normal, line.u) < 0.0});

@@ -25,10 +25,10 @@ public:
     /// Returns nothing for too few spheres or non-finite numbers.
     static std::optional<SphereSweepShape> create(const scene::SphereSweep& sweep);
 
-    /// POV-Ray's MIN_ISECT_DEPTH, as a distance along the parent-space direction: crossings nearer are lost.
+    /// POV-Ray's MIN_ISECT_DEPTH: the instance passes it as a ray parameter, which tells the parent-space length.
     static constexpr double k_min_isect_depth = 1e-4;
-    /// Crossings with t in (t_min, t_max), sorted; those within `t_min_depth` (MIN_ISECT_DEPTH as a ray parameter)
-    /// or within the sweep's tolerance (a parent-space distance) of the ray's origin are lost.
+    /// Crossings with t in (t_min, t_max), sorted; those within the sweep's tolerance (a parent-space distance,
+    /// found from `t_min_depth`, MIN_ISECT_DEPTH as a ray parameter) of the ray's origin are lost.
     SurfaceHits intersect_all(const LocalRay& ray, double t_min, double t_max, double t_min_depth = 0.0) const;
     /// Object-space bounds: each segment's spheres lie within the hull of its Bézier control spheres.
     std::optional<Bounds> bounds() const { return m_bounds; }
