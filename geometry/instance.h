@@ -25,6 +25,7 @@
 #include "geometry/scene_geometry.h"
 #include "geometry/sor.h"
 #include "geometry/sphere.h"
+#include "geometry/sphere_sweep.h"
 #include "geometry/spline_prism.h"
 #include "geometry/superellipsoid.h"
 #include "geometry/text.h"
@@ -36,8 +37,8 @@ namespace wardray::geometry {
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, PolyShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape, CsgShape,
-                              OvusShape, ParametricShape>;
+                              SphereSweepShape, TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape,
+                              CsgShape, OvusShape, ParametricShape>;
 
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).

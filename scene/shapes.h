@@ -238,6 +238,19 @@ struct Sor {
     bool operator==(const Sor&) const = default;
 };
 
+/// POV-Ray's `sphere_sweep { linear_spline | b_spline | cubic_spline n, <c>, r, ... [tolerance d] }`: a sphere
+/// moved along the spline through the control spheres, its radius interpolated alike; b_spline and cubic_spline
+/// take at least 4 control spheres, the first and the last only shaping the ends (cubic_spline, POV-Ray's
+/// Catmull-Rom spline, passes through the others; b_spline approximates them).
+struct SphereSweep {
+    enum class Spline { Linear, BSpline, Cubic };
+    Spline spline = Spline::Linear;
+    std::vector<Vec3> centers;
+    std::vector<double> radii;
+    double tolerance = 1e-6;  ///< POV-Ray's depth tolerance: crossings nearer a ray's origin are dropped
+    bool operator==(const SphereSweep&) const = default;
+};
+
 /// One glyph of a `text` object: the TrueType outline in em units (closed contours of quadratic B-spline points,
 /// each on or off the curve, in the font's order), placed at `offset` in the text's object space.
 struct TextGlyph {
@@ -357,6 +370,7 @@ struct HeightField {
     X(prism, Prism)                   \
     X(lathe, Lathe)                   \
     X(sor, Sor)                       \
+    X(sphere_sweep, SphereSweep)      \
     X(text, Text)                     \
     X(isosurface, Isosurface)         \
     X(parametric, Parametric)         \

@@ -243,6 +243,7 @@ const std::map<std::string_view, std::string> k_shape_samples = {
     {"prism", "prism { linear_sweep 0, 1, 4, <0, 0>, <1, 0>, <0, 1>, <0, 0> }"},
     {"lathe", "lathe { linear_spline 3, <0, 0>, <1, 0.5>, <0, 1> }"},
     {"sor", "sor { 4, <0, 0>, <1, 0.25>, <1, 0.75>, <0, 1> }"},
+    {"sphere_sweep", "sphere_sweep { b_spline 4, <0, 0, 0>, 0.2, <1, 0, 0>, 0.3, <1, 1, 0>, 0.2, 0, 0.1 tolerance 1e-3 }"},
     {"text", "text { ttf \"timrom.ttf\" \"A\", 0.5, 0 }"},
     {"isosurface", "isosurface { function { x*x + y*y + z*z - 1 } contained_by { sphere { 0, 2 } } }"},
     {"parametric", "parametric { function { u } function { v } function { 0 } <0, 0>, <1, 1> }"},
