@@ -122,13 +122,6 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     return parse_options;
 }
 
-// True when the scene file's text holds `word` (a cheap look for keywords wardray reads but does not render).
-bool scene_mentions(const fs::path& scene, const std::string& word) {
-    std::ifstream in(scene, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return text.find(word) != std::string::npos;
-}
-
 // The irradiance cache for +RFI: the records of the radiosity file, or (with a warning) an empty cache.
 void load_cache_file(cache::IrradianceCache& irradiance_cache, const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -318,10 +311,13 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradients = options.gi_gradients;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
-    // POV-Ray uses pigments' quick_color up to +Q5; wardray reads and drops it.
-    if (options.quality <= 5 && scene_mentions(options.scene, "quick_col"))
-        std::cerr << options.scene.string() << ": warning: quick_color is not rendered yet: at +Q"
-                  << options.quality << " POV-Ray uses it, wardray the pigment\n";
+    // Up to +Q5 surfaces show their pigments' quick_color (the integrator); the sky's pigments keep theirs.
+    if (options.quality <= 5 && scene.sky_sphere)
+        for (const scene::Pigment& p : scene.sky_sphere->pigments)
+            if (p.quick_color)
+                std::cerr << p.loc.path << ":" << p.loc.line << ":" << p.loc.column
+                          << ": warning: a sky_sphere pigment's quick_color is not rendered yet (at +Q"
+                          << options.quality << " POV-Ray shows it)\n";
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     // POV-Ray compat: a mesh_camera's rays start on its mesh, and the objects they start inside are those around

@@ -193,7 +193,7 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         const double caustics = object.interior.caustics;
         // POV-Ray compat (ComputeShadowColour): patterns see the normal turned against the shadow ray.
         const Vec3 raw = dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal;
-        texture::SurfacePoint surface{hit->position, raw, dir};
+        texture::SurfacePoint surface{hit->position, raw, dir, m_quick_colors};
         if (caustics != 0.0) {
             Caustics c{caustics, raw, dir, {}};
             filter = filter * texture_filter(texture, hit->position, &c, surface);

@@ -424,7 +424,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
             }
             if (t.text == "quick_color" || t.text == "quick_colour") {
                 next();
-                parse_color();
+                p.quick_color = parse_color();
                 continue;
             }
             if (t.text == "image_map") {

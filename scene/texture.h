@@ -223,6 +223,8 @@ struct Pigment {
     std::optional<ImageMap> image_map;  ///< an image_map pigment (its transform and warps in `pattern`)
     /// `uv_mapping`: evaluated at the surface's (u, v, 0) instead of the point, and not moved by the object.
     bool uv_mapping = false;
+    /// `quick_color`: what the pigment shows instead at +Q0 to +Q5 (POV-Ray's Quick_Colour).
+    std::optional<Color> quick_color;
     SourceLoc loc;
 
     /// True for a plain colour: no pattern or image to evaluate.
