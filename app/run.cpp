@@ -64,10 +64,13 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
         -> std::shared_ptr<const scene::ImageData> {
         bool alpha = false;
-        const std::optional<render::Film> film = render::read_image(file, error, &encoded, &alpha);
+        std::vector<float> alpha_values;
+        const std::optional<render::Film> film =
+            render::read_image(file, error, &encoded, &alpha, nullptr, nullptr, &alpha_values);
         if (!film) return nullptr;
         auto image = std::make_shared<scene::ImageData>();
         image->has_alpha = alpha;
+        image->alpha = std::move(alpha_values);
         image->width = film->width();
         image->height = film->height();
         image->rgb = film->data();
@@ -77,9 +80,10 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         std::vector<float> entry_rgb, entry_alpha;
         if (render::read_png_palette_indices(file, w, h, index, image->palette_size, &entry_rgb, &entry_alpha) &&
             w == image->width && h == image->height) {
+            // A palette image's alpha is its palette's.
+            image->alpha.clear();
             if (!entry_alpha.empty() && encoded) {
-                // With a tRNS chunk the colours come from the palette as stored (OpenImageIO's are premultiplied)
-                // and each entry's alpha is kept.
+                // With a tRNS chunk the colours come from the palette as stored and each entry's alpha is kept.
                 for (std::size_t at = 0; at < index.size(); ++at)
                     if (index[at] < image->palette_size)
                         for (int c = 0; c < 3; ++c) image->rgb[at * 3 + c] = entry_rgb[index[at] * 3u + c];
