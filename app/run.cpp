@@ -64,10 +64,13 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
         -> std::shared_ptr<const scene::ImageData> {
         bool alpha = false;
-        const std::optional<render::Film> film = render::read_image(file, error, &encoded, &alpha);
+        std::vector<float> alpha_values;
+        const std::optional<render::Film> film =
+            render::read_image(file, error, &encoded, &alpha, nullptr, nullptr, &alpha_values);
         if (!film) return nullptr;
         auto image = std::make_shared<scene::ImageData>();
         image->has_alpha = alpha;
+        image->alpha = std::move(alpha_values);
         image->width = film->width();
         image->height = film->height();
         image->rgb = film->data();
@@ -77,9 +80,10 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         std::vector<float> entry_rgb, entry_alpha;
         if (render::read_png_palette_indices(file, w, h, index, image->palette_size, &entry_rgb, &entry_alpha) &&
             w == image->width && h == image->height) {
+            // A palette image's alpha is its palette's.
+            image->alpha.clear();
             if (!entry_alpha.empty() && encoded) {
-                // With a tRNS chunk the colours come from the palette as stored (OpenImageIO's are premultiplied)
-                // and each entry's alpha is kept.
+                // With a tRNS chunk the colours come from the palette as stored and each entry's alpha is kept.
                 for (std::size_t at = 0; at < index.size(); ++at)
                     if (index[at] < image->palette_size)
                         for (int c = 0; c < 3; ++c) image->rgb[at * 3 + c] = entry_rgb[index[at] * 3u + c];
@@ -120,13 +124,6 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     };
     parse_options.debug_output = [](const std::string& text) { std::cerr << text << std::flush; };
     return parse_options;
-}
-
-// True when the scene file's text holds `word` (a cheap look for keywords wardray reads but does not render).
-bool scene_mentions(const fs::path& scene, const std::string& word) {
-    std::ifstream in(scene, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    return text.find(word) != std::string::npos;
 }
 
 // The irradiance cache for +RFI: the records of the radiosity file, or (with a warning) an empty cache.
@@ -318,10 +315,13 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradients = options.gi_gradients;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
-    // POV-Ray uses pigments' quick_color up to +Q5; wardray reads and drops it.
-    if (options.quality <= 5 && scene_mentions(options.scene, "quick_col"))
-        std::cerr << options.scene.string() << ": warning: quick_color is not rendered yet: at +Q"
-                  << options.quality << " POV-Ray uses it, wardray the pigment\n";
+    // Up to +Q5 surfaces show their pigments' quick_color (the integrator); the sky's pigments keep theirs.
+    if (options.quality <= 5 && scene.sky_sphere)
+        for (const scene::Pigment& p : scene.sky_sphere->pigments)
+            if (p.quick_color)
+                std::cerr << p.loc.path << ":" << p.loc.line << ":" << p.loc.column
+                          << ": warning: a sky_sphere pigment's quick_color is not rendered yet (at +Q"
+                          << options.quality << " POV-Ray shows it)\n";
     if (scene.camera.type == scene::Camera::Type::Perspective && length(scene.camera.direction) > 0.0)
         settings.footprint = length(scene.camera.right) / (options.width * length(scene.camera.direction));
     // POV-Ray compat: a mesh_camera's rays start on its mesh, and the objects they start inside are those around

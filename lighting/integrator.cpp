@@ -70,6 +70,7 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     // POV-Ray compat (+Q): below quality 9 no media, fog or rainbows; below 5 area lights are points; below 4
     // nothing casts a shadow.
     m_lights.limit_quality(m_quality.shadows, m_quality.area_lights, m_quality.volume);
+    m_lights.use_quick_colors(m_quality.quick_colors);
     if (!m_quality.volume) m_atmosphere.reset();
     if (m_quality.volume && !scene.rainbows.empty())
         m_rainbows = std::make_unique<const media::Rainbows>(scene.rainbows, scene.global.noise_generator);

@@ -36,8 +36,10 @@ double smooth_ramp(double low, double high, double x) {
 
 bool pigment_opaque(const scene::Pigment& p) {
     if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
-    // An image map lets light through with filter or transmit all, and where `once` leaves no image.
+    // An image map lets light through with filter or transmit all, an alpha channel, and where `once` leaves no
+    // image.
     if (p.image_map) {
+        if (p.image_map->image && !p.image_map->image->alpha.empty()) return false;
         for (const scene::PaletteFT& ft : p.image_map->palette_ft)
             if (ft.filter != 0.0f || ft.transmit != 0.0f) return false;
         return !p.image_map->once && p.image_map->filter_all == 0.0 && p.image_map->transmit_all == 0.0;
@@ -193,7 +195,7 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         const double caustics = object.interior.caustics;
         // POV-Ray compat (ComputeShadowColour): patterns see the normal turned against the shadow ray.
         const Vec3 raw = dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal;
-        texture::SurfacePoint surface{hit->position, raw, dir};
+        texture::SurfacePoint surface{hit->position, raw, dir, m_quick_colors};
         if (caustics != 0.0) {
             Caustics c{caustics, raw, dir, {}};
             filter = filter * texture_filter(texture, hit->position, &c, surface);

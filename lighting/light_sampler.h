@@ -50,6 +50,9 @@ public:
         }
     }
 
+    /// POV-Ray's Q_QUICKC (+Q0 to +Q5): shadow rays see pigments' quick_color.
+    void use_quick_colors(bool on) { m_quick_colors = on; }
+
     /// The light arriving at `p` from `light` through whatever stands between: colour times attenuation times the
     /// filter colour of transparent blockers; zero when blocked or behind the surface (cos below EPSILON). With
     /// `area_lights` false (on a gather ray's path) an area light counts as a point light at its centre. `to_light`
@@ -110,6 +113,7 @@ private:
     bool m_photon_shadows = false;   ///< a photon map carries the light refracted by photon targets
     bool m_shadows = true;           ///< +Q4 and up: shadow rays are traced
     bool m_area_lights = true;       ///< +Q5 and up: area lights are sampled over their area
+    bool m_quick_colors = false;     ///< +Q0 to +Q5: pigments' quick_color in shadow filters
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation

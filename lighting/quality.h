@@ -5,8 +5,8 @@ namespace wardray::lighting {
 
 /// What a quality level renders. POV-Ray 3.7: 0-1 each surface's pigment alone (no light), 2-3 ambient and
 /// diffuse light without shadows, 4 shadows, 5 area lights in full, 6-7 refraction and transmission, 8 reflection
-/// and normal perturbation, 9-11 media, fog, rainbows, radiosity and photons. Levels 0-5 also use pigments'
-/// quick_color (not rendered: app/ warns).
+/// and normal perturbation, 9-11 media, fog, rainbows, radiosity and photons. Levels 0-5 also show pigments'
+/// quick_color instead of the pigment.
 struct QualityFeatures {
     bool lighting = true;        ///< off at 0-1 (Q_FULL_AMBIENT): a surface shows its pigment, nothing else
     bool shadows = true;         ///< Q_SHADOW, from 4
@@ -16,6 +16,7 @@ struct QualityFeatures {
     bool normals = true;         ///< Q_NORMAL, from 8: normal perturbation
     bool volume = true;          ///< Q_VOLUME, from 9: media, fog and rainbows
     bool advanced_light = true;  ///< Q_ADVANCED_LIGHT, from 9: radiosity and photons
+    bool quick_colors = false;   ///< Q_QUICKC, up to 5: a pigment with a quick_color shows it
 };
 
 /// The features of +Q`level` (0..11; 10 and 11 are 9, as in POV-Ray 3.7).
@@ -29,6 +30,7 @@ inline QualityFeatures quality_features(int level) {
     q.normals = level >= 8;
     q.volume = level >= 9;
     q.advanced_light = level >= 9;
+    q.quick_colors = level <= 5;
     return q;
 }
 

@@ -50,7 +50,7 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.depth = depth;
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
-    texture::SurfacePoint surface{hit.position, s.raw_normal, direction};
+    texture::SurfacePoint surface{hit.position, s.raw_normal, direction, m_quality.quick_colors};
     s.surface = &surface;
     std::vector<const scene::Pattern*> warps;
     // POV-Ray compat: a surface met from inside shows its interior texture, when it has one.

@@ -61,7 +61,7 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
                       '\n' + std::to_string(working.gamma) + std::to_string(handling) +
                       std::to_string(m_version >= 3.7) + (colour ? "c" : "v");
     if (auto it = m_images.find(key); it != m_images.end()) {
-        if (it->second->has_alpha && it->second->palette_alpha.empty() && colour)
+        if (it->second->has_alpha && it->second->palette_alpha.empty() && it->second->alpha.empty() && colour)
             warn_unsupported(at, "image_map alpha channel");
         return it->second;
     }
@@ -69,9 +69,10 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     std::string error;
     const std::shared_ptr<const ImageData> stored = m_options.read_image(found, encoded, error);
     if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
-    // POV-Ray takes transparency from an alpha channel; the reader does not return it.
-    // Bump maps and material maps use only the colours or indices.
-    if (stored->has_alpha && stored->palette_alpha.empty() && colour) warn_unsupported(at, "image_map alpha channel");
+    // POV-Ray takes transparency from an alpha channel (a true-colour image's alpha, a palette's tRNS); a reader
+    // that returns neither is warned of. Bump maps and material maps use only the colours or indices.
+    if (stored->has_alpha && stored->palette_alpha.empty() && stored->alpha.empty() && colour)
+        warn_unsupported(at, "image_map alpha channel");
     auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
@@ -227,8 +228,8 @@ void Parser::parse_image_pattern(const Token& kw, Pattern& pat) {
         return true;
     });
     map.use_alpha = alpha;
-    // POV-Ray compat: with an alpha channel use_alpha takes it, which the reader does not return.
-    if (alpha && map.image->has_alpha && map.image->palette_alpha.empty())
+    // POV-Ray compat: with an alpha channel use_alpha takes it (a reader that does not return it is warned of).
+    if (alpha && map.image->has_alpha && map.image->palette_alpha.empty() && map.image->alpha.empty())
         warn_unsupported(alpha_at, "image_pattern use_alpha of an image with an alpha channel");
     pat.image = std::make_shared<const ImageMap>(std::move(map));
     pat.frequency = 0.0;

@@ -24,7 +24,8 @@ const std::vector<std::string_view> k_reserved = {
     "ifdef", "iff", "ifndef", "include", "input_file_name", "inside_vector", "internal", "interpolate", "intervals",
     "ior", "jpeg", "linear_spline", "linear_sweep", "local", "macro", "major_radius", "map_type", "max_gradient",
     "max_iteration", "max_trace", "method", "metric", "mortar", "natural_spline", "no_bump_scale", "normal_indices",
-    "normal_vectors", "offset", "once", "orientation", "pass_through", "pattern", "pgm", "png", "poly_wave", "pot",
+    "normal_vectors", "number_of_sides", "number_of_tiles", "offset", "once", "orientation", "pass_through",
+    "pattern", "pgm", "png", "poly_wave", "pot",
     "ppm", "precision", "precompute", "premultiplied", "pwr", "quadratic_spline", "quaternion", "ramp_wave", "range",
     "ratio", "read", "reciprocal", "refraction", "render", "repeat", "samples", "scallop_wave", "scattering",
     "sine_wave", "sint16be", "sint16le", "sint32be", "sint32le", "sint8", "size", "slice", "smooth", "solid",
@@ -46,7 +47,6 @@ const std::vector<std::string_view> k_unsupported_blocks = {
 
 // Pattern keywords and pattern items not rendered yet (the rendered patterns are WARDRAY_PATTERNS, scene/texture.h).
 const std::vector<std::string_view> k_patterns = {
-    "pavement",
     "turbulence", "octaves", "omega", "lambda", "frequency", "phase", "color_map", "colour_map", "pigment_map",
     "image_map", "tiles", "texture_map", "material_map", "warp"};
 

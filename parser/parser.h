@@ -72,6 +72,11 @@ private:
     // --- pattern parameters and warps (pattern_params.cpp) ---
     int parse_pattern_parameters(const Token& t, Pattern& pat);
     bool parse_pattern_extra(const Token& t, Pattern& pat);
+    // --- the pavement pattern (pattern_pavement.cpp) ---
+    /// Reads a pavement modifier of `pat` (number_of_sides, number_of_tiles, pattern, exterior, interior, form).
+    bool parse_pavement_modifier(const Token& t, Pattern& pat);
+    /// POV-Ray's checks of a pavement pattern once its block is read (kw: the block's keyword).
+    void check_pavement(const Token& kw, Pattern& pat);
     // --- the slope pattern (pattern_slope.cpp) ---
     /// Reads what follows `slope` into `pat.slope`.
     void parse_slope_parameters(const Token& kw, Pattern& pat);

@@ -182,6 +182,7 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         pat.transform = pat.transform.then(tr);
         return true;
     }
+    if (parse_pavement_modifier(t, pat)) return true;
     const std::string w = t.text;
     auto turb = [&]() -> Turbulence& {
         if (!pat.turbulence) pat.turbulence = Turbulence{};
@@ -423,7 +424,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
             }
             if (t.text == "quick_color" || t.text == "quick_colour") {
                 next();
-                parse_color();
+                p.quick_color = parse_color();
                 continue;
             }
             if (t.text == "image_map") {
@@ -449,6 +450,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         p.color = parse_color();
         p.pattern.type = PType::None;
     }
+    check_pavement(kw, p.pattern);
     if (!p.is_solid() && !p.image_map && p.color_map.empty() && p.pigment_map.empty())
         p.color_map = default_color_map(p.pattern.type);
 }
@@ -517,6 +519,7 @@ void Parser::parse_normal_items(Normal& n, const Token& kw, const char* close) {
         const Token t = peek();
         if (is_punct(t, close)) {
             next();
+            check_pavement(kw, n.pattern);
             return;
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a normal item but found " + describe_token(t));

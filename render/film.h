@@ -63,15 +63,17 @@ void remove_partial_output_on_signal();
 /// Reads any image OpenImageIO reads as linear RGB (8-bit sRGB files are decoded to linear).
 /// On failure returns nothing and sets `error`. With `stored`, the values are left as the file stores them
 /// (8- and 16-bit ones scaled to [0, 1]) and `*stored` says whether they are encoded (integer) values. `*alpha`
-/// says whether the file has an alpha channel (not read); `*grey` whether it has one colour channel and `*bits16`
-/// whether it stores 16-bit values.
+/// says whether the file has an alpha channel; `*grey` whether it has one colour channel and `*bits16` whether it
+/// stores 16-bit values. With an alpha channel the colours are straight (not premultiplied) and `alpha_values`
+/// receives each pixel's alpha, rows from the top.
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
-                               bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr);
+                               bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr,
+                               std::vector<float>* alpha_values = nullptr);
 /// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
 /// libjpeg, giving the same values).
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
                                          bool* stored = nullptr, bool* alpha = nullptr, bool* grey = nullptr,
-                                         bool* bits16 = nullptr);
+                                         bool* bits16 = nullptr, std::vector<float>* alpha_values = nullptr);
 
 /// sRGB transfer function, linear to encoded, for one channel in [0, 1].
 double srgb_encode(double linear);

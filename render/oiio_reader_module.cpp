@@ -19,12 +19,16 @@ void set_error(char* error, std::size_t size, const std::string& message) {
 
 /// Reads `path` as float RGB rows from the top; `*pixels` is malloc'd (free with wardray_oiio_free).
 /// `*encoded` has bit 0 set when the file stores 8- or 16-bit values (to be decoded from sRGB) and bit 1 when it has
-/// an alpha channel (which is not returned), bit 2 when it is grey (one channel, or grey and alpha) and bit 3 when it
-/// stores 16-bit values. Returns 1 on success.
-extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int* encoded, float** pixels,
-                                 char* error, std::size_t error_size) {
+/// an alpha channel, bit 2 when it is grey (one channel, or grey and alpha) and bit 3 when it stores 16-bit values.
+/// With an alpha channel the colours are straight, as the file stores them (OpenImageIO would premultiply them),
+/// and `*alpha` (malloc'd, else null) holds each pixel's alpha. Returns 1 on success.
+extern "C" int wardray_oiio_read_straight(const char* path, int* width, int* height, int* encoded, float** pixels,
+                                 float** alpha, char* error, std::size_t error_size) {
     try {
-        auto in = OIIO::ImageInput::open(path);
+        *alpha = nullptr;
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        auto in = OIIO::ImageInput::open(path, &config);
         if (!in) {
             set_error(error, error_size, OIIO::geterror());
             return 0;
@@ -42,14 +46,26 @@ extern "C" int wardray_oiio_read(const char* path, int* width, int* height, int*
             set_error(error, error_size, "out of memory");
             return 0;
         }
+        // A grey file (with or without alpha) gives its one channel to all three.
         for (std::size_t i = 0; i < n; ++i)
-            for (int c = 0; c < 3; ++c) rgb[3 * i + c] = all[i * channels + (c < channels ? c : 0)];
+            for (int c = 0; c < 3; ++c) rgb[3 * i + c] = all[i * channels + (channels <= 2 ? 0 : c)];
+        const int alpha_channel =
+            spec.alpha_channel >= 0 ? spec.alpha_channel : channels == 4 ? 3 : channels == 2 ? 1 : -1;
+        if (alpha_channel >= 0 && alpha_channel < channels) {
+            *alpha = static_cast<float*>(std::malloc(n * sizeof(float)));
+            if (!*alpha) {
+                std::free(rgb);
+                set_error(error, error_size, "out of memory");
+                return 0;
+            }
+            for (std::size_t i = 0; i < n; ++i) (*alpha)[i] = all[i * channels + alpha_channel];
+        }
         *width = spec.width;
         *height = spec.height;
         const bool integer =
             spec.format.basetype == OIIO::TypeDesc::UINT8 || spec.format.basetype == OIIO::TypeDesc::UINT16;
-        *encoded = (integer ? 1 : 0) | (spec.alpha_channel >= 0 || channels == 4 || channels == 2 ? 2 : 0) |
-                   (channels <= 2 ? 4 : 0) | (spec.format.basetype == OIIO::TypeDesc::UINT16 ? 8 : 0);
+        *encoded = (integer ? 1 : 0) | (alpha_channel >= 0 ? 2 : 0) | (channels <= 2 ? 4 : 0) |
+                   (spec.format.basetype == OIIO::TypeDesc::UINT16 ? 8 : 0);
         *pixels = rgb;
         return 1;
     } catch (const std::exception& e) {

@@ -14,7 +14,10 @@ struct ImageData {
     int width = 0;
     int height = 0;
     std::vector<float> rgb;  ///< width * height * 3
-    bool has_alpha = false;  ///< the file has an alpha channel (read only as a palette PNG's palette_alpha)
+    bool has_alpha = false;  ///< the file has an alpha channel
+    /// A true-colour image's alpha per texel (width * height, rows from the top, straight, not premultiplied);
+    /// empty without an alpha channel and for palette images (their alpha is palette_alpha).
+    std::vector<float> alpha;
     /// A palette image's colour index of each texel, rows from the top (POV-Ray's colour-mapped images); empty for
     /// other images.
     std::vector<std::uint8_t> index;
@@ -45,7 +48,7 @@ struct ImageMap {
     /// bump_map and material_map: the palette index rather than the colour (`use_index`; a material_map always
     /// takes an index image's index).
     bool use_index = false;
-    /// image_pattern `use_alpha`: the red channel of an image without alpha (the only kind read here).
+    /// image_pattern `use_alpha`: the transmit (1 − alpha) of an image with alpha, the red channel of one without.
     bool use_alpha = false;
     bool operator==(const ImageMap&) const = default;
 };

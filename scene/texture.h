@@ -93,6 +93,7 @@ struct Warp {
     X(square, Square)             \
     X(triangular, Triangular)     \
     X(cubic, Cubic)               \
+    X(pavement, Pavement)         \
     X(pigment_pattern, PigmentPattern) \
     X(function, Function)         \
     X(density_file, DensityFile)  \
@@ -119,6 +120,18 @@ struct SlopeParams {
     double altitude_range = 0.0;
     bool point_at = false;
     bool operator==(const SlopeParams&) const = default;
+};
+
+/// `pavement`'s parameters as POV-Ray 3.7 keeps them (Vals.Pavement): the cell shape, the tiles a paver covers,
+/// which of POV-Ray's pavings of that many tiles, and how its corners are drawn.
+struct PavementParams {
+    int sides = 3;   ///< number_of_sides: 3 (triangles), 4 (squares) or 6 (hexagons)
+    int tiles = 1;   ///< number_of_tiles: 1 to 6 (1 to 5 for hexagons)
+    int number = 1;  ///< pattern: 1 to the number of pavings with that many tiles
+    int exterior = 0;
+    int interior = 0;
+    int form = 0;
+    bool operator==(const PavementParams&) const = default;
 };
 
 /// A density_file's voxels as POV-Ray's df3 stores them (x fastest, then y, then z), each value raw / max.
@@ -175,6 +188,7 @@ struct Pattern {
     SlopeParams slope;      ///< slope
     double facets_size = 0.1;    ///< facets `size` (its `metric` is crackle_metric)
     double facets_coords = 0.0;  ///< facets `coords`: 0 picks by the normal, else by the point, tilting by this
+    PavementParams pavement;     ///< pavement
     PigmentRef pigment;     ///< pigment_pattern: the pigment whose grey level is the value
     std::optional<Turbulence> turbulence;
     function::SharedFunction function;  ///< the `function { ... }` pattern's function
@@ -211,6 +225,8 @@ struct Pigment {
     std::optional<ImageMap> image_map;  ///< an image_map pigment (its transform and warps in `pattern`)
     /// `uv_mapping`: evaluated at the surface's (u, v, 0) instead of the point, and not moved by the object.
     bool uv_mapping = false;
+    /// `quick_color`: what the pigment shows instead at +Q0 to +Q5 (POV-Ray's Quick_Colour).
+    std::optional<Color> quick_color;
     SourceLoc loc;
 
     /// True for a plain colour: no pattern or image to evaluate.

@@ -85,9 +85,11 @@ Color texel(const scene::ImageMap& map, double x, double y, int& index) {
     const std::size_t at = static_cast<std::size_t>(iy) * img.width + ix;
     const float* t = &img.rgb[at * 3];
     if (!img.indexed()) {
-        // POV-Ray compat: filter all and transmit all add to a true-colour texel.
+        // POV-Ray compat: a true-colour texel's alpha is its transmit, 1 − alpha (straight colours, interpolated
+        // as they are); filter all and transmit all add to it.
         index = -1;
-        return Color{t[0], t[1], t[2], map.filter_all, map.transmit_all};
+        const double transmit = img.alpha.empty() ? 0.0 : 1.0 - img.alpha[at];
+        return Color{t[0], t[1], t[2], map.filter_all, transmit + map.transmit_all};
     }
     index = img.index[at];
     if (map.palette_ft.empty()) return Color{t[0], t[1], t[2], 0.0, 0.0};

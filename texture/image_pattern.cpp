@@ -13,7 +13,7 @@ double image_pattern_pattern(const scene::Pattern& pat, const Vec3& p, int) {
     int index = -1;
     const Color c = image_color_at(*pat.image, x, y, index);
     // POV-Ray compat: use_index still takes the grey level (its Use flag is never 0 here); use_alpha takes the
-    // transmit of an image with alpha (a palette PNG's), the red channel of one without.
+    // transmit of an image with alpha (its alpha channel's or its palette's), the red channel of one without.
     const bool transparency = pat.image->image && pat.image->image->has_alpha;
     const double value = !pat.image->use_alpha ? grey(c.rgb()) : transparency ? c.transmit : c.r;
     return std::clamp(value, 0.0, 1.0);

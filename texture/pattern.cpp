@@ -16,6 +16,7 @@
 #include "texture/noise.h"
 #include "texture/object_pattern.h"
 #include "texture/pattern_blocks.h"
+#include "texture/pavement.h"
 #include "texture/slope.h"
 #include "texture/tiling.h"
 

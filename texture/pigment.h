@@ -12,7 +12,7 @@ inline double grey(const Vec3& c) { return 0.297 * c.x + 0.589 * c.y + 0.114 * c
 
 /// The five-component colour of `pigment` at `p` (in the pigment's enclosing space: world space for an object's
 /// pigment). Solid pigments return their colour without evaluating anything. `surface` is the intersection
-/// being shaded, if any.
+/// being shaded, if any (with the quick_color flag of the render's quality).
 inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator,
                               const SurfacePoint* surface = nullptr);
 
@@ -22,6 +22,9 @@ Color evaluate_patterned_pigment(const scene::Pigment& pigment, const Vec3& p, i
 
 inline Color evaluate_pigment(const scene::Pigment& pigment, const Vec3& p, int noise_generator,
                               const SurfacePoint* surface) {
+    // POV-Ray compat (Compute_Pigment): at +Q0 to +Q5 a pigment with a quick_color is that colour, at any depth of
+    // pigment maps and pigment_pattern.
+    if (pigment.quick_color && surface != nullptr && surface->quick_colors) return *pigment.quick_color;
     if (pigment.is_solid()) return pigment.color;
     return evaluate_patterned_pigment(pigment, p, noise_generator, surface);
 }

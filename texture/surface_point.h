@@ -11,6 +11,8 @@ struct SurfacePoint {
     Vec3 point;      ///< the hit point, world space (IPoint)
     Vec3 normal;     ///< unit, world space, facing the ray, tilted by the normals shaded so far (PNormal)
     Vec3 direction;  ///< the ray's direction
+    /// POV-Ray's Q_QUICKC quality flag (+Q0 to +Q5): pigments with a quick_color show it instead.
+    bool quick_colors = false;
 };
 
 }  // namespace wardray::texture

@@ -62,5 +62,45 @@ TEST_P(Quality, MatchesPovRayAtTheSameLevel) {
 
 INSTANTIATE_TEST_SUITE_P(Levels, Quality, ::testing::Values(0, 3, 4, 5, 6, 8));
 
+// quick_color: up to +Q5 POV-Ray shows it instead of the pigment, at every depth of a pigment map; from +Q6 the
+// pigment. A declared pigment keeps its quick colour; the outer pigment of a map without one is evaluated.
+const char* kQuickColorScene = R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 2, -6> look_at <0, 0.5, 0> angle 50 }
+light_source { <-10, 20, -15> color rgb 1 }
+plane { y, 0 pigment { checker rgb 1 rgb 0.2 quick_color rgb <0.3, 0.5, 0.3> } }
+sphere { <-1.6, 1, 0>, 1 pigment { bozo color_map { [0 rgb <1, 0, 0>] [1 rgb <1, 1, 0>] } quick_colour rgb <0, 0, 1> } }
+#declare P = pigment { rgb <0.9, 0.6, 0.2> quick_color rgb <0.2, 0.8, 0.9> }
+sphere { <0.6, 1, 0>, 1 pigment { P } }
+box { <1.8, 0, -0.8>, <3.2, 1.6, 0.8>
+      pigment { gradient y pigment_map { [0 P] [1 rgb <1, 1, 1> quick_color rgbt <1, 0, 1, 0.5>] } } }
+)";
+
+class QuickColor : public ::testing::TestWithParam<int> {};
+
+TEST_P(QuickColor, ShownUpToQualityFiveAsInPovRay) {
+    const int q = GetParam();
+    const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "quick_color" / std::to_string(q);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::ofstream(dir / "scene.pov") << kQuickColorScene;
+    const std::string common = " +FH +W160 +H120 -A +WT1 +Q" + std::to_string(q);
+    ASSERT_EQ(run_command("povray +Iscene.pov +Opovray.hdr -D -V" + common, dir.string()).exit_status, 0);
+    const auto ours = run_command(shell_quote(WARDRAY_BINARY) + " scene.pov -o wardray.hdr" + common, dir.string());
+    ASSERT_EQ(ours.exit_status, 0) << ours.output;
+    EXPECT_EQ(ours.output.find("warning"), std::string::npos) << ours.output;
+    std::string error;
+    const auto reference = render::read_image(dir / "povray.hdr", error);
+    const auto image = render::read_image(dir / "wardray.hdr", error);
+    ASSERT_TRUE(reference && image) << error;
+    const auto c = render::compare_images(*image, *reference);
+    ASSERT_TRUE(c);
+    EXPECT_LT(c->rrmse, 0.005);
+    EXPECT_LT(c->bad_pixel_fraction, 0.001);
+    EXPECT_EQ(c->non_finite, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Levels, QuickColor, ::testing::Values(1, 3, 5, 6));
+
 }  // namespace
 }  // namespace wardray::test
