@@ -157,7 +157,9 @@ TEST(Parametric, ExtremeScalesGiveFiniteHits) {
         }
         // POV-Ray compat: at 1e-4 the uv rectangle's bounds dwarf the surface, the first piece below accuracy along
         // the ray lies before the container, and POV-Ray draws nothing either.
-        if (s > 1.0) EXPECT_GT(found, 50);
+        if (s > 1.0) {
+            EXPECT_GT(found, 50);
+        }
     }
 }
 
