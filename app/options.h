@@ -74,6 +74,9 @@ struct Options {
     std::optional<std::filesystem::path> stats;
     /// #fopen may also read from these folders (--read-path) and write into these (--write-path).
     std::vector<std::filesystem::path> read_paths;
+    /// --strict-reads: none of the folders Debian's povray.conf permits ($HOME, /tmp, ...), only the scene's folder,
+    /// the include path and the --read-path folders.
+    bool strict_reads = false;
     std::vector<std::filesystem::path> write_paths;
     bool allow_file_writes = false;  ///< --allow-file-writes: #write really writes (inside the permitted folders)
     // Parser guard rails; empty keeps the parser's defaults.

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -12,6 +13,7 @@
 #include "app/app.h"
 #include "app/partial_render.h"
 #include "app/process_limits.h"
+#include "app/read_policy.h"
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
@@ -59,6 +61,11 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     parse_options.image_width = options.width;
     parse_options.image_height = options.height;
     parse_options.read_paths = options.read_paths;
+    if (!options.strict_reads) {
+        std::error_code ec;
+        const char* home = std::getenv("HOME");
+        parse_options.permitted_reads = povray_permitted_reads(home ? home : "", fs::current_path(ec));
+    }
     parse_options.write_paths = options.write_paths;
     // image_map files through the render layer's reader (OpenImageIO, loaded only when a scene has one).
     parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)

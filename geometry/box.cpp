@@ -56,8 +56,10 @@ SurfaceHits BoxShape::intersect_all(const LocalRay& ray, double t_min, double t_
 }
 
 bool BoxShape::inside(const Vec3& p) const {
+    // POV-Ray compat: a point on a face is inside (Box::Inside compares with < and >), so where two cut-away boxes
+    // of a difference share a face, neither keeps it.
     for (int k = 0; k < 3; ++k)
-        if (!(p[k] > m_lower[k] && p[k] < m_upper[k])) return false;
+        if (!(p[k] >= m_lower[k] && p[k] <= m_upper[k])) return false;
     return true;
 }
 

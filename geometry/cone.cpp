@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
+
 namespace wardray::geometry {
 
 ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open)
@@ -107,9 +109,20 @@ std::optional<Bounds> ConeShape::bounds() const {
 bool ConeShape::inside(const Vec3& p) const {
     const Vec3 o = p - m_base;
     const double s = dot(o, m_axis);
-    if (!(s > 0.0 && s < m_height)) return false;
     const Vec3 pp = o - s * m_axis;
     const double r = m_r0 + m_slope * s;
+    if (m_open) {
+        // POV-Ray compat: an open cone's inside reaches EPSILON beyond its ends and side, measured in its unit
+        // space (a cylinder's length and radius; a cone's apex-to-wide-end distance and wide radius), so a
+        // surface lying on an open end's plane is inside it (a bowl cut by an open cone keeps no lid).
+        const double wide = std::fmax(m_r0, m_r1);
+        const double axial = m_slope == 0.0 ? m_height : m_height * wide / std::fabs(m_r1 - m_r0);
+        const double radial_sq = m_slope == 0.0 ? kPovEpsilon * r * r : kPovEpsilon * wide * wide;
+        const double e = kPovEpsilon * axial;
+        if (s < -e || s > m_height + e) return false;
+        return dot(pp, pp) <= std::fmax(r, 0.0) * std::fmax(r, 0.0) + radial_sq;
+    }
+    if (!(s > 0.0 && s < m_height)) return false;
     return dot(pp, pp) < r * r;
 }
 

@@ -255,11 +255,17 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
         const std::ptrdiff_t i = &light - m_scene.lights.data();
         const SpotCone cone = i >= 0 && static_cast<std::size_t>(i) < m_cones.size() ? m_cones[i] : spot_cone(light);
         const double cos_alpha = dot(-to_light, cone.axis);
-        if (cos_alpha <= cone.cos_falloff) return {};
+        // POV-Ray compat: dark beyond falloff only through the ramp, which applies outside radius alone; so a
+        // falloff smaller than radius lights the whole radius cone at full strength, with a hard edge there.
+        if (!(cos_alpha > 0.0)) return {};
+        if (cone.cos_radius > 0.0 && cos_alpha < cone.cos_radius) {
+            const double ramp = smooth_ramp(cone.cos_falloff, cone.cos_radius, cos_alpha);
+            if (ramp == 0.0) return {};
+            attenuation *= ramp;
+        }
         // pow(x, 1) is x exactly; the common tightness 1 skips the call.
         if (light.tightness == 1.0) attenuation *= cos_alpha;
         else if (light.tightness > 0.0) attenuation *= std::pow(cos_alpha, light.tightness);
-        if (cos_alpha < cone.cos_radius) attenuation *= smooth_ramp(cone.cos_falloff, cone.cos_radius, cos_alpha);
     } else if (light.type == Type::Cylinder) {
         // POV-Ray's cylinder light: only points ahead of the light and within `falloff` of its axis are lit,
         // (1 − d/falloff)^tightness, with the same cubic ramp between radius and falloff (d: distance from the axis).

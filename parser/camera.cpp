@@ -2,6 +2,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/constants.h"
 #include "parser/value.h"
 
 namespace wardray::parser {
@@ -50,7 +51,9 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
         if (!planar) cam.angle = angle;
     }
 
-    const Vec3 look_at = spec.look_at.value_or(spec.location + Vec3{0.0, 0.0, 1.0});
+    // POV-Ray compat: a camera's look_at defaults to <0, 0, 1> wherever its location is (the orthographic sizing
+    // below measures from it).
+    const Vec3 look_at = spec.look_at.value_or(Vec3{0.0, 0.0, 1.0});
     if (spec.look_at) {
         direction_length = length(cam.direction);
         const double up_length = length(cam.up);
@@ -79,8 +82,9 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
         // POV-Ray compat: without up/right (or with angle) the orthographic view covers the same area at the
         // look_at distance as the perspective camera would.
         const double dir_length = length(cam.direction);
-        if (dir_length > 0.0) {
-            const double k = length(look_at - spec.location) / dir_length;
+        const double distance = length(look_at - spec.location);
+        if (dir_length > kPovEpsilon && distance > kPovEpsilon) {
+            const double k = distance / dir_length;
             cam.right = cam.right * k;
             cam.up = cam.up * k;
         }

@@ -45,6 +45,13 @@ struct ParseOptions {
 
     /// Folders besides the scene's own folder and `library_paths` that #fopen may read from.
     std::vector<std::filesystem::path> read_paths;
+    /// Folders a configuration permits reading from (POV-Ray's povray.conf `read*` and `read` entries): judged by
+    /// the file's real location (links and '..' resolved), inside the folder or, without `subfolders`, directly in it.
+    struct PermittedFolder {
+        std::filesystem::path folder;
+        bool subfolders = true;
+    };
+    std::vector<PermittedFolder> permitted_reads;
     /// Folders besides the scene's own folder that #fopen may write or append to.
     std::vector<std::filesystem::path> write_paths;
     /// What `#fopen ... write/append` does: refuse (an error), discard (check the rules, parse the #write

@@ -451,8 +451,12 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
         p.pattern.type = PType::None;
     }
     check_pavement(kw, p.pattern);
-    if (!p.is_solid() && !p.image_map && p.color_map.empty() && p.pigment_map.empty())
-        p.color_map = default_color_map(p.pattern.type);
+    if (!p.is_solid() && !p.image_map && p.color_map.empty() && p.pigment_map.empty()) {
+        // POV-Ray compat: a mandel with an exponent above 2 is another pattern type there (MANDEL3/4/X_PATTERN),
+        // which takes the grey ramp, not mandel's own map.
+        const bool other_mandel = p.pattern.type == PType::Mandel && p.pattern.fractal_exponent != 2;
+        p.color_map = default_color_map(other_mandel ? PType::None : p.pattern.type);
+    }
 }
 
 std::vector<PigmentMapEntry> Parser::parse_pigment_map(const Token& kw, bool optional_values) {

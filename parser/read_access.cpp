@@ -54,6 +54,7 @@ std::vector<ReadRoot> readable_roots(const ParseOptions& options, const fs::path
     roots.push_back({folder.empty() ? fs::path(".") : folder, false});
     for (const auto& p : options.library_paths) roots.push_back({p, true});
     for (const auto& p : options.read_paths) roots.push_back({p, true});
+    for (const auto& p : options.permitted_reads) roots.push_back({p.folder, false, p.subfolders});
     return roots;
 }
 
@@ -62,6 +63,12 @@ bool is_readable(const fs::path& file, const std::vector<ReadRoot>& roots) {
     std::error_code ec;
     const fs::path written = fs::absolute(file, ec).lexically_normal();
     for (const ReadRoot& root : roots) {
+        if (!root.subfolders) {
+            fs::path folder = real_path(root.folder);
+            if (!folder.has_filename()) folder = folder.parent_path();  // "/tmp/" as "/tmp"
+            if (real.parent_path() == folder) return true;
+            continue;
+        }
         if (inside(real, real_path(root.folder))) return true;
         if (root.trusted && !ec && inside(written, fs::absolute(root.folder, ec).lexically_normal())) return true;
     }

@@ -12,11 +12,13 @@
 namespace wardray::parser {
 
 /// The folders a scene may read from, as given: its own folder, the include path (`library_paths`: the system
-/// include folder, `+L`, `Library_Path`) and the `--read-path` folders. `trusted` is true for the folders the
+/// include folder, `+L`, `Library_Path`), the `--read-path` folders and the configuration's permitted folders
+/// (`permitted_reads`, untrusted). `trusted` is true for the folders the
 /// user or the system named (their symbolic links are followed wherever they point).
 struct ReadRoot {
     std::filesystem::path folder;
     bool trusted = false;
+    bool subfolders = true;  ///< false: only the files directly in `folder` (a povray.conf `read = DIR` entry)
 };
 std::vector<ReadRoot> readable_roots(const ParseOptions& options, const std::filesystem::path& scene_file);
 

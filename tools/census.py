@@ -612,10 +612,8 @@ class Census:
         if ini:
             # As POV-Ray got it: the .ini first, so the census's options after it win; one frame of its animation.
             cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
-        if self.corpus:
-            # POV-Ray reads the whole scratch copy (its povray.conf permits all of /tmp and $HOME, recursively);
-            # wardray reads only the scene's folder unless told: users' scenes include `../common.inc`.
-            cmd += ["--read-path", str(root / "repo")]
+        # The scratch copy lies below /tmp, which Debian's povray.conf lets both programs read (wardray's default
+        # read permissions are that file's): users' scenes include `../common.inc`.
         if self.timed:
             cmd += ["--stats", str(root / "stats.json")]
         r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)

@@ -107,6 +107,27 @@ TEST(Csg, CrossingsSeparateInsideFromOutside) {
     }
 }
 
+TEST(Csg, TwoCutsSharingAFaceLeaveNoSheetBetweenThem) {
+    // POV-Ray compat: a box's faces count as inside it, so the face the two cut-away boxes share (y = 0 here)
+    // is removed from both, and a ray down through the upper cut goes on into the lower one (a user's car body
+    // with its roof and a slot cut away at the same height).
+    scene::Csg csg;
+    csg.op = scene::Csg::Op::Difference;
+    csg.children.push_back(make_object(scene::Box{{-2, -1, -1}, {2, 1, 1}}));
+    csg.children.push_back(make_object(scene::Box{{-1, 0, -2}, {1, 2, 2}}));
+    csg.children.push_back(make_object(scene::Box{{-3, -0.5, -0.5}, {3, 0, 0.5}}));
+    const scene::Object obj = make_object(csg);
+    const auto inst = ShapeInstance::create(obj, 0);
+    ASSERT_TRUE(inst);
+    const auto h = inst->nearest({0.5, 5, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(h);
+    EXPECT_NEAR(h->t, 5.5, 1e-12);  // the slot's floor, not a sheet at y = 0
+    // Beside the slot the upper cut's floor stays.
+    const auto b = inst->nearest({0.5, 5, 0.8}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(b);
+    EXPECT_NEAR(b->t, 5.0, 1e-12);
+}
+
 TEST(Csg, DifferenceCutsAHoleAndFlipsTheNormal) {
     scene::Csg csg;
     csg.op = scene::Csg::Op::Difference;

@@ -264,6 +264,29 @@ TEST(Primitives, CylinderCapsAndOpen) {
     EXPECT_FALSE(b->nearest({0, 5, 0}, {0, -1, 0}, 0.0, 1e30));
     // Open cylinders stay solid for inside tests.
     EXPECT_TRUE(b->inside({0, 1, 0}));
+    // POV-Ray compat: their end planes and side count as inside (EPSILON beyond them); a closed one's do not.
+    EXPECT_TRUE(b->inside({0.5, 2.0, 0}));
+    EXPECT_TRUE(b->inside({0.5, 0.0, 0}));
+    EXPECT_TRUE(b->inside({1.0, 1.0, 0}));
+    EXPECT_FALSE(b->inside({0.5, 2.0 + 1e-6, 0}));
+    EXPECT_FALSE(b->inside({1.0 + 1e-6, 1.0, 0}));
+    EXPECT_FALSE(a->inside({0.5, 2.0, 0}));
+    EXPECT_FALSE(a->inside({0.5, 0.0, 0}));
+}
+
+TEST(Primitives, ABowlCutByAnOpenConeKeepsNoLid) {
+    // A cone with an open cone of the same height taken away (a user's bowl): the solid cone's top cap lies on
+    // the open cone's end plane, so it is inside the open cone and goes; a ray down the axis meets the bowl's
+    // floor only where the open cone does not reach, i.e. not at all here.
+    scene::Cone outer{{0, 0, 0}, 1.5, {0, 1.75, 0}, 2.0, false};
+    scene::Cone inner{{0, 0, 0}, 1.4, {0, 1.75, 0}, 1.95, true};
+    const auto o = ShapeInstance::create(make_object(outer), 0);
+    const auto i = ShapeInstance::create(make_object(inner), 0);
+    ASSERT_TRUE(o && i);
+    EXPECT_TRUE(i->inside({0.5, 1.75, 0}));   // the solid's top cap, on the open end's plane
+    EXPECT_TRUE(i->inside({0.5, 0.0, 0}));    // its bottom cap likewise
+    EXPECT_FALSE(i->inside({1.45, 0.0, 0}));  // the rim between the radii stays
+    EXPECT_FALSE(o->inside({0.5, 1.75, 0}));
 }
 
 TEST(Primitives, TorusFourCrossingsAlongItsDiameter) {

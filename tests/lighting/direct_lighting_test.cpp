@@ -85,6 +85,22 @@ TEST(DirectLighting, SpotlightIsFullInsideRadiusDarkOutsideFalloffSmoothBetween)
     EXPECT_NEAR(radiance_at(scene, angle_x(30), 0.0), cos30 * t * t * (3 - 2 * t), 1e-9);
 }
 
+TEST(DirectLighting, ASpotlightWhoseFalloffIsBelowItsRadiusLightsTheWholeRadius) {
+    // POV-Ray compat: the ramp applies only beyond radius, so `radius 30 falloff 4` is full (cos^tightness) up to
+    // 30 degrees and dark beyond, not dark beyond 4 degrees (a user's scene).
+    scene::Scene scene = floor_scene();
+    scene::Light l = point_light({0, 1, 0});
+    l.type = scene::Light::Type::Spot;
+    l.point_at = {0, 0, 0};
+    l.radius = 30;
+    l.falloff = 4;
+    scene.lights.push_back(l);
+    auto angle_x = [](double deg) { return std::tan(deg * std::numbers::pi / 180.0); };
+    const double cos20 = std::cos(20 * std::numbers::pi / 180);
+    EXPECT_NEAR(radiance_at(scene, angle_x(20), 0.0), cos20, 1e-9);
+    EXPECT_EQ(radiance_at(scene, angle_x(35), 0.0), 0.0);
+}
+
 TEST(DirectLighting, ParallelLightHasOneDirectionEverywhere) {
     scene::Scene scene = floor_scene();
     scene::Light l = point_light({0, 10, -10});

@@ -190,6 +190,23 @@ TEST(Color, ASecondRgbKeywordStartsTheNextColourOfAList) {
     }
 }
 
+TEST(Color, AMandelWithAnExponentAboveTwoTakesTheGreyRamp) {
+    // POV-Ray compat: mandel's own default map (black, then cyan, yellow, magenta near 0) is for exponent 2 only;
+    // with exponent 3 to 33 it is another pattern type in POV-Ray 3.7, which takes the grey ramp.
+    const Scene s = parse_ok("sphere { 0, 1 pigment { mandel 20 } }\nsphere { 0, 1 pigment { mandel 20 exponent 2 } }\n"
+                             "sphere { 0, 1 pigment { mandel 20 exponent 6 } }\n"
+                             "sphere { 0, 1 pigment { julia <0.3, 0.5>, 20 exponent 3 } }");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].texture.pigment.color_map.size(), 5u);
+    EXPECT_EQ(s.objects[1].texture.pigment.color_map.size(), 5u);
+    for (int i : {2, 3}) {
+        const auto& map = s.objects[i].texture.pigment.color_map;
+        ASSERT_EQ(map.size(), 2u) << i;
+        expect_color(map[0].color, 0, 0, 0, 0, 0);
+        expect_color(map[1].color, 1, 1, 1, 0, 0);
+    }
+}
+
 TEST(Color, DeclaredColorMapsAndLayeredTexturesAreKept) {
     const Scene s = parse_ok(
         "#declare CM = color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }\n"

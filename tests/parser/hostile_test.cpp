@@ -116,6 +116,25 @@ TEST_F(ReadConfinement, ImagesInTheSceneFolderReachTheReader) {
     EXPECT_EQ(first_error(r), "cannot read image file '" + m_images_read[0].string() + "': test reader");
 }
 
+TEST_F(ReadConfinement, APermittedFolderAllowsTheParentsFilesByTheirRealLocationAndDepth) {
+    // A povray.conf entry `read* = DIR` permits DIR and its subfolders, `read = DIR` DIR's own files only.
+    fs::create_directories(m_dir / "outside" / "deeper");
+    std::ofstream(m_dir / "outside" / "deeper" / "deep.inc") << "#declare Deep = 7;\n";
+    ParseOptions o = options();
+    o.permitted_reads.push_back({m_dir / "outside", false});
+    EXPECT_TRUE(parse("#include \"../outside/secret.inc\"\n#if (Secret != 42) #error \"\" #end\n", o).ok());
+    EXPECT_EQ(first_error(parse("#include \"../outside/deeper/deep.inc\"\n", o)),
+              "reading '" + (m_dir / "outside" / "deeper" / "deep.inc").string() + "' (include file) " + kRefused);
+    o.permitted_reads = {{m_dir, true}};
+    EXPECT_TRUE(parse("#include \"../outside/deeper/deep.inc\"\n#if (Deep != 7) #error \"\" #end\n", o).ok());
+    // A link inside a permitted folder is judged by where it leads, as in the scene's own folder.
+    std::error_code ec;
+    fs::create_symlink("/etc/passwd", m_dir / "outside" / "link.inc", ec);
+    if (ec) return;
+    EXPECT_EQ(first_error(parse("#include \"../outside/link.inc\"\n", o)),
+              "reading '/etc/passwd' (include file) " + kRefused);
+}
+
 TEST_F(ReadConfinement, ABinaryIncludeIsAnErrorWithAShortEscapedExcerpt) {
     std::string png = "\x89PNG\r\n\x1a\n";
     png += std::string(4000, '\0');

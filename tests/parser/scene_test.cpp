@@ -89,6 +89,17 @@ TEST(Camera, Orthographic) {
     expect_vec(s.camera.up, {0, 3, 0});
 }
 
+TEST(Camera, OrthographicWithoutLookAtIsSizedFromTheDefaultLookAt) {
+    // POV-Ray's default look_at is <0, 0, 1>, not one unit ahead of the location: its distance sizes the view.
+    Scene s = parse_ok("camera { orthographic location <3, 4, -10> }");
+    const double k = std::sqrt(3.0 * 3.0 + 4.0 * 4.0 + 11.0 * 11.0);
+    expect_vec(s.camera.right, {1.33 * k, 0, 0}, 1e-9);
+    expect_vec(s.camera.up, {0, k, 0}, 1e-9);
+    expect_vec(s.camera.direction, {0, 0, 1});
+    s = parse_ok("camera { orthographic location <0, 0, 1> }");  // at the default look_at: unscaled
+    expect_vec(s.camera.right, {1.33, 0, 0});
+}
+
 TEST(Camera, DeclaredCamera) {
     const Scene s = parse_ok("#declare Cam = camera { location <0, 0, -5> }\ncamera { Cam look_at <0, 0, 0> }");
     expect_vec(s.camera.location, {0, 0, -5});
