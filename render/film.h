@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "render/image_header.h"
 
 namespace wardray::render {
 
@@ -64,14 +65,16 @@ void remove_partial_output_on_signal();
 /// On failure returns nothing and sets `error`. With `stored`, the values are left as the file stores them
 /// (8- and 16-bit ones scaled to [0, 1]) and `*stored` says whether they are encoded (integer) values. `*alpha`
 /// says whether the file has an alpha channel (not read); `*grey` whether it has one colour channel and `*bits16`
-/// whether it stores 16-bit values.
+/// whether it stores 16-bit values. A file whose header claims more than `max_pixels` pixels is refused before
+/// anything is allocated (render/image_header.h).
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
-                               bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr);
+                               bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr,
+                               std::uint64_t max_pixels = kAnyPixelCount);
 /// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
 /// libjpeg, giving the same values).
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
                                          bool* stored = nullptr, bool* alpha = nullptr, bool* grey = nullptr,
-                                         bool* bits16 = nullptr);
+                                         bool* bits16 = nullptr, std::uint64_t max_pixels = kAnyPixelCount);
 
 /// sRGB transfer function, linear to encoded, for one channel in [0, 1].
 double srgb_encode(double linear);
