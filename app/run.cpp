@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstdio>
 #include <fstream>
@@ -51,6 +52,9 @@ std::optional<fs::path> find_default_scene(const std::string& argv0) {
     return std::nullopt;
 }
 
+// --max-memory's default, in MB.
+constexpr std::uint64_t kDefaultMaxMemoryMb = 1024;
+
 // What the parser is told: include folders, declares, file access, guard rails, and the hooks it calls back.
 parser::ParseOptions parse_options_for(const Options& options, const parser::ParseOptions::FrameClock& clock) {
     parser::ParseOptions parse_options;
@@ -68,12 +72,15 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     }
     parse_options.write_paths = options.write_paths;
     // image_map files through the render layer's reader (OpenImageIO, loaded only when a scene has one).
-    parse_options.read_image = [](const fs::path& file, bool& encoded, std::string& error)
+    // An image file counts against the parse's memory budget: one whose header claims more pixels than fit in it
+    // (about 16 bytes each while it is read) is refused before anything is allocated.
+    const std::uint64_t max_pixels = (options.max_memory.value_or(kDefaultMaxMemoryMb) << 20) / 16;
+    parse_options.read_image = [max_pixels](const fs::path& file, bool& encoded, std::string& error)
         -> std::shared_ptr<const scene::ImageData> {
         bool alpha = false;
         std::vector<float> alpha_values;
         const std::optional<render::Film> film =
-            render::read_image(file, error, &encoded, &alpha, nullptr, nullptr, &alpha_values);
+            render::read_image(file, error, &encoded, &alpha, nullptr, nullptr, &alpha_values, max_pixels);
         if (!film) return nullptr;
         auto image = std::make_shared<scene::ImageData>();
         image->has_alpha = alpha;
@@ -100,8 +107,8 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         }
         return image;
     };
-    parse_options.read_height_grid = [](const fs::path& file, std::string& error, std::string& unsupported) {
-        return render::read_height_grid(file, error, unsupported);
+    parse_options.read_height_grid = [max_pixels](const fs::path& file, std::string& error, std::string& unsupported) {
+        return render::read_height_grid(file, error, unsupported, max_pixels);
     };
     if (options.allow_file_writes) parse_options.file_writes = parser::ParseOptions::FileWrites::Allow;
     if (options.max_loop_iterations) parse_options.max_loop_iterations = *options.max_loop_iterations;
@@ -114,7 +121,7 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     // within a second or two and under 1 GB; the switches raise them for scenes that really are that large. A
     // user's city of 4,000 domed towers holds 92,000 objects (108,000 counted with its CSG children).
     parse_options.max_objects = options.max_objects.value_or(250'000);
-    parse_options.max_memory_bytes = static_cast<std::size_t>(options.max_memory.value_or(1024)) << 20;
+    parse_options.max_memory_bytes = static_cast<std::size_t>(options.max_memory.value_or(kDefaultMaxMemoryMb)) << 20;
     // --check evaluates every declaration, so it also reports mistakes in declarations nothing uses.
     parse_options.defer_library_declarations = !options.check_only;
     static const geometry::ObjectQuery object_query;  // trace(), inside(), min_extent(), max_extent() while parsing

@@ -22,6 +22,9 @@ Value Evaluator::parse_array_declaration(const Token& kw) {
         total *= array->dims.back();
     }
     if (array->dims.empty()) fail(kw, "expected '[' after 'array'");
+    // A large array is checked against the memory budget before it is allocated: a macro recursion holding
+    // one at each level would otherwise take gigabytes between two of the token stream's checks.
+    if (total >= 4096) check_memory(kw, total * sizeof(Value));
     array->elements.resize(total);
     if (is_punct(peek_expr(), "{")) parse_array_initializer(*array, 0, 0, kw);
     return array;

@@ -39,8 +39,8 @@ void SourceStream::count_copies(const Token& at, std::size_t n) {
     count_objects(at, n);
 }
 
-void SourceStream::check_memory(const Token& at) {
-    const std::size_t now = resident_bytes();
+void SourceStream::check_memory(const Token& at, std::size_t about_to_take) {
+    const std::size_t now = resident_bytes() + about_to_take;
     if (now <= m_resident_at_start || now - m_resident_at_start <= m_options.max_memory_bytes) return;
     report(make_diagnostic(Severity::Error, at,
                            "the parse took more than the limit of " +

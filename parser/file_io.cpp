@@ -80,6 +80,20 @@ void Preprocessor::assign_existing_or_global(const std::string& name, Value v) {
     declare(name, std::move(v), false);
 }
 
+fs::path Preprocessor::scene_relative(const fs::path& requested) const {
+    return requested.is_absolute() ? requested : fs::path(m_files.front()->path).parent_path() / requested;
+}
+
+void Preprocessor::require_writable(const Token& at, const fs::path& target) {
+    const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
+    bool allowed = is_within(target, scene_folder.empty() ? "." : scene_folder);
+    for (const auto& p : m_options.write_paths) allowed = allowed || is_within(target, p);
+    if (!allowed)
+        fail(at, "writing '" + resolved(target).string() +
+                     "' is not allowed: files are written only inside the scene's folder and the folders given as "
+                     "write paths (--write-path DIR)");
+}
+
 void Preprocessor::directive_file_io(const Token& tok) {
     const TokenText& name = tok.text;
     const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
@@ -139,12 +153,7 @@ void Preprocessor::directive_file_io(const Token& tok) {
             using Writes = ParseOptions::FileWrites;
             if (m_options.file_writes == Writes::Refuse)
                 fail(name_tok, "writing '" + resolved(target).string() + "' is not allowed: writing files is off");
-            bool allowed = is_within(target, scene_folder.empty() ? "." : scene_folder);
-            for (const auto& p : m_options.write_paths) allowed = allowed || is_within(target, p);
-            if (!allowed)
-                fail(name_tok, "writing '" + resolved(target).string() +
-                                   "' is not allowed: files are written only inside the scene's folder and the "
-                                   "folders given as write paths");
+            require_writable(name_tok, target);
             file->writing = true;
             file->path = target.string();
             if (m_options.file_writes == Writes::Discard) {

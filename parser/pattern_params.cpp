@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include "core/constants.h"
 #include "parser/parser.h"
@@ -256,15 +257,10 @@ void Parser::check_black_hole(const Token& at, Warp& w) {
 namespace wardray::parser {
 
 std::shared_ptr<const DensityFile> Parser::read_density_file(const Token& at, const std::string& name) {
-    std::filesystem::path found;
-    for (const SearchCandidate& candidate : search_candidates(std::filesystem::path(name), "")) {
-        std::error_code ec;
-        if (std::filesystem::is_regular_file(candidate.path, ec)) {
-            found = candidate.path;
-            break;
-        }
-    }
-    if (found.empty()) fail(at, "Cannot read media density file.");
+    // Found like an include file, and only inside the folders the scene may read (parser/read_access.h).
+    const std::optional<std::filesystem::path> where = find_readable(at, std::filesystem::path(name), "", "density file");
+    if (!where) fail(at, "Cannot read media density file.");
+    const std::filesystem::path found = *where;
     if (auto it = m_density_files.find(found.string()); it != m_density_files.end()) return it->second;
     // Parses alive at the same time share one copy of a file, so their scenes compare equal (patterns compare
     // density files by identity).

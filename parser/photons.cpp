@@ -139,8 +139,12 @@ void SceneReader::parse_photons(const Token& kw, PhotonSettings& ph) {
                 warn(t, ph.load == load ? "Filename already given, using new name"
                                         : std::string("Cannot both load and save photon map. Now switching to ") +
                                               (load ? "load" : "save") + " mode.");
+            const Token name_tok = peek();
             ph.file = parse_string();
             ph.load = load;
+            // Not read or written yet, but confined already, as every file a scene names.
+            if (load) require_readable(name_tok, scene_relative(ph.file), "photons load_file");
+            else require_writable(name_tok, scene_relative(ph.file));
             warn_unsupported(t, "photons " + w);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);

@@ -56,6 +56,11 @@ protected:
     void directive_macro(const Token& tok);
     /// #fopen, #read, #write, #fclose (file_io.cpp), confined to the folders ParseOptions allows.
     void directive_file_io(const Token& tok);
+    /// `requested` as the scene names a file to read or write: a relative name is taken from the scene's folder.
+    std::filesystem::path scene_relative(const std::filesystem::path& requested) const;
+    /// Fails at `at` when `target` (a file the scene would write) lies outside the scene's folder and the write
+    /// paths; the one check #fopen write/append and the save_file names of photons and radiosity go through.
+    void require_writable(const Token& at, const std::filesystem::path& target);
     /// Sets an identifier as #read does: an existing one keeps its scope, a new one is global.
     void assign_existing_or_global(const std::string& name, Value v);
     /// Skips raw tokens of the current file until a directive in `stops` at nesting `depth` 0; returns it

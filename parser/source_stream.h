@@ -130,8 +130,9 @@ protected:
     /// ParseOptions::max_objects copied in all, an error there ends the parse (a growing object copied in a loop).
     void count_copies(const Token& at, std::size_t n);
     /// Past ParseOptions::max_memory_bytes of growth since the parse began, an error at `at` ends the parse.
-    /// Reads the resident size, so callers ask every few thousand tokens.
-    void check_memory(const Token& at);
+    /// Reads the resident size, so callers ask every few thousand tokens, or before a large allocation:
+    /// `about_to_take` bytes are counted as if already taken, so a single huge request fails before it is made.
+    void check_memory(const Token& at, std::size_t about_to_take = 0);
 
     /// The deepest nesting of blocks and expressions the descent follows.
     static constexpr std::size_t k_max_nesting = 400;

@@ -313,7 +313,11 @@ void SceneReader::read_assumed_gamma(SceneReader& r, GlobalSettings& g, const To
 
 void SceneReader::radiosity_file(SceneReader& r, RadiositySettings&, const Token& item) {
     r.warn_unsupported(item, "radiosity " + item.text);
-    r.parse_string();
+    const Token name_tok = r.peek();
+    const std::string name = r.parse_string();
+    // Not read or written, but confined already, as every file a scene names.
+    if (item.text == "load_file") r.require_readable(name_tok, r.scene_relative(name), "radiosity load_file");
+    else r.require_writable(name_tok, r.scene_relative(name));
 }
 
 CameraSpec SceneReader::parse_camera_body(const Token& kw) {

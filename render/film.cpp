@@ -48,7 +48,7 @@ public:
 
 // The OpenImageIO reader module's entry points (render/oiio_reader_module.cpp).
 struct OiioReader {
-    int (*read)(const char*, int*, int*, int*, float**, float**, char*, std::size_t) = nullptr;
+    int (*read)(const char*, unsigned long long, int*, int*, int*, float**, float**, char*, std::size_t) = nullptr;
     void (*release)(float*) = nullptr;
 };
 
@@ -68,7 +68,7 @@ const OiioReader* oiio_reader(std::string& error) {
                 tried += std::string(tried.empty() ? "" : "; ") + ::dlerror();
                 continue;
             }
-            reader.read = reinterpret_cast<decltype(reader.read)>(::dlsym(handle, "wardray_oiio_read_straight"));
+            reader.read = reinterpret_cast<decltype(reader.read)>(::dlsym(handle, "wardray_oiio_read_bounded"));
             reader.release = reinterpret_cast<decltype(reader.release)>(::dlsym(handle, "wardray_oiio_free"));
             if (reader.read && reader.release) return;
             tried += "; " + module.string() + " lacks the reader entry points";
@@ -174,14 +174,18 @@ std::optional<std::string> write_image(const Film& film, const std::filesystem::
 }
 
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored, bool* alpha,
-                               bool* grey, bool* bits16, std::vector<float>* alpha_values) {
+                               bool* grey, bool* bits16, std::vector<float>* alpha_values, std::uint64_t max_pixels) {
+    if (const auto oversized = oversized_image(path, max_pixels)) {
+        error = *oversized;
+        return std::nullopt;
+    }
     // Opaque PNGs and JPEGs (most image maps) through libpng and libjpeg; the rest, and every read that asks
     // whether the file is grey or 16-bit (height fields), through OpenImageIO, loaded on first use.
-    if (grey || bits16) return read_image_with_oiio(path, error, stored, alpha, grey, bits16, alpha_values);
+    if (grey || bits16) return read_image_with_oiio(path, error, stored, alpha, grey, bits16, alpha_values, max_pixels);
     int width = 0, height = 0;
     std::vector<float> pixels;
     if (!read_png_rgb(path, width, height, pixels) && !read_jpeg_rgb(path, width, height, pixels))
-        return read_image_with_oiio(path, error, stored, alpha, nullptr, nullptr, alpha_values);
+        return read_image_with_oiio(path, error, stored, alpha, nullptr, nullptr, alpha_values, max_pixels);
     Film film(width, height);
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
@@ -198,14 +202,16 @@ std::optional<Film> read_image(const std::filesystem::path& path, std::string& e
 }
 
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error, bool* stored,
-                                         bool* alpha, bool* grey, bool* bits16, std::vector<float>* alpha_values) {
+                                         bool* alpha, bool* grey, bool* bits16, std::vector<float>* alpha_values,
+                                         std::uint64_t max_pixels) {
     const OiioReader* reader = oiio_reader(error);
     if (!reader) return std::nullopt;
     int width = 0, height = 0, encoded = 0;
     float* pixels = nullptr;
     float* alpha_channel = nullptr;
     char message[512] = {0};
-    if (!reader->read(path.c_str(), &width, &height, &encoded, &pixels, &alpha_channel, message, sizeof(message))) {
+    if (!reader->read(path.c_str(), max_pixels, &width, &height, &encoded, &pixels, &alpha_channel, message,
+                      sizeof(message))) {
         error = "cannot read '" + path.string() + "': " + message;
         return std::nullopt;
     }

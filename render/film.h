@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "render/image_header.h"
 
 namespace wardray::render {
 
@@ -65,15 +66,17 @@ void remove_partial_output_on_signal();
 /// (8- and 16-bit ones scaled to [0, 1]) and `*stored` says whether they are encoded (integer) values. `*alpha`
 /// says whether the file has an alpha channel; `*grey` whether it has one colour channel and `*bits16` whether it
 /// stores 16-bit values. With an alpha channel the colours are straight (not premultiplied) and `alpha_values`
-/// receives each pixel's alpha, rows from the top.
+/// receives each pixel's alpha, rows from the top. A file whose header claims more than `max_pixels` pixels is
+/// refused before anything is allocated (render/image_header.h).
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
                                bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr,
-                               std::vector<float>* alpha_values = nullptr);
+                               std::vector<float>* alpha_values = nullptr, std::uint64_t max_pixels = kAnyPixelCount);
 /// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
 /// libjpeg, giving the same values).
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
                                          bool* stored = nullptr, bool* alpha = nullptr, bool* grey = nullptr,
-                                         bool* bits16 = nullptr, std::vector<float>* alpha_values = nullptr);
+                                         bool* bits16 = nullptr, std::vector<float>* alpha_values = nullptr,
+                                         std::uint64_t max_pixels = kAnyPixelCount);
 
 /// sRGB transfer function, linear to encoded, for one channel in [0, 1].
 double srgb_encode(double linear);

@@ -128,7 +128,11 @@ std::shared_ptr<scene::HeightGrid> read_png(const std::filesystem::path& path, s
 }  // namespace
 
 std::shared_ptr<const scene::HeightGrid> read_height_grid(const std::filesystem::path& path, std::string& error,
-                                                          std::string& unsupported) {
+                                                          std::string& unsupported, std::uint64_t max_pixels) {
+    if (const auto oversized = oversized_image(path, max_pixels)) {
+        error = *oversized;
+        return nullptr;
+    }
     const std::string head = file_head(path, 18);
     if (head.size() >= 8 && head.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return read_png(path, error);
     if (head.size() >= 4 && head.compare(0, 4, "GIF8") == 0) {
@@ -151,7 +155,7 @@ std::shared_ptr<const scene::HeightGrid> read_height_grid(const std::filesystem:
         return nullptr;
     }
     bool stored = false, alpha = false, grey = false, bits16 = false;
-    const std::optional<Film> film = read_image(path, error, &stored, &alpha, &grey, &bits16);
+    const std::optional<Film> film = read_image(path, error, &stored, &alpha, &grey, &bits16, nullptr, max_pixels);
     if (!film) return nullptr;
     auto grid = std::make_shared<scene::HeightGrid>();
     grid->width = film->width();

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "render/image_header.h"
 #include "scene/shapes.h"
 
 namespace wardray::render {
@@ -15,7 +16,9 @@ namespace wardray::render {
 /// parser recombines) by its own decoder, the rest through OpenImageIO. Nothing, with `error` set, for an
 /// unreadable file; `unsupported` names a kind of file read but not as POV-Ray reads it (colour-mapped Targa),
 /// then nothing is returned.
+/// A file whose header claims more than `max_pixels` pixels is refused before anything is allocated.
 std::shared_ptr<const scene::HeightGrid> read_height_grid(const std::filesystem::path& path, std::string& error,
-                                                          std::string& unsupported);
+                                                          std::string& unsupported,
+                                                          std::uint64_t max_pixels = kAnyPixelCount);
 
 }  // namespace wardray::render

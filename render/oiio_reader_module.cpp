@@ -2,10 +2,13 @@
 // read an image (wardray diff, image maps, tests) pay for it. C entry points keep the boundary ABI-stable.
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
+
+#include "render/image_header.h"
 
 namespace {
 
@@ -21,9 +24,11 @@ void set_error(char* error, std::size_t size, const std::string& message) {
 /// `*encoded` has bit 0 set when the file stores 8- or 16-bit values (to be decoded from sRGB) and bit 1 when it has
 /// an alpha channel, bit 2 when it is grey (one channel, or grey and alpha) and bit 3 when it stores 16-bit values.
 /// With an alpha channel the colours are straight, as the file stores them (OpenImageIO would premultiply them),
-/// and `*alpha` (malloc'd, else null) holds each pixel's alpha. Returns 1 on success.
-extern "C" int wardray_oiio_read_straight(const char* path, int* width, int* height, int* encoded, float** pixels,
-                                 float** alpha, char* error, std::size_t error_size) {
+/// and `*alpha` (malloc'd, else null) holds each pixel's alpha. A file of more than `max_pixels` pixels is refused
+/// before its pixels are allocated. Returns 1 on success.
+extern "C" int wardray_oiio_read_bounded(const char* path, unsigned long long max_pixels, int* width, int* height,
+                                          int* encoded, float** pixels, float** alpha, char* error,
+                                          std::size_t error_size) {
     try {
         *alpha = nullptr;
         OIIO::ImageSpec config;
@@ -35,6 +40,15 @@ extern "C" int wardray_oiio_read_straight(const char* path, int* width, int* hei
         }
         const OIIO::ImageSpec& spec = in->spec();
         const int channels = spec.nchannels;
+        const auto pixel_count = static_cast<unsigned long long>(std::max(spec.width, 0)) *
+                                 static_cast<unsigned long long>(std::max(spec.height, 0));
+        if (pixel_count > max_pixels || spec.width <= 0 || spec.height <= 0 || channels <= 0) {
+            set_error(error, error_size,
+                      pixel_count > max_pixels
+                          ? wardray::render::oversized_message(spec.width, spec.height, max_pixels)
+                          : "the file has no pixels");
+            return 0;
+        }
         std::vector<float> all(static_cast<std::size_t>(spec.width) * spec.height * channels);
         if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, all.data())) {
             set_error(error, error_size, in->geterror());

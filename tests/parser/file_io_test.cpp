@@ -98,7 +98,7 @@ TEST_F(FileIo, WritingOutsideTheSceneFolderIsRefused) {
     ASSERT_FALSE(r.ok());
     EXPECT_EQ(r.diagnostics[0].message, "writing '" + (m_dir / "escape.txt").string() +
                                             "' is not allowed: files are written only inside the scene's folder "
-                                            "and the folders given as write paths");
+                                            "and the folders given as write paths (--write-path DIR)");
     EXPECT_FALSE(fs::exists(m_dir / "escape.txt"));
     r = parse("#fopen Out \"/tmp/wardray_escape.txt\" write\n");
     EXPECT_FALSE(r.ok());

@@ -84,7 +84,40 @@ TEST_F(ReadConfinement, AbsoluteSystemFilesAreRefusedForEveryWayOfReading) {
               refused + "image file) " + kRefused);
     EXPECT_EQ(first_error(parse("height_field { png \"/etc/passwd\" }\n", options())),
               refused + "height_field image) " + kRefused);
+    EXPECT_EQ(first_error(parse("plane { z, 1 normal { bump_map { png \"/etc/passwd\" } } }\n", options())),
+              refused + "image file) " + kRefused);
+    EXPECT_EQ(first_error(parse("plane { z, 1 pigment { image_pattern { png \"/etc/passwd\" } } }\n", options())),
+              refused + "image file) " + kRefused);
+    EXPECT_EQ(first_error(parse("plane { z, 1 texture { material_map { png \"/etc/passwd\" texture { pigment "
+                                "{ rgb 1 } } } } }\n",
+                                options())),
+              refused + "image file) " + kRefused);
+    EXPECT_EQ(first_error(parse("box { -1, 1 hollow interior { media { density { density_file df3 "
+                                "\"/etc/passwd\" } } } }\n",
+                                options())),
+              refused + "density file) " + kRefused);
+    // Photon and radiosity files are not read or written yet; their names are confined already.
+    EXPECT_EQ(first_error(parse("global_settings { photons { count 10 load_file \"/etc/passwd\" } }\n", options())),
+              refused + "photons load_file) " + kRefused);
+    EXPECT_EQ(first_error(parse("global_settings { radiosity { load_file \"/etc/passwd\" } }\n", options())),
+              refused + "radiosity load_file) " + kRefused);
     EXPECT_TRUE(m_images_read.empty());
+}
+
+TEST_F(ReadConfinement, PhotonAndRadiositySaveFilesAreConfinedLikeWrites) {
+    const std::string refused = "' is not allowed: files are written only inside the scene's folder and the folders "
+                                "given as write paths (--write-path DIR)";
+    EXPECT_EQ(first_error(parse("global_settings { photons { count 10 save_file \"/etc/w.ph\" } }\n", options())),
+              "writing '/etc/w.ph" + refused);
+    EXPECT_EQ(first_error(parse("global_settings { radiosity { save_file \"/usr/w.rad\" } }\n", options())),
+              "writing '/usr/w.rad" + refused);
+    // In the scene's folder they are accepted (with the warning that they are not written).
+    const ParseResult ok = parse("global_settings { photons { count 10 save_file \"w.ph\" } radiosity { save_file "
+                                 "\"w.rad\" } }\n",
+                                 options());
+    EXPECT_TRUE(ok.ok()) << test::all_diagnostics(ok);
+    EXPECT_FALSE(fs::exists(m_dir / "scene" / "w.ph"));
+    EXPECT_FALSE(fs::exists(m_dir / "scene" / "w.rad"));
 }
 
 TEST_F(ReadConfinement, ASymbolicLinkInTheSceneFolderIsJudgedByWhereItLeads) {

@@ -267,6 +267,25 @@ TEST(Cli, GuardRailSwitchesRaiseTheParserLimits) {
     EXPECT_EQ(wardray("loop.pov --check --max-loop-iterations 0", dir).exit_status, 2);
 }
 
+// +RFI reads the file the user names only from the folders a scene may read (and the current folder, where +RFO
+// writes): a system file is refused before anything is read or rendered.
+TEST(Cli, RadiosityFileOutsideThePermittedFoldersIsRefused) {
+    const fs::path dir = work_dir("rfi_outside");
+    write_file(dir / "small.pov", kSmallScene);
+    const auto r = wardray("small.pov +W16 +H12 -A Declare=Extra=0 +RFI +RF/etc/passwd -o out.png", dir);
+    EXPECT_EQ(r.exit_status, 1) << r.output;
+    EXPECT_NE(r.output.find("error: reading '/etc/passwd' (+RFI radiosity file) is not allowed: files are read "
+                            "only from the scene's folder"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out.png"));
+    // A cache file in the current folder is read (here a damaged one: a warning, and the render goes on).
+    write_file(dir / "cache.rca", "not a cache");
+    const auto inside = wardray("small.pov +W16 +H12 -A Declare=Extra=0 +RFI +RFcache.rca -o out.png", dir);
+    EXPECT_EQ(inside.exit_status, 0) << inside.output;
+    EXPECT_EQ(inside.output.find("is not allowed"), std::string::npos) << inside.output;
+}
+
 TEST(Cli, DiffReportsMetricsAndWritesADifferenceImage) {
     const fs::path dir = work_dir("diff");
     write_file(dir / "small.pov", kSmallScene);

@@ -1,6 +1,7 @@
 // Tests of the libpng and libjpeg readers: every opaque kind of PNG, and grey and colour JPEGs, give exactly
 // what OpenImageIO gives, and files they leave alone (an alpha channel) still read through OpenImageIO.
 #include "render/film.h"
+#include "render/image_header.h"
 #include "render/jpeg_reader.h"
 #include "render/png_reader.h"
 
@@ -188,6 +189,51 @@ TEST(JpegReader, GreyAndColourReadAsOpenImageIOReadsThem) {
     int w = 0, h = 0;
     std::vector<float> rgb;
     EXPECT_FALSE(read_jpeg_rgb(write("rgb8-as-jpeg.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb));
+}
+
+// A few bytes can claim billions of pixels: each header's claim is read before any pixel, and past the limit the
+// file is refused with its size, before anything is allocated (through libpng, libjpeg and OpenImageIO alike).
+TEST(ImageHeader, ClaimedSizesAreReadAndOversizedFilesRefused) {
+    const Bytes png = make_png(3, 2, 8, 2, rows_of(3, 2, 9));
+    ASSERT_TRUE(claimed_image_size(write("small.png", png)));
+    EXPECT_EQ(claimed_image_size(write("small.png", png))->width, 3u);
+    EXPECT_EQ(claimed_image_size(write("small.png", png))->height, 2u);
+    Bytes huge = png;
+    huge[16] = huge[17] = 0, huge[18] = 0xEA, huge[19] = 0x60;  // width 60000 (the CRC is not checked here)
+    huge[20] = huge[21] = 0, huge[22] = 0xEA, huge[23] = 0x60;
+    const fs::path huge_png = write("huge.png", huge);
+    std::string error;
+    EXPECT_FALSE(read_image(huge_png, error, nullptr, nullptr, nullptr, nullptr, 1u << 20));
+    EXPECT_EQ(error, "it claims 60000 x 60000 pixels, more than the 1048576 the memory limit allows (16 bytes each); "
+                     "raise it with --max-memory MB");
+    EXPECT_TRUE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, 6));
+    EXPECT_FALSE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, 5));
+    // GIF: the largest of the screen and the image descriptors.
+    Bytes gif = {'G', 'I', 'F', '8', '9', 'a', 4, 0, 4, 0, 0, 0, 0};
+    gif.insert(gif.end(), {',', 0, 0, 0, 0, 0x30, 0x75, 0x10, 0x27, 0, 2, 1, 0x44, 0, ';'});
+    const auto g = claimed_image_size(write("big.gif", gif));
+    ASSERT_TRUE(g);
+    EXPECT_EQ(g->width, 30000u);
+    EXPECT_EQ(g->height, 10000u);
+    // JPEG: the frame header after an application segment.
+    const Bytes jpeg = {0xFF, 0xD8, 0xFF, 0xE0, 0, 4, 0, 0, 0xFF, 0xC0, 0, 11, 8, 0x01, 0x02, 0x03, 0x04, 1, 1, 0x11, 0};
+    const auto j = claimed_image_size(write("big.jpg", jpeg));
+    ASSERT_TRUE(j);
+    EXPECT_EQ(j->width, 0x0304u);
+    EXPECT_EQ(j->height, 0x0102u);
+    // PNM with a comment, and Targa by its extension.
+    const std::string ppm = "P6\n# made by hand\n70000 5\n255\n";
+    const auto p = claimed_image_size(write("big.ppm", Bytes(ppm.begin(), ppm.end())));
+    ASSERT_TRUE(p);
+    EXPECT_EQ(p->width, 70000u);
+    EXPECT_EQ(p->height, 5u);
+    Bytes tga(18, 0);
+    tga[2] = 2, tga[12] = 0xFF, tga[13] = 0xFF, tga[14] = 0x10, tga[15] = 0x00;
+    const auto t = claimed_image_size(write("big.tga", tga));
+    ASSERT_TRUE(t);
+    EXPECT_EQ(t->width, 65535u);
+    EXPECT_EQ(t->height, 16u);
+    EXPECT_FALSE(claimed_image_size(write("unknown.bin", Bytes{1, 2, 3})));
 }
 
 }  // namespace
