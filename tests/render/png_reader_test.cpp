@@ -203,11 +203,11 @@ TEST(ImageHeader, ClaimedSizesAreReadAndOversizedFilesRefused) {
     huge[20] = huge[21] = 0, huge[22] = 0xEA, huge[23] = 0x60;
     const fs::path huge_png = write("huge.png", huge);
     std::string error;
-    EXPECT_FALSE(read_image(huge_png, error, nullptr, nullptr, nullptr, nullptr, 1u << 20));
+    EXPECT_FALSE(read_image(huge_png, error, nullptr, nullptr, nullptr, nullptr, nullptr, 1u << 20));
     EXPECT_EQ(error, "it claims 60000 x 60000 pixels, more than the 1048576 the memory limit allows (16 bytes each); "
                      "raise it with --max-memory MB");
-    EXPECT_TRUE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, 6));
-    EXPECT_FALSE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, 5));
+    EXPECT_TRUE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, nullptr, 6));
+    EXPECT_FALSE(read_image(write("small.png", png), error, nullptr, nullptr, nullptr, nullptr, nullptr, 5));
     // GIF: the largest of the screen and the image descriptors.
     Bytes gif = {'G', 'I', 'F', '8', '9', 'a', 4, 0, 4, 0, 0, 0, 0};
     gif.insert(gif.end(), {',', 0, 0, 0, 0, 0x30, 0x75, 0x10, 0x27, 0, 2, 1, 0x44, 0, ';'});
