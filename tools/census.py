@@ -69,7 +69,7 @@ sys.path.insert(0, str(ROOT / "tools" / "compare"))
 import gimetrics  # noqa: E402
 import progress  # noqa: E402
 import renderers  # noqa: E402
-from povrewrite import RewriteError, find_blocks, mask_comments_and_strings  # noqa: E402
+from povrewrite import RewriteError, find_blocks, mask_comments_and_strings, rewrite_radiosity  # noqa: E402
 
 EXAMPLES = pathlib.Path("/usr/share/povray-3.7/scenes")
 SIZE = (120, 90)
@@ -78,6 +78,12 @@ TIMEOUT = 60  # seconds, each renderer
 MATCH_RRMSE, MATCH_BAD, SILENT_RRMSE = 0.01, 0.005, 0.02
 # Stochastic scenes (radiosity, jitter, crand) are compared at their own settings, one render each: the tolerance.
 STOCHASTIC_RRMSE = 0.05
+# A stochastic scene that does not match at its own settings is rendered again converged by both programs
+# (docs/metrics.md): POV-Ray's converged radiosity settings in its global radiosity blocks, and every pixel
+# supersampled 6x6 without jitter (crand, jittered area lights and media average over the 36 samples).
+CONVERGED_RADIOSITY = {"count": 1600, "error_bound": 0.1, "pretrace_end": 0.01, "nearest_count": 20}
+CONVERGED_AA = ("+A0.0", "+R6", "-J")
+CONVERGED_TIMEOUT = 900  # seconds, each renderer
 CATEGORIES = ("match", "differ-with-warning", "differ-silently", "differ-small", "blocked", "povray-fails")
 # Bumped when what is stored per scene changes, so old cache lines are not reused.
 RECORD_VERSION = 2
@@ -160,6 +166,54 @@ def stochastic_features(texts):
     return found
 
 
+def has_global_radiosity(text):
+    """Whether the text has a radiosity block (other than `importance` alone) inside a global_settings block."""
+    m = masked(text)
+    try:
+        for g_open, g_close in find_blocks(m, "global_settings"):
+            for open_at, close_at in find_blocks(m, "radiosity", g_open + 1, g_close):
+                if re.sub(r"\bimportance\b\s*[\d.]*", "", m[open_at + 1:close_at]).strip():
+                    return True
+    except RewriteError:
+        return False
+    return False
+
+
+def needs_supersampling(stochastic):
+    """Whether a scene's randomness is per sample (crand, jitter), which supersampling averages away; radiosity's
+    is in its cache, which the converged radiosity settings take care of."""
+    return any(f != "radiosity" for f in stochastic)
+
+
+def converged_options(cmd, stochastic):
+    """A render command with `-A` replaced by the converged supersampling where the scene needs it."""
+    if not needs_supersampling(stochastic):
+        return list(cmd)
+    return [x for a in cmd for x in (CONVERGED_AA if a == "-A" else (a,))]
+
+
+def converged_copy(files, work):
+    """Rewrites, in the scratch folder `work`, the global radiosity blocks of the scene's files (those directly in
+    the folder; subfolders are links to the originals) with CONVERGED_RADIOSITY. The names of the files rewritten."""
+    done = []
+    for name, text in files:
+        if "/" in name or not has_global_radiosity(text):
+            continue
+        new, _ = rewrite_radiosity(text, CONVERGED_RADIOSITY, marker="converged by tools/census.py")
+        (work / name).write_text(new)
+        done.append(name)
+    return done
+
+
+def converged_label(stochastic):
+    parts = []
+    if "radiosity" in stochastic:
+        parts.append(" ".join(f"{k} {v}" for k, v in CONVERGED_RADIOSITY.items()))
+    if needs_supersampling(stochastic):
+        parts.append(" ".join(CONVERGED_AA))
+    return ", ".join(parts)
+
+
 def gamma_facts(scene_text, texts):
     """(assumed_gamma values as written, the scene's first #version or None)."""
     gammas = []
@@ -237,17 +291,27 @@ def classify(rec):
     if ward["status"] != "ok":
         return "blocked", (ward.get("error") or ward["status"]) + (f"; {ini_note(rec['ini'])}" if rec.get("ini")
                                                                    else "")
-    m = rec["metrics"]
-    match_rrmse, match_bad, silent_rrmse = tolerance(rec.get("stochastic"))
+    m, stochastic = rec["metrics"], rec.get("stochastic")
+    conv, conv_note = rec.get("converged"), ""
+    if conv and conv.get("metrics"):
+        # Converged against converged: the deterministic tolerances apply.
+        m, stochastic = conv["metrics"], None
+        conv_note = (f"converged ({conv['settings']}): rRMSE {pct(m['rrmse'])}, bad {pct(m['bad'])}; at the "
+                     f"scene's own settings {pct(rec['metrics']['rrmse'])}")
+    elif conv:
+        conv_note = f"no converged comparison: {conv.get('error')}"
+    match_rrmse, match_bad, silent_rrmse = tolerance(stochastic)
     finite = m["non_finite_wardray"] == 0 and m["non_finite"] == 0
     if finite and m["rrmse"] <= match_rrmse and (match_bad is None or m["bad"] <= match_bad):
-        return "match", ""
+        return "match", conv_note
     features = ward.get("features", [])
     if features:
         return "differ-with-warning", "not rendered: " + ", ".join(features)
     reason = "; ".join(hints(rec)) or "no hint in the scene text"
     if rec.get("scene") in KNOWN_REASONS:
         reason = "known: " + KNOWN_REASONS[rec["scene"]] + "; " + reason
+    if conv_note:
+        reason = conv_note + "; " + reason
     if not finite or m["rrmse"] > silent_rrmse:
         return "differ-silently", reason
     return "differ-small", reason
@@ -487,7 +551,7 @@ class Manifest:
 
 class Census:
     def __init__(self, wardray, povray, results, examples=EXAMPLES, size=SIZE, timeout=TIMEOUT, corpus=None,
-                 work_root=None, memory_limit=None):
+                 work_root=None, memory_limit=None, converge=True):
         """`corpus`: a Manifest, or None for the example scenes below `examples`. With a corpus, renders run in
         copies of the scene's repository below `work_root` and are timed (wall, peak memory, parse time), and
         wardray's address space is bounded at `memory_limit` bytes (None: unbounded)."""
@@ -498,6 +562,7 @@ class Census:
         self.corpus = corpus
         self.timed = corpus is not None
         self.memory_limit = memory_limit
+        self.converge = converge  # stochastic scenes that differ at their settings are compared converged too
         self.work_root = pathlib.Path(work_root) if work_root else self.results / "work"
         self.runner = Runner()
         renderers.THREADS = 1  # the commands of tools/compare/renderers.py read this when they are built
@@ -549,6 +614,8 @@ class Census:
             common.update(corpus=self.corpus.row(scene).get("commit"), timed=True)
         pov = hashlib.sha256(json.dumps({**common, "povray": self.pov.version}, sort_keys=True).encode()).hexdigest()
         extra = {"memory_limit": self.memory_limit} if self.corpus else {}
+        if self.converge:
+            extra["converged"] = [CONVERGED_RADIOSITY, CONVERGED_AA, CONVERGED_TIMEOUT]
         rec = hashlib.sha256(json.dumps({**common, **extra, "povray_key": pov, "wardray": self.ward_digest},
                                         sort_keys=True).encode()).hexdigest()
         return pov, rec, files
@@ -574,14 +641,33 @@ class Census:
         meta.write_text(json.dumps(result, indent=1))
         return result, image
 
-    def _povray_once(self, scene, image, ini):
+    def povray_converged(self, scene, key, ini, stochastic, fresh):
+        """POV-Ray's converged render of a stochastic scene (see CONVERGED_RADIOSITY), cached like the others."""
+        tag = hashlib.sha256(json.dumps([CONVERGED_RADIOSITY, CONVERGED_AA, CONVERGED_TIMEOUT]).encode()
+                             ).hexdigest()[:8]
+        meta = self.results / "povray" / f"{key}-converged-{tag}.json"
+        image = meta.with_suffix(".hdr")
+        if not fresh and meta.is_file():
+            result = json.loads(meta.read_text())
+            if result["status"] != "ok" or image.is_file():
+                return result, image
+        result = self._povray_once(scene, image, ini, converged=stochastic)
+        meta.write_text(json.dumps(result, indent=1))
+        return result, image
+
+    def _povray_once(self, scene, image, ini, converged=()):
+        """`converged`: the scene's stochastic features, to render it converged (see CONVERGED_RADIOSITY)."""
         root, work = self.scratch(scene, ".povray")
         # In a corpus, the copy of the scene's folder: POV-Ray may not read the original.
         cmd = self.pov.command(scene.name, "census.hdr", self.size, work if self.corpus else scene.parent)
         if ini:
             # The .ini first, so the census's options after it win; one frame of its animation.
             cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
-        r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)
+        timeout = self.timeout
+        if converged:
+            converged_copy(scene_files(scene), work)
+            cmd, timeout = converged_options(cmd, converged), CONVERGED_TIMEOUT
+        r = self.runner.run(self.timed_command(cmd, root), work, timeout)
         output = r["stdout"] + r["stderr"]
         # An animation frame is written as census<frame number>.hdr.
         written = sorted(work.glob("census*.hdr"))
@@ -591,7 +677,7 @@ class Census:
         if self.timed:
             result["resources"] = {**read_time_file(root / "time.txt"), "parse": povray_parse_seconds(output)}
         if r["timed_out"]:
-            result.update(status="timeout", error=f"timed out after {self.timeout} s")
+            result.update(status="timeout", error=f"timed out after {timeout} s")
         elif r["rc"] != 0 or not (work / "census.hdr").is_file():
             result.update(status="error", error=povray_error(output) or
                           f"{exit_text(r['rc'])}{'' if r['rc'] else ', no image'}")
@@ -606,17 +692,21 @@ class Census:
         return [str(self.ward.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D",
                 f"+WT{renderers.THREADS}", *(f"Declare={d}" for d in declares)]
 
-    def wardray_render(self, scene, image, ini):
+    def wardray_render(self, scene, image, ini, converged=()):
         root, work = self.scratch(scene, ".wardray")
         cmd = self.wardray_command(scene.name, "census.hdr")
         if ini:
             # As POV-Ray got it: the .ini first, so the census's options after it win; one frame of its animation.
             cmd = [cmd[0], ini["file"], *cmd[1:], f"+SF{ini['frame']}", f"+EF{ini['frame']}"]
+        timeout = self.timeout
+        if converged:
+            converged_copy(scene_files(scene), work)
+            cmd, timeout = converged_options(cmd, converged), CONVERGED_TIMEOUT
         # The scratch copy lies below /tmp, which Debian's povray.conf lets both programs read (wardray's default
         # read permissions are that file's): users' scenes include `../common.inc`.
         if self.timed:
             cmd += ["--stats", str(root / "stats.json")]
-        r = self.runner.run(self.timed_command(cmd, root), work, self.timeout)
+        r = self.runner.run(self.timed_command(cmd, root), work, timeout)
         # An animation frame is written as census<frame number>.hdr.
         written = sorted(work.glob("census*.hdr"))
         if written and not (work / "census.hdr").exists():
@@ -632,7 +722,7 @@ class Census:
             if "signal" in result["resources"] and r["rc"] is not None:
                 result["exit"] = r["rc"] = -result["resources"]["signal"]  # /usr/bin/time's status is 128 + signal
         if r["timed_out"]:
-            result.update(status="timeout", error=f"timed out after {self.timeout} s")
+            result.update(status="timeout", error=f"timed out after {timeout} s")
         elif r["rc"] != 0:
             result.update(status="error", error=error or exit_text(r["rc"]))
         elif not (work / "census.hdr").is_file():
@@ -674,7 +764,34 @@ class Census:
             rec["metrics"] = compare(img, ref)
             write_png(images / "diff.png", difference8(img, ref))
         rec["category"], rec["reason"] = classify(rec)
+        if self.converge and rec["stochastic"] and rec["category"] in ("differ-silently", "differ-small"):
+            rec["converged"] = self.converged(scene, pov_key, rec["ini"], images, rec["stochastic"], fresh)
+            rec["category"], rec["reason"] = classify(rec)
         return rec
+
+    def converged(self, scene, pov_key, ini, images, stochastic, fresh):
+        """Both programs' converged renders of a stochastic scene, compared: {settings, povray, wardray, metrics}."""
+        out = {"settings": converged_label(stochastic), "metrics": None}
+        if "radiosity" in stochastic and not any(has_global_radiosity(t) for n, t in scene_files(scene)
+                                                 if "/" not in n):
+            out["error"] = "its radiosity block is not in a global_settings of the scene's folder"
+            return out
+        out["povray"], pov_image = self.povray_converged(scene, pov_key, ini, stochastic, fresh)
+        out["wardray"] = self.wardray_render(scene, images / "wardray-converged.hdr", ini, converged=stochastic)
+        for who in ("povray", "wardray"):
+            if out[who]["status"] != "ok":
+                out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
+                return out
+        ref = gimetrics.read_linear_rgb(pov_image)
+        img = gimetrics.read_linear_rgb(images / "wardray-converged.hdr")
+        if img.shape != ref.shape:
+            out["error"] = "converged images differ in size"
+            return out
+        out["metrics"] = compare(img, ref)
+        write_png(images / "povray-converged.png", srgb8(ref))
+        write_png(images / "wardray-converged.png", srgb8(img))
+        write_png(images / "diff-converged.png", difference8(img, ref))
+        return out
 
 
 def compare(img, ref):
@@ -776,13 +893,19 @@ def cell(text):
     return str(text).replace("|", "\\|").replace("\n", " ")
 
 
+def judged_metrics(rec):
+    """The figures a scene's category was decided on: the converged comparison where there is one."""
+    conv = rec.get("converged")
+    return conv["metrics"] if conv and conv.get("metrics") else rec["metrics"]
+
+
 def severity(rec):
     """Sort key, worst first: compared scenes by rRMSE (non-finite first), then blocked, then POV-Ray failures."""
     if rec["category"] == "povray-fails":
         return (2, 0.0, rec["scene"])
     if rec["metrics"] is None:
         return (1, 0.0, rec["scene"])
-    m = rec["metrics"]
+    m = judged_metrics(rec)
     r = m["rrmse"] if not math.isnan(m["rrmse"]) else math.inf
     return (0, -(math.inf if m["non_finite_wardray"] else r), rec["scene"])
 
@@ -1193,7 +1316,12 @@ def write_report(path, records, missing, info, extra=()):
         "the scene text and the files it includes from its folder) are rendered once at their own settings by "
         f"each program; their tolerance is rRMSE ≤ {pct(STOCHASTIC_RRMSE, 0)} for a match and for a silent "
         "difference, and the bad-pixel fraction is reported but not used (noise makes a per-pixel test "
-        "meaningless at the scenes' settings). They are not converged renders.",
+        "meaningless at the scenes' settings). One that does not match so is rendered again converged by both "
+        f"programs (`{converged_label(['radiosity', 'crand'])}`: POV-Ray's converged radiosity in the global "
+        "radiosity blocks of the scene's folder for scenes with radiosity, and every pixel supersampled without "
+        f"jitter for scenes with crand or jitter), each bounded at {CONVERGED_TIMEOUT} s, and judged on that comparison "
+        "with the tolerances of the other scenes; the tables then show the converged figures and the reason "
+        "says so.",
         "- Times are single whole-process wall-clock runs with two scenes running at once on a shared 2-core "
         "machine: indicative, not a benchmark.",
         "- Reasons are what can be found automatically: the features wardray reports as not rendered yet; for "
@@ -1240,7 +1368,7 @@ def write_report(path, records, missing, info, extra=()):
     lines.append("")
     lines += ["| scene | rRMSE | bad | stochastic | hints |", "|---|---:|---:|---|---|"]
     for r in silent:
-        lines.append(f"| {cell(r['scene'])} | {pct(r['metrics']['rrmse'])} | {pct(r['metrics']['bad'])} | "
+        lines.append(f"| {cell(r['scene'])} | {pct(judged_metrics(r)['rrmse'])} | {pct(judged_metrics(r)['bad'])} | "
                      f"{stochastic_cell(r)} | {cell(r['reason'])} |")
     lines.append("")
 
@@ -1265,7 +1393,7 @@ def write_report(path, records, missing, info, extra=()):
               "category | reason |",
               "|---|---|---|---:|---:|---:|---:|---:|---|---|---|"]
     for r in records:
-        m = r["metrics"] or {}
+        m = judged_metrics(r) or {}
         nf = "" if not m else str(m["non_finite_wardray"]) if not m["non_finite_povray"] else \
             f"{m['non_finite_wardray']} (POV-Ray {m['non_finite_povray']})"
         reason = r["reason"] if r["category"] != "differ-with-warning" else ""
@@ -1346,7 +1474,7 @@ class CensusProgress(progress.Progress):
 
 
 def summary(rec):
-    m = rec["metrics"]
+    m = judged_metrics(rec)
     figures = f" rRMSE {pct(m['rrmse'])} bad {pct(m['bad'])}" if m else ""
     return f"{rec['category']}{figures}" + (f" ({rec['reason']})" if rec["reason"] else "")
 
@@ -1413,6 +1541,8 @@ def main():
                     help="render these scenes (paths below the examples) with no cache and no report; exit 1 "
                          "when one differs silently, is blocked or POV-Ray fails")
     ap.add_argument("--expect-match", action="store_true", help="with --check: every scene must match")
+    ap.add_argument("--no-converge", dest="converge", action="store_false",
+                    help="compare stochastic scenes only at their own settings (no converged renders)")
     args = ap.parse_args()
 
     examples = pathlib.Path(args.examples)
@@ -1440,7 +1570,7 @@ def main():
     if args.check:
         with tempfile.TemporaryDirectory(prefix="census-check-") as tmp:
             census = Census(ward, pov, tmp, examples, corpus=corpus, work_root=work_root(tmp),
-                            memory_limit=memory_limit)
+                            memory_limit=memory_limit, converge=args.converge)
             scenes = [examples / s for s in args.check] if not corpus else find_scenes(examples, args.check, corpus)
             failed = 0
             with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
@@ -1459,7 +1589,7 @@ def main():
     except OSError:
         sys.exit(f"census: another census is running on {results}")
     census = Census(ward, pov, results, examples, corpus=corpus, work_root=work_root(results),
-                    memory_limit=memory_limit)
+                    memory_limit=memory_limit, converge=args.converge)
     # Scratch folders of renders an interrupt cut short.
     shutil.rmtree(census.work_root, ignore_errors=True)
     census.work_root.mkdir(parents=True)

@@ -78,6 +78,47 @@ class ClassifyTest(unittest.TestCase):
         self.assertIn("language/trace.pov", census.known_reasons())
 
 
+class ConvergedTest(unittest.TestCase):
+    def converged(self, rec, rrmse, bad=0.0, error=None):
+        rec["converged"] = {"settings": "s", "error": error, "metrics": None if error else
+                            {"rrmse": rrmse, "bad": bad, "non_finite": 0, "non_finite_wardray": 0,
+                             "non_finite_povray": 0}}
+        return census.classify(rec)
+
+    def test_a_converged_comparison_is_judged_with_the_deterministic_tolerances(self):
+        self.assertEqual(self.converged(record(rrmse=0.07, stochastic=["crand"]), 0.008)[0], "match")
+        self.assertEqual(self.converged(record(rrmse=0.07, stochastic=["crand"]), 0.008, bad=0.01)[0],
+                         "differ-small")
+        self.assertEqual(self.converged(record(rrmse=0.03, stochastic=["jitter"]), 0.015)[0], "differ-small")
+        # 3 % converged is silent although 3 % at the scene's own settings would be a stochastic match.
+        category, reason = self.converged(record(rrmse=0.03, stochastic=["radiosity"]), 0.03)
+        self.assertEqual(category, "differ-silently")
+        self.assertIn("converged (s): rRMSE 3.00 %", reason)
+        self.assertIn("own settings 3.00 %", reason)
+
+    def test_a_failed_converged_render_keeps_the_one_render_verdict(self):
+        category, reason = self.converged(record(rrmse=0.07, stochastic=["radiosity"]), 0, error="povray: timed out")
+        self.assertEqual(category, "differ-silently")
+        self.assertIn("no converged comparison: povray: timed out", reason)
+
+    def test_the_copy_rewrites_only_global_radiosity_blocks_in_the_folder(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            d = pathlib.Path(tmp)
+            files = [("a.pov", "global_settings { radiosity { count 35 error_bound 1.8 } }\n"
+                               "sphere { 0, 1 radiosity { importance 0.5 } }\n"),
+                     ("b.inc", "sphere { 0, 1 radiosity { importance 0.5 } }\n"),
+                     ("sub/c.inc", "global_settings { radiosity { count 10 } }\n")]
+            self.assertEqual(census.converged_copy(files, d), ["a.pov"])
+            text = (d / "a.pov").read_text()
+            self.assertIn("count 1600", text)
+            self.assertNotIn("count 35", text)
+            self.assertIn("error_bound 0.1", text)
+            self.assertIn("importance 0.5", text)
+            self.assertFalse((d / "b.inc").exists())
+        self.assertEqual(census.converged_options(["w", "-A", "+FH"], ["crand"]), ["w", "+A0.0", "+R6", "-J", "+FH"])
+        self.assertEqual(census.converged_options(["w", "-A"], ["radiosity"]), ["w", "-A"])
+
+
 class SceneTextTest(unittest.TestCase):
     def test_stochastic_features(self):
         f = census.stochastic_features
