@@ -7,10 +7,14 @@ The scene reads its scale from the float S (Declare=S=...), as scenes/stiff/scal
   tools/scale_report.py                              # scenes/stiff/scaled.pov, 160x120
   tools/scale_report.py --scene my.pov --scales 1e-3 1e3
   tools/scale_report.py --wardray-arg=--gi=reference  # extra wardray switches, repeatable
+  tools/scale_report.py --wrap --scene scenes/parity/blob.pov --scales 1e-4 1e4
+                                                     # a scene that does not read S: `scale S` is appended to
+                                                     # its top-level camera, light sources and objects
 """
 import argparse
 import json
 import math
+import re
 import pathlib
 import shutil
 import subprocess
@@ -18,6 +22,47 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools" / "compare"))
+
+from povrewrite import mask_comments_and_strings, matching_brace  # noqa: E402
+
+# What `--wrap` scales: the blocks at the top level of a scene that are placed in space.
+PLACED = {"camera", "light_source", "object", "union", "intersection", "difference", "merge", "sphere", "box",
+          "cylinder", "cone", "plane", "torus", "disc", "triangle", "smooth_triangle", "polygon", "mesh", "mesh2",
+          "blob", "isosurface", "parametric", "height_field", "julia_fractal", "bicubic_patch", "sphere_sweep",
+          "ovus", "lemon", "poly", "polynomial", "cubic", "quartic", "quadric", "lathe", "sor", "prism", "text",
+          "superellipsoid", "light_group"}
+
+
+def wrap_in_scale(text):
+    """The scene text with `scale S` before the closing brace of every top-level camera, light source and object
+    (not those being declared): the whole scene scaled by S, as its own camera sees it."""
+    masked = mask_comments_and_strings(text)
+    inserts, i, n = [], 0, len(masked)
+    word = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+    while i < n:
+        c = masked[i]
+        if c == "{":
+            i = matching_brace(masked, i) + 1  # a block that is not placed: skip it whole
+            continue
+        m = word.match(masked, i)
+        if not m:
+            i += 1
+            continue
+        j = m.end()
+        while j < n and masked[j].isspace():
+            j += 1
+        before = masked[:m.start()].rstrip()
+        declared = before.endswith("=")
+        if m.group() in PLACED and j < n and masked[j] == "{" and not declared:
+            close = matching_brace(masked, j)
+            inserts.append(close)
+            i = close + 1
+        else:
+            i = m.end()
+    for at in sorted(inserts, reverse=True):
+        text = text[:at] + " scale S " + text[at:]
+    return text
 
 
 def scale_name(s):
@@ -71,11 +116,15 @@ def main():
     p.add_argument("--povray-arg", action="append", default=[], help="an extra POV-Ray switch (repeatable)")
     p.add_argument("--no-povray", action="store_true", help="render with wardray only")
     p.add_argument("--keep", type=pathlib.Path, help="keep the images in this folder")
+    p.add_argument("--wrap", action="store_true", help="the scene does not read S: append `scale S` to its "
+                   "top-level camera, light sources and objects")
     args = p.parse_args()
 
     work = pathlib.Path(tempfile.mkdtemp(prefix="wardray-scale-"))
     scene = work / args.scene.name
     shutil.copy(args.scene, scene)
+    if args.wrap:
+        scene.write_text(wrap_in_scale(scene.read_text()))
     # Included files next to the scene are found by both renderers through +L.
     args.povray_arg.append("+L" + str(args.scene.resolve().parent))
 
