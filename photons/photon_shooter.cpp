@@ -256,7 +256,8 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
             tbb::parallel_for(first, last, [&](int r) {
                 const double theta = r * u.dtheta;
                 if (!(theta < u.max_theta)) return;
-                row_hit[r - first] = shoot_row(u, theta, reseed(mix_seed(ui + 1, r), seed), tracer, row_photons[r - first],
+                const std::uint64_t row_seed = reseed(mix_seed(ui + 1, r), seed);
+                row_hit[r - first] = shoot_row(u, theta, row_seed, tracer, row_photons[r - first],
                                                row_media[r - first], row_shot[r - first], settings.jitter);
             });
             for (int r = first; r < last; ++r) {

@@ -63,7 +63,8 @@ PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeome
     const scene::PhotonSettings& s = *scene.global.photons;
     m_max_level = s.max_trace_level >= 0 ? s.max_trace_level : scene.global.max_trace_level;
     m_bailout = s.adc_bailout >= 0.0 ? s.adc_bailout : scene.global.adc_bailout;
-    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<const media::ParticipatingMedia>(scene, seed);
+    if (media::ParticipatingMedia::in_scene(scene))
+        m_media = std::make_unique<const media::ParticipatingMedia>(scene, seed);
 }
 
 PhotonTracer::~PhotonTracer() = default;
