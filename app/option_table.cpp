@@ -61,7 +61,8 @@ Why set_limit(std::string_view text, std::optional<std::uint64_t>& out) {
 Why set_seed(std::string_view text, std::uint64_t& out) {
     std::uint64_t n = 0;
     const char* end = text.data() + text.size();
-    if (text.empty() || std::from_chars(text.data(), end, n).ptr != end) return "needs a whole number 0..2^64-1";
+    const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+    if (text.empty() || ec != std::errc{} || ptr != end) return "needs a whole number 0..2^64-1";
     out = n;
     return std::nullopt;
 }
