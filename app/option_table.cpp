@@ -57,6 +57,16 @@ Why set_limit(std::string_view text, std::optional<std::uint64_t>& out) {
     return std::nullopt;
 }
 
+// --seed: any 64-bit unsigned number (0, the default, is the render without it).
+Why set_seed(std::string_view text, std::uint64_t& out) {
+    std::uint64_t n = 0;
+    const char* end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, n);
+    if (text.empty() || ec != std::errc{} || ptr != end) return "needs a whole number 0..2^64-1";
+    out = n;
+    return std::nullopt;
+}
+
 // POV-Ray's +F: -F writes no file, +F writes one, +F<letter> also names the format (only its first letter counts).
 Why set_output_type(const OptionUse& use, Options& o) {
     if (use.value.empty()) {
@@ -257,6 +267,10 @@ constexpr OptionSpec kOptions[] = {
     {.long_name = "--gi-rays", .kind = K::Value, .usage = "--gi-rays N",
      .help = "reference mode: paths per pixel (default 256)",
      .set = [](U u, Options& o) { return set_count(u.value, 1, 1000000, "needs a count 1..1000000", o.gi_rays); }},
+    {.long_name = "--seed", .kind = K::Value, .usage = "--seed N",
+     .help = "another sample pattern for every stochastic part (reference paths, cache\n"
+             "gathers, jitter, photons); the same N, the same image (default 0)",
+     .set = [](U u, Options& o) { return set_seed(u.value, o.seed); }},
     {.long_name = "--gi-gradients", .kind = K::Value, .usage = "--gi-gradients=on|off",
      .help = "cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)", .set = set_gi_gradients},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",

@@ -61,6 +61,7 @@ struct Options {
     GammaCurve display_gamma = GammaCurve::srgb();  ///< Display_Gamma=: used for files only by 3.6 scenes
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
     int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
+    std::uint64_t seed = 0;                         ///< --seed: 0 draws the samples the renders without it draw
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file

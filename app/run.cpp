@@ -326,6 +326,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     lighting::IntegratorOptions& settings = illumination.settings;
     settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
     settings.reference_rays = options.gi_rays;
+    settings.seed = options.seed;
     settings.gradients = options.gi_gradients;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
@@ -376,6 +377,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
                           antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
+    settings.seed = options.seed;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     settings.alpha = options.output_alpha;
     settings.communicator = communicator;

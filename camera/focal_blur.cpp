@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <numbers>
 
+#include "core/render_seed.h"
+
 namespace wardray::camera {
 
 namespace {
@@ -95,8 +97,8 @@ double inverse_chi_square_complement(double df, double y) {
     return 0.5 * (lo + hi);
 }
 
-FocalBlur::FocalBlur(const scene::Camera& camera)
-    : m_samples(camera.blur_samples), m_min_samples(camera.blur_samples_min) {
+FocalBlur::FocalBlur(const scene::Camera& camera, std::uint64_t seed)
+    : m_samples(camera.blur_samples), m_seed(seed), m_min_samples(camera.blur_samples_min) {
     // POV-Ray compat (FocalBlurData): the thresholds of the confidence test, and the batch sizes of its hexagonal
     // grids of 7, 19 and 37 samples.
     m_threshold.assign(static_cast<std::size_t>(std::max(m_samples, 1)), 0.0);
@@ -114,7 +116,8 @@ Vec3 FocalBlur::sample(const CameraModel& camera, const std::function<Vec3(const
                        double px, double py) const {
     // One random shift of a Halton sequence per position (Cranley-Patterson rotation): bases 2 and 3 place the
     // rays within the pixel, 5 and 7 on the aperture.
-    const std::uint64_t seed = mix(std::bit_cast<std::uint64_t>(px) ^ mix(std::bit_cast<std::uint64_t>(py)));
+    const std::uint64_t seed =
+        reseed(mix(std::bit_cast<std::uint64_t>(px) ^ mix(std::bit_cast<std::uint64_t>(py))), m_seed);
     double shift[4];
     for (int k = 0; k < 4; ++k) shift[k] = unit_from(mix(seed + 0x9E3779B97F4A7C15ull * (k + 1)));
     auto wrap = [](double v) { return v - std::floor(v); };

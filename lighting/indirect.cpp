@@ -8,6 +8,7 @@
 #include "cache/irradiance_cache.h"
 #include "cache/irradiance_record.h"
 #include "core/constants.h"
+#include "core/render_seed.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/indirect_light.h"
 #include "lighting/integrator.h"
@@ -89,14 +90,16 @@ private:
 /// Reference mode: a Monte Carlo estimate, many rays at the first bounce and one per path deeper.
 class ReferenceIrradiance final : public IndirectLight {
 public:
-    ReferenceIrradiance(const GatherTracer& tracer, int rays) : m_tracer(tracer), m_rays(rays) {}
+    ReferenceIrradiance(const GatherTracer& tracer, int rays, std::uint64_t seed)
+        : m_tracer(tracer), m_rays(rays), m_seed(seed) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double, const RayState& state, TraceContext& ctx) const override {
         // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π) by
         // stratified Monte Carlo; the first bounce takes all of --gi-rays, each deeper bounce continues its path
         // with one ray, so a pixel averages --gi-rays independent paths.
         const int rays = state.gi_depth == 0 ? std::max(1, m_rays) : 1;
-        cache::SplitMix64 rng(cache::seed_from(p, n, state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth));
+        const std::uint64_t salt = reseed(state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth, m_seed);
+        cache::SplitMix64 rng(cache::seed_from(p, n, salt));
         const std::vector<cache::HemisphereSample> samples =
             cache::stratified_cosine_samples(cache::strata_for_count(rays), rng);
         Vec3 t, b;
@@ -115,6 +118,7 @@ public:
 private:
     const GatherTracer& m_tracer;
     int m_rays = 256;
+    std::uint64_t m_seed = 0;
 };
 
 }  // namespace
@@ -124,8 +128,9 @@ std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& 
     return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint);
 }
 
-std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays) {
-    return std::make_unique<ReferenceIrradiance>(tracer, rays);
+std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,
+                                                               std::uint64_t seed) {
+    return std::make_unique<ReferenceIrradiance>(tracer, rays, seed);
 }
 
 Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,

@@ -36,7 +36,9 @@ public:
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint);
 
-/// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper.
-std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays);
+/// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render
+/// seed `seed` (--seed).
+std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,
+                                                               std::uint64_t seed);
 
 }  // namespace wardray::lighting

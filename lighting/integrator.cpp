@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "cache/hemisphere_sampler.h"
+#include "core/render_seed.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/graininess.h"
@@ -63,7 +64,7 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
       m_geometry(geometry),
       m_options(options),
       m_quality(quality_features(options.quality)),
-      m_lights(scene, geometry),
+      m_lights(scene, geometry, options.seed),
       m_sky(scene),
       m_atmosphere(media::make_atmosphere(scene)) {
     m_volume_on_gathers = scene.global.radiosity.has_value() && scene.global.radiosity->media;
@@ -85,7 +86,7 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
     else if (radiosity && options.gi == GiMode::Reference)
-        m_indirect = make_reference_irradiance(*this, options.reference_rays);
+        m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed);
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
     // crossings along one ray from the camera. POV-Ray finds it once, at the origin of the first camera ray
@@ -114,12 +115,12 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         }
     }
     if (m_quality.volume && media::ParticipatingMedia::in_scene(scene))
-        m_media = std::make_unique<media::ParticipatingMedia>(scene);
+        m_media = std::make_unique<media::ParticipatingMedia>(scene, options.seed);
     if (scene.global.photons && m_quality.advanced_light) {
         // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
         // shot it turn black (LightSampler).
         m_photon_stats = std::make_unique<photons::PhotonStats>();
-        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats, &m_media_photons);
+        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats, &m_media_photons, nullptr, options.seed);
         if (m_photons) m_lights.use_photon_shadows();
         if (m_media_photons) m_media_gather = std::make_unique<const photons::MediaPhotonGather>(*m_media_photons);
         for (const scene::Light& light : scene.lights)
@@ -179,7 +180,7 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
                         hollow_ray(state.interiors);
     if (volume && m_rainbows)
         colour = m_rainbows->apply(colour, direction, hit ? depth : media::kSkyDepth,
-                                   cache::seed_from(ray.origin, direction, 0x5241494E));
+                                   cache::seed_from(ray.origin, direction, reseed(0x5241494E, m_options.seed)));
     if (m_media) colour = apply_media(ray, direction, depth, hit.has_value(), state, colour, ctx);
     if (volume && m_atmosphere) {
         const media::Segment segment{ray.origin, direction, depth};
@@ -222,7 +223,7 @@ Vec3 Integrator::finish_light(const scene::Finish& finish, const Vec3& pigment, 
         const double shape =
             finish.brilliance == 1.0 ? std::fabs(cos_i) : std::pow(std::fabs(cos_i), finish.brilliance);
         double intensity = finish.diffuse * opacity * shape;
-        if (finish.crand > 0.0) intensity -= graininess(finish.crand, s.hit->position, grain_from);
+        if (finish.crand > 0.0) intensity -= graininess(finish.crand, s.hit->position, grain_from, m_options.seed);
         light_colour += pigment * arriving * intensity;
     }
     if (highlights) {

@@ -42,6 +42,9 @@ enum class GiMode { Off, Cache, Reference };
 struct IntegratorOptions {
     GiMode gi = GiMode::Off;
     int reference_rays = 256;  ///< --gi-rays: paths per pixel in reference mode
+    /// --seed: turns every random stream the integrator draws (reference paths, area-light jitter, crand, media,
+    /// rainbows, photons); 0 draws those of a render without it (core/render_seed.h).
+    std::uint64_t seed = 0;
     bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.

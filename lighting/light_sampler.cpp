@@ -10,6 +10,7 @@
 
 #include "cache/hemisphere_sampler.h"
 #include "core/constants.h"
+#include "core/render_seed.h"
 #include "geometry/scene_geometry.h"
 #include "media/atmosphere.h"
 #include "media/participating_media.h"
@@ -76,13 +77,14 @@ bool object_opaque(const scene::Object& o) {
 
 }  // namespace
 
-LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry)
+LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed)
     : m_scene(scene),
       m_geometry(geometry),
       m_noise_generator(scene.global.noise_generator),
+      m_seed(seed),
       m_fog(media::make_atmosphere(scene)),
       m_volume_on_gathers(scene.global.radiosity.has_value() && scene.global.radiosity->media) {
-    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene);
+    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<media::ParticipatingMedia>(scene, seed);
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
     for (const scene::Object& o : scene.objects) {
@@ -336,8 +338,8 @@ Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colo
         axis1 = normalize(cross(d, helper)) * len;
         axis2 = normalize(cross(d, axis1)) * len;
     }
-    // Jitter is random in POV-Ray; here it is a fixed function of the point, so renders repeat exactly.
-    cache::SplitMix64 rng(cache::seed_from(p, light.position));
+    // Jitter is random in POV-Ray; here it is a fixed function of the point and the seed, so renders repeat exactly.
+    cache::SplitMix64 rng(cache::seed_from(p, light.position, reseed(0, m_seed)));
     auto uniform = [&rng]() { return rng.uniform(); };
     std::vector<Vec3> grid(static_cast<std::size_t>(n1) * n2);
     std::vector<char> known(grid.size(), 0);

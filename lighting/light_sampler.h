@@ -29,8 +29,9 @@ class ProjectedThrough;
 /// Stateless after construction; refers to the scene and its geometry, which must outlive it.
 class LightSampler {
 public:
-    /// Notes which objects can let light through, so shadow rays look through only those.
-    LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
+    /// Notes which objects can let light through, so shadow rays look through only those. `seed` is the render
+    /// seed (--seed), which turns area-light and media jitter.
+    LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed = 0);
     ~LightSampler();
     LightSampler(const LightSampler&) = delete;
     LightSampler& operator=(const LightSampler&) = delete;
@@ -116,6 +117,7 @@ private:
     bool m_quick_colors = false;     ///< +Q0 to +Q5: pigments' quick_color in shadow filters
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
+    std::uint64_t m_seed = 0;
     std::unique_ptr<const media::Medium> m_fog;  ///< the scene's fog, for lights with media_attenuation
     bool m_volume_on_gathers = false;  ///< radiosity `media on`: fog dims lights on gather paths too
     std::unique_ptr<const media::ParticipatingMedia> m_media;  ///< null when the scene has no media

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "core/constants.h"
+#include "core/render_seed.h"
 #include "media/participating_media.h"
 #include "texture/pigment.h"
 
@@ -45,14 +46,16 @@ struct Interval {
     Vec3 od, te, te2;
 };
 
-// Jitter and method 1's random positions: SplitMix64 seeded by the ray, so renders repeat for any thread count.
+// Jitter and method 1's random positions: SplitMix64 seeded by the ray and the render seed, so renders repeat for
+// any thread count.
 class Random {
 public:
-    explicit Random(const Segment& s) {
+    Random(const Segment& s, std::uint64_t seed) {
         auto bits = [](double v) { return std::bit_cast<std::uint64_t>(v); };
         m_state = bits(s.origin.x) ^ (bits(s.origin.y) * 0x9E3779B97F4A7C15ull) ^ (bits(s.origin.z) << 7) ^
                   (bits(s.direction.x) * 0xBF58476D1CE4E5B9ull) ^ (bits(s.direction.y) >> 3) ^
                   (bits(s.direction.z) * 0x94D049BB133111EBull);
+        m_state = reseed(m_state, seed);
     }
     double uniform() {
         std::uint64_t z = (m_state += 0x9E3779B97F4A7C15ull);
@@ -157,9 +160,9 @@ using Thresholds = ParticipatingMedia::Thresholds;
 class Walk {
 public:
     Walk(const scene::Scene& scene, const Thresholds& thresholds, int noise, const MediaList& media,
-         const Segment& segment, double depth, const LightQuery* lights)
+         const Segment& segment, double depth, const LightQuery* lights, std::uint64_t seed)
         : m_scene(scene), m_thresholds(thresholds), m_noise(noise), m_media(media), m_ray(segment), m_depth(depth),
-          m_lights(lights), m_photons(lights ? lights->photons() : nullptr), m_random(segment) {}
+          m_lights(lights), m_photons(lights ? lights->photons() : nullptr), m_random(segment, seed) {}
 
     Vec3 run(const Vec3& colour);
     /// POV-Ray's ComputeMediaAndDepositPhotons and DepositMediaPhotons.
@@ -522,8 +525,8 @@ void for_each_interior_media(const scene::Object& o, const F& f) {
 
 }  // namespace
 
-ParticipatingMedia::ParticipatingMedia(const scene::Scene& scene)
-    : m_scene(scene), m_noise_generator(scene.global.noise_generator) {
+ParticipatingMedia::ParticipatingMedia(const scene::Scene& scene, std::uint64_t seed)
+    : m_scene(scene), m_noise_generator(scene.global.noise_generator), m_seed(seed) {
     m_atmosphere.add(scene.media);
     // POV-Ray's Media::PostProcess: the variance below which methods 1 and 2 stop adding samples, per sample count.
     auto thresholds = [&](const scene::Media& m) {
@@ -550,7 +553,7 @@ Vec3 ParticipatingMedia::along(const MediaList& media, const Segment& segment, c
                                const LightQuery& lights) const {
     if (media.empty()) return colour;
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
-    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, &lights);
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, &lights, m_seed);
     return walk.run(colour);
 }
 
@@ -558,14 +561,14 @@ Vec3 ParticipatingMedia::deposit_photons(const MediaList& media, const Segment& 
                                          const PhotonDeposit& deposit, std::vector<DepositPoint>& out) const {
     if (media.empty() || !(deposit.step > 0.0)) return colour;
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
-    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr);
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr, m_seed);
     return walk.deposit(colour, deposit, out);
 }
 
 Vec3 ParticipatingMedia::transmittance(const MediaList& media, const Segment& segment) const {
     if (media.empty()) return {1.0, 1.0, 1.0};
     const double depth = std::isfinite(segment.length) ? segment.length : kBoundHuge;
-    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr);
+    Walk walk(m_scene, m_thresholds, m_noise_generator, media, segment, depth, nullptr, m_seed);
     return walk.run({1.0, 1.0, 1.0});
 }
 

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -69,7 +70,8 @@ struct DepositPoint {
 /// scattering phase functions. Refers to the scene, which must outlive it; stateless, so threads share it.
 class ParticipatingMedia {
 public:
-    explicit ParticipatingMedia(const scene::Scene& scene);
+    /// `seed` is the render seed (--seed), which turns the sampling's jitter.
+    explicit ParticipatingMedia(const scene::Scene& scene, std::uint64_t seed = 0);
 
     /// True when the scene has a media block anywhere; without one no ParticipatingMedia is built.
     static bool in_scene(const scene::Scene& scene);
@@ -96,6 +98,7 @@ private:
     MediaList m_atmosphere;
     Thresholds m_thresholds;
     int m_noise_generator = 2;
+    std::uint64_t m_seed = 0;
 };
 
 /// POV-Ray's chdtri (Cephes): the x at which the upper tail of the chi-square distribution with `df` degrees of

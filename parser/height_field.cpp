@@ -19,10 +19,12 @@ bool is_height_image_type(const TokenText& w) {
     return false;
 }
 
-/// POV-Ray's linear 16-bit encoding of a float image value (IntEncode: clipped, rounded in float).
+/// How POV-Ray 3.7 stores a function value in its 16-bit function image: clipped, times 65535 in float, cut.
 std::uint16_t encode16(double v) {
     const float x = std::fmin(std::fmax(static_cast<float>(v), 0.0f), 1.0f);
-    return static_cast<std::uint16_t>(std::floor(x * 65535.0f + 0.5f));
+    // POV-Ray compat: 3.7.0's 16-bit image cuts (gray * 65535.0f) rather than rounding it (IntEncode); its
+    // heights of f = 0.035043 are 2296 (float and grey pigment functions), not 2297.
+    return static_cast<std::uint16_t>(x * 65535.0f);
 }
 
 /// The height POV-Ray takes from a grey 16-bit function image texel (image_height_at: grey * 65535 in float, cut).

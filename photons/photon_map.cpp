@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/render_seed.h"
 #include "photons/photon_random.h"
 
 namespace wardray::photons {
@@ -48,7 +49,8 @@ Vec3 photon_direction(const Photon& p) {
     return {std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi)};
 }
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media)
+PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media,
+                     std::uint64_t seed)
     : m_photons(std::move(photons)),
       m_gather_max(settings.gather_max),
       m_gather_min(settings.gather_min),
@@ -56,7 +58,7 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& s
       m_expand_min(settings.expand_min) {
     if (m_photons.empty()) return;
     build(0, static_cast<int>(m_photons.size()));
-    estimate_radius(settings, media);
+    estimate_radius(settings, media, seed);
 }
 
 void PhotonMap::build(int begin, int end) {
@@ -140,7 +142,7 @@ void PhotonMap::gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) con
         out = std::move(wider);
 }
 
-void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool media) {
+void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed) {
     m_min_radius = media ? settings.media_radius : settings.radius;
     // The photons' density around a point: per area on surfaces, per volume in media (4/3 π r³).
     auto density_of = [media](const Gathered& g) {
@@ -154,7 +156,7 @@ void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool medi
         // samples whose density at that radius is under 70 % (but over 5 %) of the mean.
         const int n = static_cast<int>(m_photons.size());
         const int samples = std::clamp(n / 20, 100, 1000);
-        Random rng(0x50484F544F4E53ull);
+        Random rng(reseed(0x50484F544F4E53ull, seed));
         Gathered g;
         double sum = 0.0;
         for (int i = 0; i < samples; ++i) {

@@ -40,9 +40,11 @@ struct Gathered {
 class PhotonMap {
 public:
     /// Builds the kd-tree over `photons` (their order decides nothing but ties) and POV-Ray's gather radius
-    /// (setGatherOptions: estimated from the photons' density unless the settings give it), with a fixed seed.
-    /// `media`: a map of photons in media, whose radius comes from their density in volume (POV-Ray's mediaMap).
-    PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media = false);
+    /// (setGatherOptions: estimated from the photons' density unless the settings give it), with a fixed seed
+    /// turned by the render seed `seed` (--seed). `media`: a map of photons in media, whose radius comes from their
+    /// density in volume (POV-Ray's mediaMap).
+    PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media = false,
+              std::uint64_t seed = 0);
 
     std::size_t size() const { return m_photons.size(); }
     /// The photons in the kd-tree's order.
@@ -63,7 +65,7 @@ private:
     void build(int begin, int end);
     void search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
                 std::vector<std::pair<double, const Photon*>>& heap) const;
-    void estimate_radius(const scene::PhotonSettings& settings, bool media);
+    void estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed);
 
     std::vector<Photon> m_photons;
     int m_gather_max = 100;

@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "core/constants.h"
+#include "core/render_seed.h"
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "photons/photon_random.h"
@@ -214,7 +215,7 @@ bool photons_replace_shadow(const scene::Object& blocker, const scene::Light& li
 
 std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
                                                PhotonStats& stats, std::unique_ptr<const PhotonMap>* media_map,
-                                               void (*progress)(std::uint64_t)) {
+                                               void (*progress)(std::uint64_t), std::uint64_t seed) {
     const auto t0 = std::chrono::steady_clock::now();
     const scene::PhotonSettings& settings = *scene.global.photons;
     // The units: every global light but fill lights, with every target, in scene order (POV-Ray 3.7 shoots no
@@ -238,7 +239,7 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
     for (Unit& u : units) u.light_interiors = objects_containing(scene, u.light->position);
     stats.spacing = spacing;
     stats.units = units.size();
-    const PhotonTracer tracer(scene, geometry);
+    const PhotonTracer tracer(scene, geometry, seed);
     std::vector<Photon> photons, media_photons;
     for (std::size_t ui = 0; ui < units.size(); ++ui) {
         const Unit& u = units[ui];
@@ -255,7 +256,8 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
             tbb::parallel_for(first, last, [&](int r) {
                 const double theta = r * u.dtheta;
                 if (!(theta < u.max_theta)) return;
-                row_hit[r - first] = shoot_row(u, theta, mix_seed(ui + 1, r), tracer, row_photons[r - first],
+                const std::uint64_t row_seed = reseed(mix_seed(ui + 1, r), seed);
+                row_hit[r - first] = shoot_row(u, theta, row_seed, tracer, row_photons[r - first],
                                                row_media[r - first], row_shot[r - first], settings.jitter);
             });
             for (int r = first; r < last; ++r) {
@@ -279,13 +281,13 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
     if (media_map) {
         media_map->reset();
         if (!media_photons.empty()) {
-            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true);
+            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true, seed);
             stats.media_gather_radius = (*media_map)->min_gather_radius();
         }
     }
     std::unique_ptr<const PhotonMap> map;
     if (!photons.empty()) {
-        map = std::make_unique<const PhotonMap>(std::move(photons), settings);
+        map = std::make_unique<const PhotonMap>(std::move(photons), settings, false, seed);
         stats.gather_radius = map->min_gather_radius();
     }
     stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();

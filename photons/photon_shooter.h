@@ -33,11 +33,12 @@ struct PhotonStats {
 /// with each target, in scene order), `count`'s spacing estimate, the shooting (rows of each unit in parallel, each
 /// row seeded by its unit and index, so the photons are the same for any number of threads), and the map. Null
 /// when no photon was stored on a surface. `media_map`, when given, receives the map of the photons kept in media
-/// (null when none). `progress`, when set, is called now and then with the photons stored so far.
+/// (null when none). `progress`, when set, is called now and then with the photons stored so far. `seed` is the
+/// render seed (--seed), which turns every row's jitter, the media deposits and the maps' radius estimates.
 std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
                                                PhotonStats& stats,
                                                std::unique_ptr<const PhotonMap>* media_map = nullptr,
-                                               void (*progress)(std::uint64_t) = nullptr);
+                                               void (*progress)(std::uint64_t) = nullptr, std::uint64_t seed = 0);
 
 /// POV-Ray's ComputeShadowColour test: with a photon map, a shadow ray through `blocker` (a target that refracts
 /// photons of `light`) is black, since the photons carry that light.

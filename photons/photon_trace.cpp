@@ -58,12 +58,13 @@ struct PhotonTracer::Path {
     bool hit_target = false;
 };
 
-PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry)
+PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed)
     : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator) {
     const scene::PhotonSettings& s = *scene.global.photons;
     m_max_level = s.max_trace_level >= 0 ? s.max_trace_level : scene.global.max_trace_level;
     m_bailout = s.adc_bailout >= 0.0 ? s.adc_bailout : scene.global.adc_bailout;
-    if (media::ParticipatingMedia::in_scene(scene)) m_media = std::make_unique<const media::ParticipatingMedia>(scene);
+    if (media::ParticipatingMedia::in_scene(scene))
+        m_media = std::make_unique<const media::ParticipatingMedia>(scene, seed);
 }
 
 PhotonTracer::~PhotonTracer() = default;

@@ -36,7 +36,8 @@ std::vector<const scene::Object*> objects_containing(const scene::Scene& scene, 
 /// Traces photons; stateless, so one instance serves every thread.
 class PhotonTracer {
 public:
-    PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry);
+    /// `seed` is the render seed (--seed), which turns the jitter of media deposits.
+    PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed = 0);
 
     PhotonTracer(const PhotonTracer&) = delete;
     PhotonTracer& operator=(const PhotonTracer&) = delete;

@@ -30,11 +30,12 @@ struct Subdivider {
     const AntialiasSettings& aa;
     SubdivisionGrid& grid;
     double jitter_scale;
+    std::uint64_t seed;
 
     // A sample at image position (px, py) into grid point (i, j) unless it has one; jittered as POV-Ray does.
     void fill(int i, int j, double px, double py) {
         if (grid.sampled(i, j)) return;
-        const Vec3 jit = jitter_scale > 0.0 ? jitter_at(px, py) * jitter_scale : Vec3{};
+        const Vec3 jit = jitter_scale > 0.0 ? jitter_at(px, py, seed) * jitter_scale : Vec3{};
         grid.set(i, j, sample(px + jit.x, py + jit.y));
     }
 
@@ -67,7 +68,7 @@ struct Subdivider {
 }  // namespace
 
 void render_block_recursive(const Sampler& sample, Film& film, int x0, int y0, int x1, int y1,
-                            const AntialiasSettings& aa, TileCounters& counters) {
+                            const AntialiasSettings& aa, std::uint64_t seed, TileCounters& counters) {
     // Every pixel corner of the block, traced unjittered; the block's far edges are its neighbours' corners, traced
     // again here so that a block depends on nothing outside it.
     const int w = x1 - x0 + 1;
@@ -78,7 +79,7 @@ void render_block_recursive(const Sampler& sample, Film& film, int x0, int y0, i
     const int size = 1 << aa.depth;
     SubdivisionGrid grid(size + 1);
     // POV-Ray compat: the jitter is scaled down by the finest grid's spacing.
-    Subdivider sub{sample, aa, grid, aa.jitter / (size + 1.0)};
+    Subdivider sub{sample, aa, grid, aa.jitter / (size + 1.0), seed};
     for (int y = 0; y < h - 1; ++y) {
         for (int x = 0; x < w - 1; ++x) {
             grid.clear();

@@ -14,6 +14,7 @@
 #include "cache/irradiance_cache.h"
 #include "camera/camera.h"
 #include "camera/focal_blur.h"
+#include "core/render_seed.h"
 #include "render/sampler.h"
 
 namespace wardray::render {
@@ -22,7 +23,8 @@ namespace {
 
 // Averages a depth x depth grid of (jittered) samples over pixel (x, y) with its centre sample `centre`:
 // (centre + Σ samples) / (depth² + 1), as POV-Ray's method 1 does.
-Rgbt supersample(const Sampler& sample, int x, int y, const Rgbt& centre, const AntialiasSettings& aa) {
+Rgbt supersample(const Sampler& sample, int x, int y, const Rgbt& centre, const AntialiasSettings& aa,
+                 std::uint64_t seed) {
     const double step = 1.0 / aa.depth;
     const double range = 0.5 - 0.5 * step;
     const double jitter_scale = aa.jitter / aa.depth;
@@ -31,7 +33,7 @@ Rgbt supersample(const Sampler& sample, int x, int y, const Rgbt& centre, const 
         for (int i = 0; i < aa.depth; ++i) {
             const double sx = x + 0.5 - range + i * step;
             const double sy = y + 0.5 - range + j * step;
-            const Vec3 jit = jitter_scale > 0.0 ? jitter_at(sx, sy) * jitter_scale : Vec3{};
+            const Vec3 jit = jitter_scale > 0.0 ? jitter_at(sx, sy, seed) * jitter_scale : Vec3{};
             sum += sample(sx + jit.x, sy + jit.y);
         }
     }
@@ -43,7 +45,7 @@ Rgbt supersample(const Sampler& sample, int x, int y, const Rgbt& centre, const 
 // above and the column left of the block are traced afresh and never supersampled, so a block depends on
 // nothing outside it and the image is the same whatever order blocks finish in.
 void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0, int x1, int y1,
-                              const AntialiasSettings& aa, TileCounters& counters) {
+                              const AntialiasSettings& aa, std::uint64_t seed, TileCounters& counters) {
     const int w = x1 - x0 + 1;  // one extra column on the left
     const int h = y1 - y0 + 1;  // one extra row on top
     std::vector<Rgbt> colour(static_cast<std::size_t>(w) * h);
@@ -62,17 +64,17 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
             const bool left_differs = encoded_distance(colour[left], colour[cur], aa.gamma) >= aa.threshold;
             const bool top_differs = encoded_distance(colour[top], colour[cur], aa.gamma) >= aa.threshold;
             if (left_differs && !done[left]) {
-                colour[left] = supersample(sample, x - 1, y, colour[left], aa);
+                colour[left] = supersample(sample, x - 1, y, colour[left], aa, seed);
                 done[left] = 1;
                 ++counters.supersampled;
             }
             if (top_differs && !done[top]) {
-                colour[top] = supersample(sample, x, y - 1, colour[top], aa);
+                colour[top] = supersample(sample, x, y - 1, colour[top], aa, seed);
                 done[top] = 1;
                 ++counters.supersampled;
             }
             if (left_differs || top_differs) {
-                colour[cur] = supersample(sample, x, y, colour[cur], aa);
+                colour[cur] = supersample(sample, x, y, colour[cur], aa, seed);
                 done[cur] = 1;
                 ++counters.supersampled;
             }
@@ -134,9 +136,10 @@ void keep_region_tiles(std::vector<std::vector<int>>& waves, const PixelRegion& 
     std::erase_if(waves, [](const std::vector<int>& wave) { return wave.empty(); });
 }
 
-/// A uniform number in [0, 1) from a pretrace position and pass, so pretrace jitter is the same on every run.
-double pretrace_jitter(int pass, double x, double y, int axis) {
-    const Vec3 j = jitter_at(x + 0.25 * axis, y + 1024.0 * pass);
+/// A uniform number in [0, 1) from a pretrace position, pass and the render seed, so pretrace jitter is the same on
+/// every run.
+double pretrace_jitter(int pass, double x, double y, int axis, std::uint64_t seed) {
+    const Vec3 j = jitter_at(x + 0.25 * axis, y + 1024.0 * pass, seed);
     return j[axis] + 0.5;
 }
 
@@ -162,7 +165,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     const camera::CameraModel camera(scene.camera, settings.width, settings.height, scene.global.noise_generator);
     // Focal blur only when the camera asks for it: a scene without it pays nothing.
     std::optional<camera::FocalBlur> blur;
-    if (scene.camera.focal_blur()) blur.emplace(scene.camera);
+    if (scene.camera.focal_blur()) blur.emplace(scene.camera, settings.seed);
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
     const int tiles_y = (settings.height + settings.tile_size - 1) / settings.tile_size;
     const int tile_count = tiles_x * tiles_y;
@@ -209,7 +212,8 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                 lighting::TraceContext& ctx = tile_counters[tile].trace;
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
-                ctx.gather_seed = pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1));
+                ctx.gather_seed =
+                    reseed(pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1)), settings.seed);
                 const double tile_start = exchange.distributed() ? TileExchange::thread_seconds() : 0.0;
                 body(tile, x0, y0, x1, y1, ctx);
                 if (exchange.distributed()) exchange.tile_cost(tile, TileExchange::thread_seconds() - tile_start);
@@ -237,10 +241,11 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         const double offset = (size - 1.0) / 2.0;
         run_pass(false, [&](int, int x0, int y0, int x1, int y1, lighting::TraceContext& ctx) {
             // POV-Ray compat (RadiosityTask): one jittered ray per size × size block, the grid anchored at the origin.
+            const int p = static_cast<int>(pass);
             for (double y = std::ceil((y0 - 0.5) / size) * size; y < y1; y += size) {
                 for (double x = std::ceil((x0 - 0.5) / size) * size; x < x1; x += size) {
-                    const double px = x + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 0) + 0.5;
-                    const double py = y + offset + jitter * pretrace_jitter(static_cast<int>(pass), x, y, 1) + 0.5;
+                    const double px = x + offset + jitter * pretrace_jitter(p, x, y, 0, settings.seed) + 0.5;
+                    const double py = y + offset + jitter * pretrace_jitter(p, x, y, 1, settings.seed) + 0.5;
                     if (const auto ray = camera.ray(px, py)) integrator.trace_camera_ray(*ray, ctx);
                 }
             }
@@ -255,9 +260,11 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                              result.irradiance ? &*result.irradiance : nullptr,
                              result.alpha ? &*result.alpha : nullptr);
         if (settings.antialias.enabled && settings.antialias.method == 2) {
-            render_block_recursive(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
+            render_block_recursive(sample, result.film, x0, y0, x1, y1, settings.antialias, settings.seed,
+                                   tile_counters[tile]);
         } else if (settings.antialias.enabled) {
-            render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, tile_counters[tile]);
+            render_block_antialiased(sample, result.film, x0, y0, x1, y1, settings.antialias, settings.seed,
+                                     tile_counters[tile]);
         } else {
             for (int y = y0; y < y1; ++y)
                 for (int x = x0; x < x1; ++x) sample.store(result.film, x, y, sample.centre(x, y));

@@ -48,6 +48,9 @@ struct RenderSettings {
     int tile_size = 32;  ///< POV-Ray's render block size; antialiasing decisions are made per block
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
+    /// --seed: turns the renderer's random streams (cache gathers, pretrace, antialiasing and focal blur jitter);
+    /// 0 draws those of a render without it (core/render_seed.h).
+    std::uint64_t seed = 0;
     bool irradiance_aov = false;  ///< keep each pixel's indirect irradiance (at its centre sample) in a second film
     /// Output_Alpha (+UA): keep each pixel's alpha in a film of its own (the integrator must see the background
     /// as transparent: IntegratorOptions::output_alpha).

@@ -8,6 +8,7 @@
 
 #include "camera/camera.h"
 #include "camera/focal_blur.h"
+#include "core/render_seed.h"
 #include "lighting/integrator.h"
 #include "render/film.h"
 #include "render/renderer.h"
@@ -121,9 +122,9 @@ private:
     Film* m_alpha;  ///< Output_Alpha: each pixel's alpha (in all three channels); null without
 };
 
-/// A jitter offset in [-0.5, 0.5) from a sample position: the same position always jitters the same way,
-// so antialiased images are repeatable (POV-Ray's jitter is a fixed function of position too).
-inline Vec3 jitter_at(double x, double y) {
+/// A jitter offset in [-0.5, 0.5) from a sample position and the render seed: the same position always jitters the
+// same way, so antialiased images are repeatable (POV-Ray's jitter is a fixed function of position too).
+inline Vec3 jitter_at(double x, double y, std::uint64_t seed) {
     auto hash = [](std::uint64_t v) {
         v ^= v >> 33;
         v *= 0xFF51AFD7ED558CCDull;
@@ -131,7 +132,8 @@ inline Vec3 jitter_at(double x, double y) {
         v *= 0xC4CEB9FE1A85EC53ull;
         return v ^ (v >> 33);
     };
-    const std::uint64_t h = hash(std::bit_cast<std::uint64_t>(x) ^ hash(std::bit_cast<std::uint64_t>(y)));
+    const std::uint64_t h =
+        hash(reseed(std::bit_cast<std::uint64_t>(x) ^ hash(std::bit_cast<std::uint64_t>(y)), seed));
     return {static_cast<double>(h >> 40) / double(1 << 24) - 0.5,
             static_cast<double>((h >> 16) & 0xFFFFFF) / double(1 << 24) - 0.5, 0.0};
 }
@@ -146,8 +148,9 @@ inline double encoded_distance(const Rgbt& a, const Rgbt& b, double gamma) {
 }
 
 /// Renders one block with POV-Ray's method 2, adaptive recursive supersampling: the corners of every pixel are
-/// traced, and a pixel whose corners differ by the threshold is split into four, down to +R levels.
+/// traced, and a pixel whose corners differ by the threshold is split into four, down to +R levels; `seed` is the
+/// render seed, which turns the jitter.
 void render_block_recursive(const Sampler& sample, Film& film, int x0, int y0, int x1, int y1,
-                            const AntialiasSettings& aa, TileCounters& counters);
+                            const AntialiasSettings& aa, std::uint64_t seed, TileCounters& counters);
 
 }  // namespace wardray::render

@@ -133,5 +133,13 @@ TEST(Options, RadiositySwitches) {
     EXPECT_NE(parse_error({"--gi-gradients=maybe"}).find("--gi-gradients"), std::string::npos);
 }
 
+TEST(Options, SeedTakesAny64BitNumber) {
+    EXPECT_EQ(parse_ok({}).seed, 0u);
+    EXPECT_EQ(parse_ok({"--seed", "7"}).seed, 7u);
+    EXPECT_EQ(parse_ok({"--seed", "18446744073709551615"}).seed, 18446744073709551615ull);
+    for (const char* bad : {"-1", "18446744073709551616", "1.5", "seven", ""})
+        EXPECT_NE(parse_error({"--seed", bad}).find("--seed"), std::string::npos) << bad;
+}
+
 }  // namespace
 }  // namespace wardray::app

@@ -188,13 +188,44 @@ TEST(HeightField, FunctionImageSamplesTheUnitSquareFromTheTop) {
     EXPECT_DOUBLE_EQ(hf.water_level, 0.1);
     // z = 0 is the image's bottom row (y = 1): f = 0.25 x + 0.5.
     auto expect_height = [&](int x, int z, double f) {
-        const auto stored = static_cast<unsigned>(std::floor(static_cast<float>(f) * 65535.0f + 0.5f));
+        const auto stored = static_cast<unsigned>(static_cast<float>(f) * 65535.0f);
         const auto h = static_cast<unsigned>(static_cast<float>(stored) / 65535.0f * 65535.0f);
         EXPECT_EQ(hf.grid->at(x, z), h) << x << "," << z;
     };
     expect_height(0, 0, 0.5);
     expect_height(2, 0, 0.75);
     expect_height(1, 1, 0.125);
+}
+
+TEST(HeightField, FunctionImageHeightsAreCutAsPovRayStoresThem) {
+    // POV-Ray 3.7's heights, measured with trace() straight down onto a grid point of `function 3, 3 { ... }`
+    // (y * 65536): its 16-bit function image cuts value * 65535 instead of rounding it (wallstucco.pov's walls).
+    struct Case {
+        const char* v;
+        unsigned float_fn, grey_pigment, colour_pigment;
+    };
+    const Case cases[] = {{"0.002503075", 164, 163, 121},
+                          {"0.032539975", 2132, 2131, 1584},
+                          {"0.03504305", 2296, 2296, 1706},
+                          {"0.513130375", 33628, 33627, 25002}};
+    for (const Case& c : cases) {
+        const std::string v = c.v;
+        parser::ParseOptions options;
+        options.pigment_value = [](const scene::Pigment& p, const Vec3&, int) { return p.color; };
+        const parser::ParseResult r = parser::parse_string(
+            "global_settings { assumed_gamma 1 }\n"
+            "height_field { function 3, 3 { " + v + " } }\n"
+            "height_field { function 3, 3 { pigment { rgb " + v + " } } }\n"
+            "height_field { function 3, 3 { pigment { rgb <" + v + ", 0.7 * " + v + ", 0.3 * " + v + "> } } }",
+            "hf.pov", options);
+        ASSERT_TRUE(r.ok()) << c.v;
+        const unsigned expected[3] = {c.float_fn, c.grey_pigment, c.colour_pigment};
+        for (int k = 0; k < 3; ++k) {
+            const auto& hf = std::get<scene::HeightField>(r.scene->objects[k].shape);
+            ASSERT_TRUE(hf.grid);
+            EXPECT_EQ(hf.grid->at(1, 1), expected[k]) << "value " << c.v << ", height field " << k;
+        }
+    }
 }
 
 TEST(HeightField, ClippedQuadricIsCulledByTheClipBoxAsPovRayDoes) {

@@ -123,6 +123,21 @@ TEST(Cameras, FocalBlurIsTheSameForTheSamePosition) {
     EXPECT_NEAR(a.y, 0.0, 0.1);
 }
 
+TEST(Cameras, FocalBlurSeedMovesTheSamplesAndZeroKeepsThem) {
+    scene::Camera c = looking_along_z(scene::Camera::Type::Perspective);
+    c.aperture = 1.0;
+    c.blur_samples = 20;
+    c.variance = 0.0;
+    const CameraModel cam(c, 100, 100);
+    auto trace = [](const geometry::Ray& r) { return Vec3{r.origin.x, r.origin.y, 1.0}; };
+    const Vec3 unseeded = FocalBlur(c).sample(cam, trace, 10.5, 20.5);
+    EXPECT_EQ(FocalBlur(c, 0).sample(cam, trace, 10.5, 20.5), unseeded);
+    const Vec3 one = FocalBlur(c, 1).sample(cam, trace, 10.5, 20.5);
+    EXPECT_NE(one, unseeded);
+    EXPECT_NE(one, FocalBlur(c, 2).sample(cam, trace, 10.5, 20.5));
+    EXPECT_EQ(one, FocalBlur(c, 1).sample(cam, trace, 10.5, 20.5));
+}
+
 // A mesh camera of two unit squares' worth of triangles in the z = 0 plane, each face one pixel.
 scene::Camera mesh_camera(int distribution, int rays, int meshes) {
     scene::Camera c = looking_along_z(scene::Camera::Type::MeshCamera);

@@ -207,6 +207,79 @@ TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
     EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
 }
 
+// One stochastic part of a render each: --seed must move its samples, keep the image for any thread count, and leave
+// the default image alone at 0.
+struct SeedCase {
+    const char* name;
+    const char* scene;  ///< what goes after a camera, a floor and a sphere
+    const char* switches;
+};
+
+void PrintTo(const SeedCase& c, std::ostream* os) { *os << c.name; }
+
+class CliSeed : public ::testing::TestWithParam<SeedCase> {};
+
+TEST_P(CliSeed, MovesThePartKeepsThreadsAndZeroIsTheDefault) {
+    const SeedCase& c = GetParam();
+    const fs::path dir = work_dir(std::string("seed_") + c.name);
+    write_file(dir / "s.pov", std::string(R"(#version 3.7;
+global_settings { assumed_gamma 1.0 }
+plane { y, 0 pigment { rgb 0.8 } }
+sphere { <0, 0.7, 0>, 0.7 pigment { rgb <1, 0.3, 0.2> } }
+)") + c.scene);
+    const std::string base = std::string("s.pov +W32 +H24 +FH ") + c.switches;
+    for (const char* run : {"+WT2 -o default.hdr", "+WT1 --seed 0 -o zero.hdr", "+WT1 --seed 5 -o one.hdr",
+                            "+WT2 --seed 5 -o two.hdr"}) {
+        const auto r = wardray(base + " " + run, dir);
+        ASSERT_EQ(r.exit_status, 0) << r.output;
+    }
+    const std::string seeded = read_file(dir / "one.hdr");
+    ASSERT_FALSE(seeded.empty());
+    EXPECT_EQ(read_file(dir / "default.hdr"), read_file(dir / "zero.hdr")) << "--seed 0 is not the default image";
+    EXPECT_NE(read_file(dir / "default.hdr"), seeded) << "--seed 5 changes nothing";
+    EXPECT_EQ(seeded, read_file(dir / "two.hdr")) << "--seed 5: 1 and 2 threads differ";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Parts, CliSeed,
+    ::testing::Values(
+        SeedCase{"area_light",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\n"
+                 "light_source { <3, 5, -4> color rgb 1 area_light 2*x, 2*z, 4, 4 jitter }\n",
+                 "-A"},
+        SeedCase{"antialias",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\nlight_source { <3, 5, -4> color rgb 1 }\n",
+                 "+A0.01 +J1"},
+        SeedCase{"antialias_recursive",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\nlight_source { <3, 5, -4> color rgb 1 }\n",
+                 "+A0.01 +AM2 +R2 +J1"},
+        SeedCase{"focal_blur",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> aperture 0.5 blur_samples 8 "
+                 "focal_point <0, 0.5, 2> }\nlight_source { <3, 5, -4> color rgb 1 }\n",
+                 "-A"},
+        SeedCase{"media",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\nlight_source { <3, 5, -4> color rgb 1 }\n"
+                 "box { <-1.5, 0.01, -1.5>, <1.5, 1.5, -1> hollow pigment { rgbt 1 } interior { media { method 3 "
+                 "jitter 1 intervals 1 samples 2 scattering { 1, rgb 0.6 } } } }\n",
+                 "-A"},
+        SeedCase{"rainbow",
+                 "camera { location <0, 1, -4> look_at <0, 2, 10> angle 90 }\n"
+                 "light_source { <3, 5, -4> color rgb 1 }\n"
+                 "rainbow { angle 20 width 30 distance 1000 direction <0, 0, 1> jitter 0.3 color_map { "
+                 "[0 rgbf <1, 0, 0, 0.5>] [0.5 rgbf <0, 1, 0, 0.5>] [1 rgbf <0, 0, 1, 0.5>] } }\n",
+                 "-A"},
+        SeedCase{"crand",
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\nlight_source { <3, 5, -4> color rgb 1 }\n"
+                 "box { <-1, 0, 1>, <1, 2, 1.2> pigment { rgb 1 } finish { crand 0.3 } }\n",
+                 "-A"},
+        SeedCase{"photons",
+                 "global_settings { photons { spacing 0.05 } }\n"
+                 "camera { location <0, 1, -4> look_at <0, 0.5, 0> }\nlight_source { <3, 5, -4> color rgb 1 }\n"
+                 "sphere { <1.2, 0.5, 0>, 0.5 pigment { rgbf 1 } interior { ior 1.5 }\n"
+                 "         photons { target refraction on } }\n",
+                 "-A"}),
+    [](const ::testing::TestParamInfo<SeedCase>& info) { return std::string(info.param.name); });
+
 TEST(Cli, SeededGlassTextBlobAndIsosurfaceGiveTheSameBytesOnEveryRun) {
     // What a user's scene of glass bottles (issue 23) is built of: colours from a seeded rand(), bevelled text in
     // glass, a blob, a Supertorus isosurface, a reflective stone counter. Two runs of one binary and 1 or 2 threads

@@ -166,6 +166,68 @@ TEST(Radiosity, CacheImageIsTheSameForAnyThreadCountAndRun) {
     EXPECT_EQ(one, bytes("three.hdr"));
 }
 
+std::string file_bytes(const fs::path& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+TEST(Radiosity, SeedGivesTheSameImageForAnyThreadCountAndZeroIsTheDefault) {
+    const fs::path dir = fresh_dir("seed_threads");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W32 +H24 -A";
+    for (const char* run : {"--gi=reference --gi-rays 16 --seed 7 +WT1 +Oone.hdr",
+                            "--gi=reference --gi-rays 16 --seed 7 +WT2 +Otwo.hdr",
+                            "--gi=reference --gi-rays 16 --seed 8 +WT2 +Oother.hdr",
+                            "--gi=reference --gi-rays 16 +WT2 +Odefault.hdr",
+                            "--gi=reference --gi-rays 16 --seed 0 +WT1 +Ozero.hdr",
+                            "--seed 7 +WT1 +Ocache_one.hdr", "--seed 7 +WT2 +Ocache_two.hdr",
+                            "+WT2 +Ocache_default.hdr", "--seed 0 +WT2 +Ocache_zero.hdr"}) {
+        const auto r = run_command(wardray() + scene + " " + run, dir.string());
+        ASSERT_EQ(r.exit_status, 0) << r.output;
+    }
+    const std::string one = file_bytes(dir / "one.hdr");
+    ASSERT_FALSE(one.empty());
+    EXPECT_EQ(one, file_bytes(dir / "two.hdr")) << "reference mode, seed 7: 1 and 2 threads differ";
+    EXPECT_NE(one, file_bytes(dir / "other.hdr")) << "seeds 7 and 8 give the same reference image";
+    EXPECT_NE(one, file_bytes(dir / "default.hdr")) << "seed 7 gives the default reference image";
+    EXPECT_EQ(file_bytes(dir / "default.hdr"), file_bytes(dir / "zero.hdr")) << "reference mode: --seed 0";
+    const std::string cache_one = file_bytes(dir / "cache_one.hdr");
+    ASSERT_FALSE(cache_one.empty());
+    EXPECT_EQ(cache_one, file_bytes(dir / "cache_two.hdr")) << "cache mode, seed 7: 1 and 2 threads differ";
+    EXPECT_NE(cache_one, file_bytes(dir / "cache_default.hdr")) << "seed 7 gives the default cache image";
+    EXPECT_EQ(file_bytes(dir / "cache_default.hdr"), file_bytes(dir / "cache_zero.hdr")) << "cache mode: --seed 0";
+}
+
+TEST(Radiosity, TwoSeedsOfTheReferenceConvergeTogether) {
+    // Two seeds draw independent paths: their images differ by noise alone, which falls as 1/sqrt(paths), so with
+    // 4 times the paths the rRMSE between them about halves. A seed that changed nothing, or changed what the paths
+    // converge to, fails.
+    const fs::path dir = fresh_dir("seed_convergence");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W32 +H24 -A +WT2 --gi=reference";
+    double rrmse[2] = {0.0, 0.0};
+    const int paths[2] = {16, 64};
+    for (int i = 0; i < 2; ++i) {
+        for (const int seed : {1, 2}) {
+            const std::string out = "p" + std::to_string(paths[i]) + "s" + std::to_string(seed) + ".hdr";
+            const auto r = run_command(wardray() + scene + " --gi-rays " + std::to_string(paths[i]) + " --seed " +
+                                           std::to_string(seed) + " +O" + out,
+                                       dir.string());
+            ASSERT_EQ(r.exit_status, 0) << r.output;
+        }
+        const std::string stem = "p" + std::to_string(paths[i]);
+        const auto cmp = render::compare_images(read(dir / (stem + "s1.hdr")), read(dir / (stem + "s2.hdr")));
+        ASSERT_TRUE(cmp);
+        EXPECT_EQ(cmp->non_finite, 0u);
+        rrmse[i] = cmp->rrmse;
+        std::cout << "[ radiosity] box reference, " << paths[i] << " paths: rRMSE between seeds 1 and 2 "
+                  << 100 * rrmse[i] << " %\n";
+    }
+    EXPECT_GT(rrmse[0], 0.0);
+    EXPECT_LT(rrmse[0], 0.3) << "seeds 1 and 2 disagree by more than noise";
+    EXPECT_GT(rrmse[1], 0.0);
+    EXPECT_LT(rrmse[1], 0.7 * rrmse[0]) << "the difference between seeds does not fall with more paths";
+    EXPECT_GT(rrmse[1], 0.3 * rrmse[0]) << "the difference between seeds falls faster than noise would";
+}
+
 TEST(Radiosity, CacheAgreesWithTheReferenceOnTheBox) {
     // The scene's own moderate settings (count 200, error_bound 0.5) against brute force with 1024 paths per pixel.
     // Measured: about 1 % rRMSE, of which the reference's own noise is a good part.
