@@ -110,6 +110,9 @@ FocalBlur::FocalBlur(const scene::Camera& camera, std::uint64_t seed)
     if (m_samples >= 37) m_batches = {7, 6, 6, 4, 4, 4, 4, 2};
     else if (m_samples >= 19) m_batches = {7, 6, 6};
     else if (m_samples >= 7) m_batches = {7};
+    m_halton.reserve(4 * static_cast<std::size_t>(std::max(m_samples, 0)));
+    for (int n = 1; n <= m_samples; ++n)
+        for (const int base : {2, 3, 5, 7}) m_halton.push_back(radical_inverse(n, base));
 }
 
 Vec3 FocalBlur::sample(const CameraModel& camera, const std::function<Vec3(const geometry::Ray&)>& trace,
@@ -127,14 +130,13 @@ Vec3 FocalBlur::sample(const CameraModel& camera, const std::function<Vec3(const
     do {
         const int batch = level < m_batches.size() ? m_batches[level++] : 4;
         for (int i = 0; i < batch && n < m_samples; ++i, ++n) {
-            const int index = n + 1;
+            const double* h = &m_halton[4 * static_cast<std::size_t>(n)];
             // POV-Ray compat: its jitter runs from -1 to 0 cells of a 16 x 16 grid, so the rays cover the pixel
             // shifted by 1/32 of a pixel to the left and up.
-            const double dx = wrap(radical_inverse(index, 2) + shift[0]) - 0.5 - 1.0 / 32.0;
-            const double dy = wrap(radical_inverse(index, 3) + shift[1]) - 0.5 - 1.0 / 32.0;
+            const double dx = wrap(h[0] + shift[0]) - 0.5 - 1.0 / 32.0;
+            const double dy = wrap(h[1] + shift[1]) - 0.5 - 1.0 / 32.0;
             double lens_x, lens_y;
-            square_to_disc(wrap(radical_inverse(index, 5) + shift[2]), wrap(radical_inverse(index, 7) + shift[3]),
-                           lens_x, lens_y);
+            square_to_disc(wrap(h[2] + shift[2]), wrap(h[3] + shift[3]), lens_x, lens_y);
             const std::optional<geometry::Ray> ray = camera.ray(px + dx, py + dy, lens_x, lens_y);
             const Vec3 c = ray ? trace(*ray) : Vec3{};
             sum += c;

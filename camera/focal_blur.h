@@ -27,6 +27,8 @@ private:
     int m_min_samples;
     std::vector<double> m_threshold;  ///< the variance below which n + 1 samples are enough
     std::vector<int> m_batches;       ///< the batch sizes before the default of 4
+    /// Sample n's unshifted Halton point (bases 2, 3, 5, 7), computed once: 4 values per sample.
+    std::vector<double> m_halton;
 };
 
 /// The inverse of the complemented chi-square distribution: the x with P(χ²(df) > x) = y (Cephes' chdtri).

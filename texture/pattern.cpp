@@ -95,11 +95,46 @@ double hexagon(const Vec3& p) {
     return (zl / xl) < 1.0 ? kBelow[zm] : kAbove[zm];
 }
 
+// The random points of the 81 unit cubes within a "3D knight move" of cube (x, y, z), in crackle's order.
+struct CrackleCube {
+    int x = 0, y = 0, z = 0;
+    bool valid = false;
+    Vec3 points[81];
+};
+
+// The points of the cubes around (fx, fy, fz), from a small per-thread cache: neighbouring rays, and the layers
+// of a texture, mostly ask for the same cubes, and each entry saves 81 hashes and 243 random numbers. The points
+// depend only on the cube, so the cache changes no value and no thread sees another's.
+const CrackleCube& crackle_cube(int fx, int fy, int fz) {
+    thread_local CrackleCube cache[16];
+    const unsigned slot = (static_cast<unsigned>(fx) * 73856093u ^ static_cast<unsigned>(fy) * 19349663u ^
+                           static_cast<unsigned>(fz) * 83492791u) & 15u;
+    CrackleCube& c = cache[slot];
+    if (c.valid && c.x == fx && c.y == fy && c.z == fz) return c;
+    int k = 0;
+    for (int ax = -2; ax <= 2; ++ax) {
+        for (int ay = -2; ay <= 2; ++ay) {
+            for (int az = -2; az <= 2; ++az) {
+                if ((std::abs(ax) == 2) + (std::abs(ay) == 2) + (std::abs(az) == 2) > 1) continue;
+                const int cx = fx + ax, cy = fy + ay, cz = fz + az;
+                const std::size_t seed = static_cast<std::size_t>(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
+                c.points[k++] = {cx + pattern_rand(seed), cy + pattern_rand(seed + 1), cz + pattern_rand(seed + 2)};
+            }
+        }
+    }
+    c.x = fx;
+    c.y = fy;
+    c.z = fz;
+    c.valid = true;
+    return c;
+}
+
 double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
     // Voronoi distances to one random point per unit cube in the 81 cubes within a "3D knight move".
     const int fx = static_cast<int>(std::floor(p.x - kEpsilon));
     const int fy = static_cast<int>(std::floor(p.y - kEpsilon));
     const int fz = static_cast<int>(std::floor(p.z - kEpsilon));
+    const CrackleCube& cube = crackle_cube(fx, fy, fz);
     const double metric = pat.crackle_metric;
     auto distance = [&](const Vec3& d) {
         if (metric == 2.0) return dot(d, d);
@@ -108,26 +143,18 @@ double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
     };
     double d[3] = {INFINITY, INFINITY, INFINITY};
     Vec3 nearest;
-    for (int ax = -2; ax <= 2; ++ax) {
-        for (int ay = -2; ay <= 2; ++ay) {
-            for (int az = -2; az <= 2; ++az) {
-                if ((std::abs(ax) == 2) + (std::abs(ay) == 2) + (std::abs(az) == 2) > 1) continue;
-                const int cx = fx + ax, cy = fy + ay, cz = fz + az;
-                const std::size_t seed = static_cast<std::size_t>(hash3d(cx & 0xFFF, cy & 0xFFF, cz & 0xFFF));
-                const Vec3 point{cx + pattern_rand(seed), cy + pattern_rand(seed + 1), cz + pattern_rand(seed + 2)};
-                const double s = distance(point - p);
-                if (s < d[0]) {
-                    d[2] = d[1];
-                    d[1] = d[0];
-                    d[0] = s;
-                    nearest = point;
-                } else if (s < d[1]) {
-                    d[2] = d[1];
-                    d[1] = s;
-                } else if (s < d[2]) {
-                    d[2] = s;
-                }
-            }
+    for (const Vec3& point : cube.points) {
+        const double s = distance(point - p);
+        if (s < d[0]) {
+            d[2] = d[1];
+            d[1] = d[0];
+            d[0] = s;
+            nearest = point;
+        } else if (s < d[1]) {
+            d[2] = d[1];
+            d[1] = s;
+        } else if (s < d[2]) {
+            d[2] = s;
         }
     }
     if (pat.crackle_offset != 0.0) {
