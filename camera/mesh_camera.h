@@ -33,8 +33,14 @@ private:
         Vec3 perp;               ///< POV-Ray's smooth-normal interpolation data
         int v_axis = 0;
     };
+    /// What distributions 0-2 need of a face: the ray leaves its centroid along its normal.
+    struct CentroidFace {
+        Vec3 centroid;
+        Vec3 normal;
+    };
     struct PlacedMesh {
-        std::vector<Face> faces;
+        std::vector<CentroidFace> centroids;  ///< every face, for distributions 0-2
+        std::vector<Face> faces;              ///< the whole faces, kept only for distribution 3's first mesh
         Transform transform;
     };
 

@@ -25,6 +25,7 @@ void SceneReader::parse_mesh_camera(CameraSpec& spec, const Token& kw) {
         mc.max_distance = parse_float();
         if (mc.max_distance != 0.0) warn_unsupported(at, "mesh_camera maximum ray distance");
     }
+    std::vector<MeshCameraSpec::PlacedMesh> meshes;
     while (true) {
         expand_macros();
         const Token t = peek();
@@ -37,7 +38,7 @@ void SceneReader::parse_mesh_camera(CameraSpec& spec, const Token& kw) {
         if (ov.parts.size() != 1 || !std::holds_alternative<Mesh>(ov.parts.front().object.shape))
             fail(t, "expected a mesh or mesh2 in mesh_camera");
         Object& o = ov.parts.front().object;
-        mc.meshes.push_back({std::move(std::get<Mesh>(o.shape)), o.transform});
+        meshes.push_back({std::move(std::get<Mesh>(o.shape)), o.transform});
     }
     if (is_word(peek(), "smooth")) {
         const Token s = next();
@@ -46,9 +47,10 @@ void SceneReader::parse_mesh_camera(CameraSpec& spec, const Token& kw) {
     }
     if (!accept("}")) fail(peek(), "expected mesh, mesh2, smooth or '}' in mesh_camera but found " +
                                        describe_token(peek()));
-    if (mc.meshes.empty()) fail(kw, "mesh_camera needs a mesh or mesh2");
-    if (mc.distribution == 0 && mc.rays_per_pixel > static_cast<int>(mc.meshes.size()))
+    if (meshes.empty()) fail(kw, "mesh_camera needs a mesh or mesh2");
+    if (mc.distribution == 0 && mc.rays_per_pixel > static_cast<int>(meshes.size()))
         fail(kw, "Rays per pixel must not be more than the number of meshes for distribution method #0");
+    mc.meshes = std::make_shared<const std::vector<MeshCameraSpec::PlacedMesh>>(std::move(meshes));
 }
 
 }  // namespace wardray::parser

@@ -1,6 +1,7 @@
 // Scene description, the camera.
 #pragma once
 
+#include <memory>
 #include <string_view>
 
 #include "core/diagnostics.h"
@@ -37,8 +38,13 @@ struct MeshCameraSpec {
     int distribution = 0;        ///< 0-3: how pixels pick faces (POV-Ray's Face_Distribution_Method)
     double max_distance = 0.0;   ///< the optional maximum ray length (0: none)
     bool smooth = false;         ///< distribution 3: interpolate the vertex normals
-    std::vector<PlacedMesh> meshes;
-    bool operator==(const MeshCameraSpec&) const = default;
+    /// Shared, never null: a camera is copied (by the parser, by each camera model) and its meshes can hold
+    /// millions of faces (a mesh per sample, a face per pixel).
+    std::shared_ptr<const std::vector<PlacedMesh>> meshes = std::make_shared<const std::vector<PlacedMesh>>();
+    bool operator==(const MeshCameraSpec& o) const {
+        return rays_per_pixel == o.rays_per_pixel && distribution == o.distribution &&
+               max_distance == o.max_distance && smooth == o.smooth && *meshes == *o.meshes;
+    }
 };
 
 /// The camera, resolved by the parser to POV-Ray's final vectors (after look_at, angle, sky and transforms).

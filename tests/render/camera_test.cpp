@@ -144,6 +144,7 @@ scene::Camera mesh_camera(int distribution, int rays, int meshes) {
     c.location = {0.0, 0.0, 0.25};
     c.mesh_camera.distribution = distribution;
     c.mesh_camera.rays_per_pixel = rays;
+    std::vector<scene::MeshCameraSpec::PlacedMesh> placed;
     for (int m = 0; m < meshes; ++m) {
         scene::MeshCameraSpec::PlacedMesh pm;
         // Faces wound so that POV-Ray's normal (P3 − P1) × (P2 − P1) is +z: four faces, one per pixel of 2 × 2.
@@ -155,8 +156,9 @@ scene::Camera mesh_camera(int distribution, int rays, int meshes) {
             pm.mesh.faces.push_back(f);
         }
         pm.transform = Transform::translation({0.0, 10.0 * m, 0.0});
-        c.mesh_camera.meshes.push_back(pm);
+        placed.push_back(pm);
     }
+    c.mesh_camera.meshes = std::make_shared<const std::vector<scene::MeshCameraSpec::PlacedMesh>>(placed);
     return c;
 }
 
@@ -196,7 +198,8 @@ TEST(Cameras, MeshCameraDistributions) {
 
 TEST(Cameras, MeshCameraUvDistributionFindsThePointOfEachUv) {
     scene::Camera c = mesh_camera(3, 1, 1);
-    scene::Mesh& m = c.mesh_camera.meshes[0].mesh;
+    std::vector<scene::MeshCameraSpec::PlacedMesh> placed = *c.mesh_camera.meshes;
+    scene::Mesh& m = placed[0].mesh;
     // One square face pair spanning uv [0, 1]², vertices (0..2, 0..2) in x, y.
     m.vertices = {{0, 0, 0}, {0, 2, 0}, {2, 2, 0}, {2, 0, 0}};
     m.uvs = {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};
@@ -204,6 +207,7 @@ TEST(Cameras, MeshCameraUvDistributionFindsThePointOfEachUv) {
     a.v = a.uv = {0, 1, 2};
     b.v = b.uv = {0, 2, 3};
     m.faces = {a, b};
+    c.mesh_camera.meshes = std::make_shared<const std::vector<scene::MeshCameraSpec::PlacedMesh>>(placed);
     const CameraModel cam(c, 10, 10);
     // Column 3 of 10: u = 3/10; row 4: v = 1 − 4/10 (POV-Ray samples the pixel's upper-left corner in uv).
     const auto r = cam.ray(3.5, 4.5);
