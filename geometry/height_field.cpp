@@ -125,8 +125,8 @@ std::optional<Bounds> HeightFieldShape::bounds() const {
     return Bounds{{0.0, m_y_lo / m_scale.y, 0.0}, {1.0, m_y_hi / m_scale.y, 1.0}};
 }
 
-void HeightFieldShape::intersect_cell(int x, int z, const LocalRay& g, double t0, double t1,
-                                      SurfaceHits& hits) const {
+void HeightFieldShape::intersect_cell(int x, int z, Walk& walk) const {
+    const LocalRay& g = walk.g;
     const double y1 = height(x, z), y2 = height(x + 1, z), y3 = height(x, z + 1), y4 = height(x + 1, z + 1);
     // The two triangles: (x, z), (x+1, z), (x, z+1) and (x+1, z+1), (x, z+1), (x+1, z), normals up.
     const Vec3 corners[2] = {{double(x), y1, double(z)}, {double(x + 1), y4, double(z + 1)}};
@@ -134,15 +134,17 @@ void HeightFieldShape::intersect_cell(int x, int z, const LocalRay& g, double t0
     for (int k = 0; k < 2; ++k) {
         const double dn = dot(normals[k], g.direction);
         if (!(std::fabs(dn) > k_epsilon)) continue;
+        // POV-Ray compat: the plane is met anywhere in the box, not only over this cell; the in-triangle test
+        // below, with its tolerance, decides, so a crossing up to k_edge past the cell's edge counts.
         const double t = dot(normals[k], corners[k] - g.origin) / dn;
-        if (!(t >= t0 && t <= t1)) continue;
+        if (!(t >= walk.t0 && t <= walk.t1)) continue;
         const double s = g.origin.x + t * g.direction.x - x, u = g.origin.z + t * g.direction.z - z;
         const bool in = k == 0 ? (s >= -k_edge && u >= -k_edge && s + u <= 1.0 + k_edge)
                                : (s <= 1.0 + k_edge && u <= 1.0 + k_edge && s + u >= 1.0 - k_edge);
         if (!in) continue;
         const Vec3 n = m_smooth ? smooth_normal(g.origin + t * g.direction)
                                 : Vec3{normals[k].x * m_scale.x, normals[k].y * m_scale.y, normals[k].z * m_scale.z};
-        hits.push({t, n, dn < 0.0});
+        walk.hits.push({t, n, dn < 0.0});
     }
 }
 
@@ -161,8 +163,8 @@ Vec3 HeightFieldShape::smooth_normal(const Vec3& p) const {
     return n;
 }
 
-void HeightFieldShape::visit(int level, int i, int j, const LocalRay& g, double t0, double t1,
-                             SurfaceHits& hits) const {
+void HeightFieldShape::visit(int level, int i, int j, double t0, double t1, Walk& walk) const {
+    const LocalRay& g = walk.g;
     const int span = 1 << level;
     const int cx = m_grid->width - 1, cz = m_grid->height - 1;
     if (!footprint_interval(g, double(i * span), double(std::min((i + 1) * span, cx)), double(j * span),
@@ -174,7 +176,7 @@ void HeightFieldShape::visit(int level, int i, int j, const LocalRay& g, double 
     const double slack = 1e-9 * (std::fabs(ya) + std::fabs(yb)) + k_offset;
     if (std::fmin(ya, yb) > r.hi + slack || std::fmax(ya, yb) < r.lo - slack) return;
     if (level == 0) {
-        intersect_cell(i, j, g, t0, t1, hits);
+        intersect_cell(i, j, walk);
         return;
     }
     // Children front to back: along x in the ray's x direction, along z in its z direction; the order of the
@@ -187,24 +189,25 @@ void HeightFieldShape::visit(int level, int i, int j, const LocalRay& g, double 
     for (const auto& o : order) {
         const int ci = 2 * i + o[0], cj = 2 * j + o[1];
         if (ci >= w || cj >= nd) continue;
-        visit(below, ci, cj, g, t0, t1, hits);
+        visit(below, ci, cj, t0, t1, walk);
     }
 }
 
 SurfaceHits HeightFieldShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
-    const LocalRay g{{ray.origin.x * m_scale.x, ray.origin.y * m_scale.y, ray.origin.z * m_scale.z},
-                     {ray.direction.x * m_scale.x, ray.direction.y * m_scale.y, ray.direction.z * m_scale.z}};
-    SurfaceHits hits;
+    Walk walk;
+    walk.g = {{ray.origin.x * m_scale.x, ray.origin.y * m_scale.y, ray.origin.z * m_scale.z},
+              {ray.direction.x * m_scale.x, ray.direction.y * m_scale.y, ray.direction.z * m_scale.z}};
     // POV-Ray compat: only the part of the ray inside the field's box counts, and nothing nearer than 1e-6.
     double s0 = 0.0, s1 = 0.0;
-    if (!slab_interval({0.0, m_y_lo, 0.0}, {m_scale.x, m_y_hi, m_scale.z}, g.origin, g.direction, s0, s1))
-        return hits;
-    const double t0 = std::max({s0, t_min, k_tolerance}), t1 = std::fmin(s1, t_max);
-    if (!(t0 <= t1)) return hits;
+    if (!slab_interval({0.0, m_y_lo, 0.0}, {m_scale.x, m_y_hi, m_scale.z}, walk.g.origin, walk.g.direction, s0, s1))
+        return {};
+    walk.t0 = std::max({s0, t_min, k_tolerance});
+    walk.t1 = std::fmin(s1, t_max);
+    if (!(walk.t0 <= walk.t1)) return {};
     const int top = static_cast<int>(m_levels.size()) - 1;
-    visit(top, 0, 0, g, t0, t1, hits);
-    hits.sort_by_t();
-    return without_repeated_crossings(hits);
+    visit(top, 0, 0, walk.t0, walk.t1, walk);
+    walk.hits.sort_by_t();
+    return without_repeated_crossings(walk.hits);
 }
 
 bool HeightFieldShape::inside(const Vec3& p_unit) const {

@@ -12,7 +12,8 @@ namespace wardray::geometry {
 
 /// The height field as POV-Ray 3.7 draws it. Internally in grid units (x and z count pixels, y counts 1/65536 of
 /// the height), bounded by POV-Ray's box (no higher or lower than the grid, nor below the water level); rays walk
-/// a min/max quadtree of the cells front to back and test each cell's two triangles with POV-Ray's tolerances.
+/// a min/max quadtree of the cells front to back and test each cell's two triangles with POV-Ray's tolerances
+/// (over the whole ray, as POV-Ray does, so a cell may add a crossing just past its edge).
 class HeightFieldShape {
 public:
     /// Nothing for a height field without a grid (an image that is not rendered yet).
@@ -33,10 +34,17 @@ private:
     double height(int x, int z) const { return static_cast<double>(m_grid->at(x, z)); }
     void build_tree();
     void build_normals();
-    /// Tests cell (x, z)'s two triangles, grid-space ray, t in [t0, t1]; appends grid-space hits.
-    void intersect_cell(int x, int z, const LocalRay& g, double t0, double t1, SurfaceHits& hits) const;
-    /// Walks node (i, j) of `level` front to back over t in [t0, t1].
-    void visit(int level, int i, int j, const LocalRay& g, double t0, double t1, SurfaceHits& hits) const;
+    /// A walk of the grid: the grid-space ray, its part [t0, t1] inside the box and the crossings found so far.
+    struct Walk {
+        LocalRay g;
+        double t0 = 0.0;
+        double t1 = 0.0;
+        SurfaceHits hits;
+    };
+    /// Tests cell (x, z)'s two triangles over the walk's whole ray; appends grid-space hits.
+    void intersect_cell(int x, int z, Walk& walk) const;
+    /// Walks node (i, j) of `level` front to back where the ray is over it, t in [t0, t1].
+    void visit(int level, int i, int j, double t0, double t1, Walk& walk) const;
     /// The smooth normal at grid point p (bilinear across its cell).
     Vec3 smooth_normal(const Vec3& p) const;
 

@@ -21,7 +21,7 @@ Vec3 Integrator::photon_light(const scene::Finish& finish, const Vec3& pigment, 
         // POV-Ray compat: the photon's flux is divided by the cosine it met the raw surface at (clamped to
         // [0.1, 1], against bright dots), so the finish's own cosine gives back the flux per area.
         const double c = std::clamp(dot(s.raw_normal, to_light), 0.1, 1.0);
-        const Vec3 arriving = photons::photon_colour(*ph) * (1.0 / c);
+        const Vec3 arriving = photons::photon_colour(*ph, gathered.exponent_offset) * (1.0 / c);
         if (!s.object->double_illuminate && dot(n, to_light) < kPovEpsilon) continue;
         sum += finish_light(finish, pigment, opacity, s, n, to_light, arriving, s.highlights, ph->point());
     }

@@ -84,9 +84,12 @@ bool spot_interval(const Segment& ray, const scene::Light& light, double& d1, do
     const double a = 1.0 - k1 * k1 * m;
     const double b = k3 - k1 * k2 * m;
     const double c = k4 - k2 * k2 * m;
+    // POV-Ray tests the discriminant (a squared length) against EPSILON; relative to the squared distance from the
+    // light the test is the same in any scene unit (a scene scaled by 1e-4 would otherwise see most rays graze).
+    const double epsilon = kPovEpsilon * k4;
     if (a != 0.0) {
         double d = b * b - a * c;
-        if (d > kPovEpsilon) {
+        if (d > epsilon) {
             d = std::sqrt(d);
             double t1 = (-b + d) / a, t2 = (-b - d) / a;
             if (t1 > t2) std::swap(t1, t2);
@@ -112,7 +115,7 @@ bool spot_interval(const Segment& ray, const scene::Light& light, double& d1, do
             d2 = t2;
             return true;
         }
-        if (d > -kPovEpsilon) {
+        if (d > -epsilon) {
             d1 = in_cone ? 0.0 : -b / a;
             d2 = in_cone ? -b / a : kMaxDistance;
             return true;
@@ -139,7 +142,8 @@ bool cylinder_interval(const Segment& ray, const scene::Light& light, double& d1
     const double b = k3 - k1 * k2;
     const double c = k4 - k2 * k2 - light.falloff * light.falloff;
     double d = b * b - a * c;
-    if (!(d > kPovEpsilon)) return false;
+    // As for spotlights: EPSILON relative to the squared distance from the light, whatever the scene's unit.
+    if (!(d > kPovEpsilon * k4)) return false;
     d = std::sqrt(d);
     double t1 = (-b + d) / a, t2 = (-b - d) / a;
     if (t1 > t2) std::swap(t1, t2);
@@ -272,10 +276,13 @@ void Walk::light_entries() {
         if (!light.media_interaction || light.shadowless) continue;
         double t1 = 0.0, t2 = m_depth;
         bool insert = true;
+        // POV-Ray drops a cone that ends within SMALL_TOLERANCE of the origin; as a fraction of the segment (or of
+        // the distance to the light, for a ray to the sky) it drops the same cones in any scene unit.
+        const double tolerance = kSmallTolerance * std::min(m_depth, length(m_ray.origin - light.position));
         if (light.type == scene::Light::Type::Spot)
-            insert = spot_interval(m_ray, light, t1, t2) && t1 < m_depth && t2 > kSmallTolerance;
+            insert = spot_interval(m_ray, light, t1, t2) && t1 < m_depth && t2 > tolerance;
         else if (light.type == scene::Light::Type::Cylinder)
-            insert = cylinder_interval(m_ray, light, t1, t2) && t1 < m_depth && t2 > kSmallTolerance;
+            insert = cylinder_interval(m_ray, light, t1, t2) && t1 < m_depth && t2 > tolerance;
         if (insert) m_entries.push_back({i, std::max(t1, 0.0), std::min(t2, m_depth)});
     }
 }

@@ -11,19 +11,33 @@
 
 namespace wardray::photons {
 
-Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin) {
+int flux_exponent_offset(double spacing, int dimensions) {
+    // Zero below a spacing of 1/32, where POV-Ray's byte holds its photons (a flux of spacing^n up to 2^5), so the
+    // maps are POV-Ray's there; beyond, the offset follows the spacing's binade, and the stored flux stays as it is
+    // at that spacing.
+    if (!(spacing > 0.0) || !std::isfinite(spacing)) return 0;
+    return std::max(0, dimensions * (std::ilogb(spacing) + 6));
+}
+
+Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin, int exponent_offset) {
     Photon ph;
     ph.position = {static_cast<float>(position.x), static_cast<float>(position.y), static_cast<float>(position.z)};
-    // Ward's RGBE: a shared exponent, 8-bit mantissas; POV-Ray biases the exponent by 250 for dim photons.
+    // Ward's RGBE: a shared exponent, 8-bit mantissas; POV-Ray biases the exponent by 250 for dim photons. The
+    // map's power-of-two offset comes off the exponent alone, so the mantissas are POV-Ray's at any offset, and a
+    // flux of spacing² or spacing³ stays in the byte's range (POV-Ray's wraps round past 2^5, at large scales).
     const float c[3] = {static_cast<float>(colour.x), static_cast<float>(colour.y), static_cast<float>(colour.z)};
     const float v = std::max(c[0], std::max(c[1], c[2]));
-    if (!(v >= 1e-32f)) {
+    int e = 0;
+    if (v > 0.0f) std::frexp(v, &e);
+    const int biased = e - exponent_offset + 250;
+    if (!(std::ldexp(static_cast<double>(v), -exponent_offset) >= static_cast<double>(1e-32f)) || biased < 1) {
         ph.rgbe = {0, 0, 0, 0};
+    } else if (biased > 255) {
+        ph.rgbe = {255, 255, 255, 255};
     } else {
-        int e = 0;
         const float scale = static_cast<float>(std::frexp(v, &e) * 256.0 / v);
         for (int i = 0; i < 3; ++i) ph.rgbe[i] = static_cast<std::uint8_t>(std::max(0.0f, c[i] * scale));
-        ph.rgbe[3] = static_cast<std::uint8_t>(e + 250);
+        ph.rgbe[3] = static_cast<std::uint8_t>(biased);
     }
     // The direction towards the origin as two angles of 127 steps per π (POV-Ray's addSurfacePhoton).
     const Vec3 d = normalize(origin - position);
@@ -37,9 +51,9 @@ Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin)
     return ph;
 }
 
-Vec3 photon_colour(const Photon& p) {
+Vec3 photon_colour(const Photon& p, int exponent_offset) {
     if (p.rgbe[3] == 0) return {};
-    const float f = static_cast<float>(std::ldexp(1.0, static_cast<int>(p.rgbe[3]) - (250 + 8)));
+    const float f = static_cast<float>(std::ldexp(1.0, static_cast<int>(p.rgbe[3]) - (250 + 8) + exponent_offset));
     return {p.rgbe[0] * f, p.rgbe[1] * f, p.rgbe[2] * f};
 }
 
@@ -50,12 +64,13 @@ Vec3 photon_direction(const Photon& p) {
 }
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media,
-                     std::uint64_t seed)
+                     std::uint64_t seed, int exponent_offset)
     : m_photons(std::move(photons)),
       m_gather_max(settings.gather_max),
       m_gather_min(settings.gather_min),
       m_expand_tolerance(settings.expand_tolerance),
-      m_expand_min(settings.expand_min) {
+      m_expand_min(settings.expand_min),
+      m_exponent_offset(exponent_offset) {
     if (m_photons.empty()) return;
     build(0, static_cast<int>(m_photons.size()));
     estimate_radius(settings, media, seed);
@@ -115,6 +130,7 @@ void PhotonMap::search(int begin, int end, const Vec3& p, const Vec3* n, double&
 void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out) const {
     out.photons.clear();
     out.radius = size;
+    out.exponent_offset = m_exponent_offset;
     if (m_photons.empty() || m_gather_max <= 0) return;
     std::vector<std::pair<double, const Photon*>> heap;
     heap.reserve(static_cast<std::size_t>(m_gather_max) + 1);
@@ -188,7 +204,7 @@ double MediaPhotonGather::gather(const Vec3& p, std::vector<Sample>& out) const 
     Gathered g;
     m_map.gather_adaptive(p, nullptr, g);
     out.clear();
-    for (const Photon* ph : g.photons) out.push_back({photon_colour(*ph), photon_direction(*ph)});
+    for (const Photon* ph : g.photons) out.push_back({photon_colour(*ph, g.exponent_offset), photon_direction(*ph)});
     return g.radius;
 }
 

@@ -23,10 +23,14 @@ struct Photon {
     Vec3 point() const { return {position[0], position[1], position[2]}; }
 };
 
-/// Packs a photon: its position, its colour (flux) and the point it came from.
-Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin);
-/// The photon's colour as POV-Ray unpacks it.
-Vec3 photon_colour(const Photon& p);
+/// The power of two a map's photons are stored divided by, so that their RGBE exponent byte holds them at any
+/// scene scale: a photon's flux grows as spacing² on surfaces (`dimensions` 2) and spacing³ in media (3). Zero
+/// for spacings below 1/32 (POV-Ray's storage, exactly).
+int flux_exponent_offset(double spacing, int dimensions);
+/// Packs a photon: its position, its colour (flux) divided by 2^exponent_offset and the point it came from.
+Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin, int exponent_offset = 0);
+/// The photon's colour as POV-Ray unpacks it, times 2^exponent_offset (its map's).
+Vec3 photon_colour(const Photon& p, int exponent_offset = 0);
 /// The unit direction from the photon towards where it came from, from its two bytes.
 Vec3 photon_direction(const Photon& p);
 
@@ -34,6 +38,7 @@ Vec3 photon_direction(const Photon& p);
 struct Gathered {
     std::vector<const Photon*> photons;
     double radius = 0.0;
+    int exponent_offset = 0;  ///< the map's: photon_colour(*photon, exponent_offset) is a photon's flux
 };
 
 /// The photon map: built once after shooting, then read by every thread.
@@ -43,8 +48,9 @@ public:
     /// (setGatherOptions: estimated from the photons' density unless the settings give it), with a fixed seed
     /// turned by the render seed `seed` (--seed). `media`: a map of photons in media, whose radius comes from their
     /// density in volume (POV-Ray's mediaMap).
+    /// `exponent_offset`: the one the photons were made with (flux_exponent_offset).
     PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media = false,
-              std::uint64_t seed = 0);
+              std::uint64_t seed = 0, int exponent_offset = 0);
 
     std::size_t size() const { return m_photons.size(); }
     /// The photons in the kd-tree's order.
@@ -74,6 +80,7 @@ private:
     int m_expand_min = 35;
     double m_min_radius = 0.0;
     double m_radius_step = 0.0;
+    int m_exponent_offset = 0;
 };
 
 /// The media photon map as the media gather reads it (POV-Ray's ComputeMediaPhotons through its PhotonGatherer).

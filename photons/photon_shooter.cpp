@@ -239,7 +239,7 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
     for (Unit& u : units) u.light_interiors = objects_containing(scene, u.light->position);
     stats.spacing = spacing;
     stats.units = units.size();
-    const PhotonTracer tracer(scene, geometry, seed);
+    const PhotonTracer tracer(scene, geometry, seed, spacing);
     std::vector<Photon> photons, media_photons;
     for (std::size_t ui = 0; ui < units.size(); ++ui) {
         const Unit& u = units[ui];
@@ -281,13 +281,15 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
     if (media_map) {
         media_map->reset();
         if (!media_photons.empty()) {
-            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true, seed);
+            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true, seed,
+                                                             tracer.media_offset());
             stats.media_gather_radius = (*media_map)->min_gather_radius();
         }
     }
     std::unique_ptr<const PhotonMap> map;
     if (!photons.empty()) {
-        map = std::make_unique<const PhotonMap>(std::move(photons), settings, false, seed);
+        map = std::make_unique<const PhotonMap>(std::move(photons), settings, false, seed,
+                                             tracer.surface_offset());
         stats.gather_radius = map->min_gather_radius();
     }
     stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();

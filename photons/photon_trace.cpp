@@ -58,8 +58,10 @@ struct PhotonTracer::Path {
     bool hit_target = false;
 };
 
-PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed)
-    : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator) {
+PhotonTracer::PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed,
+                           double spacing)
+    : m_scene(scene), m_geometry(geometry), m_noise_generator(scene.global.noise_generator),
+      m_surface_offset(flux_exponent_offset(spacing, 2)), m_media_offset(flux_exponent_offset(spacing, 3)) {
     const scene::PhotonSettings& s = *scene.global.photons;
     m_max_level = s.max_trace_level >= 0 ? s.max_trace_level : scene.global.max_trace_level;
     m_bailout = s.adc_bailout >= 0.0 ? s.adc_bailout : scene.global.adc_bailout;
@@ -170,7 +172,7 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
             a = 2.0 / (1.0 + std::pow(path.depth / light.fade_distance, light.fade_power));
         Vec3 flux = colour * (a * unit.spread * unit.spread);
         if (!unit.parallel) flux = flux * (path.depth * path.depth);
-        path.out->push_back(make_photon(hit.position, flux, ray.origin));
+        path.out->push_back(make_photon(hit.position, flux, ray.origin, m_surface_offset));
     }
     if (path.pass_this) {
         // POV-Ray compat: a pass_through object lets the photon on unchanged, and its depth is not taken back.
@@ -338,7 +340,7 @@ void PhotonTracer::through_media(const geometry::Hit& hit, const RayIn& ray, Vec
             a = 2.0 / (1.0 + std::pow(depth / light.fade_distance, light.fade_power));
         Vec3 flux = incoming * (d.factor * unit.spread * a * unit.spread * unit.spread);
         if (!unit.parallel) flux = flux * (depth * depth * depth);
-        path.media_out->push_back(make_photon(ray.origin + ray.dir * d.t, flux, ray.origin));
+        path.media_out->push_back(make_photon(ray.origin + ray.dir * d.t, flux, ray.origin, m_media_offset));
     }
 }
 

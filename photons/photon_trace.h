@@ -36,8 +36,10 @@ std::vector<const scene::Object*> objects_containing(const scene::Scene& scene, 
 /// Traces photons; stateless, so one instance serves every thread.
 class PhotonTracer {
 public:
-    /// `seed` is the render seed (--seed), which turns the jitter of media deposits.
-    PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed = 0);
+    /// `seed` is the render seed (--seed), which turns the jitter of media deposits; `spacing` the photons' (it
+    /// sets the maps' flux_exponent_offset).
+    PhotonTracer(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed = 0,
+                 double spacing = 1.0);
 
     PhotonTracer(const PhotonTracer&) = delete;
     PhotonTracer& operator=(const PhotonTracer&) = delete;
@@ -48,6 +50,10 @@ public:
     /// autostop).
     bool shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& dir, const Vec3& colour, std::vector<Photon>& out,
                std::vector<Photon>& media_out) const;
+
+    /// The power of two the surface and the media photons are stored divided by (flux_exponent_offset).
+    int surface_offset() const { return m_surface_offset; }
+    int media_offset() const { return m_media_offset; }
 
 private:
     struct Path;
@@ -83,6 +89,8 @@ private:
     int m_max_level = 5;
     double m_bailout = 1.0 / 255.0;
     int m_noise_generator = 2;
+    int m_surface_offset = 0;
+    int m_media_offset = 0;
 };
 
 }  // namespace wardray::photons

@@ -228,6 +228,36 @@ TEST(HeightField, FunctionImageHeightsAreCutAsPovRayStoresThem) {
     }
 }
 
+TEST(HeightField, CellTrianglesAreTestedPastTheCellAsPovRayDoes) {
+    // POV-Ray tests a cell's triangles over the whole ray within the box and keeps a crossing up to 0.0001 of a cell
+    // outside the triangle, even where it lies over the next cell. Here cell (0, 0) rises steeply (0 to 30146 and
+    // 39976 over one z step) to a flat ramp in x; a ray along +z just above the edge z = 1 never meets the surface
+    // but meets cell (0, 0)'s upper plane 3.75e-5 cells past the edge. POV-Ray 3.7's trace() from
+    // <0.1, (31129 + d) / 65536, 0.25> along +z hits at unit z 0.500001251, 0.500006254, 0.500012508, 0.500018761
+    // for d = 0.1, 0.5, 1, 1.5 (wallstucco.pov's brick wall casts such shadows on itself).
+    parser::ParseOptions options;
+    const parser::ParseResult r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\n"
+        "height_field { function 2, 3 { select(y - 0.75, 0.46 + 0.15 * x, 0) } }",
+        "hf.pov", options);
+    ASSERT_TRUE(r.ok());
+    const auto& hf = std::get<scene::HeightField>(r.scene->objects.front().shape);
+    ASSERT_TRUE(hf.grid);
+    ASSERT_EQ(hf.grid->at(0, 1), 30146u);
+    ASSERT_EQ(hf.grid->at(1, 1), 39976u);
+    ASSERT_EQ(hf.grid->at(1, 2), 39976u);
+    const auto shape = HeightFieldShape::create(hf);
+    ASSERT_TRUE(shape);
+    const double edge = 30146.0 + 0.1 * (39976.0 - 30146.0);
+    const double d[4] = {0.1, 0.5, 1.0, 1.5}, pov_z[4] = {0.500001251, 0.500006254, 0.500012508, 0.500018761};
+    for (int k = 0; k < 4; ++k) {
+        const SurfaceHits h =
+            shape->intersect_all({{0.1, (edge + d[k]) / 65536.0, 0.25}, {0.0, 0.0, 1.0}}, 0.0, INFINITY);
+        ASSERT_FALSE(h.empty()) << "d = " << d[k];
+        EXPECT_NEAR(0.25 + h[0].t, pov_z[k], 1e-9) << "d = " << d[k];
+    }
+}
+
 TEST(HeightField, ClippedQuadricIsCulledByTheClipBoxAsPovRayDoes) {
     // hfclip.pov: an infinite cylinder quadric clipped by a height field. The field's inside reaches down without
     // end, but POV-Ray tests a clipped top-level object only on rays that meet its bounding box (the clip's box,

@@ -119,6 +119,54 @@ TEST(ParticipatingMedia, OnlyASceneWithMediaHasAny) {
     EXPECT_TRUE(ParticipatingMedia::in_scene(s));
 }
 
+// What a medium lit by one spot or cylinder light scatters along `ray` with the whole scene scaled by `scale`:
+// positions, lengths and the cylinder's falloff times scale, the scattering coefficient divided by it.
+Vec3 scattered_at_scale(scene::Light::Type type, Segment ray, double scale) {
+    scene::Media m;
+    m.method = 3;
+    m.jitter = 0.0;
+    m.scattering = {0.3 / scale, 0.3 / scale, 0.3 / scale};
+    scene::Scene s = scene_with(m);
+    scene::Light& light = s.lights.front();
+    light.type = type;
+    light.position = Vec3{0.0, 10.0, 0.0} * scale;
+    light.point_at = {0.0, 0.0, 0.0};
+    if (type == scene::Light::Type::Cylinder) {
+        light.radius = 1.0 * scale;
+        light.falloff = 1.82 * scale;
+    } else {
+        light.radius = 15.0;
+        light.falloff = 20.0;  // degrees: 1.82 from the axis at y = 5
+    }
+    ray.origin = ray.origin * scale;
+    ray.length *= scale;
+    const ParticipatingMedia media(s);
+    const ConstantLight lit({2.0, 2.0, 2.0});
+    return media.along(media.atmosphere(), ray, {0.5, 0.5, 0.5}, lit);
+}
+
+TEST(ParticipatingMedia, ASpotlightsConeScattersTheSameAtAnyScale) {
+    // A segment inside the cone, shorter than POV-Ray's SMALL_TOLERANCE (0.001) once scaled by 1e-4: the cone is
+    // dropped there if the tolerance is absolute.
+    const Segment inside{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, 1.0};
+    const Vec3 unit = scattered_at_scale(scene::Light::Type::Spot, inside, 1.0);
+    ASSERT_GT(unit.x, 0.6);  // more than the 0.5·exp(−0.3) behind: the cone lights it
+    for (double scale : {1e-4, 1e4})
+        EXPECT_NEAR(scattered_at_scale(scene::Light::Type::Spot, inside, scale).x, unit.x, 1e-9 * unit.x) << scale;
+}
+
+TEST(ParticipatingMedia, ARayGrazingALightsBeamScattersTheSameAtAnyScale) {
+    // A ray to the sky grazing the beam 0.08 inside its edge: the discriminant (0.08² at unit size, a squared
+    // length) falls below EPSILON at 1e-4 if compared with it as it is, and the ray counts as lit to MAX_DISTANCE.
+    const Segment grazing{{-20.0, 5.0, std::sqrt(1.82 * 1.82 - 0.08 * 0.08)}, {1.0, 0.0, 0.0}, HUGE_VAL};
+    for (scene::Light::Type type : {scene::Light::Type::Spot, scene::Light::Type::Cylinder}) {
+        const Vec3 unit = scattered_at_scale(type, grazing, 1.0);
+        ASSERT_GT(unit.x, 0.0);
+        for (double scale : {1e-4, 1e4})
+            EXPECT_NEAR(scattered_at_scale(type, grazing, scale).x, unit.x, 1e-6 * unit.x) << scale;
+    }
+}
+
 TEST(ChiSquare, InverseTailMatchesTabulatedQuantiles) {
     // Upper-tail quantiles of the chi-square distribution (standard tables).
     EXPECT_NEAR(inverse_chi_square_tail(1.0, 0.95), 0.00393214, 1e-7);

@@ -24,6 +24,26 @@ TEST(PhotonPacking, ColourKeepsEightBitsOfTheLargestChannel) {
     EXPECT_EQ(photon_colour(make_photon({0, 0, 0}, {0, 0, 0}, {0, 1, 0})), (Vec3{0, 0, 0}));
 }
 
+TEST(PhotonPacking, ColourOfAPhotonKeepsItsValueAtAnyScale) {
+    // A media photon carries spacing³ times the light: a scene scaled by 1e4 (spacing 0.01 -> 100) makes it 1e12
+    // times brighter, past what POV-Ray's exponent byte (bias 250) holds; its map's offset keeps it in range.
+    const Vec3 c{0.8, 0.5, 0.2};
+    for (double spacing : {1e-6, 0.01, 1.0, 100.0, 1e4}) {
+        const int offset = flux_exponent_offset(spacing, 3);
+        const Vec3 flux = c * (spacing * spacing * spacing);
+        const Vec3 back = photon_colour(make_photon({0, 0, 0}, flux, {0, 1, 0}, offset), offset);
+        EXPECT_NEAR(back.x, flux.x, flux.x / 128.0) << spacing;
+        EXPECT_NEAR(back.z, flux.z, flux.x / 128.0) << spacing;
+    }
+    // The offset changes only the exponent: the bytes of the mantissas are those without it.
+    const Vec3 flux{0.0123, 0.0071, 0.00042};
+    const Photon plain = make_photon({0, 0, 0}, flux, {0, 1, 0});
+    const Photon shifted = make_photon({0, 0, 0}, flux, {0, 1, 0}, 21);
+    EXPECT_EQ(photon_colour(plain), photon_colour(shifted, 21));
+    EXPECT_EQ(flux_exponent_offset(0.01, 3), 0);  // at POV-Ray's usual spacings, POV-Ray's bytes
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(plain.rgbe[i], shifted.rgbe[i]);
+}
+
 TEST(PhotonPacking, DirectionWithinOneStepOfTheTruth) {
     Random rng(7);
     for (int i = 0; i < 200; ++i) {

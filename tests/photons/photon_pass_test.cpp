@@ -38,7 +38,7 @@ TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
         Gathered g;
         map->gather_adaptive(p, {0, 1, 0}, g);
         Vec3 flux;
-        for (const Photon* ph : g.photons) flux += photon_colour(*ph);
+        for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
         const Vec3 density = flux / (std::numbers::pi * g.radius * g.radius);
         const double cos_theta = 10.0 / length(Vec3{0, 10, 0} - p);
         EXPECT_NEAR(density.x, 0.8 * cos_theta, 0.8 * 0.05) << p.x;
@@ -133,7 +133,7 @@ TEST(MediaPhotons, AbsorbingMediumDimsThePhotonsBeyond) {
         Gathered g;
         map->gather_adaptive(Vec3{0.3, 0.0, -0.2}, {0, 1, 0}, g);
         Vec3 flux;
-        for (const Photon* ph : g.photons) flux += photon_colour(*ph);
+        for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
         const double cos_theta = 10.0 / length(Vec3{0.3, -10.0, -0.2});
         const double expected = 0.8 * cos_theta * std::exp(-0.5 * 2.0 / cos_theta);
         EXPECT_NEAR(flux.x / (std::numbers::pi * g.radius * g.radius), expected, expected * 0.03) << media;
