@@ -3,9 +3,11 @@
 // nested intersections and merges become one node whose picture is the nested tree's, byte for byte.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <set>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "lighting/integrator.h"
@@ -175,6 +177,23 @@ TEST(DeepCsg, ADifferenceSplicesOnlyAsTheFirstChild) {
     const auto& kept = std::get<scene::Csg>(b.scene->objects.front().shape).children;
     ASSERT_EQ(kept.size(), 2u);
     EXPECT_TRUE(std::holds_alternative<scene::Csg>(kept[1].shape));
+}
+
+TEST(DeepCsg, ATreeTooDeepToFlattenIsLeftOutNotAStackOverflow) {
+    // 5,000 levels of `difference { A <level i - 1> }`: not flattened (A - (B - C) is not A - B - C), so the geometry
+    // refuses the object past 1,000 levels instead of recursing off the stack (SIGSEGV before).
+    constexpr int levels = 5000;
+    std::string text = kHeader;
+    for (int i = levels - 1; i >= 0; --i) text += "difference {\nsphere { 0, " + std::to_string(1.5 + 0.001 * i) + " }\n";
+    text += std::string(kFirst) + "\n";
+    for (int i = 0; i < levels; ++i) text += "}\n";
+    text += "sphere { <1, 1, 0>, 0.5 pigment { rgb 1 } }\n";
+    const parser::ParseResult parsed = parse_text(text);
+    ASSERT_TRUE(parsed.ok());
+    ASSERT_EQ(parsed.scene->objects.size(), 2u);
+    const geometry::SceneGeometry geometry(*parsed.scene);
+    ASSERT_EQ(geometry.skipped_objects(), std::vector<std::uint32_t>{0});
+    EXPECT_TRUE(render_scene(*parsed.scene).ok);
 }
 
 }  // namespace
