@@ -65,7 +65,8 @@ void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint
         d.severity = Severity::Warning;
         d.loc = scene.objects[index].loc;
         d.message = std::string(scene::shape_keyword(scene.objects[index].shape)) +
-                    " is degenerate (zero size, singular transform or non-finite numbers) and is not rendered";
+                    " is degenerate (zero size, singular transform or non-finite numbers) or nested more than 1000 "
+                                      "levels deep, and is not rendered";
         std::cerr << format_diagnostic(d);
     }
 }

@@ -40,7 +40,9 @@ private:
     enum class Rule { All, Inside, Outside };  // which crossings survive: all, inside others, outside others
 
     CsgShape() = default;
-    bool keeps(std::size_t child, const Vec3& p) const;
+    /// POV-Ray's rule for a crossing of `child` at p; `rejecter` is the child that rejected the previous crossing
+    /// (the scan starts there; updated), or any value past the last child.
+    bool keeps(std::size_t child, const Vec3& p, std::size_t& rejecter) const;
 
     Rule m_rule = Rule::All;
     bool m_inside_all = false;  ///< inside needs all children (intersection, difference) or any (union, merge)

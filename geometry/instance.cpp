@@ -8,6 +8,21 @@ namespace wardray::geometry {
 
 namespace {
 
+// CSG nodes nest at most this deep once the parser has flattened what it can (nested unions, intersections and
+// merges): building, tracing and freeing a tree recurse once per level on ordinary thread stacks, which 4,000
+// levels of `difference { A difference { ... } }` overflowed. 1,000 levels render.
+constexpr int k_max_csg_depth = 1000;
+thread_local int t_csg_depth = 0;
+
+// One CSG level of ShapeInstance::create's recursion while it is alive (a leaf adds none).
+struct CsgDepthGuard {
+    explicit CsgDepthGuard(bool csg) : m_csg(csg) { t_csg_depth += m_csg; }
+    ~CsgDepthGuard() { t_csg_depth -= m_csg; }
+    CsgDepthGuard(const CsgDepthGuard&) = delete;
+    CsgDepthGuard& operator=(const CsgDepthGuard&) = delete;
+    int m_csg;
+};
+
 template <typename Shape, typename Description>
 std::optional<AnyShape> wrap(const Description& d) {
     if (auto r = Shape::create(d)) return AnyShape(std::move(*r));
@@ -111,6 +126,9 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     // (csg.h); other shapes flip their inside and normals.
     const bool inverted = object.inverse != flip_inverse;
     const auto* csg = std::get_if<scene::Csg>(&object.shape);
+    // A CSG nested too deep is skipped (the whole top-level object, reported by the app), not a stack overflow.
+    const CsgDepthGuard depth(csg != nullptr);
+    if (t_csg_depth > k_max_csg_depth) return std::nullopt;
     std::optional<AnyShape> shape;
     if (csg && inverted) {
         if (auto c = CsgShape::create(*csg, true)) shape = AnyShape(std::move(*c));

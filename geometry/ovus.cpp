@@ -64,7 +64,11 @@ SurfaceHits OvusShape::intersect_all(const LocalRay& ray, double t_min, double t
     SurfaceHits hits;
     const auto line = centre_line(ray);
     if (!line) return hits;
-    const auto& [u, o, s0, len] = *line;
+    const Vec3& u = line->u;
+    const Vec3& o = line->o;
+    // Plain names, not structured bindings: clang 14 (the fuzz build) cannot capture those in a lambda.
+    const double s0 = line->s0;
+    const double len = line->length;
     const Vec3 top_centre{0.0, m_bottom, 0.0};
     auto add = [&](double s, auto&& keep, auto&& normal_at) {
         const double t = (s0 + s) / len;

@@ -103,10 +103,9 @@ bool ObjectReader::is_object_start(const Token& t) {
 
 namespace {
 
-// True when `node` is a CSG node of `op` that adds nothing of its own to its children, so that as the first child of
-// another node of `op` it can give that node its children instead: an intersection in an intersection, a merge in
-// a merge, a difference as a difference's first child (A - B - C), each without placement, texture, interior,
-// flags, clips or bounds.
+// True when `node` is a CSG node of `op` adding nothing of its own to its children (no placement, texture, interior,
+// flags, clips or bounds), so that as a child of a node of `op` it can give it its children instead: an intersection
+// or merge at any position (both are associative), a difference as a difference's first child (A - B - C).
 bool splices_into(const Object& node, Csg::Op op) {
     // Every member, named so a new one fails to compile here until it is judged too.
     const auto& [shape, transform, texture, interior, interior_id, hollow_set, inverse, no_shadow, no_image,
@@ -235,11 +234,13 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
             ov.copied += child.copied;
             auto o = as_single_object(child);
             if (!o) return;
-            // A first child that is the same operation and adds nothing of its own is the same node:
-            // `intersection { intersection { ... } ... }` nested any depth becomes one node (no deep tree to build,
-            // trace or free recursively). Its children then lead this node's, as they did inside it.
-            if (csg.children.empty() && splices_into(*o, csg.op)) {
-                csg.children = std::move(std::get<Csg>(o->shape).children);
+            // A same-op child adding nothing of its own joins this node at any depth, A B C D for `intersection { A
+            // intersection { B C } D }` (no deep tree); a difference only as its first child (not A - (B - C)).
+            if ((csg.children.empty() || csg.op != Csg::Op::Difference) && splices_into(*o, csg.op)) {
+                auto& inner = std::get<Csg>(o->shape).children;
+                if (csg.children.empty()) std::swap(csg.children, inner);
+                csg.children.insert(csg.children.end(), std::make_move_iterator(inner.begin()),
+                                    std::make_move_iterator(inner.end()));
                 return;
             }
             csg.children.push_back(std::move(*o));

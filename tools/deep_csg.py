@@ -2,10 +2,12 @@
 """Writes the deep-structure scenes of docs/reports/deep_csg.md: CSG nested N levels, and a declared object used
 many times.
 
-  deep_csg.py redeclare N [--op union|intersection|difference|merge] > u.pov
+  deep_csg.py redeclare N [--op union|intersection|difference|merge] [--last] > u.pov
       #declare U = sphere {...}; #for (I, 1, N) #declare U = union { object { U } sphere {...} } #end object { U }
-  deep_csg.py nested N [--op ...] > n.pov      the same tree written out as N textually nested blocks
-  deep_csg.py shallow N > s.pov                the same spheres in one flat union (what both unions above mean)
+      (--last: the previous value is the node's last child, `union { sphere {...} object { U } }`)
+  deep_csg.py nested N [--op ...] [--last] > n.pov   the same tree written out as N textually nested blocks
+  deep_csg.py shallow N [--op ...] [--last] > s.pov  the same spheres in one flat node (what a nested union,
+                                               intersection or merge means), in the order the nested form has them
   deep_csg.py uses N > t.pov                   a textured Tree union declared once and used N times, translated
 """
 import argparse
@@ -19,19 +21,17 @@ background { rgb <0.1, 0.1, 0.2> }
 """
 
 
-def sphere_at(i, n):
-    """The i-th small sphere, with the loop's expressions (so all three forms hold the same bits)."""
-    return loop_sphere("union").replace("I", str(i))
-
-
 def first():
     return "sphere { 0, 1.5 pigment { rgb <0.8, 0.8, 0.8> } }"
 
 
-def redeclare(n, op):
+def redeclare(n, op, last=False):
     out = [HEADER, "#declare U = %s\n" % first(), "#declare I = 0;\n#while (I < %d)\n" % n]
     # The loop keeps the scene short; every turn nests the previous value one level deeper.
-    out.append("  #declare U = %s { object { U } %s }\n" % (op, loop_sphere(op)))
+    if last:
+        out.append("  #declare U = %s { %s object { U } }\n" % (op, loop_sphere(op)))
+    else:
+        out.append("  #declare U = %s { object { U } %s }\n" % (op, loop_sphere(op)))
     out.append("  #declare I = I + 1;\n#end\nobject { U }\n")
     return "".join(out)
 
@@ -48,8 +48,15 @@ def nested_sphere(i, op):
     return loop_sphere(op).replace("I", str(i))
 
 
-def nested(n, op):
+def nested(n, op, last=False):
     out = [HEADER]
+    if last:
+        # Level I is `op { sphere I <level I - 1> }`, the first sphere innermost.
+        for i in reversed(range(n)):
+            out.append("%s {\n%s\n" % (op, nested_sphere(i, op)))
+        out.append(first() + "\n")
+        out.append("}\n" * n)
+        return "".join(out)
     out.append("%s {\n" % op * n)
     out.append(first() + "\n")
     for i in range(n):
@@ -57,12 +64,11 @@ def nested(n, op):
     return "".join(out)
 
 
-def shallow(n):
-    out = [HEADER, "union {\n", first() + "\n"]
-    for i in range(n):
-        out.append(sphere_at(i, 0) + "\n")
-    out.append("}\n")
-    return "".join(out)
+def shallow(n, op="union", last=False):
+    spheres = [nested_sphere(i, op) + "\n" for i in range(n)]
+    if last:
+        return "".join([HEADER, "%s {\n" % op] + spheres[::-1] + [first() + "\n", "}\n"])
+    return "".join([HEADER, "%s {\n" % op, first() + "\n"] + spheres + ["}\n"])
 
 
 def uses(n):
@@ -85,13 +91,14 @@ def main():
     ap.add_argument("form", choices=["redeclare", "nested", "shallow", "uses"])
     ap.add_argument("n", type=int)
     ap.add_argument("--op", default="union", choices=["union", "intersection", "difference", "merge"])
+    ap.add_argument("--last", action="store_true", help="the nested node is its parent's last child, not its first")
     a = ap.parse_args()
     if a.form == "redeclare":
-        sys.stdout.write(redeclare(a.n, a.op))
+        sys.stdout.write(redeclare(a.n, a.op, a.last))
     elif a.form == "nested":
-        sys.stdout.write(nested(a.n, a.op))
+        sys.stdout.write(nested(a.n, a.op, a.last))
     elif a.form == "shallow":
-        sys.stdout.write(shallow(a.n))
+        sys.stdout.write(shallow(a.n, a.op, a.last))
     else:
         sys.stdout.write(uses(a.n))
 
