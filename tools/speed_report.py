@@ -9,7 +9,9 @@ its folder by both programs with the same switches: the size asked, `-A` (no ant
 otherwise, `+WT<threads>`, PNG output, no display. The renders alternate, POV-Ray then wardray, `--runs` times, so
 that a change in the machine's load falls on both alike; the report gives each program's median wall time (parse,
 photons, pretrace and render: the whole run, as a user waits for it), their ratio, and the sum over the group.
-A render that fails or takes longer than `--timeout` seconds is named and left out of the sums.
+A render that fails or takes longer than `--timeout` seconds is named and left out of the sums. `--baseline` names
+an older wardray binary that renders each scene too, in the same alternation, to show what a change costs or saves
+(a scene without a feature should take the same time as before it).
 
 The numbers are wall times on a shared machine: quote them as ratios, and run the tool again before trusting a
 ratio near 1.
@@ -62,9 +64,11 @@ def time_scene(scene, args, work_root):
     common = [f"+I{source.name}", f"+W{width}", f"+H{height}", f"+WT{args.threads}", "+FN", "-D", *args.aa.split()]
     commands = {"povray": [args.povray, *common, "+Opovray.png", "-V"],
                 "wardray": [str(args.wardray), *common, "+Owardray.png"]}
-    result = {"scene": scene, "povray": [], "wardray": [], "error": None}
+    if args.baseline:
+        commands["baseline"] = [str(args.baseline), *common, "+Obaseline.png"]
+    result = {"scene": scene, "error": None, **{name: [] for name in commands}}
     for _ in range(args.runs):
-        for name in ("povray", "wardray"):
+        for name in commands:
             seconds, error = render(commands[name], work, args.timeout)
             if error:
                 result["error"] = f"{name}: {error}"
@@ -80,8 +84,9 @@ def report(results, args, started):
              f"{started:%Y-%m-%d %H:%M} UTC, `{' '.join(sys.argv[1:])}`: {args.size[0]}x{args.size[1]}, "
              f"`{args.aa}`, +WT{args.threads} each, {args.runs} alternating run(s), median wall seconds; "
              f"{platform.node()}, {len(results)} scene(s).", "",
-             "| scene | POV-Ray s | wardray s | wardray / POV-Ray |", "|---|---:|---:|---:|"]
-    total_pov = total_ward = 0.0
+             "| scene | POV-Ray s | wardray s | wardray / POV-Ray |" + (" baseline s | wardray / baseline |" if args.baseline else ""),
+             "|---|---:|---:|---:|" + ("---:|---:|" if args.baseline else "")]
+    total_pov = total_ward = total_base = 0.0
     slower, failed = [], []
     for r in results:
         if r["error"]:
@@ -93,12 +98,19 @@ def report(results, args, started):
         total_ward += ward
         if ward > pov:
             slower.append(r["scene"])
-        lines.append(f"| {r['scene']} | {pov:.2f} | {ward:.2f} | {ward / pov:.2f} |")
+        row = f"| {r['scene']} | {pov:.2f} | {ward:.2f} | {ward / pov:.2f} |"
+        if args.baseline:
+            base = statistics.median(r["baseline"])
+            total_base += base
+            row += f" {base:.2f} | {ward / base:.2f} |"
+        lines.append(row)
     timed = len(results) - len(failed)
     if timed:
-        lines += ["", f"Sum over the {timed} timed scene(s): POV-Ray {total_pov:.1f} s, wardray {total_ward:.1f} s, "
+        lines += ["", f"Sum over the {timed} timed scene(s): POV-Ray {total_pov:.2f} s, wardray {total_ward:.2f} s, "
                       f"ratio **{total_ward / total_pov:.2f}**. wardray slower on {len(slower)}: "
                       f"{', '.join(slower) if slower else 'none'}."]
+        if args.baseline:
+            lines += ["", f"Baseline `{args.baseline}`: {total_base:.2f} s; wardray / baseline **{total_ward / total_base:.2f}**."]
     if failed:
         lines += ["", f"Not timed ({len(failed)}): " + "; ".join(f"{r['scene']} ({r['error']})" for r in failed) + "."]
     return "\n".join(lines) + "\n"
@@ -113,6 +125,7 @@ def main():
     ap.add_argument("--size", default="320x240", type=lambda s: tuple(int(v) for v in s.split("x")))
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--baseline", type=pathlib.Path, help="an older wardray, timed alongside")
     ap.add_argument("--aa", default="-A", help="antialiasing switches given to both, e.g. '+A0.3'")
     ap.add_argument("--timeout", type=float, default=300)
     ap.add_argument("--title", default="Speed, side by side")
@@ -126,6 +139,8 @@ def main():
     if missing:
         ap.error(f"not below {census.EXAMPLES}: {', '.join(missing)}")
     args.wardray = args.wardray.resolve()
+    if args.baseline:
+        args.baseline = args.baseline.resolve()
     started = datetime.datetime.now(datetime.timezone.utc)
     results = []
     for i, scene in enumerate(scenes, 1):
