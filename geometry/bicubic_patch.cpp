@@ -100,9 +100,11 @@ struct Tessellator {
     int u_steps, v_steps;
     double flat;
     scene::Mesh mesh;
+    std::vector<Vec3> params;  ///< each vertex's (u, v, 0)
 
     int vertex(const Vec3& world, double u, double v) {
         mesh.vertices.push_back(placement.inverse_point(world));
+        params.push_back({u, v, 0.0});
         // Normals go back by the transpose of the placement's linear part: the inverse's normal map.
         mesh.normals.push_back(to_object.normal(patch_normal(whole, u, v)));
         return static_cast<int>(mesh.vertices.size()) - 1;
@@ -155,7 +157,19 @@ std::optional<MeshShape> MeshShape::create(const scene::BicubicPatch& bp) {
     Tessellator t{world, bp.placement, bp.placement.inverse(), bp.u_steps, bp.v_steps, bp.flatness, {}};
     t.mesh.kind = scene::Mesh::Kind::Mesh;
     t.build(world, 0.0, 1.0, 0.0, 1.0, 0);
-    return create(t.mesh);
+    auto shape = create(t.mesh);
+    // POV-Ray compat: a hit's (u, v) is the triangle's blend of its corners' (u, v), as intersect_subpatch gives.
+    if (shape) shape->m_params = std::move(t.params);
+    return shape;
+}
+
+Vec3 bicubic_patch_uv(const scene::BicubicPatch& patch, const Vec3& params) {
+    const auto& st = patch.uv_vectors;
+    const double s = params.y, t = params.x;
+    const Vec3 a = st[0] + s * (st[1] - st[0]);
+    const Vec3 b = st[3] + s * (st[2] - st[3]);
+    const Vec3 uv = a + t * (b - a);
+    return {uv.x, uv.y, 0.0};
 }
 
 }  // namespace wardray::geometry

@@ -248,7 +248,12 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
     Vec3 n = normalize(m_transform.normal(h->normal));
     if (!is_finite(n)) return std::nullopt;
     if (m_inverse) n = -n;
-    return Hit{h->t, origin + h->t * direction, n, m_index, m_object, mesh->faces()[face].source, bary[0], bary[1]};
+    Hit hit{h->t, origin + h->t * direction, n, m_index, m_object, mesh->faces()[face].source, bary[0], bary[1]};
+    if (const auto params = mesh->params_at(face, bary[0], bary[1])) {
+        hit.has_params = true;
+        hit.params = *params;
+    }
+    return hit;
 }
 
 bool ShapeInstance::visible_to(RayKind kind) const {

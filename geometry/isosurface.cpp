@@ -35,6 +35,7 @@ struct IsosurfaceShape::Trace {
 IsosurfaceShape::IsosurfaceShape(const scene::Isosurface& iso)
     : m_iso(std::make_shared<const scene::Isosurface>(iso)), m_gradient(std::make_shared<IsosurfaceGradient>()) {
     m_context.noise_generator = iso.noise_generator;
+    m_gradient->carried.store(iso.max_gradient, std::memory_order_relaxed);
 }
 
 std::optional<IsosurfaceShape> IsosurfaceShape::create(const scene::Isosurface& iso) {
@@ -203,7 +204,18 @@ SurfaceHits IsosurfaceShape::intersect_all(const LocalRay& ray, double t_min, do
     if (!container_interval(ray, d1, d2, side1, side2)) return hits;
     const scene::Isosurface& iso = *m_iso;
     const double acc = iso.accuracy;
-    double maxg = iso.max_gradient;
+    // POV-Ray compat: with `evaluate`, each ray starts from the largest bound the rays before it ended with (POV-Ray
+    // 3.7 stores it back into the object's max_gradient after every ray, shadow rays too), so the render order
+    // matters, as it does in POV-Ray; without `evaluate` every ray starts from max_gradient.
+    double maxg = iso.evaluate ? m_gradient->carried.load(std::memory_order_relaxed) : iso.max_gradient;
+    struct CarryBack {
+        const scene::Isosurface& iso;
+        IsosurfaceGradient& gradient;
+        const double& maxg;
+        ~CarryBack() {
+            if (iso.evaluate) IsosurfaceGradient::raise(gradient.carried, maxg);
+        }
+    } carry_back{iso, *m_gradient, maxg};
     Trace tr{ray.origin, ray.direction, length(ray.direction)};
     if (!(tr.length > 0.0) || !std::isfinite(tr.length)) return hits;
     d1 = std::max(d1, 0.0);

@@ -11,13 +11,18 @@
 namespace wardray::geometry {
 
 /// The largest gradient the root finder met along any ray, shared by the copies of one isosurface, for POV-Ray's
-/// warning that `max_gradient` is too low (or needlessly high).
+/// warning that `max_gradient` is too low (or needlessly high); and, with `evaluate`, the gradient bound carried
+/// from ray to ray.
 struct IsosurfaceGradient {
     std::atomic<double> found{0.0};
+    /// With `evaluate`: the largest bound any ray ended with, where the next ray starts (POV-Ray's max_gradient).
+    std::atomic<double> carried{0.0};
     /// Raises the maximum to `g` (relaxed: only the final value matters).
-    void observe(double g) {
-        double seen = found.load(std::memory_order_relaxed);
-        while (g > seen && !found.compare_exchange_weak(seen, g, std::memory_order_relaxed)) {}
+    void observe(double g) { raise(found, g); }
+    /// Raises `value` to `g` (relaxed).
+    static void raise(std::atomic<double>& value, double g) {
+        double seen = value.load(std::memory_order_relaxed);
+        while (g > seen && !value.compare_exchange_weak(seen, g, std::memory_order_relaxed)) {}
     }
 };
 

@@ -74,6 +74,12 @@ void MeshShape::finish() {
         for (int k = 0; k < 3; ++k) m_bounds = m_bounds.merged({m_vertices[f.v[k]], m_vertices[f.v[k]]});
 }
 
+std::optional<Vec3> MeshShape::params_at(std::size_t face, double bary_u, double bary_v) const {
+    if (m_params.empty() || face >= m_faces.size()) return std::nullopt;
+    const Face& f = m_faces[face];
+    return (1.0 - bary_u - bary_v) * m_params[f.v[0]] + bary_u * m_params[f.v[1]] + bary_v * m_params[f.v[2]];
+}
+
 std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::size_t index, double t_min,
                                                     double t_max, bool known_hit, double* bary) const {
     const Face& f = m_faces[index];

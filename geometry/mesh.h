@@ -45,6 +45,9 @@ public:
 
     const std::vector<Vec3>& vertices() const { return m_vertices; }
     const std::vector<Face>& faces() const { return m_faces; }
+    /// The surface parameters at a face's point of barycentric weights (bary_u, bary_v) for its second and third
+    /// corners, interpolated from the vertices' (a tessellated bicubic patch's (u, v)); nothing without them.
+    std::optional<Vec3> params_at(std::size_t face, double bary_u, double bary_v) const;
 
 private:
     MeshShape() = default;
@@ -53,9 +56,14 @@ private:
     std::vector<Vec3> m_vertices;
     std::vector<Vec3> m_normals;
     std::vector<Face> m_faces;
+    std::vector<Vec3> m_params;  ///< per vertex, or empty
     Vec3 m_inside_vector;
     Bounds m_bounds;
 };
+
+/// POV-Ray's texture coordinates of a bicubic patch at its parameters (u, v): the uv_vectors blended bilinearly,
+/// the first pair of corners along v (POV-Ray's Compute_Texture_UV with the point (v, u)).
+Vec3 bicubic_patch_uv(const scene::BicubicPatch& patch, const Vec3& params);
 
 /// POV-Ray's sub-polygons of a point list: each closes when its first point repeats; an unclosed rest is closed.
 std::vector<std::vector<Vec3>> polygon_loops(const std::vector<Vec3>& points);

@@ -37,6 +37,9 @@ struct Hit {
     std::int32_t face = -1;
     double bary_u = 0.0;
     double bary_v = 0.0;
+    /// The surface's own parameters at the hit where a top-level shape has them (a bicubic patch's (u, v, 0)).
+    bool has_params = false;
+    Vec3 params;
 };
 
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/mesh.h"
 #include "geometry/scene_geometry.h"
 #include "core/constants.h"
 #include "lighting/integrator.h"
@@ -58,6 +59,8 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
     const auto* mesh = hit.face >= 0 ? std::get_if<scene::Mesh>(&object.shape) : nullptr;
     if (mesh == nullptr) {
+        if (const auto* patch = std::get_if<scene::BicubicPatch>(&object.shape); patch && hit.has_params)
+            s.p_uv = geometry::bicubic_patch_uv(*patch, hit.params);
         if (object.uv_mapping) s.p_texture = s.p_uv;
         return shade_texture(texture, s, warps, state, ctx);
     }

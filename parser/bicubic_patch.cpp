@@ -36,12 +36,11 @@ BicubicPatch Parser::read_bicubic_patch(const Token& kw) {
             parse_float();  // POV-Ray reads it for bicubic patches and never uses it
         } else if (is_word(t, "uv_vectors")) {
             next();
-            warn_unsupported(t, "bicubic_patch uv_vectors");
             for (int k = 0; k < 4; ++k) {
                 if (k > 0) accept(",");
-                parse_vector();
+                const Vec3 uv = parse_vector();
+                patch.uv_vectors[k] = {uv.x, uv.y, 0.0};
             }
-            break;
         } else if (t.kind == TokenKind::Number) {
             // POV-Ray 1's syntax: type, [flatness for types 2 and 3,] u_steps, v_steps as bare floats.
             patch.type = static_cast<int>(parse_float());

@@ -208,6 +208,8 @@ void SceneReader::warn_uv_unsupported(const Object& o, bool in_csg) {
     bool uses = o.uv_mapping || texture_uses_uv(o.texture, nested);
     for (const Texture& t : o.interior_texture) uses = texture_uses_uv(t, nested) || uses;
     const auto* mesh = std::get_if<Mesh>(&o.shape);
+    // A top-level bicubic patch has uv coordinates as a mesh has, under the same conditions.
+    const bool has_uv = mesh != nullptr || std::holds_alternative<BicubicPatch>(o.shape);
     if (mesh)
         for (const Texture& t : mesh->textures) uses = texture_uses_uv(t, nested) || uses;
     if (const auto* csg = std::get_if<Csg>(&o.shape))
@@ -216,8 +218,9 @@ void SceneReader::warn_uv_unsupported(const Object& o, bool in_csg) {
     std::string what;
     if (nested) what = "uv_mapping inside a pigment_map or normal_map";
     else if (std::holds_alternative<Csg>(o.shape)) what = "uv_mapping on the parts of a CSG";
-    else if (!mesh) what = std::string("uv_mapping on ") + std::string(shape_keyword(o.shape));
-    else if (in_csg || !o.clipped_by.empty() || o.inverse) what = "uv_mapping on a mesh in CSG, clipped or inverse";
+    else if (!has_uv) what = std::string("uv_mapping on ") + std::string(shape_keyword(o.shape));
+    else if (in_csg || !o.clipped_by.empty() || o.inverse)
+        what = std::string("uv_mapping on a ") + (mesh ? "mesh" : "bicubic_patch") + " in CSG, clipped or inverse";
     if (what.empty()) return;
     Diagnostic d;
     d.severity = Severity::Warning;

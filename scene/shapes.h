@@ -107,6 +107,9 @@ struct BicubicPatch {
     int u_steps = 0;
     int v_steps = 0;
     std::array<Vec3, 16> points{};
+    /// `uv_vectors`: the texture (u, v, 0) at the patch corners (u, v) = (0, 0), (1, 0), (1, 1), (0, 1) of
+    /// POV-Ray's corner order, for uv_mapping; POV-Ray's defaults without them.
+    std::array<Vec3, 4> uv_vectors{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}}};
     /// Every transform applied to the patch since it was read (its own and its CSG parents'), in order: POV-Ray
     /// tessellates the transformed control points, so flatness is measured after it.
     Transform placement;

@@ -100,5 +100,58 @@ TEST(BicubicPatch, FlatnessIsMeasuredAfterTheTransforms) {
     EXPECT_EQ(faces("translate 5 rotate 30*y"), small);
 }
 
+// uv_mapping: a hit carries the patch's (u, v), blended from its triangle's corners as POV-Ray's
+// intersect_subpatch does, and uv_vectors map it bilinearly to texture coordinates (POV-Ray's Compute_Texture_UV
+// of the point (v, u)). On a patch whose x and y are linear in (u, v) the parameters are exactly (x / 3, y / 3).
+TEST(BicubicPatch, HitsCarryThePatchParametersAndUvVectorsMapThem) {
+    scene::BicubicPatch p = height_patch(3, 3, 0.0);
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    const MeshShape& mesh = std::get<MeshShape>(inst->shape());
+    int checked = 0;
+    for (double x : {0.4, 1.3, 2.05, 2.9})
+        for (double y : {0.2, 1.1, 2.7}) {
+            const Vec3 origin{x, y, 10.0}, dir{0.0, 0.0, -1.0};
+            for (std::size_t f = 0; f < mesh.faces().size(); ++f) {
+                if (!mesh.intersect_face({origin, dir}, f, 0.0, INFINITY)) continue;
+                const auto hit = inst->face_hit(origin, dir, f, 0.0, INFINITY);
+                ASSERT_TRUE(hit && hit->has_params);
+                EXPECT_NEAR(hit->params.x, x / 3.0, 1e-12);
+                EXPECT_NEAR(hit->params.y, y / 3.0, 1e-12);
+                ++checked;
+                break;
+            }
+        }
+    EXPECT_EQ(checked, 12);
+    // POV-Ray's default uv_vectors <0,0> <1,0> <1,1> <0,1> give (v, u); others blend bilinearly.
+    const Vec3 params{0.25, 0.75, 0.0};
+    const Vec3 uv = bicubic_patch_uv(p, params);
+    EXPECT_DOUBLE_EQ(uv.x, 0.75);
+    EXPECT_DOUBLE_EQ(uv.y, 0.25);
+    p.uv_vectors = {{{1.0, 0.0, 0.0}, {3.0, 0.0, 0.0}, {3.0, 4.0, 0.0}, {1.0, 2.0, 0.0}}};
+    const Vec3 mapped = bicubic_patch_uv(p, params);
+    // (s, t) = (v, u) = (0.75, 0.25): rows (1,0)->(3,0) at s gives (2.5, 0), (1,2)->(3,4) gives (2.5, 3.5).
+    EXPECT_DOUBLE_EQ(mapped.x, 2.5);
+    EXPECT_DOUBLE_EQ(mapped.y, 0.25 * 3.5);
+}
+
+// The parser keeps uv_vectors and reads the patch's other keywords after them.
+TEST(BicubicPatch, UvVectorsAreReadWithoutAWarning) {
+    parser::ParseOptions options;
+    const auto r = parser::parse_string(
+        "global_settings { assumed_gamma 1 }\n"
+        "bicubic_patch { type 1 uv_vectors <0,0> <2,0> <2,1> <0,1> flatness 0.01 u_steps 2 v_steps 2 "
+        "<0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,1>,<2,1,1>,<3,1,0>, <0,2,0>,<1,2,1>,<2,2,1>,<3,2,0>, "
+        "<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> uv_mapping pigment { checker } }",
+        "patch.pov", options);
+    ASSERT_TRUE(r.ok());
+    for (const auto& d : r.diagnostics) EXPECT_NE(d.severity, Severity::Warning) << d.message;
+    const auto& patch = std::get<scene::BicubicPatch>(r.scene->objects.at(0).shape);
+    EXPECT_EQ(patch.uv_vectors[1], (Vec3{2.0, 0.0, 0.0}));
+    EXPECT_EQ(patch.uv_vectors[2], (Vec3{2.0, 1.0, 0.0}));
+    EXPECT_DOUBLE_EQ(patch.flatness, 0.01);
+    EXPECT_EQ(patch.u_steps, 2);
+}
+
 }  // namespace
 }  // namespace wardray::geometry

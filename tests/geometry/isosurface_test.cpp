@@ -203,5 +203,39 @@ TEST(Isosurface, MaxGradientTooLowWarnsWithTheGradientFound) {
     EXPECT_EQ(w->loc.line, 3u);
 }
 
+// With `evaluate`, POV-Ray 3.7 keeps the gradient bound a ray ended with for the next ray, so rays traced after
+// steep ones search more finely: shapes.inc's Supertorus (portfolio/o_shapes.pov's last frame, evaluate 1, 10, 0.1)
+// shows its grazing silhouette only when the rays before it have raised the bound.
+TEST(Isosurface, EvaluateCarriesTheGradientBoundFromRayToRay) {
+    const std::string text = "#include \"shapes.inc\"\nobject { Supertorus(0.6, 0.3, 0.50, 0.2, 0.0001, 0) }";
+    const auto silhouette_hits = [](const ShapeInstance& inst) {
+        int hits = 0;
+        for (int i = 0; i < 400; ++i) {
+            const double x = 0.85 + 0.0001 * i;  // across the outer silhouette at |x| = 0.9
+            if (!inst.intersect_all({x, 0.05, -3.0}, {0.0, 0.0, 1.0}, 1e-6, INFINITY).empty()) ++hits;
+        }
+        return hits;
+    };
+    const auto fresh = ShapeInstance::create(parse_object(text), 0);
+    const auto warmed = ShapeInstance::create(parse_object(text), 0);
+    ASSERT_TRUE(fresh.has_value() && warmed.has_value());
+    ASSERT_TRUE(iso_of(*warmed).description().evaluate);
+    // Rays across the tube's steep walls first raise the carried bound.
+    for (int i = 0; i < 200; ++i) warmed->intersect_all({-0.9 + 0.009 * i, 0.02, -3.0}, {0.0, 0.0, 1.0}, 1e-6, INFINITY);
+    const int fresh_hits = silhouette_hits(*fresh);
+    const int warmed_hits = silhouette_hits(*warmed);
+    EXPECT_GT(warmed_hits, fresh_hits);
+    // Without `evaluate` the bound is max_gradient on every ray: the order of rays changes nothing.
+    const std::string fixed = "isosurface { function { y - sin(8*x)*0.5 } max_gradient 1 contained_by { box { -1, 1 } } }";
+    const auto a = ShapeInstance::create(parse_object(fixed), 0);
+    const auto b = ShapeInstance::create(parse_object(fixed), 0);
+    ASSERT_TRUE(a.has_value() && b.has_value());
+    for (int i = 0; i < 50; ++i) b->intersect_all({-0.9 + 0.036 * i, 3.0, -0.3}, {0.0, -1.0, 0.1}, 1e-6, INFINITY);
+    for (int i = 0; i < 100; ++i) {
+        const Vec3 o{-3.0, 0.01 * i - 0.5, 0.1}, d{1.0, 0.02, 0.0};
+        EXPECT_EQ(a->intersect_all(o, d, 1e-6, INFINITY).size(), b->intersect_all(o, d, 1e-6, INFINITY).size());
+    }
+}
+
 }  // namespace
 }  // namespace wardray::geometry
