@@ -86,9 +86,10 @@ SurfaceHits CsgShape::intersect_all(const LocalRay& ray, double t_min, double t_
     const auto& kids = *m_children;
     std::size_t rejecter = kids.size();  // none yet
     for (std::size_t i = 0; i < kids.size(); ++i) {
-        for (const SurfaceHit& h : kids[i].intersect_all(ray.origin, ray.direction, t_min, t_max)) {
+        // Normals are mapped only for the crossings kept: most crossings of an intersection's children are not.
+        for (const SurfaceHit& h : kids[i].object_crossings(ray.origin, ray.direction, t_min, t_max)) {
             if (m_rule != Rule::All && !keeps(i, ray.origin + h.t * ray.direction, rejecter)) continue;
-            hits.push(h);
+            if (const auto hit = kids[i].to_parent(h)) hits.push(*hit);
         }
     }
     hits.sort_by_t();

@@ -185,18 +185,25 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
 
 SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& direction, double t_min,
                                          double t_max) const {
+    SurfaceHits hits;
+    for (const SurfaceHit& h : object_crossings(origin, direction, t_min, t_max))
+        if (const auto hit = to_parent(h)) hits.push(*hit);
+    return hits;
+}
+
+SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& direction, double t_min,
+                                            double t_max) const {
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d.
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
-    SurfaceHits hits;
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
         double s0 = 0.0, s1 = 0.0;
         if (!slab_interval(m_world_bounds->lower, m_world_bounds->upper, origin, direction, s0, s1) ||
             s1 < 1e-4 / length(direction))
-            return hits;
+            return {};
     }
-    if (m_bounds && !ray_in_bounds(local)) return hits;
-    const SurfaceHits object_hits = std::visit(
+    if (m_bounds && !ray_in_bounds(local)) return {};
+    SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
             // POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray discards crossings within 1e-4 of a ray's origin; shapes
             // whose crossings are found only to a tolerance (julia_fractal) would see their own surface there.
@@ -205,18 +212,21 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
             else return s.intersect_all(local, t_min, t_max);
         },
         m_shape);
+    if (!m_clips) return object_hits;
+    SurfaceHits kept;
     for (const SurfaceHit& h : object_hits) {
-        if (m_clips) {
-            const Vec3 p = local.origin + h.t * local.direction;
-            bool kept = true;
-            for (const ShapeInstance& c : *m_clips) kept = kept && c.inside(p);
-            if (!kept) continue;
-        }
-        Vec3 n = normalize(m_transform.normal(h.normal));
-        if (!is_finite(n) || !std::isfinite(h.t)) continue;
-        hits.push({h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object});
+        const Vec3 p = local.origin + h.t * local.direction;
+        bool inside_clips = true;
+        for (const ShapeInstance& c : *m_clips) inside_clips = inside_clips && c.inside(p);
+        if (inside_clips) kept.push(h);
     }
-    return hits;
+    return kept;
+}
+
+std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
+    const Vec3 n = normalize(m_transform.normal(h.normal));
+    if (!is_finite(n) || !std::isfinite(h.t)) return std::nullopt;
+    return SurfaceHit{h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object};
 }
 
 bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
@@ -224,17 +234,24 @@ bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
     const double t_start = 1e-4 / length(m_transform.vector(ray.direction));
     for (const ShapeInstance& b : *m_bounds)
-        if (!b.inside(ray.origin) && b.intersect_all(ray.origin, ray.direction, t_start, INFINITY).empty())
+        if (!b.inside(ray.origin) && !b.crosses(ray.origin, ray.direction, t_start, INFINITY))
             return false;
     return true;
 }
 
 std::optional<Hit> ShapeInstance::nearest(const Vec3& origin, const Vec3& direction, double t_min,
                                           double t_max) const {
-    const SurfaceHits hits = intersect_all(origin, direction, t_min, t_max);
-    if (hits.empty()) return std::nullopt;
-    const SurfaceHit& h = hits[0];
-    return Hit{h.t, origin + h.t * direction, h.normal, m_index, h.leaf};
+    // The crossings come sorted by t: only the first one with a finite normal needs its normal mapped.
+    for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max)) {
+        if (const auto h = to_parent(crossing)) return Hit{h->t, origin + h->t * direction, h->normal, m_index, h->leaf};
+    }
+    return std::nullopt;
+}
+
+bool ShapeInstance::crosses(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const {
+    for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max))
+        if (to_parent(crossing)) return true;
+    return false;
 }
 
 std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direction, std::size_t face,

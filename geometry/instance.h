@@ -53,8 +53,15 @@ public:
     /// Surface crossings of the ray with t in (t_min, t_max); normals are unit, in the parent's space, pointing
     /// out of the object (inverse objects flip them and the entering flags); `leaf` names the primitive hit.
     SurfaceHits intersect_all(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
+    /// intersect_all's crossings before their normals are mapped: object-space normals (not unit, inverse not
+    /// applied), for callers that keep only some crossings (CSG) and map those with to_parent().
+    SurfaceHits object_crossings(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
+    /// An object_crossings() crossing as intersect_all gives it, or nothing when its normal is not finite.
+    std::optional<SurfaceHit> to_parent(const SurfaceHit& h) const;
     /// The nearest crossing with t in (t_min, t_max), as a Hit.
     std::optional<Hit> nearest(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
+    /// True when intersect_all would find a crossing (shadow rays), without mapping every normal.
+    bool crosses(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
     /// For meshes: the crossing with one face that Embree found in float, recomputed in double, as a Hit.
     std::optional<Hit> face_hit(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
                                 double t_max) const;

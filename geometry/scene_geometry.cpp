@@ -141,7 +141,7 @@ void occluded_callback(const RTCOccludedFunctionNArguments* args) {
     const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
     const ShapeInstance& inst = impl->bounded[args->primID];
     if (!inst.visible_to(RayKind::Shadow)) return;
-    if (inst.intersect_all(q->origin, q->direction, q->t_min, q->t_best).empty()) return;
+    if (!inst.crosses(q->origin, q->direction, q->t_min, q->t_best)) return;
     q->has_hit = true;
     reinterpret_cast<RTCRay*>(args->ray)->tfar = -std::numeric_limits<float>::infinity();
 }
@@ -431,7 +431,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     const double t_min = first_t(*m_impl, ray);
     if (!(t_min < ray.t_max)) return false;
     for (const ShapeInstance& inst : m_impl->unbounded)
-        if (inst.visible_to(RayKind::Shadow) && !inst.intersect_all(ray.origin, ray.direction, t_min, ray.t_max).empty())
+        if (inst.visible_to(RayKind::Shadow) && inst.crosses(ray.origin, ray.direction, t_min, ray.t_max))
             return true;
     QueryContext q;
     rtcInitIntersectContext(&q.base);

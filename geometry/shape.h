@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct SurfaceHit {
     const scene::Object* leaf = nullptr;  ///< the primitive whose surface this is (set by ShapeInstance)
 };
 
+static_assert(std::is_trivially_copyable_v<SurfaceHit> && std::is_trivially_destructible_v<SurfaceHit>);
+
 /// The surface crossings of a ray with one shape inside (t_min, t_max), sorted by t.
 /// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes).
 class SurfaceHits {
@@ -62,23 +65,34 @@ public:
         if (this == &o) return *this;
         m_count = o.m_count;
         m_heap = o.m_heap;
-        if (m_heap.empty()) std::copy(o.m_inline.begin(), o.m_inline.begin() + m_count, m_inline.begin());
+        if (m_heap.empty()) std::copy(o.m_inline.items, o.m_inline.items + m_count, m_inline.items);
         return *this;
     }
 
     /// Appends a crossing; callers add them in increasing t or call sort_by_t() afterwards.
     void push(const SurfaceHit& hit) {
         if (m_heap.empty() && m_count < inline_capacity) {
-            m_inline[m_count++] = hit;
+            m_inline.items[m_count++] = hit;
             return;
         }
-        if (m_heap.empty()) m_heap.assign(m_inline.begin(), m_inline.begin() + m_count);
+        if (m_heap.empty()) m_heap.assign(m_inline.items, m_inline.items + m_count);
         m_heap.push_back(hit);
         ++m_count;
     }
     /// Orders the crossings by t (stable, so equal t keep their insertion order).
     void sort_by_t() {
-        std::stable_sort(data(), data() + m_count, [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+        SurfaceHit* h = data();
+        if (m_count > inline_capacity) {
+            std::stable_sort(h, h + m_count, [](const SurfaceHit& a, const SurfaceHit& b) { return a.t < b.t; });
+            return;
+        }
+        // A few crossings: insertion sort, as stable as std::stable_sort and without its temporary buffer.
+        for (std::size_t i = 1; i < m_count; ++i) {
+            const SurfaceHit x = h[i];
+            std::size_t j = i;
+            for (; j > 0 && x.t < h[j - 1].t; --j) h[j] = h[j - 1];
+            h[j] = x;
+        }
     }
     /// Number of crossings held.
     std::size_t size() const { return m_count; }
@@ -91,10 +105,16 @@ public:
     const SurfaceHit* end() const { return data() + m_count; }
 
 private:
-    SurfaceHit* data() { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
-    const SurfaceHit* data() const { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
+    SurfaceHit* data() { return m_heap.empty() ? m_inline.items : m_heap.data(); }
+    const SurfaceHit* data() const { return m_heap.empty() ? m_inline.items : m_heap.data(); }
 
-    std::array<SurfaceHit, inline_capacity> m_inline{};
+    /// The inline crossings, left uninitialised beyond m_count: every shape returns a SurfaceHits per ray and
+    /// child, and filling all six slots each time cost more than the intersection of a plane.
+    union InlineHits {
+        InlineHits() {}
+        SurfaceHit items[inline_capacity];
+    };
+    InlineHits m_inline;
     std::vector<SurfaceHit> m_heap;
     std::size_t m_count = 0;
 };

@@ -60,6 +60,33 @@ TEST(Csg, InsideFollowsTheTruthTables) {
     }
 }
 
+// The nearest hit and the shadow test agree to the bit with the first of all crossings (they map only the
+// normals they need).
+TEST(Csg, NearestAndCrossesAgreeWithAllCrossings) {
+    Random rng(9);
+    for (scene::Csg::Op op : kOps) {
+        int hit = 0;
+        for (int trial = 0; trial < 200; ++trial) {
+            const scene::Object obj = random_csg(rng, op, true);
+            const auto inst = ShapeInstance::create(obj, 3);
+            ASSERT_TRUE(inst);
+            const Vec3 target = obj.transform.point(rng.vec(-1, 1));
+            const Vec3 origin = target + rng.direction() * rng.uniform(1.0, 15.0);
+            const Vec3 dir = normalize(target - origin);
+            const SurfaceHits hits = inst->intersect_all(origin, dir, 0.0, 1e30);
+            const auto nearest = inst->nearest(origin, dir, 0.0, 1e30);
+            ASSERT_EQ(nearest.has_value(), !hits.empty());
+            EXPECT_EQ(inst->crosses(origin, dir, 0.0, 1e30), !hits.empty());
+            if (!nearest) continue;
+            ++hit;
+            EXPECT_EQ(nearest->t, hits[0].t);
+            EXPECT_EQ(nearest->normal, hits[0].normal);
+            EXPECT_EQ(nearest->leaf, hits[0].leaf);
+        }
+        EXPECT_GT(hit, 10);
+    }
+}
+
 // Every crossing of an intersection, difference or merge separates inside from outside of the whole CSG,
 // lies on the surface of the leaf it names, and (for bounded results) inside the CSG's bounds.
 TEST(Csg, CrossingsSeparateInsideFromOutside) {

@@ -40,11 +40,13 @@ void check_random_hits(bool inverse, int shape_kind_seed) {
             EXPECT_TRUE(inst->inside(p - eps * h.normal)) << "trial " << trial;
             ++checked;
         }
-        // The nearest hit agrees with the first crossing.
+        // The nearest hit agrees with the first crossing, to the bit; shadow rays see a crossing exactly then.
         const auto nearest = inst->nearest(ray.origin, ray.direction, 0.0, 1e30);
         ASSERT_EQ(nearest.has_value(), !hits.empty());
+        EXPECT_EQ(inst->crosses(ray.origin, ray.direction, 0.0, 1e30), !hits.empty());
         if (nearest) {
             EXPECT_EQ(nearest->t, hits[0].t);
+            EXPECT_EQ(nearest->normal, hits[0].normal);
             EXPECT_EQ(nearest->object, 7u);
         }
     }
@@ -57,6 +59,24 @@ TEST(Shapes, RandomRaysHitSurfaceWithOutwardUnitNormals) {
 
 TEST(Shapes, InverseFlipsNormalsAndInside) {
     for (int seed = 0; seed < 3; ++seed) check_random_hits(true, seed);
+}
+
+// sort_by_t is stable with few crossings (held inline) and with many (on the heap): equal t keep their order.
+TEST(Shapes, SurfaceHitsSortIsStable) {
+    for (const std::size_t n : {std::size_t{5}, SurfaceHits::inline_capacity + 4}) {
+        SurfaceHits hits;
+        for (std::size_t i = 0; i < n; ++i) hits.push({static_cast<double>((n - i) / 2), Vec3{double(i), 0, 0}});
+        hits.sort_by_t();
+        ASSERT_EQ(hits.size(), n);
+        for (std::size_t i = 1; i < n; ++i) {
+            EXPECT_LE(hits[i - 1].t, hits[i].t);
+            if (hits[i - 1].t == hits[i].t) {
+                EXPECT_LT(hits[i - 1].normal.x, hits[i].normal.x);
+            }
+        }
+        const SurfaceHits copy = hits;
+        for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(copy[i].normal.x, hits[i].normal.x);
+    }
 }
 
 TEST(Shapes, InverseSphereNormalPointsTowardCentre) {
