@@ -114,7 +114,7 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
         n.radius.push_back(record.radius);
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
-        if (home) n.homes.push_back(index);
+        if (home) n.homes.push_back({record.position, index});
         return;
     }
     // Into every child the sphere's box overlaps: at most three per axis once cells are as wide as its radius.
@@ -143,28 +143,32 @@ std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_b
     return found;
 }
 
-void RecordOctree::within(std::int32_t node, const Vec3& centre, double radius,
-                          std::vector<std::uint32_t>& found) const {
+void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& bound) const {
     const Node& n = m_filings.front().nodes[node];
-    const Vec3 r{radius, radius, radius};
-    if (!box_overlaps_cube(centre - r, centre + r, n.min, n.size)) return;
-    // A record is filed in up to 27 nodes; it is tested only in the one that holds its position.
-    for (const std::uint32_t index : n.homes) {
-        if (length(m_records[index].position - centre) <= radius) found.push_back(index);
+    const Vec3 b{bound, bound, bound};
+    if (!box_overlaps_cube(centre - b, centre + b, n.min, n.size)) return;
+    // A record is filed in up to 27 nodes; it is tested only in the one that holds its position. Only records
+    // closer than the bound can lower it (R_i > 0).
+    for (const Node::Home& h : n.homes) {
+        const double d = length(h.position - centre);
+        if (d < bound) bound = std::min(bound, m_records[h.index].radius + d);
     }
-    for (const std::int32_t c : n.children) {
-        if (c >= 0) within(c, centre, radius, found);
+    // The child holding the centre first: its records are the likeliest to lower the bound for the others.
+    const double half = 0.5 * n.size;
+    int first = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (centre[a] >= n.min[a] + half) first |= 1 << a;
+    }
+    for (int k = 0; k < 8; ++k) {
+        const std::int32_t c = n.children[static_cast<std::size_t>(k ^ first)];
+        if (c >= 0) clamp_within(c, centre, bound);
     }
 }
 
-void RecordOctree::for_each_within(const Vec3& centre, double radius,
-                                   const std::function<void(std::uint32_t)>& visit) const {
-    if (m_filings.front().root < 0 || !is_finite(centre) || !(radius >= 0.0)) return;
-    std::vector<std::uint32_t> found;
-    within(m_filings.front().root, centre, radius, found);
-    // In insertion order.
-    std::sort(found.begin(), found.end());
-    for (const std::uint32_t index : found) visit(index);
+double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
+    if (m_filings.front().root < 0 || !is_finite(centre) || !(bound >= 0.0)) return bound;
+    clamp_within(m_filings.front().root, centre, bound);
+    return bound;
 }
 
 }  // namespace wardray::cache

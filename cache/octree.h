@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "cache/irradiance_record.h"
@@ -58,8 +57,10 @@ public:
             }
         });
     }
-    /// Calls `visit(index)` once for each record whose position lies within `radius` of `centre`.
-    void for_each_within(const Vec3& centre, double radius, const std::function<void(std::uint32_t)>& visit) const;
+    /// The smallest R_i + |p_i − centre| over the records, or `bound` when none is smaller: the radius neighbour
+    /// clamping (Křivánek et al. 2006) leaves to a new record at `centre` whose radius is `bound`. Only records
+    /// closer than the bound found so far can lower it, so the walk skips every node farther away.
+    double clamped_radius(const Vec3& centre, double bound) const;
 
 private:
     struct Node {
@@ -70,8 +71,12 @@ private:
         std::vector<std::uint32_t> index;
         std::vector<double> x, y, z, radius;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
-        /// the first filing), so that range queries test each record once.
-        std::vector<std::uint32_t> homes;
+        /// the first filing), so that range queries test each record once; positions packed for the scan.
+        struct Home {
+            Vec3 position;
+            std::uint32_t index = 0;
+        };
+        std::vector<Home> homes;
     };
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
@@ -113,7 +118,7 @@ private:
     static std::int32_t child(Filing& f, std::int32_t node, int octant);
     static void file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes, std::int32_t node,
                      const Vec3& lo, const Vec3& hi, double target_size);
-    void within(std::int32_t node, const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const;
+    void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
     std::vector<Filing> m_filings;  ///< reach, reach/2, reach/4
