@@ -107,11 +107,7 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                         std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
     if (f.nodes[node].size <= target_size) {
         Node& n = f.nodes[node];
-        n.index.push_back(index);
-        n.x.push_back(record.position.x);
-        n.y.push_back(record.position.y);
-        n.z.push_back(record.position.z);
-        n.radius.push_back(record.radius);
+        n.entries.push_back({record.position, record.radius, index});
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
         if (home) n.homes.push_back({record.position, index});
@@ -127,17 +123,14 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
 
 std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
                                    std::uint32_t* near) {
-    const std::size_t end = std::min(n.index.size(), begin + kScanChunk);
-    const double* x = n.x.data();
-    const double* y = n.y.data();
-    const double* z = n.z.data();
-    const double* r = n.radius.data();
+    const std::size_t end = std::min(n.entries.size(), begin + kScanChunk);
+    const Node::Entry* e = n.entries.data();
     std::size_t found = 0;
     // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
     for (std::size_t i = begin; i < end; ++i) {
-        const double dx = q.x - x[i], dy = q.y - y[i], dz = q.z - z[i];
-        const double reach = error_bound * r[i];
-        near[found] = n.index[i];
+        const double dx = q.x - e[i].position.x, dy = q.y - e[i].position.y, dz = q.z - e[i].position.z;
+        const double reach = error_bound * e[i].radius;
+        near[found] = e[i].index;
         found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
     }
     return found;

@@ -38,7 +38,7 @@ public:
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
         walk(m_filings.front(), q, [&](const Node& n) {
-            for (const std::uint32_t index : n.index) visit(index);
+            for (const Node::Entry& e : n.entries) visit(e.index);
         });
     }
     /// Calls `visit(index)` for the records with |q − position| < error_bound × radius (the radius at filing, which
@@ -51,7 +51,7 @@ public:
             if (f.reach >= error_bound) filing = &f;
         std::uint32_t near[kScanChunk];
         walk(*filing, q, [&](const Node& n) {
-            for (std::size_t begin = 0; begin < n.index.size(); begin += kScanChunk) {
+            for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
                 const std::size_t found = scan_near(n, q, error_bound, begin, near);
                 for (std::size_t i = 0; i < found; ++i) visit(near[i]);
             }
@@ -67,9 +67,14 @@ private:
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
         Vec3 min;           ///< the cube [min, min + size)
         double size = 0.0;  ///< a power of two
-        /// The records filed here in insertion order: index, position and radius at filing, one array each.
-        std::vector<std::uint32_t> index;
-        std::vector<double> x, y, z, radius;
+        /// The records filed here in insertion order: position and radius at filing, and index, side by side
+        /// (one allocation per node, read in order by the scans).
+        struct Entry {
+            Vec3 position;
+            double radius = 0.0;
+            std::uint32_t index = 0;
+        };
+        std::vector<Entry> entries;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
         /// the first filing), so that range queries test each record once; positions packed for the scan.
         struct Home {
