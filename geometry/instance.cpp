@@ -167,8 +167,6 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
 
 SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& direction, double t_min,
                                          double t_max) const {
-    // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d.
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     SurfaceHits hits;
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
@@ -177,6 +175,8 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
             s1 < 1e-4 / length(direction))
             return hits;
     }
+    // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     if (m_bounds && !ray_in_bounds(local)) return hits;
     const SurfaceHits object_hits = std::visit(
         [&](const auto& s) {

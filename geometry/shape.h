@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -51,18 +52,19 @@ struct SurfaceHit {
 };
 
 /// The surface crossings of a ray with one shape inside (t_min, t_max), sorted by t.
-/// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes).
+/// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes). The
+/// inline slots are left unwritten until used: every shape test makes one of these, most with no crossing.
 class SurfaceHits {
 public:
     static constexpr std::size_t inline_capacity = 6;
 
-    SurfaceHits() = default;
+    SurfaceHits() {}
     SurfaceHits(const SurfaceHits& o) { *this = o; }
     SurfaceHits& operator=(const SurfaceHits& o) {
         if (this == &o) return *this;
         m_count = o.m_count;
         m_heap = o.m_heap;
-        if (m_heap.empty()) std::copy(o.m_inline.begin(), o.m_inline.begin() + m_count, m_inline.begin());
+        if (m_heap.empty()) std::copy(o.m_inline, o.m_inline + m_count, m_inline);
         return *this;
     }
 
@@ -72,7 +74,7 @@ public:
             m_inline[m_count++] = hit;
             return;
         }
-        if (m_heap.empty()) m_heap.assign(m_inline.begin(), m_inline.begin() + m_count);
+        if (m_heap.empty()) m_heap.assign(m_inline, m_inline + m_count);
         m_heap.push_back(hit);
         ++m_count;
     }
@@ -91,10 +93,14 @@ public:
     const SurfaceHit* end() const { return data() + m_count; }
 
 private:
-    SurfaceHit* data() { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
-    const SurfaceHit* data() const { return m_heap.empty() ? m_inline.data() : m_heap.data(); }
+    SurfaceHit* data() { return m_heap.empty() ? m_inline : m_heap.data(); }
+    const SurfaceHit* data() const { return m_heap.empty() ? m_inline : m_heap.data(); }
 
-    std::array<SurfaceHit, inline_capacity> m_inline{};
+    // A union member is not constructed: slots [0, m_count) are written by push() before they are read.
+    static_assert(std::is_trivially_copyable_v<SurfaceHit> && std::is_trivially_destructible_v<SurfaceHit>);
+    union {
+        SurfaceHit m_inline[inline_capacity];
+    };
     std::vector<SurfaceHit> m_heap;
     std::size_t m_count = 0;
 };
