@@ -83,6 +83,19 @@ void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::u
     double target = f.nodes[f.root].size;
     for (int level = 0; level < kMaxLevels && target * 0.5 >= s; ++level) target *= 0.5;
     file(f, record, index, homes, f.root, lo, hi, target);
+    if (!homes) return;
+    // Count the home on the path from the root down to the node that holds it.
+    for (std::int32_t node = f.root; node >= 0;) {
+        Node& n = f.nodes[static_cast<std::size_t>(node)];
+        ++n.subtree_homes;
+        if (n.size <= target) break;
+        const double half = 0.5 * n.size;
+        int octant = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (record.position[a] >= n.min[a] + half) octant |= 1 << a;
+        }
+        node = n.children[static_cast<std::size_t>(octant)];
+    }
 }
 
 void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
@@ -94,6 +107,7 @@ void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
         // Double the root towards the box: the old root becomes the octant on the far side of the growth.
         Node bigger;
         bigger.size = 2.0 * root.size;
+        bigger.subtree_homes = root.subtree_homes;
         int octant = 0;
         for (int a = 0; a < 3; ++a) {
             if (lo[a] < root.min[a]) {
@@ -170,7 +184,7 @@ void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& b
     for (int k = 0; k < 8; ++k) {
         const int octant = k ^ first;
         const std::int32_t c = n.children[static_cast<std::size_t>(octant)];
-        if (c < 0) continue;
+        if (c < 0 || m_filings.front().nodes[static_cast<std::size_t>(c)].subtree_homes == 0) continue;
         // Only children within the bound found so far.
         const Vec3 b{bound, bound, bound};
         if (overlapped_octants(centre - b, centre + b, n.min, half) & (1u << octant)) clamp_within(c, centre, bound);

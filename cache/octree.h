@@ -82,6 +82,8 @@ private:
             std::uint32_t index = 0;
         };
         std::vector<Home> homes;
+        /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
+        std::uint32_t subtree_homes = 0;
     };
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
