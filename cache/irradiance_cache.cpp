@@ -17,8 +17,7 @@ double largest_error_bound(const scene::RadiositySettings& settings) {
 /// |p_new − p_i| for the records closer than R_new, then R_i ≤ R_new + |p_i − p_new| for those whose sphere R_i
 /// holds the new point (reach ≥ 1 files them).
 void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
-    tree.for_each_within(record.position, record.radius,
-                         [&](std::uint32_t i) { record.radius = clamped_radius(record, tree.records()[i]); });
+    record.radius = tree.clamped_radius(record.position, record.radius);
     std::vector<std::uint32_t> candidates;
     tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
     for (const std::uint32_t i : candidates) {
@@ -172,8 +171,7 @@ Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, c
 void IrradianceCache::clamp_new_record(IrradianceRecord& record) const {
     // Křivánek et al. 2006, neighbour clamping R_new ≤ R_i + |p_new − p_i|: only records closer than R_new can bind.
     const RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
-    tree.for_each_within(record.position, record.radius,
-                         [&](std::uint32_t i) { record.radius = clamped_radius(record, tree.records()[i]); });
+    record.radius = tree.clamped_radius(record.position, record.radius);
 }
 
 void IrradianceCache::clamp_mutual(IrradianceRecord& record) {

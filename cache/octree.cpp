@@ -29,6 +29,23 @@ bool box_overlaps_cube(const Vec3& lo, const Vec3& hi, const Vec3& cube_min, dou
     return true;
 }
 
+/// The octants of the cube [cube_min, cube_min + 2 half) whose cubes the box overlaps, one bit each: the same
+/// answer as box_overlaps_cube() on each child, from two tests per axis instead of six per child.
+unsigned overlapped_octants(const Vec3& lo, const Vec3& hi, const Vec3& cube_min, double half) {
+    const double slack = kSlack * half;
+    unsigned mask = 0xFF;
+    for (int a = 0; a < 3; ++a) {
+        const double low_min = cube_min[a] + 0.0, high_min = cube_min[a] + half;
+        const bool low = !(hi[a] < low_min - slack || lo[a] > low_min + half + slack);
+        const bool high = !(hi[a] < high_min - slack || lo[a] > high_min + half + slack);
+        // The octants with bit a clear are the low ones on axis a.
+        static constexpr unsigned kHigh[3] = {0xAA, 0xCC, 0xF0};
+        if (!low) mask &= kHigh[a];
+        if (!high) mask &= ~kHigh[a] & 0xFFu;
+    }
+    return mask;
+}
+
 }  // namespace
 
 RecordOctree::RecordOctree(double reach) {
@@ -66,6 +83,19 @@ void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::u
     double target = f.nodes[f.root].size;
     for (int level = 0; level < kMaxLevels && target * 0.5 >= s; ++level) target *= 0.5;
     file(f, record, index, homes, f.root, lo, hi, target);
+    if (!homes) return;
+    // Count the home on the path from the root down to the node that holds it.
+    for (std::int32_t node = f.root; node >= 0;) {
+        Node& n = f.nodes[static_cast<std::size_t>(node)];
+        ++n.subtree_homes;
+        if (n.size <= target) break;
+        const double half = 0.5 * n.size;
+        int octant = 0;
+        for (int a = 0; a < 3; ++a) {
+            if (record.position[a] >= n.min[a] + half) octant |= 1 << a;
+        }
+        node = n.children[static_cast<std::size_t>(octant)];
+    }
 }
 
 void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
@@ -77,6 +107,7 @@ void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
         // Double the root towards the box: the old root becomes the octant on the far side of the growth.
         Node bigger;
         bigger.size = 2.0 * root.size;
+        bigger.subtree_homes = root.subtree_homes;
         int octant = 0;
         for (int a = 0; a < 3; ++a) {
             if (lo[a] < root.min[a]) {
@@ -107,64 +138,66 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                         std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
     if (f.nodes[node].size <= target_size) {
         Node& n = f.nodes[node];
-        n.index.push_back(index);
-        n.x.push_back(record.position.x);
-        n.y.push_back(record.position.y);
-        n.z.push_back(record.position.z);
-        n.radius.push_back(record.radius);
+        n.entries.push_back({record.position, record.radius, index});
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
-        if (home) n.homes.push_back(index);
+        if (home) n.homes.push_back({record.position, index});
         return;
     }
     // Into every child the sphere's box overlaps: at most three per axis once cells are as wide as its radius.
     const double half = 0.5 * f.nodes[node].size;
+    const unsigned octants = overlapped_octants(lo, hi, f.nodes[node].min, half);
     for (int octant = 0; octant < 8; ++octant) {
-        const Vec3 cmin = f.nodes[node].min + octant_offset(octant, half);
-        if (box_overlaps_cube(lo, hi, cmin, half)) file(f, record, index, homes, child(f, node, octant), lo, hi, target_size);
+        if (octants & (1u << octant)) file(f, record, index, homes, child(f, node, octant), lo, hi, target_size);
     }
 }
 
 std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
                                    std::uint32_t* near) {
-    const std::size_t end = std::min(n.index.size(), begin + kScanChunk);
-    const double* x = n.x.data();
-    const double* y = n.y.data();
-    const double* z = n.z.data();
-    const double* r = n.radius.data();
+    const std::size_t end = std::min(n.entries.size(), begin + kScanChunk);
+    const Node::Entry* e = n.entries.data();
     std::size_t found = 0;
     // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
     for (std::size_t i = begin; i < end; ++i) {
-        const double dx = q.x - x[i], dy = q.y - y[i], dz = q.z - z[i];
-        const double reach = error_bound * r[i];
-        near[found] = n.index[i];
+        const double dx = q.x - e[i].position.x, dy = q.y - e[i].position.y, dz = q.z - e[i].position.z;
+        const double reach = error_bound * e[i].radius;
+        near[found] = e[i].index;
         found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
     }
     return found;
 }
 
-void RecordOctree::within(std::int32_t node, const Vec3& centre, double radius,
-                          std::vector<std::uint32_t>& found) const {
+void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& bound) const {
     const Node& n = m_filings.front().nodes[node];
-    const Vec3 r{radius, radius, radius};
-    if (!box_overlaps_cube(centre - r, centre + r, n.min, n.size)) return;
-    // A record is filed in up to 27 nodes; it is tested only in the one that holds its position.
-    for (const std::uint32_t index : n.homes) {
-        if (length(m_records[index].position - centre) <= radius) found.push_back(index);
+    // A record is filed in up to 27 nodes; it is tested only in the one that holds its position. Only records
+    // closer than the bound can lower it (R_i > 0).
+    for (const Node::Home& h : n.homes) {
+        const double d = length(h.position - centre);
+        if (d < bound) bound = std::min(bound, m_records[h.index].radius + d);
     }
-    for (const std::int32_t c : n.children) {
-        if (c >= 0) within(c, centre, radius, found);
+    // The child holding the centre first: its records are the likeliest to lower the bound for the others.
+    const double half = 0.5 * n.size;
+    int first = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (centre[a] >= n.min[a] + half) first |= 1 << a;
+    }
+    for (int k = 0; k < 8; ++k) {
+        const int octant = k ^ first;
+        const std::int32_t c = n.children[static_cast<std::size_t>(octant)];
+        if (c < 0 || m_filings.front().nodes[static_cast<std::size_t>(c)].subtree_homes == 0) continue;
+        // Only children within the bound found so far.
+        const Vec3 b{bound, bound, bound};
+        if (overlapped_octants(centre - b, centre + b, n.min, half) & (1u << octant)) clamp_within(c, centre, bound);
     }
 }
 
-void RecordOctree::for_each_within(const Vec3& centre, double radius,
-                                   const std::function<void(std::uint32_t)>& visit) const {
-    if (m_filings.front().root < 0 || !is_finite(centre) || !(radius >= 0.0)) return;
-    std::vector<std::uint32_t> found;
-    within(m_filings.front().root, centre, radius, found);
-    // In insertion order.
-    std::sort(found.begin(), found.end());
-    for (const std::uint32_t index : found) visit(index);
+double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
+    const Filing& f = m_filings.front();
+    if (f.root < 0 || !is_finite(centre) || !(bound >= 0.0)) return bound;
+    const Vec3 b{bound, bound, bound};
+    const Node& root = f.nodes[static_cast<std::size_t>(f.root)];
+    if (box_overlaps_cube(centre - b, centre + b, root.min, root.size)) clamp_within(f.root, centre, bound);
+    return bound;
 }
 
 }  // namespace wardray::cache

@@ -3,7 +3,6 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "cache/irradiance_record.h"
@@ -39,7 +38,7 @@ public:
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
         walk(m_filings.front(), q, [&](const Node& n) {
-            for (const std::uint32_t index : n.index) visit(index);
+            for (const Node::Entry& e : n.entries) visit(e.index);
         });
     }
     /// Calls `visit(index)` for the records with |q − position| < error_bound × radius (the radius at filing, which
@@ -52,26 +51,39 @@ public:
             if (f.reach >= error_bound) filing = &f;
         std::uint32_t near[kScanChunk];
         walk(*filing, q, [&](const Node& n) {
-            for (std::size_t begin = 0; begin < n.index.size(); begin += kScanChunk) {
+            for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
                 const std::size_t found = scan_near(n, q, error_bound, begin, near);
                 for (std::size_t i = 0; i < found; ++i) visit(near[i]);
             }
         });
     }
-    /// Calls `visit(index)` once for each record whose position lies within `radius` of `centre`.
-    void for_each_within(const Vec3& centre, double radius, const std::function<void(std::uint32_t)>& visit) const;
+    /// The smallest R_i + |p_i − centre| over the records, or `bound` when none is smaller: the radius neighbour
+    /// clamping (Křivánek et al. 2006) leaves to a new record at `centre` whose radius is `bound`. Only records
+    /// closer than the bound found so far can lower it, so the walk skips every node farther away.
+    double clamped_radius(const Vec3& centre, double bound) const;
 
 private:
     struct Node {
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
         Vec3 min;           ///< the cube [min, min + size)
         double size = 0.0;  ///< a power of two
-        /// The records filed here in insertion order: index, position and radius at filing, one array each.
-        std::vector<std::uint32_t> index;
-        std::vector<double> x, y, z, radius;
+        /// The records filed here in insertion order: position and radius at filing, and index, side by side
+        /// (one allocation per node, read in order by the scans).
+        struct Entry {
+            Vec3 position;
+            double radius = 0.0;
+            std::uint32_t index = 0;
+        };
+        std::vector<Entry> entries;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
-        /// the first filing), so that range queries test each record once.
-        std::vector<std::uint32_t> homes;
+        /// the first filing), so that range queries test each record once; positions packed for the scan.
+        struct Home {
+            Vec3 position;
+            std::uint32_t index = 0;
+        };
+        std::vector<Home> homes;
+        /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
+        std::uint32_t subtree_homes = 0;
     };
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
@@ -113,7 +125,7 @@ private:
     static std::int32_t child(Filing& f, std::int32_t node, int octant);
     static void file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes, std::int32_t node,
                      const Vec3& lo, const Vec3& hi, double target_size);
-    void within(std::int32_t node, const Vec3& centre, double radius, std::vector<std::uint32_t>& found) const;
+    void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
     std::vector<Filing> m_filings;  ///< reach, reach/2, reach/4

@@ -193,8 +193,6 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
 
 SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& direction, double t_min,
                                             double t_max) const {
-    // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d.
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
         double s0 = 0.0, s1 = 0.0;
@@ -202,6 +200,8 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
             s1 < 1e-4 / length(direction))
             return {};
     }
+    // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     if (m_bounds && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {

@@ -54,12 +54,13 @@ struct SurfaceHit {
 static_assert(std::is_trivially_copyable_v<SurfaceHit> && std::is_trivially_destructible_v<SurfaceHit>);
 
 /// The surface crossings of a ray with one shape inside (t_min, t_max), sorted by t.
-/// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes).
+/// Small-vector storage: a few crossings inline (convex primitives, tori), more on the heap (CSG, meshes). The
+/// inline slots are left unwritten until used: every shape test makes one of these, most with no crossing.
 class SurfaceHits {
 public:
     static constexpr std::size_t inline_capacity = 6;
 
-    SurfaceHits() = default;
+    SurfaceHits() {}
     SurfaceHits(const SurfaceHits& o) { *this = o; }
     SurfaceHits& operator=(const SurfaceHits& o) {
         if (this == &o) return *this;

@@ -136,27 +136,36 @@ double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
     const int fz = static_cast<int>(std::floor(p.z - kEpsilon));
     const CrackleCube& cube = crackle_cube(fx, fy, fz);
     const double metric = pat.crackle_metric;
-    auto distance = [&](const Vec3& d) {
-        if (metric == 2.0) return dot(d, d);
-        if (metric == 1.0) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
-        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) + std::pow(std::fabs(d.z), metric);
-    };
-    double d[3] = {INFINITY, INFINITY, INFINITY};
-    Vec3 nearest;
-    for (const Vec3& point : cube.points) {
-        const double s = distance(point - p);
-        if (s < d[0]) {
-            d[2] = d[1];
-            d[1] = d[0];
-            d[0] = s;
-            nearest = point;
-        } else if (s < d[1]) {
-            d[2] = d[1];
-            d[1] = s;
-        } else if (s < d[2]) {
-            d[2] = s;
+    // The three smallest distances, kept in registers (an array here stayed in memory through the loop), one loop
+    // per metric.
+    double d0 = INFINITY, d1 = INFINITY, d2 = INFINITY;
+    const Vec3* nearest = nullptr;
+    auto scan = [&](auto distance) {
+        for (const Vec3& point : cube.points) {
+            const double s = distance(point - p);
+            if (s < d0) {
+                d2 = d1;
+                d1 = d0;
+                d0 = s;
+                nearest = &point;
+            } else if (s < d1) {
+                d2 = d1;
+                d1 = s;
+            } else if (s < d2) {
+                d2 = s;
+            }
         }
+    };
+    if (metric == 2.0) {
+        scan([](const Vec3& v) { return dot(v, v); });
+    } else if (metric == 1.0) {
+        scan([](const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); });
+    } else {
+        scan([metric](const Vec3& v) {
+            return std::pow(std::fabs(v.x), metric) + std::pow(std::fabs(v.y), metric) + std::pow(std::fabs(v.z), metric);
+        });
     }
+    double d[3] = {d0, d1, d2};
     if (pat.crackle_offset != 0.0) {
         const double o = metric == 2.0 ? pat.crackle_offset * pat.crackle_offset
                          : metric == 1.0 ? pat.crackle_offset
@@ -165,7 +174,7 @@ double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
     }
     double value = 0.0;
     if (pat.crackle_solid) {
-        value = noise(nearest, generator);
+        value = noise(nearest ? *nearest : Vec3{}, generator);
     } else {
         const Vec3& form = pat.crackle_form;
         for (int i = 0; i < 3; ++i) {

@@ -1,4 +1,4 @@
-// Tests of the record octree: lookups and range queries agree exactly with brute-force scans.
+// Tests of the record octree: lookups and neighbour clamping agree exactly with brute-force scans.
 #include "cache/octree.h"
 
 #include <gtest/gtest.h>
@@ -70,7 +70,7 @@ TEST(RecordOctree, LookupFindsExactlyTheValidRecords) {
     }
 }
 
-TEST(RecordOctree, RangeQueryMatchesBruteForce) {
+TEST(RecordOctree, ClampedRadiusMatchesBruteForce) {
     SplitMix64 rng(99);
     RecordOctree tree(2.0);
     std::vector<IrradianceRecord> all;
@@ -78,16 +78,18 @@ TEST(RecordOctree, RangeQueryMatchesBruteForce) {
         all.push_back(random_record(rng, {3, 3, 3}, 2.0));
         tree.insert(all.back());
     }
+    int clamped = 0;
     for (int qi = 0; qi < 500; ++qi) {
-        const Vec3 c = Vec3{3, 3, 3} + Vec3{uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2)};
-        const double radius = uniform(rng, 0.0, 0.8);
-        std::vector<std::uint32_t> brute, found;
-        for (std::uint32_t i = 0; i < all.size(); ++i) {
-            if (length(all[i].position - c) <= radius) brute.push_back(i);
-        }
-        tree.for_each_within(c, radius, [&](std::uint32_t i) { found.push_back(i); });
-        ASSERT_EQ(found, brute);
+        IrradianceRecord q;
+        q.position = Vec3{3, 3, 3} + Vec3{uniform(rng, -2, 2), uniform(rng, -2, 2), uniform(rng, -2, 2)};
+        q.radius = uniform(rng, 0.0, 0.8);
+        // Every record in turn, as neighbour clamping one way reads.
+        double brute = q.radius;
+        for (const IrradianceRecord& r : all) brute = std::min(brute, clamped_radius(q, r));
+        ASSERT_EQ(tree.clamped_radius(q.position, q.radius), brute) << "query " << qi;
+        clamped += brute < q.radius ? 1 : 0;
     }
+    EXPECT_GT(clamped, 10);
 }
 
 TEST(RecordOctree, DegenerateRecordsAreKeptButNeverFound) {
