@@ -58,15 +58,30 @@ void describe_scene(const scene::Scene& scene, std::ostream& out) {
                                                             << w.loc.column << ": " << w.message << "\n";
 }
 
-// Objects the geometry could not place are left out, each with a warning at its location.
-void warn_skipped_objects(const scene::Scene& scene, const std::vector<std::uint32_t>& skipped) {
-    for (const std::uint32_t index : skipped) {
+// Objects the geometry could not place are left out, each with a warning at its statement that says why and, when
+// the refused part is written elsewhere (a deep level, a degenerate child), where that part is.
+void warn_skipped_objects(const scene::Scene& scene, const geometry::SceneGeometry& geometry) {
+    const std::vector<std::uint32_t>& skipped = geometry.skipped_objects();
+    const std::vector<geometry::SkipReason>& reasons = geometry.skip_reasons();
+    for (std::size_t k = 0; k < skipped.size(); ++k) {
+        const scene::Object& object = scene.objects[skipped[k]];
+        const geometry::SkipReason& why = reasons[k];
         Diagnostic d;
         d.severity = Severity::Warning;
-        d.loc = scene.objects[index].loc;
-        d.message = std::string(scene::shape_keyword(scene.objects[index].shape)) +
-                    " is degenerate (zero size, singular transform or non-finite numbers) or nested more than 1000 "
-                                      "levels deep, and is not rendered";
+        d.loc = object.loc;
+        const bool elsewhere = !why.where.path.empty() && why.where != object.loc;
+        const std::string part = why.where.path + ':' + std::to_string(why.where.line) + ':' +
+                                 std::to_string(why.where.column);
+        d.message = std::string(scene::shape_keyword(object.shape));
+        if (why.too_deep) {
+            d.message += " nests CSG more than 1000 levels deep";
+            if (elsewhere) d.message += " (level 1001 is at " + part + ")";
+            d.message += " and is not rendered; build it as fewer levels (a flat union) or as a mesh";
+        } else {
+            d.message += " is degenerate (zero size, singular transform or non-finite numbers";
+            if (elsewhere) d.message += ": the part at " + part;
+            d.message += ") and is not rendered";
+        }
         std::cerr << format_diagnostic(d);
     }
 }
@@ -84,7 +99,7 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     }
     const std::optional<BuiltGeometry> built = build_geometry(scene);
     if (!group.agree(built.has_value(), "build the scene's geometry")) return kExitScene;
-    warn_skipped_objects(scene, built->geometry->skipped_objects());
+    warn_skipped_objects(scene, *built->geometry);
     Illumination illumination = build_illumination(scene, *built->geometry, job.options);
     if (illumination.cache && job.options.radiosity_load) group.share_cache(*illumination.cache);
     // --gi-carry: the previous frame's records (every rank holds the same ones after a shared render).

@@ -13,6 +13,25 @@ namespace {
 // levels of `difference { A difference { ... } }` overflowed. 1,000 levels render.
 constexpr int k_max_csg_depth = 1000;
 thread_local int t_csg_depth = 0;
+// The innermost refusal of the current top-level create (the first one wins: it is the deepest part refused).
+thread_local SkipReason t_skip;
+thread_local bool t_skip_set = false;
+// Calls of ShapeInstance::create alive on this thread (clips and bounds nest without a CSG level).
+thread_local int t_create_depth = 0;
+struct CreateDepthGuard {
+    CreateDepthGuard() { ++t_create_depth; }
+    ~CreateDepthGuard() { --t_create_depth; }
+    CreateDepthGuard(const CreateDepthGuard&) = delete;
+    CreateDepthGuard& operator=(const CreateDepthGuard&) = delete;
+};
+
+std::nullopt_t refuse(const scene::Object& object, bool too_deep) {
+    if (!t_skip_set) {
+        t_skip = SkipReason{too_deep, object.loc};
+        t_skip_set = true;
+    }
+    return std::nullopt;
+}
 
 // One CSG level of ShapeInstance::create's recursion while it is alive (a leaf adds none).
 struct CsgDepthGuard {
@@ -105,6 +124,8 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
 
 }  // namespace
 
+const SkipReason& last_skip_reason() { return t_skip; }
+
 ShapeInstance::ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index)
     : m_shape(shape),
       m_transform(object.transform),
@@ -118,24 +139,27 @@ ShapeInstance::ShapeInstance(const AnyShape& shape, const scene::Object& object,
 
 std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
                                                    bool flip_inverse) {
-    // Degenerate objects are skipped here and reported by the parser; they must never reach Embree.
+    // A top-level create starts with no reason recorded; the parts it builds record theirs.
+    if (t_create_depth == 0) t_skip_set = false;
+    const CreateDepthGuard nesting;
+    // Degenerate objects are skipped here and reported by the app; they must never reach Embree.
     const Transform& xf = object.transform;
     if (!xf.is_invertible() || !matrix_is_finite(xf.matrix()) || !matrix_is_finite(xf.inverse_matrix()))
-        return std::nullopt;
+        return refuse(object, false);
     // POV-Ray compat: an inverted CSG pushes the inversion down to its children and turns into its dual operation
     // (csg.h); other shapes flip their inside and normals.
     const bool inverted = object.inverse != flip_inverse;
     const auto* csg = std::get_if<scene::Csg>(&object.shape);
     // A CSG nested too deep is skipped (the whole top-level object, reported by the app), not a stack overflow.
     const CsgDepthGuard depth(csg != nullptr);
-    if (t_csg_depth > k_max_csg_depth) return std::nullopt;
+    if (t_csg_depth > k_max_csg_depth) return refuse(object, true);
     std::optional<AnyShape> shape;
     if (csg && inverted) {
         if (auto c = CsgShape::create(*csg, true)) shape = AnyShape(std::move(*c));
     } else {
         shape = make_shape(object.shape);
     }
-    if (!shape) return std::nullopt;
+    if (!shape) return refuse(object, false);
     // POV-Ray compat: an inverted plane is the plane with its normal and distance negated (Plane::Invert).
     const auto* plane = std::get_if<PlaneShape>(&*shape);
     if (plane && inverted) shape = AnyShape(plane->inverted());
@@ -151,7 +175,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         if (const auto* q = std::get_if<QuadricShape>(&inst.m_shape)) local = q->clipped_bounds();
         for (const scene::Object& c : object.clipped_by) {
             auto ci = create(c, index);
-            if (!ci) return std::nullopt;
+            if (!ci) return refuse(c, false);
             local = intersect_bounds(local, ci->region_bounds());
             region = intersect_bounds(region, ci->region_bounds());
             clips->push_back(std::move(*ci));
@@ -165,7 +189,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         auto bounds = std::make_shared<std::vector<ShapeInstance>>();
         for (const scene::Object& b : object.bounded_by) {
             auto bi = create(b, index);
-            if (!bi) return std::nullopt;
+            if (!bi) return refuse(b, false);
             bounds->push_back(std::move(*bi));
         }
         inst.m_bounds = std::move(bounds);
@@ -179,7 +203,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     if (region && !inst.m_inverse) inst.m_region_bounds = transform_bounds(*region, xf);
     if (inst.m_world_bounds &&
         (!is_finite(inst.m_world_bounds->lower) || !is_finite(inst.m_world_bounds->upper)))
-        return std::nullopt;
+        return refuse(object, false);
     return inst;
 }
 

@@ -40,6 +40,10 @@ using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, Disc
                               SphereSweepShape, TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape,
                               CsgShape, OvusShape, ParametricShape>;
 
+/// The reason of the last ShapeInstance::create on this thread that returned nothing (cleared by the next top-level
+/// create that succeeds).
+const SkipReason& last_skip_reason();
+
 /// A scene object placed in its parent's space (the world for top-level objects); every query is in double
 /// precision on the parent-space ray. The scene::Object must outlive the instance (hits point at it).
 class ShapeInstance {

@@ -60,6 +60,7 @@ struct GeometryData {
     std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
     std::vector<std::uint32_t> mesh_of_geometry;  ///< Embree geomID -> index into meshes
     std::vector<std::uint32_t> skipped;
+    std::vector<SkipReason> skip_reasons;  ///< per entry of skipped
     std::optional<Bounds> bounds;
     std::optional<Bounds> padded_scene_bounds;
     double magnitude = 0.0;                ///< largest coordinate scale of the scene, for offsets
@@ -304,6 +305,7 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
         auto inst = ShapeInstance::create(scene.objects[i], i);
         if (!inst) {
             impl.skipped.push_back(i);
+            impl.skip_reasons.push_back(last_skip_reason());
             continue;
         }
         inst->cull_by_bounds();
@@ -447,6 +449,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
 std::optional<Bounds> SceneGeometry::bounds() const { return m_impl->bounds; }
 
 const std::vector<std::uint32_t>& SceneGeometry::skipped_objects() const { return m_impl->skipped; }
+const std::vector<SkipReason>& SceneGeometry::skip_reasons() const { return m_impl->skip_reasons; }
 
 std::vector<Diagnostic> SceneGeometry::shape_warnings() const {
     // POV-Ray compat: only top-level objects report (CSG does not pass the message on to its children).

@@ -42,6 +42,14 @@ struct Hit {
     Vec3 params;
 };
 
+/// Why ShapeInstance::create returned nothing, for the warning that names the object.
+struct SkipReason {
+    /// A CSG node lay more than 1,000 levels below the object (else the object or a part is degenerate).
+    bool too_deep = false;
+    /// Where the part that was refused is written: the first node past the depth limit, or the degenerate part.
+    SourceLoc where;
+};
+
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.
 class SceneGeometry {
 public:
@@ -59,8 +67,10 @@ public:
     /// World bounds of all bounded surfaces (planes excluded), or nothing when there are none.
     std::optional<Bounds> bounds() const;
     /// Indices of the objects left out because they cannot be intersected without NaN (singular transform,
-    /// zero radius, zero plane normal, non-finite numbers); the parser reports them.
+    /// zero radius, zero plane normal, non-finite numbers) or hold CSG nested too deep; the app reports them.
     const std::vector<std::uint32_t>& skipped_objects() const;
+    /// Why each of skipped_objects() was left out, in its order.
+    const std::vector<SkipReason>& skip_reasons() const;
     /// Warnings the shapes have after rendering (an isosurface's max_gradient set too low or too high).
     std::vector<Diagnostic> shape_warnings() const;
     /// Like the free self_intersection_offset(), with a floor of 1e-6 of the scene's magnitude so that points

@@ -305,6 +305,9 @@ TEST(SceneGeometry, DegenerateObjectsSkipped) {
     ASSERT_EQ(g.skipped_objects().size(), 2u);
     EXPECT_EQ(g.skipped_objects()[0], 0u);
     EXPECT_EQ(g.skipped_objects()[1], 2u);
+    ASSERT_EQ(g.skip_reasons().size(), 2u);
+    EXPECT_FALSE(g.skip_reasons()[0].too_deep);
+    EXPECT_FALSE(g.skip_reasons()[1].too_deep);
     const auto h = g.intersect(Ray{{0, 0, 0}, {0, 0, 1}});
     ASSERT_TRUE(h);
     EXPECT_EQ(h->object, 1u);

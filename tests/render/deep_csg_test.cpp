@@ -193,6 +193,11 @@ TEST(DeepCsg, ATreeTooDeepToFlattenIsLeftOutNotAStackOverflow) {
     ASSERT_EQ(parsed.scene->objects.size(), 2u);
     const geometry::SceneGeometry geometry(*parsed.scene);
     ASSERT_EQ(geometry.skipped_objects(), std::vector<std::uint32_t>{0});
+    // The reason names the depth and where level 1001 is written: two lines a level below the statement.
+    ASSERT_EQ(geometry.skip_reasons().size(), 1u);
+    const geometry::SkipReason& why = geometry.skip_reasons().front();
+    EXPECT_TRUE(why.too_deep);
+    EXPECT_EQ(why.where.line, parsed.scene->objects.front().loc.line + 2 * 1000);
     EXPECT_TRUE(render_scene(*parsed.scene).ok);
 }
 
