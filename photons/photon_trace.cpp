@@ -174,15 +174,6 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
         if (!unit.parallel) flux = flux * (path.depth * path.depth);
         path.out->push_back(make_photon(hit.position, flux, ray.origin, m_surface_offset));
     }
-    if (path.pass_this) {
-        // POV-Ray compat: a pass_through object lets the photon on unchanged, and its depth is not taken back.
-        RayIn next{hit.position, ray.dir, ray.interiors};
-        const std::ptrdiff_t i = find_interior(next.interiors, leaf);
-        if (i >= 0) next.interiors.erase(next.interiors.begin() + i);
-        else next.interiors.push_back(&leaf);
-        trace(next, colour, weight, path);
-        return;
-    }
     // The layers, top first: their normals, reflectivities and what they let through.
     constexpr std::size_t kMaxLayers = 8;
     std::array<const scene::Texture*, kMaxLayers> layers{};
@@ -238,6 +229,17 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
             filter = filter * Vec3{std::min(1.0, 1.0 - rf.x), std::min(1.0, 1.0 - rf.y), std::min(1.0, 1.0 - rf.z)};
         }
         trans = std::min(1.0, std::fabs(texture::grey(filter)));
+    }
+    if (path.pass_this) {
+        // POV-Ray compat (photons.cpp is built with PT_FILTER_BEFORE_TARGET): a pass_through object met before the
+        // target lets the photon on in the same direction, filtered by its layers as a transmitted ray would be,
+        // and its depth is not taken back.
+        RayIn next{hit.position, ray.dir, ray.interiors};
+        const std::ptrdiff_t i = find_interior(next.interiors, leaf);
+        if (i >= 0) next.interiors.erase(next.interiors.begin() + i);
+        else next.interiors.push_back(&leaf);
+        trace(next, colour * filter, weight * std::max(max3(filter), 0.0), path);
+        return;
     }
     bool total_internal = false;
     if (switch_on(leaf.photons.refraction, unit.light->photon_refraction) && trans > m_bailout) {

@@ -46,6 +46,31 @@ TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
     }
 }
 
+// POV-Ray compat (its photons.cpp defines PT_FILTER_BEFORE_TARGET): a pass_through object between the light and the
+// target lets photons through unbent but filtered by its pigment at each face, so a filtering slab tints the caustic.
+TEST(PhotonPass, PassThroughObjectBeforeTheTargetFiltersThePhotons) {
+    const scene::Scene scene = parser::test::parse_ok(std::string(kClearTarget) + R"(
+box { <-4, 5, -4>, <4, 5.1, 4> pigment { rgbf <1, 0.5, 0.25, 1> } photons { pass_through } }
+)");
+    const geometry::SceneGeometry geometry(scene);
+    PhotonStats stats;
+    const auto map = shoot_photons(scene, geometry, stats);
+    ASSERT_TRUE(map);
+    EXPECT_GT(stats.stored, 10000u);
+    for (const Vec3 p : {Vec3{0.5, 0, 0.2}, Vec3{-0.3, 0, 0.6}}) {
+        Gathered g;
+        map->gather_adaptive(p, {0, 1, 0}, g);
+        Vec3 flux;
+        for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
+        const Vec3 density = flux / (std::numbers::pi * g.radius * g.radius);
+        const double cos_theta = 10.0 / length(Vec3{0, 10, 0} - p);
+        EXPECT_NEAR(density.x, 0.8 * cos_theta, 0.8 * 0.05) << p.x;  // the red the slab lets through whole
+        // Filtered at each of the slab's two faces, as a camera ray through it is: green by 0.5², blue by 0.25².
+        EXPECT_NEAR(density.y / density.x, 0.6 / 0.8 * 0.25, 0.01);
+        EXPECT_NEAR(density.z / density.x, 0.4 / 0.8 * 0.0625, 0.005);
+    }
+}
+
 TEST(PhotonPass, SameMapForAnyNumberOfThreads) {
     const scene::Scene scene = parser::test::parse_ok(kClearTarget);
     const geometry::SceneGeometry geometry(scene);
