@@ -4,9 +4,55 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/csg_bounds.h"
 #include "geometry/instance.h"
 
 namespace wardray::geometry {
+
+namespace {
+
+// The constraint a plane or quadric child puts on an intersection's inside, in the CSG's space: a plane facing
+// along an axis, a quadric without mixed terms under a transform that only scales and moves along the axes (POV-Ray's
+// Compute_Quadric_BBox bounds cones, cylinders, ellipsoids and hyperboloids so). Other children add none (their
+// own boxes bound the intersection already).
+void add_constraint(const ShapeInstance& child, IntersectionBounds& out) {
+    const Transform& xf = child.transform();
+    if (const auto* plane = std::get_if<PlaneShape>(&child.shape())) {
+        // n·M⁻¹(p) <= d is (M⁻ᵀ n)·p <= d + (M⁻ᵀ n)·M(0).
+        // POV-Ray compat (Compute_Plane_Min_Max): only a plane facing along an axis bounds the node, so its box (which
+        // photons aim at) is POV-Ray's.
+        Vec3 n = xf.normal(plane->normal());
+        if (!is_finite(n)) return;
+        const double tiny = 1e-10 * max_abs_component(n);
+        int axes = 0;
+        for (int k = 0; k < 3; ++k) {
+            if (std::fabs(n[k]) <= tiny) n[k] = 0.0;
+            else ++axes;
+        }
+        if (axes == 1) out.add(HalfSpace{n, plane->distance() + dot(n, xf.point(Vec3{}))});
+        return;
+    }
+    const auto* quadric = std::get_if<QuadricShape>(&child.shape());
+    if (!quadric || child.inverse()) return;
+    const scene::Quadric& q = quadric->coefficients();
+    if (q.mixed != Vec3{}) return;
+    const Transform::Matrix34& m = xf.inverse_matrix();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            if (r != c && m[r][c] != 0.0) return;
+    // Object coordinate k is s_k p_k + t_k: a (s p + t)² + b (s p + t) = a s² p² + (2 a s t + b s) p + a t² + b t.
+    AxisQuadric out_q;
+    out_q.constant = q.constant;
+    for (int k = 0; k < 3; ++k) {
+        const double s = m[k][k], t = m[k][3], a = q.squares[k], b = q.linear[k];
+        out_q.squares[k] = a * s * s;
+        out_q.linear[k] = 2.0 * a * s * t + b * s;
+        out_q.constant += a * t * t + b * t;
+    }
+    out.add(out_q);
+}
+
+}  // namespace
 
 std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
     CsgShape shape;
@@ -57,6 +103,16 @@ std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
             first = false;
         }
         shape.m_bounds = first ? std::optional<Bounds>(Bounds{}) : surface;
+        // Planes and quadrics bound nothing alone, but a slab of planes cut from a hyperboloid (chess2.pov's pawns)
+        // bounds a finite region: narrow the box by them, so the node is not tested by every ray.
+        IntersectionBounds narrowing;
+        for (const ShapeInstance& k : kids) add_constraint(k, narrowing);
+        if (!narrowing.empty() && !first) {
+            if (const std::optional<Bounds> region = narrowing.narrow(shape.m_region)) {
+                shape.m_region = intersect_bounds(shape.m_region, region);
+                shape.m_bounds = intersect_bounds(shape.m_bounds, region);
+            }
+        }
     }
     shape.m_children = std::move(children);
     return shape;

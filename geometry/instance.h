@@ -96,6 +96,8 @@ public:
     const Transform& transform() const { return m_transform; }
     /// The shape in object space.
     const AnyShape& shape() const { return m_shape; }
+    /// True when its inside and outside are swapped (`inverse`, or a subtracted child of a difference).
+    bool inverse() const { return m_inverse; }
     /// True when the object is a mesh without clipping or bounds, which Embree can trace as native triangles.
     bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
 

@@ -25,6 +25,8 @@ public:
     bool inside(const Vec3& p) const { return implicit(p) < 0.0; }
     /// The polynomial's value.
     double implicit(const Vec3& p) const;
+    /// Its coefficients, as `implicit` uses them.
+    const scene::Quadric& coefficients() const { return m_q; }
 
 private:
     explicit QuadricShape(const scene::Quadric& q) : m_q(q) {}
