@@ -20,6 +20,11 @@ double SuperellipsoidShape::implicit(const Vec3& p) const {
     return std::pow(f, m_n / 2.0) - 1.0;
 }
 
+double SuperellipsoidShape::level(const Vec3& p) const {
+    const double xy = std::pow(std::fabs(p.x), 2.0 / m_e) + std::pow(std::fabs(p.y), 2.0 / m_e);
+    return std::pow(xy, m_e / m_n) + std::pow(std::fabs(p.z), 2.0 / m_n) - 1.0;
+}
+
 Vec3 SuperellipsoidShape::gradient(const Vec3& p) const {
     const double a = 2.0 / m_e;
     const double b = 2.0 / m_n;
@@ -47,7 +52,8 @@ SurfaceHits SuperellipsoidShape::intersect_all(const LocalRay& ray, double t_min
         t1 = std::fmin(t1, tb);
     }
     if (!(t0 < t1)) return hits;
-    auto f = [&](double t) { return implicit(ray.origin + t * ray.direction); };
+    // Only signs and a bracketed root are needed: the level function (no final power) has the implicit's sign.
+    auto f = [&](double t) { return level(ray.origin + t * ray.direction); };
     // Samples: even steps fine enough for the corners of small exponents, plus the ray's crossings of the nine
     // symmetry planes (x, y, z = 0 and x = ±y, x = ±z, y = ±z). The thin spikes of exponents above 2 lie along
     // those planes' intersections, where a sign change can hide between even steps (as POV-Ray samples them).
@@ -64,7 +70,9 @@ SurfaceHits SuperellipsoidShape::intersect_all(const LocalRay& ray, double t_min
         const double t = -(n[0] * ray.origin.x + n[1] * ray.origin.y + n[2] * ray.origin.z) / d;
         if (t > t0 && t < t1) ts[count++] = t;
     }
-    std::sort(ts.begin(), ts.begin() + count);
+    // The even steps are in order: sort the few plane crossings and merge them in.
+    std::sort(ts.begin() + steps + 1, ts.begin() + count);
+    std::inplace_merge(ts.begin(), ts.begin() + steps + 1, ts.begin() + count);
     double ta = ts[0];
     double fa = f(ta);
     for (std::size_t i = 1; i < count; ++i) {
@@ -72,15 +80,28 @@ SurfaceHits SuperellipsoidShape::intersect_all(const LocalRay& ray, double t_min
         if (!(tb > ta)) continue;
         const double fb = f(tb);
         if ((fa < 0.0) != (fb < 0.0)) {
-            double lo = ta, hi = tb, flo = fa;
-            for (int it = 0; it < 60 && hi - lo > 1e-14 * std::fmax(1.0, std::fabs(lo)); ++it) {
-                const double mid = 0.5 * (lo + hi);
+            // The Illinois form of false position: superlinear on these steep functions where bisection needs
+            // some 50 halvings, and the root stays bracketed.
+            double lo = ta, hi = tb, flo = fa, fhi = fb;
+            int kept = 0;  // which end the last two steps kept: -1 lo moved, +1 hi moved
+            for (int it = 0; it < 100 && hi - lo > 1e-14 * std::fmax(1.0, std::fabs(lo)); ++it) {
+                double mid = (flo * hi - fhi * lo) / (flo - fhi);
+                if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
                 const double fm = f(mid);
+                if (fm == 0.0) {
+                    lo = hi = mid;
+                    break;
+                }
                 if ((fm < 0.0) == (flo < 0.0)) {
                     lo = mid;
                     flo = fm;
+                    if (kept == -1) fhi *= 0.5;
+                    kept = -1;
                 } else {
                     hi = mid;
+                    fhi = fm;
+                    if (kept == 1) flo *= 0.5;
+                    kept = 1;
                 }
             }
             const double t = 0.5 * (lo + hi);
