@@ -7,6 +7,8 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/cache_carry.h"
 #include "app/diff_command.h"
@@ -26,6 +28,48 @@ std::string vec_text(const Vec3& v) {
     std::ostringstream s;
     s << '<' << v.x << ", " << v.y << ", " << v.z << '>';
     return s.str();
+}
+
+// Whether any layer or texture_map entry of the texture, at any depth, has a grainy finish (`crand`).
+bool texture_has_crand(const scene::Texture& t) {
+    if (t.finish.crand > 0.0) return true;
+    for (const scene::Texture& layer : t.layers)
+        if (texture_has_crand(layer)) return true;
+    for (const scene::TextureMapEntry& e : t.texture_map)
+        if (texture_has_crand(e.texture)) return true;
+    return false;
+}
+
+bool object_has_crand(const scene::Object& o) {
+    if (texture_has_crand(o.texture)) return true;
+    for (const scene::Texture& t : o.interior_texture)
+        if (texture_has_crand(t)) return true;
+    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
+        for (const scene::Object& child : csg->children)
+            if (object_has_crand(child)) return true;
+    return false;
+}
+
+// The sources of randomness the scene uses, as --check names them: what makes two renders at the scene's own
+// settings differ by noise (the census renders such scenes converged). Found in the scene as parsed, so also in
+// textures and lights that come from include files.
+std::vector<std::string> randomness(const scene::Scene& scene) {
+    std::vector<std::string> found;
+    if (scene.global.radiosity) found.emplace_back("radiosity");
+    for (const scene::Light& l : scene.lights) {
+        if (l.area && l.jitter) {
+            found.emplace_back("area light jitter");
+            break;
+        }
+    }
+    for (const scene::Object& o : scene.objects) {
+        if (object_has_crand(o)) {
+            found.emplace_back("crand");
+            break;
+        }
+    }
+    if (scene.camera.aperture > 0.0 && scene.camera.blur_samples > 1) found.emplace_back("focal blur");
+    return found;
 }
 
 // --check: what the scene holds, in a form a person can read.
@@ -53,6 +97,10 @@ void describe_scene(const scene::Scene& scene, std::ostream& out) {
     for (const scene::Light& l : scene.lights) ++lights[std::string(scene::light_type_name(l.type))];
     counts("lights", scene.lights.size(), lights);
     out << "radiosity: " << (scene.global.radiosity ? "on" : "off") << "\n";
+    const std::vector<std::string> random = randomness(scene);
+    out << "randomness:";
+    for (std::size_t i = 0; i < random.size(); ++i) out << (i ? ", " : " ") << random[i];
+    out << (random.empty() ? " none\n" : "\n");
     out << "warnings: " << scene.warnings.size() << "\n";
     for (const Diagnostic& w : scene.warnings) out << "  " << w.loc.path << ':' << w.loc.line << ':'
                                                             << w.loc.column << ": " << w.message << "\n";

@@ -131,6 +131,12 @@ class SceneTextTest(unittest.TestCase):
                          ["jitter", "crand"])
         self.assertEqual(f(["#declare jitter_amount = 1;"]), [])
 
+    def test_randomness_of_the_parsed_scene(self):
+        out = "scene: s.pov\nradiosity: off\nrandomness: area light jitter, crand, focal blur\nwarnings: 0\n"
+        self.assertEqual(census.parsed_randomness_words(out), ["jitter", "crand"])
+        self.assertEqual(census.parsed_randomness_words("randomness: none\n"), [])
+        self.assertEqual(census.parsed_randomness_words("no such line"), [])
+
     def test_gamma_facts(self):
         text = "// #version 3.1;\n#version 3.6;\nglobal_settings { assumed_gamma 2.2 }\n"
         self.assertEqual(census.gamma_facts(text, [text, "global_settings{assumed_gamma 1.0}"]),

@@ -124,6 +124,23 @@ TEST(Cli, NeverOverwritesTheScene) {
     EXPECT_EQ(read_file(dir / "s.pov"), kSmallScene);
 }
 
+// --check names the randomness the parsed scene uses, also where it comes from an include file (the census renders
+// such scenes converged): here a grainy finish declared in an include and an area light with jitter.
+TEST(Cli, CheckNamesTheRandomnessFromIncludesToo) {
+    const fs::path dir = work_dir("check_random");
+    write_file(dir / "grain.inc", "#declare T_Grain = texture { pigment { rgb 1 } finish { crand 0.1 } }\n");
+    write_file(dir / "grainy.pov", R"(#version 3.7;
+#include "grain.inc"
+global_settings { assumed_gamma 1 }
+camera { location <0, 0, -5> look_at 0 }
+light_source { <5, 5, -5> rgb 1 area_light x, y, 3, 3 jitter }
+union { sphere { 0, 1 texture { T_Grain } } box { -2, -1.5 } }
+)");
+    const auto r = wardray("grainy.pov --check", dir);
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    EXPECT_NE(r.output.find("randomness: area light jitter, crand"), std::string::npos) << r.output;
+}
+
 TEST(Cli, CheckDescribesTheSceneAndDeclareReachesIt) {
     const fs::path dir = work_dir("check");
     write_file(dir / "small.pov", kSmallScene);
@@ -132,6 +149,7 @@ TEST(Cli, CheckDescribesTheSceneAndDeclareReachesIt) {
     EXPECT_NE(without.output.find("objects: 2 (plane 1, sphere 1)"), std::string::npos) << without.output;
     EXPECT_NE(without.output.find("lights: 1 (point 1)"), std::string::npos) << without.output;
     EXPECT_NE(without.output.find("radiosity: off"), std::string::npos) << without.output;
+    EXPECT_NE(without.output.find("randomness: none"), std::string::npos) << without.output;
     const auto with = wardray("small.pov --check Declare=Extra=1", dir);
     ASSERT_EQ(with.exit_status, 0) << with.output;
     EXPECT_NE(with.output.find("objects: 3 (box 1, plane 1, sphere 1)"), std::string::npos) << with.output;
