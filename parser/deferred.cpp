@@ -195,7 +195,7 @@ void Preprocessor::before_rebinding(const std::string& name) {
     for (const std::uint32_t index : readers) evaluate_pending(index);
 }
 
-void Preprocessor::before_scope_ends(const std::unordered_map<std::string, Value>& scope) {
+void Preprocessor::before_scope_ends(const NameMap<Value>& scope) {
     if (m_deferred_readers.empty()) return;
     std::vector<std::string> names;
     for (const auto& [name, value] : scope)

@@ -86,7 +86,7 @@ protected:
     /// Evaluates deferred declaration `index` if it is still pending and bound.
     void evaluate_pending(std::uint32_t index);
     void before_rebinding(const std::string& name) final;
-    void before_scope_ends(const std::unordered_map<std::string, Value>& scope) final;
+    void before_scope_ends(const NameMap<Value>& scope) final;
     /// Evaluates every pending deferred declaration (before state they depend on changes, e.g. #default).
     void evaluate_all_deferred();
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -19,6 +21,37 @@
 #include "parser/value.h"
 
 namespace wardray::parser {
+
+/// An identifier with its hash, computed once for a lookup that searches several tables (the scopes).
+struct HashedName {
+    std::string_view name;
+    std::size_t hash;
+};
+
+/// Hash and equality of identifier tables that also take a HashedName (heterogeneous lookup).
+struct NameHash {
+    using is_transparent = void;
+    template <typename S>
+        requires std::convertible_to<const S&, std::string_view>
+    std::size_t operator()(const S& s) const { return std::hash<std::string_view>{}(std::string_view(s)); }
+    std::size_t operator()(const HashedName& n) const { return n.hash; }
+};
+struct NameEqual {
+    using is_transparent = void;
+    static std::string_view view(const HashedName& n) { return n.name; }
+    template <typename S>
+        requires std::convertible_to<const S&, std::string_view>
+    static std::string_view view(const S& s) { return std::string_view(s); }
+    template <typename A, typename B>
+    bool operator()(const A& a, const B& b) const { return view(a) == view(b); }
+};
+
+/// A table keyed by identifier.
+template <typename T>
+using NameMap = std::unordered_map<std::string, T, NameHash, NameEqual>;
+
+inline HashedName hashed(std::string_view name) { return {name, NameHash{}(name)}; }
+
 
 /// One source file read by the parse, with its tokens (kept alive so macros and loops can re-read them).
 struct SourceFile {
@@ -213,7 +246,7 @@ protected:
     std::set<std::string> m_warned_features;
     /// Unsupported-feature warnings met while declaring an identifier: shown only when the identifier is used,
     /// so unused declarations of include files cost nothing.
-    std::unordered_map<std::string, std::vector<Diagnostic>> m_deferred_warnings;
+    NameMap<std::vector<Diagnostic>> m_deferred_warnings;
     std::vector<std::vector<Diagnostic>> m_declaring;  ///< warnings collected by the declarations being parsed
 };
 

@@ -134,7 +134,8 @@ bool TokenStream::starts_string(const Token& t) {
 // Symbols
 
 const Value* TokenStream::lookup(const std::string& name) {
-    if (const auto deferred = m_deferred_warnings.find(name); deferred != m_deferred_warnings.end()) {
+    const HashedName key = hashed(name);
+    if (const auto deferred = m_deferred_warnings.find(key); deferred != m_deferred_warnings.end()) {
         const std::vector<Diagnostic> warnings = deferred->second;
         for (const Diagnostic& d : warnings) {
             if (m_declaring.empty()) {
@@ -148,7 +149,7 @@ const Value* TokenStream::lookup(const std::string& name) {
             if (std::none_of(pending.begin(), pending.end(), same)) pending.push_back(d);
         }
     }
-    Value* slot = find_slot(name);
+    Value* slot = find_slot(key);
     if (slot != nullptr && std::holds_alternative<Deferred>(*slot)) evaluate_deferred(*slot);
     return slot;
 }
@@ -160,9 +161,11 @@ Value* TokenStream::lookup_mutable(const std::string& name) {
     return slot;
 }
 
-Value* TokenStream::find_slot(const std::string& name) {
+Value* TokenStream::find_slot(const std::string& name) { return find_slot(hashed(name)); }
+
+Value* TokenStream::find_slot(const HashedName& key) {
     for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {
-        const auto found = it->find(name);
+        const auto found = it->find(key);
         if (found != it->end()) return &found->second;
     }
     return nullptr;
@@ -279,7 +282,7 @@ void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
     if (args.size() > macro.params.size())
         fail(name_tok, "macro '" + name_tok.text + "' takes " + std::to_string(macro.params.size()) +
                            " parameter(s) but " + std::to_string(args.size()) + " were given");
-    std::unordered_map<std::string, Value> scope;
+    NameMap<Value> scope;
     // The parameters shadow outer names from here on.
     for (const std::string& param : macro.params) before_rebinding(param);
     for (std::size_t i = 0; i < macro.params.size(); ++i) {

@@ -85,6 +85,7 @@ protected:
     Value* lookup_mutable(const std::string& name);
     /// The binding of an identifier as stored (a Deferred stays deferred), innermost scope first; no side effects.
     Value* find_slot(const std::string& name);
+    Value* find_slot(const HashedName& key);
     /// Binds `name` to `v` in the innermost (local) or the global scope.
     void declare(const std::string& name, Value v, bool local);
     /// Every declared identifier and macro name, for suggestions.
@@ -101,11 +102,11 @@ protected:
     /// Called before `name` is rebound, undefined or shadowed (deferred declarations reading it are evaluated).
     virtual void before_rebinding(const std::string& name) = 0;
     /// Called before a scope is dropped: the deferred declarations reading its names are evaluated first.
-    virtual void before_scope_ends(const std::unordered_map<std::string, Value>& scope) = 0;
+    virtual void before_scope_ends(const NameMap<Value>& scope) = 0;
 
     std::vector<Cond> m_conds;
     std::unordered_map<std::string, Macro> m_macros;
-    std::vector<std::unordered_map<std::string, Value>> m_scopes;
+    std::vector<NameMap<Value>> m_scopes;
     std::uint64_t m_loop_iterations = 0;
     /// Tokens consumed so far by next().
     std::uint64_t m_tokens_taken = 0;
