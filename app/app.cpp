@@ -18,6 +18,7 @@
 #include "app/run.h"
 #include "app/stats.h"
 #include "core/diagnostics.h"
+#include "geometry/scene_geometry.h"
 
 namespace wardray::app {
 
@@ -122,8 +123,9 @@ void warn_skipped_objects(const scene::Scene& scene, const geometry::SceneGeomet
                                  std::to_string(why.where.column);
         d.message = std::string(scene::shape_keyword(object.shape));
         if (why.too_deep) {
-            d.message += " nests CSG more than 1000 levels deep";
-            if (elsewhere) d.message += " (level 1001 is at " + part + ")";
+            const int limit = geometry::max_csg_depth();
+            d.message += " nests CSG more than " + std::to_string(limit) + " levels deep";
+            if (elsewhere) d.message += " (level " + std::to_string(limit + 1) + " is at " + part + ")";
             d.message += " and is not rendered; build it as fewer levels (a flat union) or as a mesh";
         } else {
             d.message += " is degenerate (zero size, singular transform or non-finite numbers";

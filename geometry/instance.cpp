@@ -11,7 +11,18 @@ namespace {
 // CSG nodes nest at most this deep once the parser has flattened what it can (nested unions, intersections and
 // merges): building, tracing and freeing a tree recurse once per level on ordinary thread stacks, which 4,000
 // levels of `difference { A difference { ... } }` overflowed. 1,000 levels render.
+// Sanitizers' frames are several times larger: 1,000 levels overflow 8 MB under AddressSanitizer.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int k_max_csg_depth = 250;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr int k_max_csg_depth = 250;
+#else
 constexpr int k_max_csg_depth = 1000;
+#endif
+#else
+constexpr int k_max_csg_depth = 1000;
+#endif
 thread_local int t_csg_depth = 0;
 // The innermost refusal of the current top-level create (the first one wins: it is the deepest part refused).
 thread_local SkipReason t_skip;
@@ -125,6 +136,8 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
 }  // namespace
 
 const SkipReason& last_skip_reason() { return t_skip; }
+
+int max_csg_depth() { return k_max_csg_depth; }
 
 ShapeInstance::ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index)
     : m_shape(shape),

@@ -44,11 +44,14 @@ struct Hit {
 
 /// Why ShapeInstance::create returned nothing, for the warning that names the object.
 struct SkipReason {
-    /// A CSG node lay more than 1,000 levels below the object (else the object or a part is degenerate).
+    /// A CSG node lay more than max_csg_depth() levels below the object (else the object or a part is degenerate).
     bool too_deep = false;
     /// Where the part that was refused is written: the first node past the depth limit, or the degenerate part.
     SourceLoc where;
 };
+
+/// How deep CSG nodes may nest below a top-level object (1,000; less in sanitizer builds, whose frames are larger).
+int max_csg_depth();
 
 /// Builds and owns the Embree device and scene. Thread-safe for concurrent queries after construction.
 class SceneGeometry {

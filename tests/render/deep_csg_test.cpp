@@ -197,7 +197,7 @@ TEST(DeepCsg, ATreeTooDeepToFlattenIsLeftOutNotAStackOverflow) {
     ASSERT_EQ(geometry.skip_reasons().size(), 1u);
     const geometry::SkipReason& why = geometry.skip_reasons().front();
     EXPECT_TRUE(why.too_deep);
-    EXPECT_EQ(why.where.line, parsed.scene->objects.front().loc.line + 2 * 1000);
+    EXPECT_EQ(why.where.line, parsed.scene->objects.front().loc.line + 2 * geometry::max_csg_depth());
     EXPECT_TRUE(render_scene(*parsed.scene).ok);
 }
 
