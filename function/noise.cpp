@@ -136,15 +136,12 @@ void lattice(double x, int& cell, double& frac) {
     frac = x - tmp;
 }
 
-// The eight corner contributions of POV-Ray's noise, for coefficient block `block` (0 for Noise; 0, 4, 8 for
-// the x, y, z of DNoise). Each corner adds weight · (R[h]/2 + R[h+1]·dx + R[h+2]·dy + R[h+3]·dz).
-struct Corners {
-    int hash[8];
-    double weight[8];
-    double dx[8], dy[8], dz[8];
-};
-
-Corners corners(const Vec3& p) {
+// POV-Ray's noise sums over the eight corners of the lattice cell around `p`, for `Blocks` coefficient blocks
+// (1 for Noise; 3 for the x, y, z of DNoise, blocks 0, 4, 8). Each corner adds
+// weight · (R[h]/2 + R[h+1]·dx + R[h+2]·dy + R[h+3]·dz), in POV-Ray's corner order; one pass over the corners
+// serves every block, each sum adding the same terms in the same order as a pass per block would.
+template <int Blocks>
+inline void corner_sums(const Vec3& p, double (&sum)[Blocks]) {
     const Tables& t = tables();
     int ix, iy, iz;
     double fx, fy, fz;
@@ -154,32 +151,22 @@ Corners corners(const Vec3& p) {
     const double sx = s_curve(fx), sy = s_curve(fy), sz = s_curve(fz);
     const double tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
     auto hash2 = [&](int a, int b) { return static_cast<int>(t.hash[t.hash[a] ^ b]); };
-    const int h00 = hash2(ix, iy), h10 = hash2(ix + 1, iy), h01 = hash2(ix, iy + 1), h11 = hash2(ix + 1, iy + 1);
-    Corners c{};
-    const int hxy[4] = {h00, h10, h01, h11};
+    const int hxy[4] = {hash2(ix, iy), hash2(ix + 1, iy), hash2(ix, iy + 1), hash2(ix + 1, iy + 1)};
     const double wxy[4] = {tx * ty, sx * ty, tx * sy, sx * sy};
     const double ox[4] = {fx, fx - 1.0, fx, fx - 1.0};
     const double oy[4] = {fy, fy, fy - 1.0, fy - 1.0};
+    for (int b = 0; b < Blocks; ++b) sum[b] = 0.0;
     for (int k = 0; k < 8; ++k) {
         const int xy = k & 3;
         const bool upper = k >= 4;
-        c.hash[k] = (t.hash[hxy[xy] ^ (upper ? iz + 1 : iz)] & 0xFF);
-        c.weight[k] = wxy[xy] * (upper ? sz : tz);
-        c.dx[k] = ox[xy];
-        c.dy[k] = oy[xy];
-        c.dz[k] = upper ? fz - 1.0 : fz;
+        const int h = t.hash[hxy[xy] ^ (upper ? iz + 1 : iz)] & 0xFF;
+        const double weight = wxy[xy] * (upper ? sz : tz);
+        const double dx = ox[xy], dy = oy[xy], dz = upper ? fz - 1.0 : fz;
+        for (int b = 0; b < Blocks; ++b) {
+            const double* r = &kRTable[static_cast<std::size_t>(h + 4 * b)];
+            sum[b] += weight * (0.5 * r[0] + r[1] * dx + r[2] * dy + r[3] * dz);
+        }
     }
-    return c;
-}
-
-double corner_sum(const Corners& c, int block) {
-    double sum = 0.0;
-    for (int k = 0; k < 8; ++k) {
-        const int h = c.hash[k] + block;
-        sum += c.weight[k] * (0.5 * kRTable[h] + kRTable[h + 1] * c.dx[k] + kRTable[h + 2] * c.dy[k] +
-                              kRTable[h + 3] * c.dz[k]);
-    }
-    return sum;
 }
 
 // Perlin's gradient noise (Perlin 1989, "Hypertexture"), POV-Ray's SolidNoise, about -1..1.
@@ -219,7 +206,9 @@ double noise(const Vec3& p, int generator) {
         // POV-Ray compat: 1.59 and 0.985 re-centre Perlin's noise on [0, 1].
         return std::clamp(0.5 * (1.59 * solid_noise(p) + 0.985), 0.0, 1.0);
     }
-    double sum = corner_sum(corners(p), 0);
+    double sums[1];
+    corner_sums(p, sums);
+    double sum = sums[0];
     if (generator == 2) {
         // POV-Ray compat: the measured range -1.05242..0.988997 stretched onto [0, 1].
         sum = (sum + 1.05242) * 0.48985582;
@@ -230,8 +219,9 @@ double noise(const Vec3& p, int generator) {
 }
 
 Vec3 dnoise(const Vec3& p) {
-    const Corners c = corners(p);
-    return {corner_sum(c, 0), corner_sum(c, 4), corner_sum(c, 8)};
+    double sums[3];
+    corner_sums(p, sums);
+    return {sums[0], sums[1], sums[2]};
 }
 
 double turbulence(const Vec3& p, const TurbulenceParams& t, int generator) {

@@ -7,6 +7,7 @@
 
 #include "core/constants.h"
 #include "core/render_seed.h"
+#include "media/media_density.h"
 #include "media/participating_media.h"
 #include "texture/pigment.h"
 
@@ -383,8 +384,7 @@ void Walk::sample(Interval& iv, double d0, Vec3& col, Vec3& od, int method) {
     Vec3 emission, extinction, scattering;
     for (int i = 0; i < m_media.size; ++i) {
         const scene::Media& m = *m_media.items[i];
-        Vec3 density{1.0, 1.0, 1.0};
-        for (const scene::Pigment& d : m.densities) density = density * texture::evaluate_pigment(d, h, m_noise).rgb();
+        const Vec3 density = media_density(m, h, m_noise);
         extinction += density * extinction_of(m);
         if (!shadow) {
             emission += density * m.emission.rgb();

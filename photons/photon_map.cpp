@@ -58,9 +58,21 @@ Vec3 photon_colour(const Photon& p, int exponent_offset) {
 }
 
 Vec3 photon_direction(const Photon& p) {
-    const double theta = p.theta * std::numbers::pi / 127.0;
-    const double phi = p.phi * std::numbers::pi / 127.0;
-    return {std::cos(theta) * std::cos(phi), std::sin(theta), std::cos(theta) * std::sin(phi)};
+    // The sines and cosines of the 256 angles a byte encodes (k·π/127), computed once: a media gather decodes
+    // every photon it finds.
+    struct Table {
+        double sin[256], cos[256];
+        Table() {
+            for (int k = -128; k < 128; ++k) {
+                const double a = k * std::numbers::pi / 127.0;
+                sin[k + 128] = std::sin(a);
+                cos[k + 128] = std::cos(a);
+            }
+        }
+    };
+    static const Table table;
+    const int theta = p.theta + 128, phi = p.phi + 128;
+    return {table.cos[theta] * table.cos[phi], table.sin[theta], table.cos[theta] * table.sin[phi]};
 }
 
 PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& settings, bool media,
@@ -137,10 +149,9 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     double max_d2 = size * size;
     search(0, static_cast<int>(m_photons.size()), p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
     out.radius = std::sqrt(max_d2);
-    // Nearest first, ties by storage order, so the sum's rounding is the same on every run.
-    std::sort(heap.begin(), heap.end(), [](const auto& a, const auto& b) {
-        return a.first != b.first ? a.first < b.first : a.second < b.second;
-    });
+    // Nearest first, ties by storage order, so the sum's rounding is the same on every run (the heap is ordered by
+    // the pair's operator<: distance, then address).
+    std::sort_heap(heap.begin(), heap.end());
     for (const auto& e : heap) out.photons.push_back(e.second);
 }
 

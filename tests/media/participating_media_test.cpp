@@ -5,7 +5,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "media/media_density.h"
 #include "media/participating_media.h"
+#include "texture/pigment.h"
 #include "parser/parse.h"
 
 namespace wardray::media {
@@ -305,6 +307,30 @@ TEST(MediaPhotonGather, PhotonsScatterLikeALightOfTheirFluxDensity) {
     const double light = 1.0 / (4.0 / 3.0 * std::numbers::pi);
     const Vec3 c = media.along(media.atmosphere(), kRay, {}, PhotonsOnly{});
     EXPECT_NEAR(c.x, 0.2 * light * 4.0, 1e-9);
+}
+
+
+TEST(MediaDensity, IsTheProductInOrderAndBlackWhereACheapDensityIsBlack) {
+    // Crackle first, then a spherical fall-off that is black beyond radius 1: inside, the product in the blocks'
+    // order, bit for bit; outside, black without the crackle mattering.
+    parser::ParseOptions options;
+    const parser::ParseResult r = parser::parse_string(
+        "#version 3.7;\n"
+        "media { emission 1 density { crackle scale 0.5 color_map { [0 rgb 0.2] [1 rgb <1, 0.5, 0.25>] } }"
+        " density { spherical color_map { [0 rgb 0] [1 rgb 1] } } density { rgb <1, 0.5, 2> } }\n",
+        "density.pov", options);
+    ASSERT_TRUE(r.ok());
+    const scene::Media& m = r.scene->media.at(0);
+    ASSERT_EQ(m.densities.size(), 3u);
+    for (const Vec3 p : {Vec3{0.1, 0.2, 0.3}, Vec3{-0.4, 0.5, 0.1}, Vec3{0.9, 0.0, 0.2}, Vec3{2.0, 1.0, 0.0}}) {
+        Vec3 expected{1.0, 1.0, 1.0};
+        for (const scene::Pigment& d : m.densities) expected = expected * texture::evaluate_pigment(d, p, 2).rgb();
+        const Vec3 got = media_density(m, p, 2);
+        EXPECT_EQ(got, expected) << p.x << " " << p.y << " " << p.z;
+    }
+    EXPECT_EQ(media_density(m, {2.0, 1.0, 0.0}, 2), Vec3{});
+    scene::Media none;
+    EXPECT_EQ(media_density(none, {0.3, 0.3, 0.3}, 2), (Vec3{1.0, 1.0, 1.0}));
 }
 
 }  // namespace
