@@ -20,14 +20,28 @@ int dominant_axis(const Vec3& v) {
 MeshCamera::MeshCamera(const scene::MeshCameraSpec& spec)
     : m_rays_per_pixel(spec.rays_per_pixel), m_distribution(spec.distribution), m_smooth(spec.smooth) {
     std::size_t total = 0;
+    scene::SharedVector<scene::Mesh::Face> last_faces;
+    scene::SharedVector<Vec3> last_vertices;
     for (const scene::MeshCameraSpec::PlacedMesh& pm : *spec.meshes) {
         // A large camera holds millions of faces (a mesh per sample, a face per pixel): only distribution 3 looks
         // at more than each face's centroid and normal, and only in the first mesh.
         const bool whole_faces = m_distribution == 3 && m_meshes.empty();
         PlacedMesh placed;
-        placed.centroids.reserve(pm.mesh.faces.size());
-        if (whole_faces) placed.faces.reserve(pm.mesh.faces.size());
         placed.transform = pm.transform;
+        // Copies of one declared mesh share its faces: their centroids are computed once.
+        if (!whole_faces && !m_meshes.empty() && pm.mesh.faces.shares(last_faces) &&
+            pm.mesh.vertices.shares(last_vertices)) {
+            placed.centroids = m_meshes.back().centroids;
+            total += placed.centroids->size();
+            m_mesh_end.push_back(total);
+            m_meshes.push_back(std::move(placed));
+            continue;
+        }
+        last_faces = pm.mesh.faces;
+        last_vertices = pm.mesh.vertices;
+        auto centroids = std::make_shared<std::vector<CentroidFace>>();
+        centroids->reserve(pm.mesh.faces.size());
+        if (whole_faces) placed.faces.reserve(pm.mesh.faces.size());
         const scene::Mesh& m = pm.mesh;
         for (const scene::Mesh::Face& f : m.faces) {
             Face face;
@@ -57,7 +71,7 @@ MeshCamera::MeshCamera(const scene::MeshCameraSpec& spec)
                 std::swap(ni[0], ni[1]);
                 std::swap(ui[0], ui[1]);
             }
-            placed.centroids.push_back({(p1 + p2 + p3) / 3.0, normal});
+            centroids->push_back({(p1 + p2 + p3) / 3.0, normal});
             if (!whole_faces) continue;
             face.p = {p1, p2, p3};
             face.normal = normal;
@@ -75,7 +89,8 @@ MeshCamera::MeshCamera(const scene::MeshCameraSpec& spec)
             face.perp = face.perp / -dot(t2, face.perp);
             placed.faces.push_back(face);
         }
-        total += placed.centroids.size();
+        placed.centroids = std::move(centroids);
+        total += placed.centroids->size();
         m_mesh_end.push_back(total);
         m_meshes.push_back(std::move(placed));
     }
@@ -162,7 +177,7 @@ bool MeshCamera::ray(const Frame& frame, double px, double py, int ray_number, P
     const unsigned width = static_cast<unsigned>(frame.width);
     const unsigned index = static_cast<unsigned>(y) * width + static_cast<unsigned>(x);
     auto centroid_ray = [&](const PlacedMesh& mesh, std::size_t face) {
-        const CentroidFace& f = mesh.centroids[face];
+        const CentroidFace& f = (*mesh.centroids)[face];
         leave(frame, mesh, f.centroid, f.normal, out);
         return true;
     };
@@ -172,7 +187,7 @@ bool MeshCamera::ray(const Frame& frame, double px, double py, int ray_number, P
         case 0: {
             // One mesh per sample, one face per pixel in row order.
             const PlacedMesh& mesh = m_meshes[static_cast<std::size_t>(ray_number)];
-            if (index >= mesh.centroids.size()) return false;
+            if (index >= mesh.centroids->size()) return false;
             return centroid_ray(mesh, index);
         }
         case 1: {
@@ -195,7 +210,7 @@ bool MeshCamera::ray(const Frame& frame, double px, double py, int ray_number, P
             if (m >= n) return false;
             const unsigned face = static_cast<unsigned>(y) * static_cast<unsigned>(width / n) +
                                   static_cast<unsigned>(x);
-            if (face >= m_meshes[m].centroids.size()) return false;
+            if (face >= m_meshes[m].centroids->size()) return false;
             return centroid_ray(m_meshes[m], face);
         }
         default: {

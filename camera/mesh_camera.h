@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <vector>
 
@@ -39,7 +40,8 @@ private:
         Vec3 normal;
     };
     struct PlacedMesh {
-        std::vector<CentroidFace> centroids;  ///< every face, for distributions 0-2
+        /// Every face, for distributions 0-2; shared by the placed copies of one mesh (they differ only in transform).
+        std::shared_ptr<const std::vector<CentroidFace>> centroids;
         std::vector<Face> faces;              ///< the whole faces, kept only for distribution 3's first mesh
         Transform transform;
     };

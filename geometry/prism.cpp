@@ -128,12 +128,12 @@ std::optional<MeshShape> MeshShape::create(const scene::Prism& prism) {
     auto add_triangle = [&](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& outward,
                             const Vec3* normals = nullptr) {
         const int base = static_cast<int>(mesh.vertices.size());
-        mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
+        mesh.vertices.mut().insert(mesh.vertices.mut().end(), {a, b, c});
         scene::Mesh::Face f;
         f.v = {base, base + 1, base + 2};
         if (normals != nullptr) {
             const int nb = static_cast<int>(mesh.normals.size());
-            mesh.normals.insert(mesh.normals.end(), {normals[0], normals[1], normals[2]});
+            mesh.normals.mut().insert(mesh.normals.mut().end(), {normals[0], normals[1], normals[2]});
             f.n = {nb, nb + 1, nb + 2};
         }
         if (dot(cross(b - a, c - a), outward) < 0.0) {

@@ -193,7 +193,7 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         if (m_photon_shadows && !ctx.lit_ignores_photons && photons::photons_replace_shadow(object, light)) return {};
         // POV-Ray compat (ComputeShadowTexture): a surface met from inside shows its interior texture.
         const bool inside = !object.interior_texture.empty() && dot(hit->normal, dir) > 0.0;
-        const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
+        const scene::Texture& texture = inside ? object.interior_texture.front() : *object.texture;
         const double caustics = object.interior.caustics;
         // POV-Ray compat (ComputeShadowColour): patterns see the normal turned against the shadow ray.
         const Vec3 raw = dot(hit->normal, dir) > 0.0 ? -hit->normal : hit->normal;

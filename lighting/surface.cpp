@@ -56,7 +56,7 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     std::vector<const scene::Pattern*> warps;
     // POV-Ray compat: a surface met from inside shows its interior texture, when it has one.
     const bool inside = !object.interior_texture.empty() && dot(hit.normal, direction) > 0.0;
-    const scene::Texture& texture = inside ? object.interior_texture.front() : object.texture;
+    const scene::Texture& texture = inside ? object.interior_texture.front() : *object.texture;
     const auto* mesh = hit.face >= 0 ? std::get_if<scene::Mesh>(&object.shape) : nullptr;
     if (mesh == nullptr) {
         if (const auto* patch = std::get_if<scene::BicubicPatch>(&object.shape); patch && hit.has_params)

@@ -24,9 +24,9 @@ namespace {
 void transform_textures(Object& o, bool own_texture, const Transform& tr) {
     // POV-Ray compat: an object with uv_mapping keeps its textures in uv space.
     if (o.uv_mapping) return;
-    if (own_texture) transform_texture(o.texture, tr);
+    if (own_texture) transform_texture(*o.texture, tr);
     for (Texture& inside : o.interior_texture) transform_texture(inside, tr);
-    if (auto* mesh = std::get_if<Mesh>(&o.shape))
+    if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty())
         for (Texture& t : mesh->textures) transform_texture(t, tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
@@ -299,7 +299,7 @@ Texture& ObjectReader::texture_to_modify(ObjectValue& ov) {
         part.object.texture = default_texture();
         part.has_texture = true;
     }
-    return part.object.texture;
+    return *part.object.texture;
 }
 
 void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {

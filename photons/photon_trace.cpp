@@ -110,7 +110,7 @@ void PhotonTracer::trace(const RayIn& ray, Vec3 colour, double weight, Path& pat
             if (dot(raw, ray.dir) > 0.0) raw = -raw;
             const bool inside = !leaf.interior_texture.empty() && dot(hit->normal, ray.dir) > 0.0;
             std::vector<const scene::Pattern*> warps;
-            texture(inside ? leaf.interior_texture.front() : leaf.texture, hit->position, warps, *hit, raw, ray,
+            texture(inside ? leaf.interior_texture.front() : *leaf.texture, hit->position, warps, *hit, raw, ray,
                     colour, weight, path);
         }
         path.pass_this = path.pass_prev;

@@ -10,6 +10,7 @@
 
 #include "core/diagnostics.h"
 #include "core/transform.h"
+#include "scene/cow.h"
 #include "scene/interior.h"
 #include "scene/kind_list.h"
 #include "scene/shapes.h"
@@ -58,7 +59,8 @@ struct ObjectPhotons {
 struct Object {
     Shape shape;
     Transform transform;  ///< object space to world space, in the order the keywords appeared
-    Texture texture;
+    /// Shared with the declared object or CSG parent it came from until one of them changes it; empty: default.
+    Cow<Texture> texture;
     /// The interior rays see inside this object: its own, or after parsing its CSG parent's when it has none.
     Interior interior;
     /// Which interior this is (POV-Ray's Interior pointer): objects with the same nonzero id share one interior

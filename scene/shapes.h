@@ -10,6 +10,7 @@
 #include "core/diagnostics.h"
 #include "core/vec3.h"
 #include "function/function_vm.h"
+#include "scene/cow.h"
 #include "scene/texture.h"
 
 namespace wardray::scene {
@@ -133,11 +134,12 @@ struct Mesh {
         static constexpr const char* names[] = {"triangle", "smooth_triangle", "mesh", "mesh2"};
         return names[static_cast<int>(kind)];
     }
-    std::vector<Vec3> vertices;
-    std::vector<Vec3> normals;
-    std::vector<Face> faces;
-    std::vector<Vec3> uvs;           ///< `uv_vectors` (u, v, 0)
-    std::vector<Texture> textures;   ///< per-triangle textures and mesh2's `texture_list`
+    // Shared between copies (a declared mesh used many times costs its size once) until one of them changes.
+    SharedVector<Vec3> vertices;
+    SharedVector<Vec3> normals;
+    SharedVector<Face> faces;
+    SharedVector<Vec3> uvs;           ///< `uv_vectors` (u, v, 0)
+    SharedVector<Texture> textures;   ///< per-triangle textures and mesh2's `texture_list`
     Vec3 inside_vector;  ///< zero when not given: the mesh has no inside
     bool operator==(const Mesh&) const = default;
 };

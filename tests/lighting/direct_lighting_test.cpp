@@ -16,9 +16,9 @@ scene::Scene floor_scene() {
     scene::Scene scene;
     scene::Object floor;
     floor.shape = scene::Plane{{0, 1, 0}, 0.0};
-    floor.texture.pigment.color = {1, 1, 1};
-    floor.texture.finish.ambient = {0, 0, 0};
-    floor.texture.finish.diffuse = 1.0;
+    floor.texture->pigment.color = {1, 1, 1};
+    floor.texture->finish.ambient = {0, 0, 0};
+    floor.texture->finish.diffuse = 1.0;
     scene.objects.push_back(floor);
     return scene;
 }
@@ -52,7 +52,7 @@ TEST(DirectLighting, PointLightFollowsTheCosineLawWithoutInverseSquare) {
 
 TEST(DirectLighting, BrillianceRaisesTheCosine) {
     scene::Scene scene = floor_scene();
-    scene.objects[0].texture.finish.brilliance = 3.0;
+    scene.objects[0].texture->finish.brilliance = 3.0;
     scene.lights.push_back(point_light({0, 2, 0}));
     const double cos_theta = 2.0 / std::sqrt(4.0 + 1.0);
     EXPECT_NEAR(radiance_at(scene, 1.0, 0.0), std::pow(cos_theta, 3.0), 1e-9);
@@ -145,9 +145,9 @@ TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
 
 TEST(DirectLighting, ShadowlessLightsCauseNoHighlights) {
     scene::Scene scene = floor_scene();
-    scene.objects[0].texture.finish.diffuse = 0.0;
-    scene.objects[0].texture.finish.phong = 1.0;
-    scene.objects[0].texture.finish.specular = 1.0;
+    scene.objects[0].texture->finish.diffuse = 0.0;
+    scene.objects[0].texture->finish.phong = 1.0;
+    scene.objects[0].texture->finish.specular = 1.0;
     scene.lights.push_back(point_light({0, 2, 0}));  // straight above: both highlights at full strength
     EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 2.0, 1e-9);
     scene.lights[0].shadowless = true;
@@ -162,7 +162,7 @@ TEST(DirectLighting, LightBelowTheFloorContributesNothing) {
 
 TEST(DirectLighting, AmbientIsLightUnlessRadiosityInA37Scene) {
     scene::Scene scene = floor_scene();
-    scene.objects[0].texture.finish.ambient = {0.2, 0.2, 0.2};
+    scene.objects[0].texture->finish.ambient = {0.2, 0.2, 0.2};
     scene.global.ambient_light = {0.5, 0.5, 0.5};
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.1, 1e-12);
     scene.global.radiosity = scene::RadiositySettings{};
@@ -173,8 +173,8 @@ TEST(DirectLighting, AmbientIsLightUnlessRadiosityInA37Scene) {
 
 TEST(DirectLighting, EmissionAddsPigmentTimesEmission) {
     scene::Scene scene = floor_scene();
-    scene.objects[0].texture.pigment.color = {0.5, 0.5, 0.5};
-    scene.objects[0].texture.finish.emission = {0.4, 0.4, 0.4};
+    scene.objects[0].texture->pigment.color = {0.5, 0.5, 0.5};
+    scene.objects[0].texture->finish.emission = {0.4, 0.4, 0.4};
     EXPECT_NEAR(radiance_at(scene, 0, 0), 0.2, 1e-12);
 }
 

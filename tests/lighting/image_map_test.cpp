@@ -33,7 +33,7 @@ scene::Pigment image_pigment(const std::string& items, const std::string& block 
         "test.pov", options);
     EXPECT_TRUE(r.ok());
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
-    return r.ok() ? r.scene->objects.at(0).texture.pigment : scene::Pigment{};
+    return r.ok() ? r.scene->objects.at(0).texture->pigment : scene::Pigment{};
 }
 
 TEST(ImageMap, PlanarPlacesTheTopRowAtTheTopAndDecodesGamma) {
@@ -128,14 +128,14 @@ TEST(ImageMap, PaletteAlphaIsEachEntrysTransmitWhichFilterLeaves) {
     for (const auto& d : r.diagnostics) diagnostics += format_diagnostic(d);
     ASSERT_TRUE(r.ok()) << diagnostics;
     EXPECT_TRUE(r.diagnostics.empty()) << diagnostics;  // the alpha is rendered: no warning
-    const scene::Pigment& p = r.scene->objects.at(0).texture.pigment;
+    const scene::Pigment& p = r.scene->objects.at(0).texture->pigment;
     const Color opaque = texture::evaluate_pigment(p, {0.25, 0.5, 0}, 2);
     const Color clear = texture::evaluate_pigment(p, {0.75, 0.5, 0}, 2);
     EXPECT_FLOAT_EQ(opaque.transmit, 0.0f);
     EXPECT_FLOAT_EQ(clear.transmit, 0.6f);
     EXPECT_FLOAT_EQ(clear.filter, 0.25f);
     // image_pattern's use_alpha takes the transmit of an image with alpha.
-    const scene::Pattern& alpha = r.scene->objects.at(1).texture.pigment.pattern;
+    const scene::Pattern& alpha = r.scene->objects.at(1).texture->pigment.pattern;
     EXPECT_NEAR(texture::pattern_value(alpha, {0.75, 0.5, 0}, 2), 0.6, 1e-7);
     EXPECT_EQ(texture::pattern_value(alpha, {0.25, 0.5, 0}, 2), 0.0);
 }

@@ -61,7 +61,7 @@ TEST(ImagePatterns, DensityFileAndParseTimeWavesMatchPovRay) {
         ASSERT_EQ(s.objects.size(), 1u);
         EXPECT_EQ(s.global.number_of_waves, 3);
         for (int i = 0; i < 4; ++i)
-            EXPECT_NEAR(evaluate_pigment(s.objects[0].texture.pigment, kPoints[i], 2).r, c.expected[i], 2e-6)
+            EXPECT_NEAR(evaluate_pigment(s.objects[0].texture->pigment, kPoints[i], 2).r, c.expected[i], 2e-6)
                 << "point " << i;
     }
 }
@@ -113,7 +113,7 @@ TEST(ImagePatterns, ImageMapFilterAndTransmitPerPaletteEntry) {
     const scene::Scene s = parse("global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png " +
                                      kAnyFile + " transmit all 0.3 filter 1, 0.6 transmit 2, 0.9 } } }",
                                  palette_options());
-    const scene::Pigment& p = s.objects.at(0).texture.pigment;
+    const scene::Pigment& p = s.objects.at(0).texture->pigment;
     const Color left = evaluate_pigment(p, {0.1, 0.5, 0.0}, 2), middle = evaluate_pigment(p, {0.5, 0.5, 0.0}, 2),
                 right = evaluate_pigment(p, {0.9, 0.5, 0.0}, 2);
     EXPECT_FLOAT_EQ(left.filter, 0.0f);
@@ -154,8 +154,8 @@ TEST(ImagePatterns, BumpMapTiltsTowardsLowerTexels) {
                                  "sphere { 0, 1 normal { bump_map { png " + kAnyFile + " bump_size 0.5 use_index } } }",
                                  palette_options());
     const Vec3 n{0.0, 0.0, -1.0};
-    const Vec3 grey = perturb_normal(s.objects.at(0).texture.normal, n, {0.5, 0.5, 0.0}, 2);
-    const Vec3 index = perturb_normal(s.objects.at(1).texture.normal, n, {0.5, 0.5, 0.0}, 2);
+    const Vec3 grey = perturb_normal(s.objects.at(0).texture->normal, n, {0.5, 0.5, 0.0}, 2);
+    const Vec3 index = perturb_normal(s.objects.at(1).texture->normal, n, {0.5, 0.5, 0.0}, 2);
     EXPECT_NEAR(length(grey), 1.0, 1e-9);
     EXPECT_LT(grey.x, 0.0);
     EXPECT_LT(index.x, grey.x);
@@ -188,11 +188,11 @@ TEST(ImagePatterns, DefaultNormalStartsEveryNormal) {
     const scene::Scene s = parse("global_settings { assumed_gamma 1 }\n#default { normal { bumps 0.3 scale 0.5 } }\nsphere { 0, 1 }\n"
                                  "sphere { 0, 1 normal { bump_size 0.7 } }\n"
                                  "sphere { 0, 1 normal { gradient x normal_map { [0 bump_size 0.2] [1 dents] } } }");
-    EXPECT_EQ(s.objects.at(0).texture.normal.pattern.type, scene::Pattern::Type::Bumps);
-    EXPECT_FLOAT_EQ(s.objects.at(0).texture.normal.amount, 0.3f);
-    EXPECT_EQ(s.objects.at(1).texture.normal.pattern.type, scene::Pattern::Type::Bumps);
-    EXPECT_FLOAT_EQ(s.objects.at(1).texture.normal.amount, 0.7f);
-    const scene::Normal& mapped = s.objects.at(2).texture.normal;
+    EXPECT_EQ(s.objects.at(0).texture->normal.pattern.type, scene::Pattern::Type::Bumps);
+    EXPECT_FLOAT_EQ(s.objects.at(0).texture->normal.amount, 0.3f);
+    EXPECT_EQ(s.objects.at(1).texture->normal.pattern.type, scene::Pattern::Type::Bumps);
+    EXPECT_FLOAT_EQ(s.objects.at(1).texture->normal.amount, 0.7f);
+    const scene::Normal& mapped = s.objects.at(2).texture->normal;
     ASSERT_EQ(mapped.normal_map.size(), 2u);
     EXPECT_EQ(mapped.normal_map[0].normal.pattern.type, scene::Pattern::Type::Bumps);
     EXPECT_FLOAT_EQ(mapped.normal_map[1].normal.amount, 0.3f);

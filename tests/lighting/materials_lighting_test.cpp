@@ -15,9 +15,9 @@ namespace {
 scene::Object white_floor() {
     scene::Object floor;
     floor.shape = scene::Plane{{0, 1, 0}, 0.0};
-    floor.texture.pigment.color = {1, 1, 1};
-    floor.texture.finish.ambient = {0, 0, 0};
-    floor.texture.finish.diffuse = 1.0;
+    floor.texture->pigment.color = {1, 1, 1};
+    floor.texture->finish.ambient = {0, 0, 0};
+    floor.texture->finish.diffuse = 1.0;
     return floor;
 }
 
@@ -43,7 +43,7 @@ double floor_radiance(const scene::Scene& scene, double x, double z) {
 TEST(Crand, TakesAUniformRandomPartOfTheDiffuseLightAndRepeats) {
     scene::Scene scene;
     scene.objects.push_back(white_floor());
-    scene.objects[0].texture.finish.crand = 0.2;
+    scene.objects[0].texture->finish.crand = 0.2;
     scene::Light l = point_light({0, 10, 0});
     l.type = scene::Light::Type::Parallel;
     l.point_at = {0, 0, 0};  // straight down: cos = 1 everywhere
@@ -99,9 +99,9 @@ TEST(InteriorTexture, IsSeenFromInsideOnly) {
     scene::Scene scene;
     scene::Object ball;
     ball.shape = scene::Sphere{{0, 0, 0}, 1.0};
-    ball.texture.pigment.color = {0, 0.25, 0};
-    ball.texture.finish.ambient = {1, 1, 1};
-    ball.texture.finish.diffuse = 0.0;
+    ball.texture->pigment.color = {0, 0.25, 0};
+    ball.texture->finish.ambient = {1, 1, 1};
+    ball.texture->finish.diffuse = 0.0;
     scene::Texture inside = ball.texture;
     inside.pigment.color = {0, 0.75, 0};
     ball.interior_texture = {inside};

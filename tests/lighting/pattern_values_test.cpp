@@ -82,7 +82,7 @@ TEST(PatternValues, FractalsQuiltedSpiralsAverageAndWarpsMatchPovRay) {
             "test.pov", options);
         ASSERT_TRUE(r.ok() && r.scene && r.scene->objects.size() == 1u);
         for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
-        const scene::Pigment& pigment = r.scene->objects[0].texture.pigment;
+        const scene::Pigment& pigment = r.scene->objects[0].texture->pigment;
         for (int i = 0; i < 4; ++i) {
             const Color got = evaluate_pigment(pigment, kPoints[i], 2);
             // POV-Ray's colours are single precision.

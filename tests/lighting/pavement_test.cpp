@@ -40,7 +40,7 @@ TEST(Pavement, MatchesPovRaysValuesForEveryPaving) {
             const parser::ParseResult r =
                 parse("sphere { 0, 1 pigment { " + text.str() + " color_map { [0 rgb 0] [1 rgb 1] } } }\n");
             ASSERT_TRUE(r.ok() && r.scene) << text.str();
-            it = pigments.emplace(text.str(), r.scene->objects[0].texture.pigment).first;
+            it = pigments.emplace(text.str(), r.scene->objects[0].texture->pigment).first;
         }
         EXPECT_NEAR(texture::evaluate_pigment(it->second, {x, 0.0, z}, 2).r, expected, 2e-6) << line;
         ++count;
@@ -54,13 +54,13 @@ TEST(Pavement, ParsesItsModifiersAsPovRayKeepsThem) {
         "sphere { 0, 1 pigment { pavement number_of_sides 4.7 number_of_tiles 6 pattern 35 exterior 4 interior 5 "
         "form 6 } }\n");
     ASSERT_TRUE(r.ok() && r.scene);
-    const scene::Pattern& pat = r.scene->objects[0].texture.pigment.pattern;
+    const scene::Pattern& pat = r.scene->objects[0].texture->pigment.pattern;
     ASSERT_EQ(pat.type, scene::Pattern::Type::Pavement);
     // POV-Ray compat: integers; exterior and interior modulo 3, form modulo 4 for squares.
     EXPECT_EQ(pat.pavement, (scene::PavementParams{4, 6, 35, 1, 2, 2}));
     const parser::ParseResult defaults = parse("sphere { 0, 1 normal { pavement } }\n");
     ASSERT_TRUE(defaults.ok() && defaults.scene);
-    EXPECT_EQ(defaults.scene->objects[0].texture.normal.pattern.pavement, scene::PavementParams{});
+    EXPECT_EQ(defaults.scene->objects[0].texture->normal.pattern.pavement, scene::PavementParams{});
 }
 
 TEST(Pavement, RefusesWhatPovRayRefuses) {

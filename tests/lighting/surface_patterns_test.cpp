@@ -23,7 +23,7 @@ scene::Pattern pattern_of(const std::string& pattern) {
     EXPECT_TRUE(r.ok());
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
     if (!r.scene || r.scene->objects.empty()) return {};
-    return r.scene->objects[0].texture.pigment.pattern;
+    return r.scene->objects[0].texture->pigment.pattern;
 }
 
 double value_at(const scene::Pattern& pat, const Vec3& p, const Vec3& n, const Vec3& dir = {0, 0, 1}) {
@@ -73,7 +73,7 @@ TEST(Slope, ParserWarnsAndFailsAsPovRay) {
     ASSERT_TRUE(zero.ok());
     ASSERT_EQ(zero.diagnostics.size(), 1u);
     EXPECT_NE(zero.diagnostics[0].message.find("Zero slope range"), std::string::npos);
-    EXPECT_EQ(zero.scene->objects[0].texture.pigment.pattern.slope.slope_range, 0.0);
+    EXPECT_EQ(zero.scene->objects[0].texture->pigment.pattern.slope.slope_range, 0.0);
     const parser::ParseResult point_at =
         parse_text("sphere { 0, 1 pigment { slope { point_at y altitude x } } }");
     EXPECT_FALSE(point_at.ok());
@@ -97,7 +97,7 @@ scene::Normal normal_of(const std::string& normal) {
     EXPECT_TRUE(r.ok());
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
     if (!r.scene || r.scene->objects.empty()) return {};
-    return r.scene->objects[0].texture.normal;
+    return r.scene->objects[0].texture->normal;
 }
 
 TEST(Facets, NormalsOfOneCellTurnToTheSamePoint) {

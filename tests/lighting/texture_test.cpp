@@ -133,8 +133,8 @@ TEST(Textures, ObjectTransformsAfterTheTextureMoveIt) {
     ASSERT_EQ(scene.objects.size(), 2u);
     // The first pigment moved with the sphere by half a checker; the second did not.
     const Vec3 p{0.1, 0.1, 0.1};
-    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[0].texture.pigment, p, 2).r, 0.0);
-    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[1].texture.pigment, p, 2).r, 1.0);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[0].texture->pigment, p, 2).r, 0.0);
+    EXPECT_DOUBLE_EQ(texture::evaluate_pigment(scene.objects[1].texture->pigment, p, 2).r, 1.0);
 }
 
 TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
@@ -143,11 +143,11 @@ TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
         "plane { y, 0 pigment { bozo pigment_map { [0.3 rgb 1] [0.7 checker rgb 0, rgb 1] } turbulence 0.5 } }\n"
         "plane { y, 0 pigment { marble } normal { bumps 0.4 scale 0.2 } finish { reflection { 0.1, 0.9 fresnel } } }\n");
     ASSERT_EQ(scene.objects.size(), 3u);
-    const auto& map = scene.objects[0].texture.pigment.color_map;
+    const auto& map = scene.objects[0].texture->pigment.color_map;
     ASSERT_EQ(map.size(), 3u);
     EXPECT_DOUBLE_EQ(map[1].value, 0.5);
     EXPECT_DOUBLE_EQ(map[1].color.g, 1.0);
-    const scene::Pigment& bozo = scene.objects[1].texture.pigment;
+    const scene::Pigment& bozo = scene.objects[1].texture->pigment;
     ASSERT_EQ(bozo.pigment_map.size(), 2u);
     EXPECT_EQ(bozo.pigment_map[1].pigment.pattern.type, scene::Pattern::Type::Checker);
     ASSERT_TRUE(bozo.pattern.turbulence.has_value());

@@ -38,7 +38,7 @@ scene::Pigment tiling_pigment(const std::string& body) {
         "global_settings { assumed_gamma 1 }\nplane { y, 0 pigment { " + body + " } }\n", "test.pov", options);
     EXPECT_TRUE(r.ok() && r.scene && r.scene->objects.size() == 1u);
     for (const auto& d : r.diagnostics) ADD_FAILURE() << d.message;
-    return r.ok() ? r.scene->objects[0].texture.pigment : scene::Pigment{};
+    return r.ok() ? r.scene->objects[0].texture->pigment : scene::Pigment{};
 }
 
 TEST(Tiling, ValuesMatchPovRaysRenders) {

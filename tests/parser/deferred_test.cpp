@@ -19,7 +19,7 @@ ParseResult parse_with_library(const TempDir& dir, const std::string& scene, boo
     return parse_file(main, o);
 }
 
-const Color& color_of(const Scene& s, std::size_t object) { return s.objects.at(object).texture.pigment.color; }
+const Color& color_of(const Scene& s, std::size_t object) { return s.objects.at(object).texture->pigment.color; }
 
 TEST(DeferredDeclarations, ReadAsWhereTheyStand) {
     TempDir dir;
@@ -58,10 +58,10 @@ TEST(DeferredDeclarations, ReadAsWhereTheyStand) {
         EXPECT_EQ(color_of(s, 1).g, 0.5);   // nor does rebinding C2 after the declaration
         EXPECT_EQ(color_of(s, 2).b, 1.0);   // the include file's #local is gone by the time it is used
         EXPECT_NEAR(color_of(s, 3).r, 0.35, 1e-12);  // read under the #version it was declared under
-        ASSERT_EQ(s.objects[4].texture.layers.size(), 1u);
+        ASSERT_EQ(s.objects[4].texture->layers.size(), 1u);
         EXPECT_EQ(color_of(s, 4).r, 1.0);
-        EXPECT_EQ(s.objects[4].texture.layers[0].pigment.color.transmit, 0.5);
-        EXPECT_NEAR(s.objects[5].texture.finish.ambient.r, 0.1, 1e-12);  // the #default of its own place
+        EXPECT_EQ(s.objects[4].texture->layers[0].pigment.color.transmit, 0.5);
+        EXPECT_NEAR(s.objects[5].texture->finish.ambient.r, 0.1, 1e-12);  // the #default of its own place
     }
 }
 

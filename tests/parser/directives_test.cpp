@@ -172,7 +172,7 @@ TEST(Directives, DeclarationEndsAtTheNextDirective) {
         sphere { 0, A[1] }
     )");
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_EQ(s.objects[0].texture.layers.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture->layers.size(), 1u);
     EXPECT_EQ(radius(s, 1), 3);
 }
 
@@ -321,12 +321,12 @@ TEST(Directives, DefaultTexture) {
         sphere { 0, 3 finish { phong 1 } }
     )");
     ASSERT_EQ(s.objects.size(), 3u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.diffuse, 0.6);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.diffuse, 0.9);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.color.r, 1.0);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.diffuse, 0.9);  // a finish block starts from the default
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.ambient.r, 0.0);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.phong, 1.0);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->finish.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->finish.diffuse, 0.9);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->pigment.color.r, 1.0);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->finish.diffuse, 0.9);  // a finish block starts from the default
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->finish.ambient.r, 0.0);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->finish.phong, 1.0);
 }
 
 TEST(Directives, Arrays) {
@@ -347,7 +347,7 @@ TEST(Directives, Arrays) {
     ASSERT_EQ(s.objects.size(), 5u);
     EXPECT_EQ(radius(s, 0), 31);
     EXPECT_EQ(radius(s, 1), 323);
-    EXPECT_EQ(s.objects[2].texture.pigment.color.b, 1);
+    EXPECT_EQ(s.objects[2].texture->pigment.color.b, 1);
     EXPECT_EQ(radius(s, 3), 13);
     EXPECT_EQ(radius(s, 4), 1);  // B is a copy
     ParseResult r = test::parse_fail("#declare A = array[2];\nsphere { 0, A[2] }\n");
@@ -414,8 +414,8 @@ TEST(Directives, ColorsIncColours) {
     EXPECT_NEAR(s.background.r, 0.8, 1e-12);
     EXPECT_NEAR(s.background.g, 0.498039, 1e-12);
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_EQ(s.objects[0].texture.pigment.color.r, 1.0);
-    EXPECT_NEAR(s.objects[1].texture.pigment.color.g, 0.556863, 1e-12);
+    EXPECT_EQ(s.objects[0].texture->pigment.color.r, 1.0);
+    EXPECT_NEAR(s.objects[1].texture->pigment.color.g, 0.556863, 1e-12);
 }
 
 TEST(Directives, DeclareRebindsTheInnermostExistingName) {

@@ -183,7 +183,7 @@ TEST(Color, ASecondRgbKeywordStartsTheNextColourOfAList) {
     for (const char* list : {"rgbt <0, 1, 0, 0.5> rgb <1, 0, 0>", "rgbt <0, 1, 0, 0.5>, rgb <1, 0, 0>"}) {
         const Scene s = parse_ok(std::string("sphere { 0, 1 pigment { checker ") + list + " } }");
         ASSERT_EQ(s.objects.size(), 1u);
-        const auto& map = s.objects[0].texture.pigment.color_map;
+        const auto& map = s.objects[0].texture->pigment.color_map;
         ASSERT_EQ(map.size(), 2u) << list;
         expect_color(map[0].color, 0, 1, 0, 0, 0.5);
         expect_color(map[1].color, 1, 0, 0, 0, 0);
@@ -197,10 +197,10 @@ TEST(Color, AMandelWithAnExponentAboveTwoTakesTheGreyRamp) {
                              "sphere { 0, 1 pigment { mandel 20 exponent 6 } }\n"
                              "sphere { 0, 1 pigment { julia <0.3, 0.5>, 20 exponent 3 } }");
     ASSERT_EQ(s.objects.size(), 4u);
-    EXPECT_EQ(s.objects[0].texture.pigment.color_map.size(), 5u);
-    EXPECT_EQ(s.objects[1].texture.pigment.color_map.size(), 5u);
+    EXPECT_EQ(s.objects[0].texture->pigment.color_map.size(), 5u);
+    EXPECT_EQ(s.objects[1].texture->pigment.color_map.size(), 5u);
     for (int i : {2, 3}) {
-        const auto& map = s.objects[i].texture.pigment.color_map;
+        const auto& map = s.objects[i].texture->pigment.color_map;
         ASSERT_EQ(map.size(), 2u) << i;
         expect_color(map[0].color, 0, 0, 0, 0, 0);
         expect_color(map[1].color, 1, 1, 1, 0, 0);

@@ -31,8 +31,8 @@ TEST(Grammar, TextureTakesPigmentNormalAndFinishIdentifiers) {
     EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
     EXPECT_EQ(a.normal.amount, 0.25);
     // A finish block after a finish identifier modifies that finish in place, as POV-Ray's Parse_Finish does.
-    EXPECT_EQ(s.objects[1].texture.finish.diffuse, 0.2);
-    EXPECT_EQ(s.objects[1].texture.finish.ambient.r, 0.3);
+    EXPECT_EQ(s.objects[1].texture->finish.diffuse, 0.2);
+    EXPECT_EQ(s.objects[1].texture->finish.ambient.r, 0.3);
 }
 
 TEST(Grammar, FinishAfterALayeredTextureModifiesItsTopLayerInPlace) {
@@ -78,11 +78,11 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
     EXPECT_EQ(a.pigment.color_map.size(), 2u);
     EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
     EXPECT_EQ(a.normal.amount, static_cast<double>(0.3f));  // POV-Ray stores bump_size in single precision
-    EXPECT_TRUE(s.objects[1].texture.pigment.is_solid());
-    EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
+    EXPECT_TRUE(s.objects[1].texture->pigment.is_solid());
+    EXPECT_EQ(s.objects[1].texture->pigment.color.r, 1.0);
     // A texture with no normal has none to modify: the new one does not take the object's earlier translate
     // (caustic2.pov's water surface).
-    EXPECT_TRUE(s.objects[2].texture.normal.pattern.transform.is_identity());
+    EXPECT_TRUE(s.objects[2].texture->normal.pattern.transform.is_identity());
 }
 
 TEST(Grammar, AColourArrayElementStartsAColourExpressionInAPigment) {
@@ -94,8 +94,8 @@ TEST(Grammar, AColourArrayElementStartsAColourExpressionInAPigment) {
         sphere { 0, 1 pigment { Colors[1] } }
     )");
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_EQ(s.objects[0].texture.pigment.color.g, 0.25);
-    EXPECT_EQ(s.objects[1].texture.pigment.color.b, 1.0);
+    EXPECT_EQ(s.objects[0].texture->pigment.color.g, 0.25);
+    EXPECT_EQ(s.objects[1].texture->pigment.color.b, 1.0);
 }
 
 TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
@@ -103,7 +103,7 @@ TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
         #declare N = normal { dents 0.75 }
         sphere { 0, 1 pigment { rgb 1 } normal { gradient x normal_map { [0 N] [1 N scale 2] } } }
     )");
-    const Normal& n = s.objects[0].texture.normal;
+    const Normal& n = s.objects[0].texture->normal;
     ASSERT_EQ(n.normal_map.size(), 2u);
     EXPECT_EQ(n.normal_map[0].normal.amount, 0.75);
     EXPECT_EQ(n.normal_map[1].normal.pattern.type, Pattern::Type::Dents);
@@ -141,7 +141,7 @@ TEST(Grammar, MacroGivingAPigmentIsAnEntryOfAListPattern) {
         #macro Tile(C) pigment { rgb C } #end
         sphere { 0, 1 pigment { hexagon Tile(<1, 0, 0>), Tile(<0, 1, 0>), Tile(<0, 0, 1>) } }
     )");
-    const Pigment& p = s.objects[0].texture.pigment;
+    const Pigment& p = s.objects[0].texture->pigment;
     ASSERT_EQ(p.pigment_map.size(), 3u);
     EXPECT_EQ(p.pigment_map[1].pigment.color.g, 1.0);
     EXPECT_EQ(p.pigment_map[2].pigment.color.b, 1.0);
@@ -152,7 +152,7 @@ TEST(Grammar, ColorMapEntryTakesFilterAndTransmitAfterAnExpression) {
         #declare Red = <1, 0, 0>;
         sphere { 0, 1 pigment { gradient x color_map { [0 Red filter 0.5] [1 <0, 0, 1> transmit 0.25] } } }
     )");
-    const auto& map = s.objects[0].texture.pigment.color_map;
+    const auto& map = s.objects[0].texture->pigment.color_map;
     ASSERT_EQ(map.size(), 2u);
     EXPECT_EQ(map[0].color.r, 1.0);
     EXPECT_EQ(map[0].color.filter, 0.5);
@@ -327,7 +327,7 @@ TEST(Grammar, AnImageNamedWithoutExtensionIsFoundByItsType) {
     ParseResult r = parse_file(main, o);
     ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
     ASSERT_EQ(opened, (std::vector<std::string>{"tex.png", "photo.jpeg"}));
-    EXPECT_TRUE(r.scene->objects[0].texture.pigment.image_map.has_value());
+    EXPECT_TRUE(r.scene->objects[0].texture->pigment.image_map.has_value());
     // A type whose extensions do not match is still an error at the file name.
     dir.write("scene/t.pov", "sphere { 0, 1 pigment { image_map { gif \"tex\" } } }\n");
     r = parse_file(dir.path() / "scene/t.pov", o);
@@ -353,7 +353,7 @@ TEST(Grammar, AUnionRedeclaredAroundItselfKeepsEveryPartInOrder) {
         EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).x, double(i));
         EXPECT_EQ(a.transform.point(std::get<Sphere>(a.shape).center).y, 1.0);
         EXPECT_EQ(b.transform.point(std::get<Sphere>(b.shape).center).y, 0.0);
-        EXPECT_EQ(b.texture.pigment.color.r, 1.0);
+        EXPECT_EQ(b.texture->pigment.color.r, 1.0);
     }
 }
 

@@ -303,8 +303,8 @@ TEST(SharedObjects, ARedeclaredNameLeavesEarlierUsesAsTheyWere) {
         "object { T }\n");
     ASSERT_EQ(s.objects.size(), 7u);
     auto radius = [&](std::size_t i) { return std::get<Sphere>(s.objects[i].shape).radius; };
-    auto red = [&](std::size_t i) { return s.objects[i].texture.pigment.color.r; };
-    auto blue = [&](std::size_t i) { return s.objects[i].texture.pigment.color.b; };
+    auto red = [&](std::size_t i) { return s.objects[i].texture->pigment.color.r; };
+    auto blue = [&](std::size_t i) { return s.objects[i].texture->pigment.color.b; };
     // A: the first T, moved along x.
     EXPECT_EQ(radius(0), 1.0);
     EXPECT_TRUE(std::holds_alternative<Box>(s.objects[1].shape));

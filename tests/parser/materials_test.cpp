@@ -70,22 +70,22 @@ TEST(Objects, MaterialGivesTextureInteriorTextureAndInterior) {
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_TRUE(s.warnings.empty());
     const Object& a = s.objects[0];
-    EXPECT_EQ(a.texture.pigment.color.r, 1.0);
-    ASSERT_EQ(a.texture.layers.size(), 1u);
-    EXPECT_EQ(a.texture.layers[0].pigment.color.g, 1.0);
+    EXPECT_EQ(a.texture->pigment.color.r, 1.0);
+    ASSERT_EQ(a.texture->layers.size(), 1u);
+    EXPECT_EQ(a.texture->layers[0].pigment.color.g, 1.0);
     ASSERT_EQ(a.interior_texture.size(), 1u);
     EXPECT_EQ(a.interior_texture[0].pigment.color.b, 1.0);
     EXPECT_EQ(a.interior.ior, 1.5);
     EXPECT_FALSE(a.double_illuminate);
     // A transform inside the material moves its textures only.
-    EXPECT_EQ(a.texture.pigment.pattern.transform.point(Vec3{}), (Vec3{1, 0, 0}));
+    EXPECT_EQ(a.texture->pigment.pattern.transform.point(Vec3{}), (Vec3{1, 0, 0}));
     const Object& b = s.objects[1];
     EXPECT_EQ(b.interior.ior, 1.5);
     ASSERT_EQ(b.interior_texture.size(), 1u);
     const Object& c = s.objects[2];
     ASSERT_EQ(c.interior_texture.size(), 1u);
     EXPECT_EQ(c.interior_texture[0].pigment.color.r, 0.25);
-    EXPECT_EQ(c.texture.pigment.color.r, 0.5);
+    EXPECT_EQ(c.texture->pigment.color.r, 0.5);
     EXPECT_TRUE(c.double_illuminate);
 }
 
@@ -97,7 +97,7 @@ TEST(Objects, MaterialFromAnArrayElement) {
         sphere { 0, 1 material { MArr[1] } }
     )");
     ASSERT_EQ(s.objects.size(), 1u);
-    EXPECT_EQ(s.objects[0].texture.pigment.color.g, 1.0);
+    EXPECT_EQ(s.objects[0].texture->pigment.color.g, 1.0);
     EXPECT_EQ(s.objects[0].interior.ior, 1.3);
 }
 
@@ -180,15 +180,15 @@ TEST(Objects, TextureLayersOverTheObjectsOwnTexture) {
         union { sphere { 0, 1 } texture { pigment { rgb y } } }
     )");
     ASSERT_EQ(s.objects.size(), 4u);
-    ASSERT_EQ(s.objects[0].texture.layers.size(), 1u);
-    EXPECT_EQ(s.objects[0].texture.pigment.color.filter, 0.9);
-    EXPECT_EQ(s.objects[0].texture.layers[0].finish.specular, 1.0);
-    ASSERT_EQ(s.objects[1].texture.layers.size(), 1u);
-    EXPECT_EQ(s.objects[1].texture.pigment.color.r, 1.0);
-    EXPECT_EQ(s.objects[1].texture.layers[0].pigment.color.filter, 1.0);
-    EXPECT_TRUE(s.objects[2].texture.layers.empty());
-    EXPECT_TRUE(s.objects[3].texture.layers.empty());
-    EXPECT_EQ(s.objects[3].texture.pigment.color.g, 1.0);
+    ASSERT_EQ(s.objects[0].texture->layers.size(), 1u);
+    EXPECT_EQ(s.objects[0].texture->pigment.color.filter, 0.9);
+    EXPECT_EQ(s.objects[0].texture->layers[0].finish.specular, 1.0);
+    ASSERT_EQ(s.objects[1].texture->layers.size(), 1u);
+    EXPECT_EQ(s.objects[1].texture->pigment.color.r, 1.0);
+    EXPECT_EQ(s.objects[1].texture->layers[0].pigment.color.filter, 1.0);
+    EXPECT_TRUE(s.objects[2].texture->layers.empty());
+    EXPECT_TRUE(s.objects[3].texture->layers.empty());
+    EXPECT_EQ(s.objects[3].texture->pigment.color.g, 1.0);
 }
 
 TEST(Objects, MaterialRejectsWhatIsNotAMaterial) {

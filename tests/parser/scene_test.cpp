@@ -204,12 +204,12 @@ TEST(Objects, PigmentFinishTextureAndIdentifiers) {
     EXPECT_DOUBLE_EQ(a.finish.specular, 0.3);
     EXPECT_DOUBLE_EQ(a.finish.roughness, 0.01);
     EXPECT_DOUBLE_EQ(a.finish.emission.r, 1);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.diffuse, 0.7);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.color.g, 0.2);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.pigment.color.g, 1.0);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.diffuse, 0.7);
-    EXPECT_DOUBLE_EQ(s.objects[3].texture.finish.diffuse, 0.5);
-    EXPECT_DOUBLE_EQ(s.objects[3].texture.finish.ambient.r, 0.1);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->finish.diffuse, 0.7);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->pigment.color.g, 0.2);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->pigment.color.g, 1.0);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->finish.diffuse, 0.7);
+    EXPECT_DOUBLE_EQ(s.objects[3].texture->finish.diffuse, 0.5);
+    EXPECT_DOUBLE_EQ(s.objects[3].texture->finish.ambient.r, 0.1);
 }
 
 TEST(Objects, DeclaredInteriorIsCopiedAndModified) {
@@ -245,20 +245,20 @@ TEST(Objects, MetallicTakesAnOptionalAmountOrBoolean) {
         sphere { 0, 1 finish { metallic 0.25 } }
     )");
     ASSERT_EQ(s.objects.size(), 4u);
-    EXPECT_EQ(s.objects[0].texture.finish.metallic, 1);
-    EXPECT_EQ(s.objects[0].texture.finish.reflection_metallic, 0);
-    EXPECT_EQ(s.objects[1].texture.finish.metallic, 0);
-    EXPECT_EQ(s.objects[2].texture.finish.metallic, 1);
-    EXPECT_EQ(s.objects[2].texture.finish.phong, 1);
-    EXPECT_EQ(s.objects[3].texture.finish.metallic, 0.25);
+    EXPECT_EQ(s.objects[0].texture->finish.metallic, 1);
+    EXPECT_EQ(s.objects[0].texture->finish.reflection_metallic, 0);
+    EXPECT_EQ(s.objects[1].texture->finish.metallic, 0);
+    EXPECT_EQ(s.objects[2].texture->finish.metallic, 1);
+    EXPECT_EQ(s.objects[2].texture->finish.phong, 1);
+    EXPECT_EQ(s.objects[3].texture->finish.metallic, 0.25);
 }
 
 TEST(Objects, DefaultTextureIsBlackWithDefaultFinish) {
     const Scene s = parse_ok("sphere { 0, 1 }");
     ASSERT_EQ(s.objects.size(), 1u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.pigment.color.r, 0);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.diffuse, 0.6);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.ambient.r, 0.1);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->pigment.color.r, 0);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->finish.diffuse, 0.6);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->finish.ambient.r, 0.1);
 }
 
 TEST(Objects, UnionIsFlattened) {
@@ -280,9 +280,9 @@ TEST(Objects, UnionIsFlattened) {
     )");
     ASSERT_EQ(s.objects.size(), 5u);
     // Children with their own texture keep it; the inner union's texture beats the outer one's.
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.pigment.color.r, 1);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.color.b, 1);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.pigment.color.g, 1);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->pigment.color.r, 1);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->pigment.color.b, 1);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->pigment.color.g, 1);
     for (int i = 0; i < 3; ++i) {
         EXPECT_TRUE(s.objects[i].no_shadow);
         expect_vec(s.objects[i].transform.point({0, 0, 0}), {0, 10, 0});
@@ -290,7 +290,7 @@ TEST(Objects, UnionIsFlattened) {
     ASSERT_EQ(s.lights.size(), 1u);
     expect_vec(s.lights[0].position, {0, 11, 0});
     expect_vec(s.objects[4].transform.point({1, 0, 0}), {2, 0, 0});
-    EXPECT_DOUBLE_EQ(s.objects[4].texture.pigment.color.b, 1);
+    EXPECT_DOUBLE_EQ(s.objects[4].texture->pigment.color.b, 1);
     EXPECT_FALSE(s.objects[3].no_shadow);
 }
 
@@ -354,8 +354,8 @@ TEST(Objects, MacrosProduceObjectsAndItems) {
     )");
     ASSERT_EQ(s.objects.size(), 3u);
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 2);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.pigment.color.r, 1);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.phong, 1);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->pigment.color.r, 1);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->finish.phong, 1);
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[2].shape).radius, 4);
 }
 
@@ -369,14 +369,14 @@ TEST(Objects, LayeredTexturesKeepEveryLayer) {
         sphere { 0, 1 }
     )");
     ASSERT_EQ(s.objects.size(), 3u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.pigment.color.r, 1);
-    ASSERT_EQ(s.objects[0].texture.layers.size(), 1u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.layers[0].pigment.color.g, 1);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.layers[0].pigment.color.transmit, 0.5);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.pigment.color.b, 1);
-    ASSERT_EQ(s.objects[1].texture.layers.size(), 1u);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.layers[0].pigment.color.g, 1);
-    EXPECT_DOUBLE_EQ(s.objects[2].texture.finish.diffuse, 0.3);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->pigment.color.r, 1);
+    ASSERT_EQ(s.objects[0].texture->layers.size(), 1u);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->layers[0].pigment.color.g, 1);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->layers[0].pigment.color.transmit, 0.5);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->pigment.color.b, 1);
+    ASSERT_EQ(s.objects[1].texture->layers.size(), 1u);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->layers[0].pigment.color.g, 1);
+    EXPECT_DOUBLE_EQ(s.objects[2].texture->finish.diffuse, 0.3);
     EXPECT_TRUE(s.warnings.empty());
 }
 
@@ -439,8 +439,8 @@ TEST(Scene, CrandIsReadIntoTheFinishWithoutAWarning) {
                                    "sphere { 0, 1 finish { crand 0.03 } }\nsphere { 0, 1 finish { F } }\n");
     EXPECT_TRUE(s.warnings.empty());
     ASSERT_EQ(s.objects.size(), 2u);
-    EXPECT_DOUBLE_EQ(s.objects[0].texture.finish.crand, 0.03);
-    EXPECT_DOUBLE_EQ(s.objects[1].texture.finish.crand, 0.02);
+    EXPECT_DOUBLE_EQ(s.objects[0].texture->finish.crand, 0.03);
+    EXPECT_DOUBLE_EQ(s.objects[1].texture->finish.crand, 0.02);
 }
 
 TEST(Objects, MeshBlockCopiesADeclaredMesh) {
@@ -471,7 +471,7 @@ TEST(Objects, DeclaredNormalsReadAsWrittenInPlace) {
     ASSERT_EQ(s.objects.size(), 4u);
     EXPECT_TRUE(s.warnings.empty()) << format_diagnostic(s.warnings.front());
     auto normal = [&](std::size_t i) {
-        Normal n = s.objects[i].texture.normal;
+        Normal n = s.objects[i].texture->normal;
         n.loc = {};
         return n;
     };
@@ -501,7 +501,7 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
         const std::string pattern = std::string(keyword) + (sample != parameters.end() ? sample->second : "");
         if (keyword == "facets") {
             // POV-Ray compat: facets is a normal pattern only.
-            EXPECT_EQ(parse_ok("sphere { 0, 1 normal { facets } }").objects[0].texture.normal.pattern.type, type);
+            EXPECT_EQ(parse_ok("sphere { 0, 1 normal { facets } }").objects[0].texture->normal.pattern.type, type);
             continue;
         }
         // image_pattern reads its file through the renderer's reader: a one-texel stand-in.
@@ -517,9 +517,9 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
                                      " texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] } } }",
                                  options);
         ASSERT_EQ(s.objects.size(), 2u);
-        EXPECT_EQ(s.objects[0].texture.pigment.pattern.type, type);
-        EXPECT_EQ(s.objects[0].texture.normal.pattern.type, type);
-        EXPECT_EQ(s.objects[1].texture.map_pattern.type, type);
+        EXPECT_EQ(s.objects[0].texture->pigment.pattern.type, type);
+        EXPECT_EQ(s.objects[0].texture->normal.pattern.type, type);
+        EXPECT_EQ(s.objects[1].texture->map_pattern.type, type);
     }
 }
 

@@ -150,7 +150,7 @@ scene::Camera mesh_camera(int distribution, int rays, int meshes) {
         // Faces wound so that POV-Ray's normal (P3 − P1) × (P2 − P1) is +z: four faces, one per pixel of 2 × 2.
         for (int i = 0; i < 4; ++i) {
             const double x = i;
-            pm.mesh.vertices.insert(pm.mesh.vertices.end(), {{x, 0, 0}, {x, 1, 0}, {x + 1, 0, 0}});
+            pm.mesh.vertices.mut().insert(pm.mesh.vertices.mut().end(), {{x, 0, 0}, {x, 1, 0}, {x + 1, 0, 0}});
             scene::Mesh::Face f;
             f.v = {3 * i, 3 * i + 1, 3 * i + 2};
             pm.mesh.faces.push_back(f);
