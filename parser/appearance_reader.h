@@ -87,12 +87,19 @@ protected:
         t.normal = default_normal();
         return t;
     }
+    /// default_texture() as one shared value, made again only when a #default has changed it since.
+    scene::Cow<Texture> shared_default_texture() const {
+        Texture t = default_texture();
+        if (!(m_default_shared.get() == t)) m_default_shared = std::move(t);
+        return m_default_shared;
+    }
     /// The normal a `normal { }` block starts from where there is none to modify: the #default normal, if any
     /// (POV-Ray's Parse_Tnormal copies Default_Texture's), else no perturbation.
     Normal default_normal() const { return m_default_normal.value_or(Normal{}); }
     Pigment m_default_pigment;
     Finish m_default_finish;
     std::optional<Normal> m_default_normal;
+    mutable scene::Cow<Texture> m_default_shared;
     /// Finish items given with `albedo` in the block being read (bits: diffuse, phong, specular).
     unsigned m_finish_albedo = 0;
     /// The working gamma, once global_settings' assumed_gamma is read: sRGB colours are re-encoded into it.

@@ -233,6 +233,9 @@ void SceneReader::place_object(ObjectValue ov) {
     renumber_light_groups(ov);
     for (const ObjectPart& part : ov.parts) warn_uv_unsupported(part.object, false);
     std::uint32_t shared_interior = 0;
+    // One texture for every part that has none of its own: the union's, or the #default one (shared with the
+    // other objects placed since the #default last changed), so untextured parts cost a pointer each.
+    const scene::Cow<Texture> inherited = ov.texture ? scene::Cow<Texture>(*ov.texture) : shared_default_texture();
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.
@@ -241,7 +244,7 @@ void SceneReader::place_object(ObjectValue ov) {
             !std::holds_alternative<Poly>(shape) &&
             !std::holds_alternative<Text>(shape) && !std::holds_alternative<Quadric>(shape))
             part.object.bounded_by.clear();
-        if (!part.has_texture) part.object.texture = ov.texture.value_or(default_texture());
+        if (!part.has_texture) part.object.texture = inherited;
         inherit_textures(part.object);
         // POV-Ray compat (Post_Process): a top-level object without an interior gets a new one, which the parts
         // of a union without one share.

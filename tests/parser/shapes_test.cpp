@@ -244,6 +244,32 @@ TEST(Mesh, OptionalCommasAndFaceIndicesFromVectorIdentifiers) {
     EXPECT_EQ(mesh.faces[2].v[2], 3);
 }
 
+// Issue 23: a declared mesh used many times costs its size once; the uses share its arrays (and an object without a
+// texture of its own shares the default), while changing one use (a transform) leaves the arrays shared.
+TEST(Mesh, UsesOfADeclaredMeshShareItsArrays) {
+    const Scene s = parse_ok(R"(
+        #declare M = mesh2 {
+          vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, <1, 1, 0> }
+          face_indices { 2, <0, 1, 2>, <1, 3, 2> }
+        }
+        object { M }
+        object { M translate x }
+        object { M scale 2 pigment { rgb 1 } }
+        #declare M = object { M rotate y * 90 }
+        object { M }
+    )");
+    ASSERT_EQ(s.objects.size(), 4u);
+    const auto& first = std::get<Mesh>(s.objects[0].shape);
+    for (std::size_t i = 1; i < s.objects.size(); ++i) {
+        const auto& other = std::get<Mesh>(s.objects[i].shape);
+        EXPECT_TRUE(other.vertices.shares(first.vertices)) << i;
+        EXPECT_TRUE(other.faces.shares(first.faces)) << i;
+        EXPECT_EQ(other.faces.data(), first.faces.data()) << i;
+    }
+    EXPECT_TRUE(s.objects[0].texture.shares(s.objects[1].texture));
+    EXPECT_FALSE(s.objects[2].texture.shares(s.objects[0].texture));
+}
+
 TEST(BoundedBy, TopLevelCheapShapesLoseTheirBoundsPolynomialsAndCsgKeepThem) {
     // POV-Ray compat (Link_To_Frame): only CSG, polynomials, text and quadrics keep a top-level bounded_by.
     const Scene s = parse_ok(R"(
