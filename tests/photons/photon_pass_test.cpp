@@ -24,6 +24,15 @@ plane { y, 0 pigment { rgb 1 } }
 sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1 } photons { target collect off } }
 )";
 
+// The photons' flux per unit area on the floor (normal +y) at p, from an adaptive gather.
+Vec3 flux_density(const PhotonMap& map, const Vec3& p) {
+    Gathered g;
+    map.gather_adaptive(p, {0, 1, 0}, g);
+    Vec3 flux;
+    for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
+    return flux / (std::numbers::pi * g.radius * g.radius);
+}
+
 TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
     const scene::Scene scene = parser::test::parse_ok(kClearTarget);
     ASSERT_TRUE(scene.global.photons);
@@ -35,11 +44,7 @@ TEST(PhotonPass, ClearTargetPassesTheLightsIrradiance) {
     EXPECT_GT(stats.stored, 10000u);
     // Away from the point under the light, where POV-Ray's polar rows of photons bias any k-nearest estimate.
     for (const Vec3 p : {Vec3{0.5, 0, 0.2}, Vec3{-0.3, 0, 0.6}, Vec3{0.7, 0, -0.5}}) {
-        Gathered g;
-        map->gather_adaptive(p, {0, 1, 0}, g);
-        Vec3 flux;
-        for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
-        const Vec3 density = flux / (std::numbers::pi * g.radius * g.radius);
+        const Vec3 density = flux_density(*map, p);
         const double cos_theta = 10.0 / length(Vec3{0, 10, 0} - p);
         EXPECT_NEAR(density.x, 0.8 * cos_theta, 0.8 * 0.05) << p.x;
         EXPECT_NEAR(density.z / density.x, 0.5, 0.02);
@@ -58,11 +63,7 @@ box { <-4, 5, -4>, <4, 5.1, 4> pigment { rgbf <1, 0.5, 0.25, 1> } photons { pass
     ASSERT_TRUE(map);
     EXPECT_GT(stats.stored, 10000u);
     for (const Vec3 p : {Vec3{0.5, 0, 0.2}, Vec3{-0.3, 0, 0.6}}) {
-        Gathered g;
-        map->gather_adaptive(p, {0, 1, 0}, g);
-        Vec3 flux;
-        for (const Photon* ph : g.photons) flux += photon_colour(*ph, g.exponent_offset);
-        const Vec3 density = flux / (std::numbers::pi * g.radius * g.radius);
+        const Vec3 density = flux_density(*map, p);
         const double cos_theta = 10.0 / length(Vec3{0, 10, 0} - p);
         EXPECT_NEAR(density.x, 0.8 * cos_theta, 0.8 * 0.05) << p.x;  // the red the slab lets through whole
         // Filtered at each of the slab's two faces, as a camera ray through it is: green by 0.5², blue by 0.25².
