@@ -4,6 +4,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include "core/sanitizer.h"
+
 namespace wardray::geometry {
 
 namespace {
@@ -12,17 +14,7 @@ namespace {
 // merges): building, tracing and freeing a tree recurse once per level on ordinary thread stacks, which 4,000
 // levels of `difference { A difference { ... } }` overflowed. 1,000 levels render.
 // Sanitizers' frames are several times larger: 1,000 levels overflow 8 MB under AddressSanitizer.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr int k_max_csg_depth = 250;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr int k_max_csg_depth = 250;
-#else
-constexpr int k_max_csg_depth = 1000;
-#endif
-#else
-constexpr int k_max_csg_depth = 1000;
-#endif
+constexpr int k_max_csg_depth = k_address_sanitizer ? 250 : 1000;
 thread_local int t_csg_depth = 0;
 // The innermost refusal of the current top-level create (the first one wins: it is the deepest part refused).
 thread_local SkipReason t_skip;

@@ -22,6 +22,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/sanitizer.h"
+
 namespace wardray::test {
 namespace {
 
@@ -29,17 +31,7 @@ namespace fs = std::filesystem;
 
 // AddressSanitizer reserves terabytes of address space and its shadow and quarantine count as resident memory:
 // under it the memory limit is not set and memory is not checked, and the CPU bound is ten times the Release one.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+constexpr bool kSanitized = k_address_sanitizer;
 
 // The bounds every case must keep (issue 21): 5 s and 500 MB. Each run is measured by the kernel (wait4's
 // rusage: user + system CPU time and peak resident memory) and held to them by resource limits: RLIMIT_AS caps its
