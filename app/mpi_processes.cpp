@@ -4,7 +4,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -14,13 +19,57 @@ namespace wardray::app {
 
 namespace {
 
-/// MPI_COMM_WORLD; MPI_Init on construction, MPI_Finalize on destruction. Only the main thread calls MPI (the
-/// render's worker threads never do), so MPI_THREAD_FUNNELED is all it needs.
+/// Counters in a one-sided MPI window on rank 0, drawn from with MPI_Fetch_and_op in one passive-target epoch
+/// that lasts as long as the counters. Worker threads draw while the main thread waits for them, and the calls go
+/// one at a time through a mutex, so MPI_THREAD_SERIALIZED is enough.
+class MpiCounters final : public render::SharedCounters {
+public:
+    MpiCounters(std::size_t count, int rank) : m_count(count) {
+        const MPI_Aint bytes = rank == 0 ? static_cast<MPI_Aint>(count * sizeof(std::uint64_t)) : 0;
+        std::uint64_t* base = nullptr;
+        MPI_Win_allocate(bytes, sizeof(std::uint64_t), MPI_INFO_NULL, MPI_COMM_WORLD, &base, &m_window);
+        if (rank == 0) {
+            // The window's memory starts undefined: rank 0 zeroes it in an epoch of its own before anyone draws.
+            MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, m_window);
+            for (std::size_t i = 0; i < count; ++i) base[i] = 0;
+            MPI_Win_unlock(0, m_window);
+        }
+        MPI_Barrier(MPI_COMM_WORLD);
+        MPI_Win_lock_all(0, m_window);
+    }
+    ~MpiCounters() override {
+        // Freeing the window waits for every rank; a rank leaving by an exception is about to abort the group
+        // instead, and must not wait for ranks that will never come.
+        if (std::uncaught_exceptions() > 0) return;
+        MPI_Win_unlock_all(m_window);
+        MPI_Win_free(&m_window);
+    }
+    MpiCounters(const MpiCounters&) = delete;
+    MpiCounters& operator=(const MpiCounters&) = delete;
+
+    std::uint64_t take(std::size_t index) override {
+        if (index >= m_count) throw std::out_of_range("shared counters: no counter " + std::to_string(index));
+        const std::uint64_t one = 1;
+        std::uint64_t before = 0;
+        std::lock_guard<std::mutex> lock(m_mutex);
+        MPI_Fetch_and_op(&one, &before, MPI_UINT64_T, 0, static_cast<MPI_Aint>(index), MPI_SUM, m_window);
+        MPI_Win_flush(0, m_window);
+        return before;
+    }
+    std::size_t size() const override { return m_count; }
+
+private:
+    std::size_t m_count;
+    MPI_Win m_window = MPI_WIN_NULL;
+    std::mutex m_mutex;
+};
+
+/// MPI_COMM_WORLD; MPI_Init on construction, MPI_Finalize on destruction. The main thread makes the collective
+/// calls; worker threads draw from shared counters one at a time (MPI_THREAD_SERIALIZED).
 class MpiCommunicator final : public render::Communicator {
 public:
     MpiCommunicator() {
-        int provided = 0;
-        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+        MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &m_thread_level);
         MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
         MPI_Comm_size(MPI_COMM_WORLD, &m_size);
     }
@@ -30,6 +79,13 @@ public:
 
     int rank() const override { return m_rank; }
     int size() const override { return m_size; }
+
+    std::unique_ptr<render::SharedCounters> shared_counters(std::size_t count) override {
+        // The thread level is the same on every rank (one executable, one MPI library), so every rank takes the
+        // same branch and the collective either happens everywhere or nowhere.
+        if (m_thread_level < MPI_THREAD_SERIALIZED || count == 0) return nullptr;
+        return std::make_unique<MpiCounters>(count, m_rank);
+    }
 
     [[noreturn]] void abort(int status) override {
         std::fflush(stderr);
@@ -83,7 +139,7 @@ private:
         return out;
     }
 
-    // Waits for `request` asleep between polls (20 us growing to 1 ms), not spinning as MPI's own wait does: a rank
+    // Waits for `request` asleep between polls (20 us growing to 250 us), not spinning as MPI's own wait does: a rank
     // that is through with its share of a wave leaves the processor to the ranks still working on theirs.
     static void wait(MPI_Request& request) {
         auto pause = std::chrono::microseconds(20);
@@ -91,12 +147,13 @@ private:
             MPI_Test(&request, &done, MPI_STATUS_IGNORE);
             if (done) return;
             std::this_thread::sleep_for(pause);
-            pause = std::min(pause * 2, std::chrono::microseconds(1000));
+            pause = std::min(pause * 2, std::chrono::microseconds(250));
         }
     }
 
     int m_rank = 0;
     int m_size = 1;
+    int m_thread_level = MPI_THREAD_SINGLE;
 };
 
 // Started by mpirun (Open MPI, or any launcher speaking PMIx or PMI), rather than by hand.

@@ -3,12 +3,25 @@
 
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 namespace wardray::render {
 
 /// Bytes one process contributes to an exchange.
 using Bytes = std::vector<unsigned char>;
+
+/// Counters held by process 0 that every process of a group draws numbers from while it works, so that work is
+/// handed out as processes become free instead of in shares fixed in advance.
+class SharedCounters {
+public:
+    /// Ending the counters is collective: every process destroys them at the same point of its work.
+    virtual ~SharedCounters() = default;
+    /// Counter `index`'s value before this call added 1 to it: over the whole group each value is drawn exactly
+    /// once. Safe to call from any thread of this process.
+    virtual std::uint64_t take(std::size_t index) = 0;
+    virtual std::size_t size() const = 0;
+};
 
 /// The group of processes that render one image together. Every process calls each collective in the same order;
 /// a process that cannot go on ends the whole group (abort()), so a collective never waits forever.
@@ -24,6 +37,12 @@ public:
     std::vector<Bytes> allgather(const Bytes& mine);
     /// As allgather(), but only process 0 receives (others get an empty list).
     std::vector<Bytes> gather(const Bytes& mine);
+    /// `count` counters, each starting at 0, shared by the group (collective). Null when this group cannot draw
+    /// from shared counters; the caller then shares the work out in advance.
+    virtual std::unique_ptr<SharedCounters> shared_counters(std::size_t count) {
+        static_cast<void>(count);
+        return nullptr;
+    }
     /// Ends every process of the group with `status`, from any one of them.
     [[noreturn]] virtual void abort(int status) = 0;
 

@@ -1,8 +1,8 @@
 // Renderer: tiles over TBB workers, POV-Ray's block-wise antialiasing, per-tile counters summed in tile order.
 #include "render/renderer.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -85,14 +85,14 @@ void render_block_antialiased(const Sampler& sample, Film& film, int x0, int y0,
 }
 
 
-/// Runs `body(tile, x0, y0, x1, y1)` for the given tiles on the thread pool; `done()` is called as each finishes.
-template <typename Body, typename Done>
-void for_each_tile(const RenderSettings& settings, const std::vector<int>& tiles, const Body& body, const Done& done) {
+/// Runs `body(tile, x0, y0, x1, y1)` on the thread pool for each tile `next()` hands out until it returns -1;
+/// `done()` is called as each finishes. Every worker draws its next tile when it is free.
+template <typename Next, typename Body, typename Done>
+void for_each_tile(const RenderSettings& settings, const Next& next, const Body& body, const Done& done) {
     const int tiles_x = (settings.width + settings.tile_size - 1) / settings.tile_size;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tiles.size(), 1),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-        for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            const int tile = tiles[i];
+    const int workers = std::max(tbb::this_task_arena::max_concurrency(), 1);
+    tbb::parallel_for(0, workers, [&](int) {
+        for (int tile = next(); tile >= 0; tile = next()) {
             const int x0 = (tile % tiles_x) * settings.tile_size;
             const int y0 = (tile / tiles_x) * settings.tile_size;
             body(tile, x0, y0, std::min(x0 + settings.tile_size, settings.width),
@@ -189,7 +189,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
     // Shared among processes, each process renders its share of every wave and they exchange records between waves.
     TileExchange exchange(settings.communicator);
-    exchange.begin(tile_count);
+    exchange.begin(tile_count, waves.size() * (sizes.size() + 1));
     std::vector<TileExchange::TileRect> final_tiles;  // this process's tiles of the final pass
     const int processes = settings.communicator ? std::max(settings.communicator->size(), 1) : 1;
     const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1) / processes;
@@ -207,8 +207,8 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         if (cached) cache->begin_pass(tile_count);
         const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
         for (const std::vector<int>& wave : waves) {
-            const std::vector<int> mine = exchange.share(wave);
-            for_each_tile(settings, mine, [&](int tile, int x0, int y0, int x1, int y1) {
+            exchange.start_wave(wave);
+            for_each_tile(settings, [&] { return exchange.next_tile(); }, [&](int tile, int x0, int y0, int x1, int y1) {
                 lighting::TraceContext& ctx = tile_counters[tile].trace;
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
@@ -219,6 +219,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                 if (exchange.distributed()) exchange.tile_cost(tile, TileExchange::thread_seconds() - tile_start);
                 ctx.cache = nullptr;
             }, tile_done);
+            const std::vector<int> mine = exchange.taken();
             exchange.end_wave(wave, mine, cached ? cache : nullptr);
             if (cached) cache->merge_tiles(wave);
             if (final_pass && exchange.distributed()) {

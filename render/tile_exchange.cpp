@@ -62,9 +62,12 @@ void ByteReader::take(void* out, std::size_t n) {
 TileExchange::TileExchange(Communicator* communicator)
     : m_comm(communicator && communicator->size() > 1 ? communicator : nullptr) {}
 
-void TileExchange::begin(int tile_count) {
+void TileExchange::begin(int tile_count, std::size_t wave_count) {
     m_cost.assign(static_cast<std::size_t>(std::max(tile_count, 0)), 0.0);
     m_measured = m_cost;
+    m_waves = 0;
+    m_counters.reset();
+    if (m_comm) m_counters = m_comm->shared_counters(wave_count);
 }
 
 double TileExchange::thread_seconds() {
@@ -78,12 +81,7 @@ void TileExchange::tile_cost(int tile, double seconds) {
         m_measured[static_cast<std::size_t>(tile)] = seconds;
 }
 
-std::vector<int> TileExchange::share(const std::vector<int>& wave) {
-    if (!m_comm) {
-        m_mine.tiles += wave.size();
-        return wave;
-    }
-    m_wave_start = cpu_seconds();
+std::vector<int> TileExchange::fixed_share(const std::vector<int>& wave) const {
     const auto size = static_cast<std::size_t>(m_comm->size());
     const auto rank = static_cast<std::size_t>(m_comm->rank());
     bool known = wave.size() > size;
@@ -103,23 +101,73 @@ std::vector<int> TileExchange::share(const std::vector<int>& wave) {
             load[least] += m_cost[static_cast<std::size_t>(tile)];
             if (least == rank) mine.push_back(tile);
         }
-        // In the wave's order, as the tiles were listed.
-        std::vector<char> taken(m_cost.size(), 0);
-        for (const int tile : mine) taken[static_cast<std::size_t>(tile)] = 1;
-        mine.clear();
-        for (const int tile : wave)
-            if (taken[static_cast<std::size_t>(tile)]) mine.push_back(tile);
     } else {
         for (std::size_t i = 0; i < wave.size(); ++i)
             if ((i + m_waves) % size == rank) mine.push_back(wave[i]);
     }
-    ++m_waves;
-    m_mine.tiles += mine.size();
     return mine;
+}
+
+void TileExchange::start_wave(const std::vector<int>& wave) {
+    m_wave = wave;
+    m_taken.clear();
+    m_next = 0;
+    if (!m_comm) {
+        m_order = wave;
+        return;
+    }
+    m_wave_start = cpu_seconds();
+    if (m_counters) {
+        // Drawn as processes become free, the costliest first when every cost is known: greedy list scheduling
+        // in that order ends within the last tile's cost of the best split. The order is the same everywhere, as
+        // the costs are.
+        m_order = wave;
+        bool known = true;
+        for (const int tile : wave)
+            known = known && static_cast<std::size_t>(tile) < m_cost.size() && m_cost[static_cast<std::size_t>(tile)] > 0.0;
+        if (known)
+            std::stable_sort(m_order.begin(), m_order.end(), [&](int a, int b) {
+                return m_cost[static_cast<std::size_t>(a)] > m_cost[static_cast<std::size_t>(b)];
+            });
+    } else {
+        m_order = fixed_share(wave);
+    }
+}
+
+int TileExchange::next_tile() {
+    std::size_t i = 0;
+    if (m_counters) {
+        if (m_waves >= m_counters->size()) throw std::logic_error("tile exchange: more waves than counters");
+        i = static_cast<std::size_t>(m_counters->take(static_cast<std::size_t>(m_waves)));
+    } else {
+        i = m_next.fetch_add(1);
+    }
+    if (i >= m_order.size()) return -1;
+    const int tile = m_order[i];
+    if (m_comm) {
+        std::lock_guard<std::mutex> lock(m_taken_mutex);
+        m_taken.push_back(tile);
+    }
+    return tile;
+}
+
+std::vector<int> TileExchange::taken() const {
+    if (!m_comm) return m_wave;
+    std::vector<char> mine(m_cost.size(), 0);
+    {
+        std::lock_guard<std::mutex> lock(m_taken_mutex);
+        for (const int tile : m_taken) mine[static_cast<std::size_t>(tile)] = 1;
+    }
+    std::vector<int> in_order;
+    for (const int tile : m_wave)
+        if (static_cast<std::size_t>(tile) < mine.size() && mine[static_cast<std::size_t>(tile)]) in_order.push_back(tile);
+    return in_order;
 }
 
 void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>& mine,
                             cache::IrradianceCache* cache) {
+    ++m_waves;
+    m_mine.tiles += mine.size();
     if (!m_comm || wave.empty()) return;
     const double busy = cpu_seconds() - m_wave_start;
     m_mine.busy_seconds += busy;

@@ -1,7 +1,10 @@
 // TileExchange: a render's tiles shared among processes, with the cache records of each wave exchanged in tile order.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "lighting/trace_context.h"
@@ -44,13 +47,20 @@ public:
     bool distributed() const { return m_comm != nullptr; }
     bool root() const { return !m_comm || m_comm->rank() == 0; }
 
-    /// Readies the exchange for a render of `tile_count` tiles.
-    void begin(int tile_count);
-    /// The tiles of `wave` this process renders. When every tile's cost in an earlier pass is known, the costliest
-    /// go first, each to the process with the least work so far (longest processing time first); otherwise every
-    /// size()-th tile, the starting point turning with each wave so that one-tile waves do not all fall to the
-    /// same process. The choice never changes a pixel, only who renders it.
-    std::vector<int> share(const std::vector<int>& wave);
+    /// Readies the exchange for a render of `tile_count` tiles in `wave_count` waves over every pass (collective when
+    /// distributed: the processes then set up the counters they draw tiles from).
+    void begin(int tile_count, std::size_t wave_count);
+    /// Starts `wave`: afterwards next_tile() hands out its tiles. Distributed, processes draw the wave's tiles from
+    /// a counter they share, each taking the next tile as it becomes free, the costliest first once every tile's
+    /// cost in an earlier pass is known. Where the processes cannot share counters, the shares are fixed in
+    /// advance: longest processing time first on the known costs, otherwise every size()-th tile, the starting
+    /// point turning with each wave so that one-tile waves do not all fall to the same process. Who renders a tile
+    /// never changes a pixel.
+    void start_wave(const std::vector<int>& wave);
+    /// The next tile of the wave this process renders, or -1 when there is none left for it (any thread).
+    int next_tile();
+    /// The tiles of the wave this process took, in the wave's order (after every next_tile() call of the wave).
+    std::vector<int> taken() const;
     /// The processor seconds tile `tile` took in this pass (from its worker thread; each tile is one thread's).
     void tile_cost(int tile, double seconds);
     /// This thread's processor time in seconds.
@@ -59,6 +69,8 @@ public:
     /// the other processes' into their tiles' views, so that cache->merge_tiles(wave) then merges the same records
     /// everywhere. Without a cache (one wave, no records) it only keeps the time.
     void end_wave(const std::vector<int>& wave, const std::vector<int>& mine, cache::IrradianceCache* cache);
+    /// True when the tiles are drawn from shared counters (for --stats and tests).
+    bool drawn() const { return m_counters != nullptr; }
 
     /// The pixels of a tile: [x0, x1) × [y0, y1).
     struct TileRect {
@@ -77,8 +89,17 @@ public:
     const std::vector<WaveStatistics>& waves() const { return m_wave_stats; }
 
 private:
+    /// The fixed shares of a wave, for processes that cannot draw from shared counters.
+    std::vector<int> fixed_share(const std::vector<int>& wave) const;
+
     Communicator* m_comm;
+    std::unique_ptr<SharedCounters> m_counters;  ///< one counter per wave; null: fixed shares
     std::uint64_t m_waves = 0;
+    std::vector<int> m_order;         ///< the current wave's tiles in the order they are handed out
+    std::atomic<std::size_t> m_next{0};  ///< the next of m_order to hand out, without counters
+    std::vector<int> m_wave;          ///< the current wave, as listed
+    mutable std::mutex m_taken_mutex;
+    std::vector<int> m_taken;         ///< the current wave's tiles this process took
     double m_wave_start = 0.0;   ///< processor time when this process started its share of the wave
     double m_unexchanged = 0.0;  ///< busy time of waves without an exchange, sent with the image
     std::vector<double> m_cost;  ///< each tile's last exchanged cost (the same on every process); 0: not known

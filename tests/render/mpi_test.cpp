@@ -80,6 +80,24 @@ TEST(Mpi, RadiosityImageAndCacheFileAreTheOneProcessOnes) {
                              {"box.exr", "box.rca"});
 }
 
+TEST(Mpi, RanksOfTwoThreadsDrawingTilesGiveTheOneProcessImage) {
+    // Two worker threads per rank draw the waves' tiles from the shared counters at once; the image and the cache
+    // file are still the single-threaded single process's.
+    const fs::path dir = fresh_dir("radiosity_threads");
+    const std::string scene = shell_quote(kBoxScene.string()) + " +W64 +H48 +BS16 Declare=Count=30 -Obox.exr +RFO +RFbox.rca";
+    fs::create_directories(dir / "1");
+    fs::create_directories(dir / "2");
+    const ProcessResult one = run_command(wardray() + " " + scene + " +WT1", (dir / "1").string());
+    ASSERT_EQ(one.exit_status, 0) << one.output;
+    const ProcessResult many = mpirun(2, scene + " +WT2", dir / "2");
+    ASSERT_EQ(many.exit_status, 0) << many.output;
+    for (const std::string file : {"box.exr", "box.rca"}) {
+        const std::string a = read_file(dir / "1" / file), b = read_file(dir / "2" / file);
+        EXPECT_FALSE(a.empty()) << file;
+        EXPECT_TRUE(a == b) << file << " differs between 1 process of 1 thread and 2 ranks of 2 threads";
+    }
+}
+
 TEST(Mpi, DirectLightImageIsTheOneProcessOne) {
     const fs::path dir = fresh_dir("direct");
     std::ofstream(dir / "direct.pov") << kDirectScene;
