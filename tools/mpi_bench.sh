@@ -19,7 +19,7 @@ for ((r = 1; r <= runs; r++)); do
       start=$(date +%s.%N)
       # shellcheck disable=SC2086
       $mpirun -np $np "$bin" ${args[$scene]} -o "$work/$scene$np.png" > /dev/null 2>&1
-      echo "$scene $np $(echo "$(date +%s.%N) - $start" | bc)" | tee -a "$work/times"
+      echo "$scene $np $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')" | tee -a "$work/times"
     done
   done
 done
@@ -30,5 +30,5 @@ for scene in cornell woodbox; do
   m1=$(median "$scene" 1)
   m2=$(median "$scene" 2)
   printf "%s: 1 rank %.2f s, 2 ranks %.2f s (medians), speed-up %.2f, images %s\n" "$scene" "$m1" "$m2" \
-    "$(echo "$m1 / $m2" | bc -l)" "$same"
+    "$(awk -v a="$m1" -v b="$m2" 'BEGIN { print a / b }')" "$same"
 done
