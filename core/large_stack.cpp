@@ -6,9 +6,28 @@
 
 #include <exception>
 
+#include "core/sanitizer.h"
+
+#if __has_include(<sanitizer/asan_interface.h>)
+#include <sanitizer/asan_interface.h>
+#define WARDRAY_HAVE_ASAN_INTERFACE 1
+#endif
+
 namespace wardray {
 
 namespace {
+
+// The highest address of the run_with_stack thread's stack, for unpoison_stack_above_here; null on other threads.
+thread_local char* t_stack_top = nullptr;
+
+void record_stack_top() {
+    pthread_attr_t attr;
+    if (pthread_getattr_np(pthread_self(), &attr) != 0) return;
+    void* base = nullptr;
+    std::size_t size = 0;
+    if (pthread_attr_getstack(&attr, &base, &size) == 0) t_stack_top = static_cast<char*>(base) + size;
+    pthread_attr_destroy(&attr);
+}
 
 struct Job {
     const std::function<void(std::size_t)>* work = nullptr;
@@ -18,6 +37,7 @@ struct Job {
 
 void* run_job(void* arg) {
     auto* job = static_cast<Job*>(arg);
+    if constexpr (k_address_sanitizer) record_stack_top();
     try {
         (*job->work)(job->stack_bytes);
     } catch (...) {
@@ -49,6 +69,16 @@ void run_with_stack(std::size_t stack_bytes, const std::function<void(std::size_
     // calling thread's arena for the rest of the run.
     malloc_trim(0);
     if (job.error) std::rethrow_exception(job.error);
+}
+
+void unpoison_stack_above_here() noexcept {
+#if defined(WARDRAY_HAVE_ASAN_INTERFACE)
+    if constexpr (k_address_sanitizer) {
+        auto* here = static_cast<char*>(__builtin_frame_address(0));
+        if (t_stack_top != nullptr && here < t_stack_top)
+            __asan_unpoison_memory_region(here, static_cast<std::size_t>(t_stack_top - here));
+    }
+#endif
 }
 
 }  // namespace wardray

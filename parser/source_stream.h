@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/large_stack.h"
 #include "parser/lexer.h"
 #include "parser/parse.h"
 #include "parser/read_access.h"
@@ -71,10 +72,15 @@ struct SourceFile {
 /// Reads a whole file into `text` with one copy; false with the reason in `error` when it cannot be read.
 bool read_text_file(const std::filesystem::path& path, std::string& text, std::string& error);
 
-/// Thrown inside the parser to abandon the current statement after an error was reported.
-struct StatementError {};
+/// Thrown inside the parser to abandon the current statement after an error was reported. Constructing one clears
+/// AddressSanitizer's stale stack poison (core/large_stack.h), since it is thrown from deep in the parser's stack.
+struct StatementError {
+    StatementError() noexcept { unpoison_stack_above_here(); }
+};
 /// Thrown inside the parser to end the whole parse (error limit, #error, runaway recursion).
-struct FatalError {};
+struct FatalError {
+    FatalError() noexcept { unpoison_stack_above_here(); }
+};
 
 /// How a token reads in a message: 'word', string "text", '#directive' or end of file.
 std::string describe_token(const Token& t);

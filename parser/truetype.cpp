@@ -7,6 +7,8 @@
 #include <iterator>
 #include <stdexcept>
 
+#include "core/large_stack.h"
+
 namespace wardray::parser {
 
 namespace {
@@ -31,8 +33,9 @@ constexpr std::uint16_t kKernMinimum = 0x02;
 constexpr std::uint16_t kKernCrossStream = 0x04;
 constexpr std::uint16_t kKernOverride = 0x08;
 
+// Thrown on the parser's large stack, so it clears AddressSanitizer's stale poison as StatementError does.
 struct FontError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit FontError(const char* what) : std::runtime_error(what) { unpoison_stack_above_here(); }
 };
 
 // Big-endian reads with a cursor; reading past the end is an error, as in POV-Ray.

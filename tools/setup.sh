@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  g++ make cmake pkg-config                # toolchain
+  g++ make cmake pkg-config ccache         # toolchain; ccache shares objects between checkouts (CMakeLists.txt)
   libembree-dev libtbb-dev                 # ray tracing and threads
   libopenimageio-dev openimageio-tools     # image reading (any format)
   libpng-dev libopenexr-dev                # image writing (PNG, OpenEXR)
