@@ -191,6 +191,25 @@ TEST(JpegReader, GreyAndColourReadAsOpenImageIOReadsThem) {
     EXPECT_FALSE(read_jpeg_rgb(write("rgb8-as-jpeg.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb));
 }
 
+// Height fields ask whether the file is grey or 16-bit: a JPEG answers as OpenImageIO answers, without loading it.
+TEST(JpegReader, HeightFieldReadsAnswerGreyAsOpenImageIO) {
+    for (const int components : {1, 3}) {
+        const fs::path p = write_jpeg("height" + std::to_string(components) + ".jpg", 23, 13, components);
+        std::string error;
+        bool stored = false, alpha = true, grey = false, bits16 = true;
+        const auto ours = read_image(p, error, &stored, &alpha, &grey, &bits16);
+        bool their_stored = false, their_alpha = true, their_grey = false, their_bits16 = true;
+        const auto theirs = read_image_with_oiio(p, error, &their_stored, &their_alpha, &their_grey, &their_bits16);
+        ASSERT_TRUE(ours && theirs) << error;
+        EXPECT_EQ(stored, their_stored);
+        EXPECT_EQ(alpha, their_alpha);
+        EXPECT_EQ(grey, their_grey);
+        EXPECT_EQ(grey, components == 1);
+        EXPECT_EQ(bits16, their_bits16);
+        EXPECT_EQ(ours->data(), theirs->data());
+    }
+}
+
 // A few bytes can claim billions of pixels: each header's claim is read before any pixel, and past the limit the
 // file is refused with its size, before anything is allocated (through libpng, libjpeg and OpenImageIO alike).
 TEST(ImageHeader, ClaimedSizesAreReadAndOversizedFilesRefused) {
