@@ -49,7 +49,7 @@ std::optional<HeightFieldShape> HeightFieldShape::create(const scene::HeightFiel
     HeightFieldShape s;
     s.m_grid = hf.grid;
     s.m_smooth = hf.smooth;
-    s.m_placement = hf.placement;
+    s.m_placement = std::make_shared<const Transform>(hf.placement);
     s.m_scale = {hf.grid->width - 1.0, 65536.0, hf.grid->height - 1.0};
     const auto [lo, hi] = std::minmax_element(hf.grid->heights.begin(), hf.grid->heights.end());
     // POV-Ray compat: the box runs from the lowest point (or the water level, if higher) to the highest point.
@@ -116,7 +116,7 @@ void HeightFieldShape::build_normals() {
             // POV-Ray compat: vertex normals are stored as 16-bit integers, then taken to the object's space.
             const Vec3 q{double(static_cast<short>(32767 * n.x)), double(static_cast<short>(32767 * n.y)),
                          double(static_cast<short>(32767 * n.z))};
-            const Vec3 world = m_placement.normal({q.x * m_scale.x, q.y * m_scale.y, q.z * m_scale.z});
+            const Vec3 world = m_placement->normal({q.x * m_scale.x, q.y * m_scale.y, q.z * m_scale.z});
             m_normals[static_cast<std::size_t>(i) * m_grid->width + j] = direction_or_up(world);
         }
 }
@@ -157,7 +157,7 @@ Vec3 HeightFieldShape::smooth_normal(const Vec3& p) const {
     // POV-Ray compat: the world-space vertex normals are interpolated; the result goes back to object space
     // through the transpose of the placement, which the instance's inverse transpose undoes.
     const Vec3 n_world = (1.0 - z) * ((1.0 - x) * n0 + x * n1) + z * ((1.0 - x) * n2 + x * n3);
-    const auto& m = m_placement.matrix();
+    const auto& m = m_placement->matrix();
     Vec3 n;
     for (int k = 0; k < 3; ++k) n[k] = m[0][k] * n_world.x + m[1][k] * n_world.y + m[2][k] * n_world.z;
     return n;

@@ -60,7 +60,9 @@ private:
     std::vector<std::vector<Range>> m_levels;  ///< m_levels[k]: nodes of 2^k x 2^k cells, row-major
     std::vector<int> m_level_width;             ///< nodes per row at each level
     std::vector<Vec3> m_normals;                ///< smooth: per grid point, in world space, unit length
-    Transform m_placement;                      ///< unit-square space to world (scene::HeightField::placement)
+    /// Unit-square space to world (scene::HeightField::placement); on the heap, as every shape instance is as large
+    /// as the largest kind of shape.
+    std::shared_ptr<const Transform> m_placement;
 };
 
 }  // namespace wardray::geometry

@@ -1,4 +1,5 @@
 // image_map pigments: the image file (read through ParseOptions::read_image), its gamma and its mapping.
+#include <array>
 #include <cmath>
 #include <functional>
 #include <string_view>
@@ -79,8 +80,17 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     if (file_gamma) from = *file_gamma;
     else if (encoded && m_version < 3.7 && m_working_gamma) from = working;
     const GammaTranscoding to_working = transcoding(working, from);
-    if (handling)
-        for (float& v : image->rgb) v = static_cast<float>(to_working.decode(v));
+    if (handling) {
+        // Most texels are bytes over 255: each of the 256 is decoded once, the rest one by one.
+        std::array<float, 256> byte_decoded;
+        for (int k = 0; k < 256; ++k)
+            byte_decoded[k] = static_cast<float>(to_working.decode(static_cast<float>(k) * (1.0f / 255.0f)));
+        for (float& v : image->rgb) {
+            const float k = std::nearbyint(v * 255.0f);
+            if (k >= 0.0f && k <= 255.0f && k * (1.0f / 255.0f) == v) v = byte_decoded[static_cast<int>(k)];
+            else v = static_cast<float>(to_working.decode(v));
+        }
+    }
     m_images.emplace(std::move(key), image);
     return image;
 }

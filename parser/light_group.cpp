@@ -60,9 +60,11 @@ ObjectValue ObjectReader::parse_light_group(const Token& /*kw*/) {
             const Token child_kw = next();
             const bool nested = is_word(child_kw, "light_group");
             ObjectValue child = parse_object(child_kw);
+            const scene::Cow<Texture> child_texture =
+                child.texture ? scene::Cow<Texture>(*child.texture) : scene::Cow<Texture>();
             for (ObjectPart& part : child.parts) {
                 if (!part.has_texture && child.texture) {
-                    part.object.texture = *child.texture;
+                    part.object.texture = child_texture;  // one value the untextured parts share
                     part.has_texture = true;
                 }
                 if (nested) grouped.push_back(ov.parts.size());

@@ -251,12 +251,11 @@ ObjectValue ObjectReader::parse_object(const Token& kw) {
         ov.compound = true;
         read_csg_children(ov, [&](ObjectValue& child) {
             ov.copied += child.copied;
-            if (child.texture)
+            if (child.texture) {  // one value the untextured parts share, not a 3 KB copy each
+                const scene::Cow<Texture> shared(*child.texture);
                 for (ObjectPart& part : child.parts)
-                    if (!part.has_texture) {
-                        part.object.texture = *child.texture;
-                        part.has_texture = true;
-                    }
+                    if (!part.has_texture) part.object.texture = shared, part.has_texture = true;
+            }
             // The parts move as one block: a union redeclared around its previous value (`#declare U = union {
             // object { U } ... }`, many times over) then shares U's parts, where POV-Ray copies them.
             if (!ov.parts.empty()) own_parts(child, kw);  // two shared chains cannot be joined without a copy

@@ -105,10 +105,21 @@ std::vector<ObjectPart>& PartList::own() const {
     // The chain holds the earliest parts at its end: gather the chunks, then copy their parts oldest first.
     std::vector<const Chunk*> chunks;
     for (const Chunk* c = m_shared.get(); c != nullptr; c = c->prev.get()) chunks.push_back(c);
+    // The links no other list holds (from the top down to the first one another list shares, below which every
+    // link is reachable from it) give their parts up instead of copying them: a chunk is created non-const.
+    std::size_t unshared = 0;
+    for (const std::shared_ptr<const Chunk>* link = &m_shared; *link && link->use_count() == 1; link = &(*link)->prev)
+        ++unshared;
     std::vector<ObjectPart> all;
     all.reserve(size());
-    for (auto it = chunks.rbegin(); it != chunks.rend(); ++it)
-        all.insert(all.end(), (*it)->parts.begin(), (*it)->parts.end());
+    for (std::size_t i = chunks.size(); i-- > 0;) {
+        if (i < unshared) {
+            std::vector<ObjectPart>& parts = const_cast<Chunk*>(chunks[i])->parts;
+            all.insert(all.end(), std::make_move_iterator(parts.begin()), std::make_move_iterator(parts.end()));
+        } else {
+            all.insert(all.end(), chunks[i]->parts.begin(), chunks[i]->parts.end());
+        }
+    }
     all.insert(all.end(), std::make_move_iterator(m_own.begin()), std::make_move_iterator(m_own.end()));
     m_own = std::move(all);
     m_shared.reset();

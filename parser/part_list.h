@@ -24,7 +24,8 @@ std::size_t object_count(const Object& object);
 /// The parts of an object statement in their order. Copying a list is O(1): both copies share the parts as an
 /// immutable chain of chunks (each chunk the parts one statement added after those of the chunk before it), so
 /// `#declare U = union { object { U } sphere { ... } }` repeated N times costs O(N), not O(N^2). The first call
-/// that reads parts one by one or changes them gives the list parts of its own (a copy of the chain, once).
+/// that reads parts one by one or changes them gives the list parts of its own (once: the chain's parts, copied
+/// where other lists share them).
 class PartList {
 public:
     using iterator = std::vector<ObjectPart>::iterator;
@@ -71,7 +72,8 @@ public:
 private:
     struct Chunk;
     std::size_t shared_size() const;
-    /// The parts as a vector of this list's own, copying the shared chain into it the first time.
+    /// The parts as a vector of this list's own, the first time moving the parts of the chain's links no other
+    /// list holds into it and copying the rest.
     std::vector<ObjectPart>& own() const;
     /// Moves the own parts into a new chunk on top of the shared chain (so copies can share them).
     void freeze() const;

@@ -236,6 +236,7 @@ void SceneReader::place_object(ObjectValue ov) {
     // One texture for every part that has none of its own: the union's, or the #default one (shared with the
     // other objects placed since the #default last changed), so untextured parts cost a pointer each.
     const scene::Cow<Texture> inherited = ov.texture ? scene::Cow<Texture>(*ov.texture) : shared_default_texture();
+    m_builder.reserve_objects(ov.parts.size());
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.

@@ -71,8 +71,8 @@ void remove_partial_output_on_signal();
 std::optional<Film> read_image(const std::filesystem::path& path, std::string& error, bool* stored = nullptr,
                                bool* alpha = nullptr, bool* grey = nullptr, bool* bits16 = nullptr,
                                std::vector<float>* alpha_values = nullptr, std::uint64_t max_pixels = kAnyPixelCount);
-/// read_image through OpenImageIO only (read_image takes opaque PNGs and JPEGs through libpng and
-/// libjpeg, giving the same values).
+/// read_image through OpenImageIO only (read_image takes PNGs but palette ones with a tRNS chunk, JPEGs and, for
+/// colours, GIFs through libpng, libjpeg and render/gif_reader.h, giving the same values).
 std::optional<Film> read_image_with_oiio(const std::filesystem::path& path, std::string& error,
                                          bool* stored = nullptr, bool* alpha = nullptr, bool* grey = nullptr,
                                          bool* bits16 = nullptr, std::vector<float>* alpha_values = nullptr,

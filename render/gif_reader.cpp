@@ -113,18 +113,27 @@ std::optional<GifIndices> read_gif_indices(const std::filesystem::path& path, st
     }
     in.at = 13;
     // The global colour table: 3 bytes for each of 2^(n+1) entries.
-    if ((d[10] & 0x80) != 0 && !in.skip(3u << ((d[10] & 0x07) + 1))) {
-        error = "truncated colour table";
-        return std::nullopt;
+    std::vector<std::uint8_t> global_table;
+    if ((d[10] & 0x80) != 0) {
+        const std::size_t size = 3u << ((d[10] & 0x07) + 1);
+        if (!in.skip(size)) {
+            error = "truncated colour table";
+            return std::nullopt;
+        }
+        global_table.assign(d.begin() + 13, d.begin() + 13 + static_cast<std::ptrdiff_t>(size));
     }
+    int transparent = -1;
     for (int c = in.next(); c >= 0; c = in.next()) {
         if (c == ';') break;
         if (c == '!') {
-            // An extension: its label, then sub-blocks.
+            // An extension: its label, then sub-blocks; a graphic control extension (0xF9) may name a
+            // transparent index.
             bool ok = true;
-            if (in.next() < 0) break;
-            read_sub_blocks(in, ok);
+            const int label = in.next();
+            if (label < 0) break;
+            const std::vector<std::uint8_t> body = read_sub_blocks(in, ok);
             if (!ok) break;
+            if (label == 0xF9 && body.size() >= 4) transparent = (body[0] & 1) != 0 ? body[3] : -1;
             continue;
         }
         if (c != ',') break;
@@ -133,10 +142,22 @@ std::optional<GifIndices> read_gif_indices(const std::filesystem::path& path, st
         const std::uint8_t* desc = d.data() + in.at;
         in.at += 9;
         GifIndices image;
+        image.screen_width = d[6] | (d[7] << 8);
+        image.screen_height = d[8] | (d[9] << 8);
+        image.left = desc[0] | (desc[1] << 8);
+        image.top = desc[2] | (desc[3] << 8);
         image.width = desc[4] | (desc[5] << 8);
         image.height = desc[6] | (desc[7] << 8);
+        image.transparent = transparent;
         const bool interlaced = (desc[8] & 0x40) != 0;
-        if ((desc[8] & 0x80) != 0 && !in.skip(3u << ((desc[8] & 0x07) + 1))) break;
+        if ((desc[8] & 0x80) != 0) {
+            const std::size_t size = 3u << ((desc[8] & 0x07) + 1);
+            if (!in.skip(size)) break;
+            image.palette.assign(d.begin() + static_cast<std::ptrdiff_t>(in.at - size),
+                                 d.begin() + static_cast<std::ptrdiff_t>(in.at));
+        } else {
+            image.palette = global_table;
+        }
         const int min_size = in.next();
         bool ok = true;
         const std::vector<std::uint8_t> codes = read_sub_blocks(in, ok);
@@ -160,6 +181,34 @@ std::optional<GifIndices> read_gif_indices(const std::filesystem::path& path, st
     }
     error = "no readable image in the GIF file";
     return std::nullopt;
+}
+
+bool read_gif_rgb(const std::filesystem::path& path, int& width, int& height, std::vector<float>& rgb) {
+    std::string error;
+    const std::optional<GifIndices> gif = read_gif_indices(path, error);
+    if (!gif || gif->screen_width <= 0 || gif->screen_height <= 0 || gif->palette.empty()) return false;
+    const std::size_t entries = gif->palette.size() / 3;
+    for (const std::uint8_t i : gif->index)
+        if (i >= entries && i != gif->transparent) return false;
+    width = gif->screen_width;
+    height = gif->screen_height;
+    const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    rgb.assign(n * 3, 0.0f);
+    // The image's window on the screen, clipped to it; each sample as OpenImageIO converts 8-bit ones to float.
+    for (int wy = 0; wy < gif->height; ++wy) {
+        const int y = gif->top + wy;
+        if (y >= height) break;
+        for (int wx = 0; wx < gif->width; ++wx) {
+            const int x = gif->left + wx;
+            if (x >= width) break;
+            const std::uint8_t i = gif->index[static_cast<std::size_t>(wy) * gif->width + wx];
+            if (i == gif->transparent) continue;
+            const std::size_t at = static_cast<std::size_t>(y) * width + x;
+            for (int c = 0; c < 3; ++c)
+                rgb[at * 3 + c] = static_cast<float>(gif->palette[i * 3u + c]) * (1.0f / 255.0f);
+        }
+    }
+    return true;
 }
 
 }  // namespace wardray::render

@@ -26,6 +26,7 @@ void on_message(j_common_ptr, int) {}
 struct JpegRows {
     JDIMENSION width = 0;
     JDIMENSION height = 0;
+    bool grey = false;
     std::vector<unsigned char> bytes;  ///< height rows of width RGB bytes
 };
 
@@ -54,6 +55,7 @@ bool read_rows(std::FILE* file, JpegRows& out) {
     out.width = info.output_width;
     out.height = info.output_height;
     const int channels = info.output_components;
+    out.grey = channels == 1;
     out.bytes.resize(static_cast<std::size_t>(out.width) * out.height * 3);
     std::vector<unsigned char>& bytes = out.bytes;
     while (info.output_scanline < info.output_height) {
@@ -70,7 +72,7 @@ bool read_rows(std::FILE* file, JpegRows& out) {
 
 }  // namespace
 
-bool read_jpeg_rgb(const std::filesystem::path& path, int& width, int& height, std::vector<float>& rgb) {
+bool read_jpeg_rgb(const std::filesystem::path& path, int& width, int& height, std::vector<float>& rgb, bool* grey) {
     const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) return false;
     unsigned char signature[3] = {0};
@@ -82,6 +84,7 @@ bool read_jpeg_rgb(const std::filesystem::path& path, int& width, int& height, s
     if (!read_rows(file.get(), rows) || rows.width == 0 || rows.height == 0) return false;
     width = static_cast<int>(rows.width);
     height = static_cast<int>(rows.height);
+    if (grey) *grey = rows.grey;
     rgb.resize(rows.bytes.size());
     // As OpenImageIO converts 8-bit samples to float: the value times 1/255 in single precision.
     for (std::size_t i = 0; i < rgb.size(); ++i) rgb[i] = static_cast<float>(rows.bytes[i]) * (1.0f / 255.0f);

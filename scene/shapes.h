@@ -107,10 +107,12 @@ struct BicubicPatch {
     double flatness = 0.0;
     int u_steps = 0;
     int v_steps = 0;
-    std::array<Vec3, 16> points{};
+    /// The 16 control points. On the heap, as the uv vectors, so that every object (all of them `Shape`s, a
+    /// variant as large as its largest kind) does not carry a patch's 500 bytes.
+    std::vector<Vec3> points = std::vector<Vec3>(16);
     /// `uv_vectors`: the texture (u, v, 0) at the patch corners (u, v) = (0, 0), (1, 0), (1, 1), (0, 1) of
     /// POV-Ray's corner order, for uv_mapping; POV-Ray's defaults without them.
-    std::array<Vec3, 4> uv_vectors{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}}};
+    std::vector<Vec3> uv_vectors{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}};
     /// Every transform applied to the patch since it was read (its own and its CSG parents'), in order: POV-Ray
     /// tessellates the transformed control points, so flatness is measured after it.
     Transform placement;
@@ -170,7 +172,7 @@ struct Superellipsoid {
 /// POV-Ray's `quartic { <a0, ..., a34> }`: the sum of a_i times the monomials x^i y^j z^k (i + j + k <= 4) in
 /// POV-Ray's order (x⁴, x³y, x³z, x³, x²y², ..., z, 1: descending powers of x, then y, then z); inside where negative.
 struct Quartic {
-    std::array<double, 35> coefficients{};
+    std::vector<double> coefficients = std::vector<double>(35);  ///< on the heap, as a bicubic patch's points
     bool operator==(const Quartic&) const = default;
 };
 

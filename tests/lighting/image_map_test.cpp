@@ -52,6 +52,41 @@ TEST(ImageMap, WithoutGammaAnEightBitFileIsSrgb) {
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.25, 0.75, 0.0}, 2).r, GammaCurve::srgb().decode(0.5), 1e-6);
 }
 
+// Every byte value over 255 and a few that are not: the parser's table for byte values gives each exactly what
+// decoding it alone gives.
+std::shared_ptr<const scene::ImageData> all_bytes(const std::filesystem::path&, bool& encoded, std::string&) {
+    auto image = std::make_shared<scene::ImageData>();
+    for (int k = 0; k < 256; ++k) image->rgb.push_back(static_cast<float>(k) * (1.0f / 255.0f));
+    for (const float v : {0.3f, 1.0f / 3.0f, 0.5f, 1.5f, -0.25f, 0.999f}) image->rgb.push_back(v);
+    image->rgb.resize(image->rgb.size() / 3 * 3);
+    image->width = static_cast<int>(image->rgb.size() / 3);
+    image->height = 1;
+    encoded = true;
+    return image;
+}
+
+TEST(ImageMap, ByteTexelsDecodeByTableAsEachAlone) {
+    for (const std::string& gamma : {std::string(""), std::string("gamma 2.2"), std::string("gamma srgb")}) {
+        parser::ParseOptions options;
+        options.read_image = all_bytes;
+        options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");
+        const parser::ParseResult r = parser::parse_string(
+            "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { png \"" WARDRAY_SOURCE_DIR
+            "/scenes/default.pov\" " + gamma + " } } }",
+            "test.pov", options);
+        ASSERT_TRUE(r.ok());
+        const auto& image = *r.scene->objects.at(0).texture->pigment.image_map->image;
+        bool encoded = false;
+        std::string error;
+        const auto stored = all_bytes({}, encoded, error);
+        const GammaCurve file = gamma == "gamma 2.2" ? GammaCurve::power_law(2.2) : GammaCurve::srgb();
+        const GammaTranscoding to_working = transcoding(GammaCurve::power_law(1.0), file);
+        ASSERT_EQ(image.rgb.size(), stored->rgb.size());
+        for (std::size_t i = 0; i < image.rgb.size(); ++i)
+            ASSERT_EQ(image.rgb[i], static_cast<float>(to_working.decode(stored->rgb[i]))) << gamma << " " << i;
+    }
+}
+
 TEST(ImageMap, BilinearAtTheCentreAveragesTheFourTexels) {
     const scene::Pigment p = image_pigment("gamma 1.0 interpolate 2");
     const Color c = texture::evaluate_pigment(p, {0.5, 0.5, 0.0}, 2);

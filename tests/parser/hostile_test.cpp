@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "parser/part_list.h"
 #include "parser/read_access.h"
 #include "tests/parser/test_util.h"
 
@@ -286,6 +287,43 @@ TEST(DeepNesting, TwentyThousandUnionsNestedByALoopParseQuickly) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(s.objects.size(), 1u);
     EXPECT_LT(seconds, 2.0);
+}
+
+// A list that takes parts of its own from a chain no other list holds any more moves them (a union of 20,000 parts
+// is not copied); from a chain another list still holds it copies them, leaving the other's as they were.
+TEST(SharedObjects, AChainNoOtherListHoldsIsMovedNotCopied) {
+    ObjectPart part;
+    part.object.shape = scene::BicubicPatch{};
+    PartList a;
+    a.push_back(part);
+    const Vec3* points = std::get<scene::BicubicPatch>(a[0].object.shape).points.data();
+    { const PartList b(a); }  // shares a's parts, then lets them go
+    EXPECT_TRUE(a.shared());
+    EXPECT_EQ(std::get<scene::BicubicPatch>(a[0].object.shape).points.data(), points);
+    const PartList c(a);
+    std::get<scene::BicubicPatch>(a[0].object.shape).points[0].x = 7.0;
+    EXPECT_NE(std::get<scene::BicubicPatch>(a[0].object.shape).points.data(), points);
+    EXPECT_EQ(std::get<scene::BicubicPatch>(c[0].object.shape).points.data(), points);
+    EXPECT_EQ(std::get<scene::BicubicPatch>(c[0].object.shape).points[0].x, 0.0);
+}
+
+// The untextured parts of a textured union inside a union share its texture, one value, not a 3 KB copy each; a
+// part that then changes its texture gets its own, leaving the others'.
+TEST(SharedObjects, PartsOfATexturedUnionShareItsTexture) {
+    const Scene s = test::parse_ok(
+        "union { union { sphere { 0, 1 } sphere { x, 1 } sphere { y, 1 } pigment { rgb x } }"
+        " light_group { union { sphere { z, 1 } sphere { -z, 1 } pigment { rgb y } } } }\n");
+    ASSERT_EQ(s.objects.size(), 5u);
+    EXPECT_TRUE(s.objects[0].texture.shares(s.objects[1].texture));
+    EXPECT_TRUE(s.objects[0].texture.shares(s.objects[2].texture));
+    EXPECT_TRUE(s.objects[3].texture.shares(s.objects[4].texture));
+    EXPECT_FALSE(s.objects[0].texture.shares(s.objects[3].texture));
+    const Scene t = test::parse_ok(
+        "#declare U = union { union { sphere { 0, 1 } sphere { x, 1 } pigment { rgb x } } }\n"
+        "object { U }\nobject { U pigment { rgb z } }\n");
+    ASSERT_EQ(t.objects.size(), 4u);
+    EXPECT_EQ(t.objects[0].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
+    EXPECT_EQ(t.objects[2].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
 }
 
 // Uses of a declared object share its parts until they change them (PartList): a later #declare of the name, and

@@ -537,5 +537,24 @@ TEST(CameraList, EveryKeywordSetsItsTypeAndIsReserved) {
     }
 }
 
+// Every object holds a Shape, a variant as large as its largest kind: kinds with large fixed arrays (a bicubic
+// patch's 16 points, a quartic's 35 coefficients) keep them on the heap, so a scene of 20,000 spheres does not
+// carry 20,000 patches' worth of bytes (the variant was 712 bytes, the object 1224).
+TEST(SceneMemory, AnObjectDoesNotCarryTheLargestShapeInline) {
+    EXPECT_LE(sizeof(scene::Shape), 320u);
+    EXPECT_LE(sizeof(scene::Object), 832u);
+    const auto patch = parse_ok(
+        "bicubic_patch { type 1 flatness 0.1 u_steps 2 v_steps 2 <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,1>,"
+        "<2,1,1>,<3,1,0>, <0,2,0>,<1,2,1>,<2,2,1>,<3,2,0>, <0,3,0>,<1,3,0>,<2,3,0>,<3,3,2> }");
+    const auto& bp = std::get<scene::BicubicPatch>(patch.objects.at(0).shape);
+    ASSERT_EQ(bp.points.size(), 16u);
+    EXPECT_EQ(bp.points[15].z, 2.0);
+    EXPECT_EQ(bp.uv_vectors.size(), 4u);
+    const auto quartic = parse_ok("quartic { <1,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,-1> }");
+    const auto& q = std::get<scene::Quartic>(quartic.objects.at(0).shape);
+    ASSERT_EQ(q.coefficients.size(), 35u);
+    EXPECT_EQ(q.coefficients[34], -1.0);
+}
+
 }  // namespace
 }  // namespace wardray::parser

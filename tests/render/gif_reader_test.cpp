@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/film.h"
 #include "render/gif_reader.h"
 
 namespace wardray::render {
@@ -93,6 +94,68 @@ TEST(GifReader, ReadsPovRaysPotFileAndRefusesOtherFiles) {
     EXPECT_EQ(pot->height, 120);
     EXPECT_FALSE(read_gif_indices("/usr/share/povray-3.7/include/colors.inc", error));
     EXPECT_FALSE(error.empty());
+}
+
+// A GIF89a on a 5 x 4 screen with a 4-entry global table, a graphic control extension naming `transparent`
+// (none when negative), and a 3 x 2 image at (1, 1) with a local table, holding `indices` (each after a clear code).
+fs::path write_placed_gif(const std::string& name, int transparent, const std::vector<int>& indices) {
+    std::vector<std::uint8_t> f = {'G', 'I', 'F', '8', '9', 'a', 5, 0, 4, 0, 0x81, 0, 0};
+    for (int i = 0; i < 12; ++i) f.push_back(static_cast<std::uint8_t>(i * 20));
+    if (transparent >= 0)
+        for (int b : {0x21, 0xF9, 4, 1, 0, 0, transparent, 0}) f.push_back(static_cast<std::uint8_t>(b));
+    for (int b : {int(','), 1, 0, 1, 0, 3, 0, 2, 0, 0x81}) f.push_back(static_cast<std::uint8_t>(b));
+    for (int i = 0; i < 12; ++i) f.push_back(static_cast<std::uint8_t>(255 - i * 7));
+    f.push_back(2);
+    std::vector<std::pair<int, int>> codes;
+    for (int i : indices) {
+        codes.push_back({4, 3});
+        codes.push_back({i, 3});
+    }
+    codes.push_back({5, 3});
+    const std::vector<std::uint8_t> data = pack(codes);
+    f.insert(f.end(), data.begin(), data.end());
+    f.push_back(';');
+    const fs::path path = fs::temp_directory_path() / name;
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(f.data()), static_cast<std::streamsize>(f.size()));
+    return path;
+}
+
+// Read without OpenImageIO, a GIF image map gives exactly what OpenImageIO gives: the same colours, alpha and flags.
+void expect_gif_as_oiio_reads_it(const fs::path& path) {
+    std::string error;
+    bool stored = false, alpha = false;
+    std::vector<float> alpha_values;
+    const auto ours = read_image(path, error, &stored, &alpha, nullptr, nullptr, &alpha_values);
+    ASSERT_TRUE(ours) << error;
+    bool their_stored = false, their_alpha = false;
+    std::vector<float> their_alpha_values;
+    const auto theirs = read_image_with_oiio(path, error, &their_stored, &their_alpha, nullptr, nullptr,
+                                             &their_alpha_values);
+    ASSERT_TRUE(theirs) << error;
+    EXPECT_EQ(stored, their_stored);
+    EXPECT_EQ(alpha, their_alpha);
+    EXPECT_EQ(alpha_values, their_alpha_values);
+    ASSERT_EQ(ours->width(), theirs->width());
+    ASSERT_EQ(ours->height(), theirs->height());
+    EXPECT_EQ(ours->data(), theirs->data()) << path;
+}
+
+TEST(GifReader, ImageMapColoursAndTransparencyAreOpenImageIOs) {
+    const std::vector<int> indices = {0, 1, 2, 3, 1, 0};
+    expect_gif_as_oiio_reads_it(write_placed_gif("wardray_gif_test3.gif", 2, indices));
+    expect_gif_as_oiio_reads_it(write_placed_gif("wardray_gif_test4.gif", -1, indices));
+    expect_gif_as_oiio_reads_it("/usr/share/povray-3.7/include/mtmand.pot");
+    int w = 0, h = 0;
+    std::vector<float> rgb;
+    ASSERT_TRUE(read_gif_rgb(fs::temp_directory_path() / "wardray_gif_test3.gif", w, h, rgb));
+    EXPECT_EQ(w, 5);
+    EXPECT_EQ(h, 4);
+    // The local table's entry 1 at (2, 1); index 2 (transparent) at (3, 1) and the screen around the image black.
+    EXPECT_EQ(rgb[(1 * 5 + 2) * 3], 234.0f * (1.0f / 255.0f));
+    for (const int at : {0, 1 * 5 + 3, 3 * 5 + 4}) EXPECT_EQ(rgb[at * 3] + rgb[at * 3 + 1] + rgb[at * 3 + 2], 0.0f) << at;
+    EXPECT_FALSE(read_gif_rgb("/usr/share/povray-3.7/include/colors.inc", w, h, rgb));
+    fs::remove(fs::temp_directory_path() / "wardray_gif_test3.gif");
+    fs::remove(fs::temp_directory_path() / "wardray_gif_test4.gif");
 }
 
 }  // namespace

@@ -153,6 +153,39 @@ TEST(PngReader, AlphaAndOtherFilesAreLeftToOpenImageIO) {
     EXPECT_FALSE(read_image(text, error).has_value());
 }
 
+// PNGs with an alpha channel: the colours, straight, and the alpha exactly as OpenImageIO reads them.
+TEST(PngReader, AlphaKindsReadAsOpenImageIOReadsThem) {
+    for (const auto& [name, png] : {std::pair{"rgba8.png", make_png(3, 2, 8, 6, rows_of(3, 2, 12))},
+                                    std::pair{"rgba16.png", make_png(5, 3, 16, 6, rows_of(5, 3, 40))},
+                                    std::pair{"grey-alpha8.png", make_png(4, 3, 8, 4, rows_of(4, 3, 8))},
+                                    std::pair{"grey-alpha16.png", make_png(3, 3, 16, 4, rows_of(3, 3, 12))}}) {
+        const fs::path p = write(name, png);
+        int w = 0, h = 0;
+        std::vector<float> rgb, alpha;
+        ASSERT_TRUE(read_png_rgba(p, w, h, rgb, alpha)) << name;
+        std::string error;
+        bool stored = false, has_alpha = false, their_stored = false, their_alpha = false;
+        std::vector<float> alpha_values, their_alpha_values;
+        const auto ours = read_image(p, error, &stored, &has_alpha, nullptr, nullptr, &alpha_values);
+        const auto theirs = read_image_with_oiio(p, error, &their_stored, &their_alpha, nullptr, nullptr,
+                                                 &their_alpha_values);
+        ASSERT_TRUE(ours && theirs) << error;
+        EXPECT_EQ(stored, their_stored);
+        EXPECT_TRUE(has_alpha);
+        EXPECT_EQ(has_alpha, their_alpha);
+        EXPECT_EQ(alpha_values, their_alpha_values) << name;
+        EXPECT_EQ(alpha_values, alpha);
+        EXPECT_EQ(ours->data(), theirs->data()) << name;
+        EXPECT_EQ(ours->data(), rgb);
+        const auto linear = read_image(p, error), their_linear = read_image_with_oiio(p, error);
+        ASSERT_TRUE(linear && their_linear);
+        EXPECT_EQ(linear->data(), their_linear->data()) << name;
+    }
+    int w = 0, h = 0;
+    std::vector<float> rgb, alpha;
+    EXPECT_FALSE(read_png_rgba(write("rgb8-no-alpha.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb, alpha));
+}
+
 /// A JPEG of pseudo-random smooth content, written by libjpeg at its defaults (4:2:0 for colour).
 fs::path write_jpeg(const std::string& name, int width, int height, int components) {
     const fs::path dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "png_reader_test";
@@ -189,6 +222,25 @@ TEST(JpegReader, GreyAndColourReadAsOpenImageIOReadsThem) {
     int w = 0, h = 0;
     std::vector<float> rgb;
     EXPECT_FALSE(read_jpeg_rgb(write("rgb8-as-jpeg.png", make_png(2, 2, 8, 2, rows_of(2, 2, 6))), w, h, rgb));
+}
+
+// Height fields ask whether the file is grey or 16-bit: a JPEG answers as OpenImageIO answers, without loading it.
+TEST(JpegReader, HeightFieldReadsAnswerGreyAsOpenImageIO) {
+    for (const int components : {1, 3}) {
+        const fs::path p = write_jpeg("height" + std::to_string(components) + ".jpg", 23, 13, components);
+        std::string error;
+        bool stored = false, alpha = true, grey = false, bits16 = true;
+        const auto ours = read_image(p, error, &stored, &alpha, &grey, &bits16);
+        bool their_stored = false, their_alpha = true, their_grey = false, their_bits16 = true;
+        const auto theirs = read_image_with_oiio(p, error, &their_stored, &their_alpha, &their_grey, &their_bits16);
+        ASSERT_TRUE(ours && theirs) << error;
+        EXPECT_EQ(stored, their_stored);
+        EXPECT_EQ(alpha, their_alpha);
+        EXPECT_EQ(grey, their_grey);
+        EXPECT_EQ(grey, components == 1);
+        EXPECT_EQ(bits16, their_bits16);
+        EXPECT_EQ(ours->data(), theirs->data());
+    }
 }
 
 // A few bytes can claim billions of pixels: each header's claim is read before any pixel, and past the limit the
