@@ -414,9 +414,12 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/, const Interi
         } else if (t.text == "caustics") {
             // POV-Ray keeps the value times 45, the exponent of its fake-caustics term.
             in.caustics = parse_float() * 45.0;
-        } else if (t.text == "dispersion" || t.text == "dispersion_samples") {
-            warn_unsupported(t, "interior " + t.text);
-            parse_float();
+        } else if (t.text == "dispersion") {
+            in.dispersion = parse_float();
+        } else if (t.text == "dispersion_samples") {
+            const double n = parse_float();
+            if (n < 2.0) fail(t, "Dispersion samples minimum is 2.");
+            in.dispersion_samples = static_cast<int>(n);
         } else if (t.text == "refraction") {
             // POV-Ray compat: still read, with POV-Ray's warning; it scales the refracted light (1 changes nothing).
             const double amount = parse_float();
