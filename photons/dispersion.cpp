@@ -17,13 +17,15 @@ struct Lobe {
     double centre, half_width, height;
 };
 
-// wardray's own hue model: each channel's response is one smooth lobe at the middle of what that channel of a
-// display sees (red about 610 nm, green about 540 nm, blue about 455 nm), and red has a small second lobe at the
-// violet end, so the shortest bands look violet rather than blue. Only the shapes matter: each channel is
-// normalised to a unit integral over the spectrum, which makes white light split into bands that sum to white.
-constexpr std::array<Lobe, 2> kRed{{{0.66, 0.30, 1.0}, {0.03, 0.10, 0.2}}};
-constexpr std::array<Lobe, 1> kGreen{{{0.46, 0.25, 1.0}}};
-constexpr std::array<Lobe, 1> kBlue{{{0.21, 0.24, 1.0}}};
+// wardray's own hue model: each channel's response is one smooth lobe over the spectrum (red about 655 nm, green
+// about 585 nm, blue about 470 nm, the blue lobe cut off at the violet end), and red has a small second lobe at the
+// violet end, so the shortest bands look violet rather than blue. The lobes' places and widths were fitted by least
+// squares to POV-Ray 3.7's rendered spectrum in scenes/parity/prism_dispersion.pov (its image against wardray's
+// images of each band alone). Only the shapes matter: each channel is normalised to a unit integral over the
+// spectrum, which makes white light split into bands that sum to white.
+constexpr std::array<Lobe, 2> kRed{{{0.79, 0.32, 1.0}, {0.01, 0.06, 0.37}}};
+constexpr std::array<Lobe, 1> kGreen{{{0.58, 0.33, 1.0}}};
+constexpr std::array<Lobe, 1> kBlue{{{0.25, 0.37, 1.0}}};
 
 /// The integral of one lobe from −∞ to x.
 double lobe_integral(const Lobe& l, double x) {
