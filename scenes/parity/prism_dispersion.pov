@@ -6,7 +6,7 @@
 global_settings {
   assumed_gamma 1.0
   max_trace_level 10
-  photons { spacing 0.004 jitter 0 autostop 0 }
+  photons { spacing 0.002 jitter 0 autostop 0 }
 }
 
 camera { location <1.2, 5.5, -4> look_at <1.2, 0.2, 0> angle 50 }
