@@ -214,6 +214,14 @@ TEST(Objects, InteriorDispersionAndItsSamples) {
                                        "test.pov", test::default_options());
     ASSERT_FALSE(r.ok());
     EXPECT_NE(test::all_diagnostics(r).find("Dispersion samples minimum is 2."), std::string::npos);
+    // POV-Ray truncates first: 1.9 is 1, too few.
+    EXPECT_FALSE(parse_string("sphere { 0, 1 interior { dispersion_samples 1.9 } }\n", "test.pov",
+                              test::default_options()).ok());
+    const Scene many = parse_ok("sphere { 0, 1 interior { dispersion_samples 1e12 } }\n");
+    EXPECT_EQ(many.objects[0].interior.dispersion_samples, 1000);
+    const Scene zero = parse_ok("sphere { 0, 1 interior { dispersion 0 } }\n");
+    EXPECT_EQ(zero.objects[0].interior.dispersion, 1.0);
+    ASSERT_EQ(zero.warnings.size(), 1u);
 }
 
 }  // namespace
