@@ -149,6 +149,15 @@ private:
     /// A refracted or transmitted ray's colour; sets `total_internal` when the ray reflects instead.
     Vec3 refract(const Surface& s, const Vec3& n, double weight, const scene::Finish& finish, const RayState& state,
                  bool& total_internal, TraceContext& ctx) const;
+    /// The ray `next` bent by the relative index `ior` (POV-Ray's TraceRefractionRay); total internal reflection
+    /// reflects the incoming ray of `state` instead and sets `total_internal`.
+    Vec3 refract_ray(const Surface& s, const Vec3& n, double ior, double weight, const scene::Finish& finish,
+                     const RayState& state, RayState& next, bool& total_internal, TraceContext& ctx) const;
+    /// POV-Ray's refraction with dispersion: white light split into `bands` spectral bands, each bent by its own
+    /// index (`ior` spread by the relative `dispersion`), carrying its band on, weighted by its hue.
+    Vec3 refract_dispersive(const Surface& s, const Vec3& n, double ior, double dispersion, int bands, double weight,
+                            const scene::Finish& finish, const RayState& state, RayState& next,
+                            TraceContext& ctx) const;
 
     const scene::Scene& m_scene;
     const geometry::SceneGeometry& m_geometry;

@@ -10,6 +10,7 @@
 #include "core/constants.h"
 #include "lighting/integrator.h"
 #include "lighting/metallic.h"
+#include "photons/dispersion.h"
 #include "photons/photon_map.h"
 #include "photons/reflectivity.h"
 #include "media/transmittance.h"
@@ -308,32 +309,53 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const s
     RayState next = state;
     next.weight = weight;
     // POV-Ray's interior bookkeeping: entering pushes the object, leaving the innermost pops it; the relative
-    // index is outside over inside (the atmosphere's index is 1).
+    // index (and dispersion) is outside over inside (the atmosphere's are 1).
     const scene::Object& owner = *s.object;
-    const double inner = owner.interior.ior;
+    const scene::Interior& inner = owner.interior;
     InteriorStack& in = next.interiors;
-    auto top_ior = [&]() { return in.top().interior.ior; };
-    double ior = 1.0;
+    double ior = 1.0, dispersion = 1.0;
+    int bands = inner.dispersion_samples;
     if (in.size == 0) {
         in.push(owner);
-        ior = 1.0 / inner;
+        ior = 1.0 / inner.ior;
+        dispersion = 1.0 / inner.dispersion;
     } else if (scene::same_interior(in.top(), owner)) {
         in.remove(owner);
-        ior = in.size == 0 ? inner : inner / top_ior();
-    } else if (in.remove(owner)) {
-        ior = 1.0;
-    } else {
-        ior = top_ior() / inner;
+        if (in.size == 0) {
+            ior = inner.ior;
+            dispersion = inner.dispersion;
+        } else {
+            const scene::Interior& outer = in.top().interior;
+            ior = inner.ior / outer.ior;
+            dispersion = inner.dispersion / outer.dispersion;
+            bands = std::max(bands, outer.dispersion_samples);
+        }
+    } else if (!in.remove(owner)) {
+        const scene::Interior& outer = in.top().interior;
+        ior = outer.ior / inner.ior;
+        dispersion = outer.dispersion / inner.dispersion;
         in.push(owner);
     }
     const Vec3& p = s.hit->position;
-    const double offset = m_geometry.self_intersection_offset(p);
-    ++ctx.rays.secondary;
-    if (std::fabs(ior - 1.0) < kPovEpsilon) {
+    if (std::fabs(ior - 1.0) < kPovEpsilon && std::fabs(dispersion - 1.0) < kPovEpsilon) {
         // POV-Ray compat: light passing straight through continues the same ray (no new trace level).
-        const geometry::Ray ray{p, s.direction, offset, 1e30, geometry::RayKind::Camera};
+        ++ctx.rays.secondary;
+        const geometry::Ray ray{p, s.direction, m_geometry.self_intersection_offset(p), 1e30,
+                                geometry::RayKind::Camera};
         return trace(ray, next, true, ctx);
     }
+    if (std::fabs(dispersion - 1.0) < kPovEpsilon)
+        return refract_ray(s, n, ior, weight, finish, state, next, total_internal, ctx);
+    // A ray already split keeps its band; white light splits here.
+    if (state.band.monochromatic())
+        return refract_ray(s, n, photons::dispersion_ior(ior, dispersion, state.band), weight, finish, state, next,
+                           total_internal, ctx);
+    return refract_dispersive(s, n, ior, dispersion, bands, weight, finish, state, next, ctx);
+}
+
+Vec3 Integrator::refract_ray(const Surface& s, const Vec3& n, double ior, double weight, const scene::Finish& finish,
+                             const RayState& state, RayState& next, bool& total_internal, TraceContext& ctx) const {
+    ++ctx.rays.secondary;
     // Snell's law in vector form (Heckbert 1989): t = η·d + (η cos i − sqrt(1 + η²(cos² i − 1)))·n.
     double cos_n = dot(s.direction, n);
     Vec3 local = -n;
@@ -346,9 +368,28 @@ Vec3 Integrator::refract(const Surface& s, const Vec3& n, double weight, const s
         total_internal = true;
         return reflect(s, n, weight, finish, state, ctx);
     }
+    const Vec3& p = s.hit->position;
     const Vec3 d = s.direction * ior + local * (ior * cos_n - std::sqrt(t));
-    const geometry::Ray ray{p, normalize(d), offset, 1e30, geometry::RayKind::Camera};
+    const geometry::Ray ray{p, normalize(d), m_geometry.self_intersection_offset(p), 1e30, geometry::RayKind::Camera};
     return trace(ray, next, false, ctx);
+}
+
+Vec3 Integrator::refract_dispersive(const Surface& s, const Vec3& n, double ior, double dispersion, int bands,
+                                    double weight, const scene::Finish& finish, const RayState& state,
+                                    RayState& next, TraceContext& ctx) const {
+    // POV-Ray's ComputeRefraction with dispersion: one ray per band, its colour weighted by the band's hue, the
+    // sum divided by the band count (the hues of all bands average to white).
+    Vec3 sum;
+    for (int i = 0; i < bands; ++i) {
+        next.band = photons::SpectralBand{i, bands};
+        bool reflected = false;  // POV-Ray compat: a band's total internal reflection is not reported upward
+        const Vec3 c = refract_ray(s, n, photons::dispersion_ior(ior, dispersion, next.band), weight, finish, state,
+                                   next, reflected, ctx);
+        sum += c * photons::band_hue(next.band);
+    }
+    // POV-Ray compat: the sum of the bands is a colour without a transmit channel, so no background shows through.
+    ctx.transmit = 0.0;
+    return sum / static_cast<double>(bands);
 }
 
 }  // namespace wardray::lighting

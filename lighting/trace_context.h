@@ -1,4 +1,4 @@
-// What travels with a ray through the integrator's recursion: its trace level, weight and interiors, and the
+// What travels with a ray through the integrator's recursion: its trace level, weight, band and interiors, and the
 // worker's counters and cache view.
 #pragma once
 
@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/vec3.h"
+#include "photons/dispersion.h"
 
 namespace wardray::scene {
 struct Scene;
@@ -90,6 +91,9 @@ struct RayState {
     /// the rays they refract or transmit; reflected and gather rays see it opaque).
     bool alpha_background = false;
     std::uint64_t path_seed = 0;  ///< reference mode: tells the independent paths of one pixel apart
+    /// The spectral band of a ray that a dispersive surface split (POV-Ray's SpectralBand): later dispersive
+    /// surfaces bend it by its band's index instead of splitting it again. White light until then.
+    photons::SpectralBand band;
     InteriorStack interiors;
 };
 

@@ -1,4 +1,5 @@
 // Appearance: colours (with POV-Ray's promotion rules), finishes, textures, interiors, #default.
+#include <algorithm>
 #include <cmath>
 
 #include "parser/keyword_table.h"
@@ -414,9 +415,19 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/, const Interi
         } else if (t.text == "caustics") {
             // POV-Ray keeps the value times 45, the exponent of its fake-caustics term.
             in.caustics = parse_float() * 45.0;
-        } else if (t.text == "dispersion" || t.text == "dispersion_samples") {
-            warn_unsupported(t, "interior " + t.text);
-            parse_float();
+        } else if (t.text == "dispersion") {
+            // A ratio of indices: zero or less would make every band's index infinite or undefined.
+            const double d = parse_float();
+            if (d > 0.0) in.dispersion = d;
+            else warn(t, "dispersion must be positive; ignored");
+        } else if (t.text == "dispersion_samples") {
+            // POV-Ray truncates the value, then requires 2 at least; a bound keeps a hostile count from stalling
+            // every ray that crosses the interior.
+            constexpr double kMaxSamples = 1000.0;
+            const double n = std::trunc(parse_float());
+            if (!(n >= 2.0)) fail(t, "Dispersion samples minimum is 2.");
+            if (n > kMaxSamples) warn(t, "dispersion_samples above 1000 limited to 1000");
+            in.dispersion_samples = static_cast<int>(std::min(n, kMaxSamples));
         } else if (t.text == "refraction") {
             // POV-Ray compat: still read, with POV-Ray's warning; it scales the refracted light (1 changes nothing).
             const double amount = parse_float();

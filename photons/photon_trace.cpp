@@ -234,7 +234,7 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
         // POV-Ray compat (photons.cpp is built with PT_FILTER_BEFORE_TARGET): a pass_through object met before the
         // target lets the photon on in the same direction, filtered by its layers as a transmitted ray would be,
         // and its depth is not taken back.
-        RayIn next{hit.position, ray.dir, ray.interiors};
+        RayIn next{hit.position, ray.dir, ray.interiors, ray.band};
         const std::ptrdiff_t i = find_interior(next.interiors, leaf);
         if (i >= 0) next.interiors.erase(next.interiors.begin() + i);
         else next.interiors.push_back(&leaf);
@@ -266,30 +266,61 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
 
 bool PhotonTracer::refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw, const RayIn& ray,
                            const Vec3& colour, const Vec3& filter, double weight, Path& path) const {
-    // POV-Ray's interior bookkeeping and relative index, as for camera rays.
+    // POV-Ray's interior bookkeeping and relative index and dispersion, as for camera rays.
     const scene::Object& leaf = hit.leaf ? *hit.leaf : m_scene.objects[hit.object];
-    const double inner = leaf.interior.ior;
-    RayIn next{hit.position, ray.dir, ray.interiors};
+    const scene::Interior& inner = leaf.interior;
+    RayIn next{hit.position, ray.dir, ray.interiors, ray.band};
     auto& in = next.interiors;
-    auto top_ior = [&]() { return in.back()->interior.ior; };
-    double ior = 1.0;
+    double ior = 1.0, dispersion = 1.0;
+    int bands = inner.dispersion_samples;
     if (in.empty()) {
         in.push_back(&leaf);
-        ior = 1.0 / inner;
+        ior = 1.0 / inner.ior;
+        dispersion = 1.0 / inner.dispersion;
     } else if (scene::same_interior(*in.back(), leaf)) {
         in.pop_back();
-        ior = in.empty() ? inner : inner / top_ior();
+        if (in.empty()) {
+            ior = inner.ior;
+            dispersion = inner.dispersion;
+        } else {
+            const scene::Interior& outer = in.back()->interior;
+            ior = inner.ior / outer.ior;
+            dispersion = inner.dispersion / outer.dispersion;
+            bands = std::max(bands, outer.dispersion_samples);
+        }
     } else if (const std::ptrdiff_t i = find_interior(in, leaf); i >= 0) {
         in.erase(in.begin() + i);
-        ior = 1.0;
     } else {
-        ior = top_ior() / inner;
+        const scene::Interior& outer = in.back()->interior;
+        ior = outer.ior / inner.ior;
+        dispersion = outer.dispersion / inner.dispersion;
         in.push_back(&leaf);
     }
-    if (std::fabs(ior - 1.0) < kPovEpsilon) {
+    if (std::fabs(ior - 1.0) < kPovEpsilon && std::fabs(dispersion - 1.0) < kPovEpsilon) {
         trace(next, colour * filter, weight, path);
         return false;
     }
+    if (std::fabs(dispersion - 1.0) < kPovEpsilon)
+        return refract_ray(hit, normal, raw, ray, next, ior, colour, filter, weight, path);
+    // A photon already split keeps its band; white light splits here into one photon per band, each with its
+    // share of the colour weighted by the band's hue (POV-Ray 3.7 splits at the surface rather than giving each
+    // photon a band when it is shot).
+    if (ray.band.monochromatic())
+        return refract_ray(hit, normal, raw, ray, next, dispersion_ior(ior, dispersion, ray.band), colour, filter,
+                           weight, path);
+    for (int b = 0; b < bands; ++b) {
+        next.band = SpectralBand{b, bands};
+        const Vec3 share = colour * band_hue(next.band) / static_cast<double>(bands);
+        // POV-Ray compat: a band's total internal reflection is not reported upward.
+        (void)refract_ray(hit, normal, raw, ray, next, dispersion_ior(ior, dispersion, next.band), share, filter,
+                          weight, path);
+    }
+    return false;
+}
+
+bool PhotonTracer::refract_ray(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw, const RayIn& ray,
+                               RayIn& next, double ior, const Vec3& colour, const Vec3& filter, double weight,
+                               Path& path) const {
     // Snell's law in vector form (Heckbert 1989).
     double cos_n = dot(ray.dir, normal);
     Vec3 local = -normal;
@@ -355,7 +386,7 @@ void PhotonTracer::reflect(const geometry::Hit& hit, const Vec3& n, const Vec3& 
         if (dot(d, n) < 0.0) d = ray.dir - 2.0 * dot(ray.dir, raw) * raw;
         else d += -2.0 * k * raw;
     }
-    const RayIn next{hit.position, normalize(d), ray.interiors};
+    const RayIn next{hit.position, normalize(d), ray.interiors, ray.band};
     trace(next, colour, weight, path);
 }
 

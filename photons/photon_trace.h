@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "photons/dispersion.h"
 #include "photons/photon_map.h"
 #include "scene/scene.h"
 
@@ -62,6 +63,8 @@ private:
         /// The interiors the ray is inside, innermost last, each named by an object that has it (as
         /// lighting::InteriorStack).
         std::vector<const scene::Object*> interiors;
+        /// The photon's spectral band once a dispersive surface has split it (white light before).
+        SpectralBand band;
     };
     /// POV-Ray's PhotonTrace::TraceRay.
     void trace(const RayIn& ray, Vec3 colour, double weight, Path& path) const;
@@ -76,6 +79,10 @@ private:
     /// POV-Ray's ComputeRefractionForPhotons; true on total internal reflection.
     bool refract(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
                  const Vec3& colour, const Vec3& filter, double weight, Path& path) const;
+    /// POV-Ray's TraceRefractionRayForPhotons: `next` bent by the relative index `ior`; true on total internal
+    /// reflection, which reflects the incoming `ray` instead.
+    bool refract_ray(const geometry::Hit& hit, const Vec3& normal, const Vec3& raw_normal, const RayIn& ray,
+                     RayIn& next, double ior, const Vec3& colour, const Vec3& filter, double weight, Path& path) const;
     /// The media of the interiors the ray is in, between its origin and `hit`: they dim the photon and, past its
     /// first bounce with `media` in the photons block, keep photons along the way (ComputeLightedTexture's media).
     void through_media(const geometry::Hit& hit, const RayIn& ray, Vec3& colour, Path& path) const;

@@ -22,6 +22,11 @@ struct Interior {
     bool hollow = false;
     /// `caustics C`: POV-Ray's fake caustics, stored as POV-Ray keeps it (C · 45); 0 leaves shadows alone.
     double caustics = 0.0;
+    /// `dispersion D`: the ratio of the violet band's index to the red band's (POV-Ray spreads the index over the
+    /// spectrum as ior · D^-(λ - λc)/Δλ); 1 disperses nothing.
+    double dispersion = 1.0;
+    /// `dispersion_samples N` (at least 2): the spectral bands a ray splits into at a dispersive surface.
+    int dispersion_samples = 7;
     /// `media { }` blocks inside the object, in their order (all of them act together).
     std::vector<Media> media;
     bool operator==(const Interior&) const = default;

@@ -382,7 +382,7 @@ TEST(Directives, StringComparisonAndRand) {
 
 TEST(Directives, UnusedDeclarationsDoNotWarn) {
     Scene s = parse_ok("#declare C = finish { subsurface { translucency 0.5 } }\n"
-                       "#declare P = interior { dispersion 1.1 }\nsphere { 0, 1 }\n");
+                       "#declare P = texture { pigment { rgb 1 } no_bump_scale }\nsphere { 0, 1 }\n");
     EXPECT_TRUE(s.warnings.empty());
     s = parse_ok("#declare F = finish { subsurface { translucency 0.5 } }\n#declare G = finish { F }\n"
                  "sphere { 0, 1 finish { G } }\n");

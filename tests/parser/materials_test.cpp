@@ -199,5 +199,30 @@ TEST(Objects, MaterialRejectsWhatIsNotAMaterial) {
     EXPECT_NE(test::all_diagnostics(r).find("not a material"), std::string::npos);
 }
 
+TEST(Objects, InteriorDispersionAndItsSamples) {
+    // POV-Ray's defaults: dispersion 1 (none) over 7 bands; fewer than 2 samples is POV-Ray's error.
+    const Scene s = parse_ok("sphere { 0, 1 interior { ior 1.5 dispersion 1.1 dispersion_samples 12 } }\n"
+                             "sphere { 0, 1 interior { ior 1.5 } }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_TRUE(s.warnings.empty());
+    EXPECT_EQ(s.objects[0].interior.dispersion, 1.1);
+    EXPECT_EQ(s.objects[0].interior.dispersion_samples, 12);
+    EXPECT_EQ(s.objects[1].interior.dispersion, 1.0);
+    EXPECT_EQ(s.objects[1].interior.dispersion_samples, 7);
+    const ParseResult r = parse_string("global_settings { assumed_gamma 1 }\n"
+                                       "sphere { 0, 1 interior { dispersion_samples 1 } }\n",
+                                       "test.pov", test::default_options());
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(test::all_diagnostics(r).find("Dispersion samples minimum is 2."), std::string::npos);
+    // POV-Ray truncates first: 1.9 is 1, too few.
+    EXPECT_FALSE(parse_string("sphere { 0, 1 interior { dispersion_samples 1.9 } }\n", "test.pov",
+                              test::default_options()).ok());
+    const Scene many = parse_ok("sphere { 0, 1 interior { dispersion_samples 1e12 } }\n");
+    EXPECT_EQ(many.objects[0].interior.dispersion_samples, 1000);
+    const Scene zero = parse_ok("sphere { 0, 1 interior { dispersion 0 } }\n");
+    EXPECT_EQ(zero.objects[0].interior.dispersion, 1.0);
+    ASSERT_EQ(zero.warnings.size(), 1u);
+}
+
 }  // namespace
 }  // namespace wardray::parser

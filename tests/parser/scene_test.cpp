@@ -312,8 +312,8 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     const Scene s = parse_ok(R"(
         sphere { 0, 1 finish { subsurface { translucency 0.5 } } }
         sphere { 0, 2 finish { subsurface { translucency 0.5 } } }
-        sphere { 0, 1 interior { dispersion 1.1 } }
-        #declare Thing = sphere { 0, 1 interior { dispersion_samples 7 } }
+        #declare Thing = sphere { 0, 1 texture { pigment { rgb 1 } no_bump_scale } }
+        object { Thing }
         object { Thing }
         box { 0, 1 }
     )");
@@ -321,8 +321,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
     const std::vector<std::string> expected = {"subsurface is not rendered yet",
-                                               "interior dispersion is not rendered yet",
-                                               "interior dispersion_samples is not rendered yet"};
+                                               "no_bump_scale is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
     EXPECT_EQ(s.warnings[0].loc.column, 32u);

@@ -225,6 +225,18 @@ TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
     EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
 }
 
+TEST(Cli, DispersionGivesTheSameImageForAnyThreadCount) {
+    // Photons split into bands at the prism in parallel rows, and camera rays split into bands through it.
+    const fs::path dir = work_dir("dispersion_threads");
+    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "prism_dispersion.pov", dir / "p.pov",
+                  fs::copy_options::overwrite_existing);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT1 -o one.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o two.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o again.hdr", dir).exit_status, 0);
+    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
+    EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
+}
+
 // One stochastic part of a render each: --seed must move its samples, keep the image for any thread count, and leave
 // the default image alone at 0.
 struct SeedCase {
