@@ -2,10 +2,8 @@
 // by dispersion^±½, and photons split by a dispersive target keep the light's flux and are the same for any thread
 // count.
 #include <gtest/gtest.h>
-#include <tbb/task_arena.h>
 
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <string>
 
@@ -14,6 +12,7 @@
 #include "photons/dispersion.h"
 #include "photons/photon_map.h"
 #include "photons/photon_shooter.h"
+#include "same_map.h"
 
 namespace wardray::photons {
 namespace {
@@ -100,18 +99,7 @@ plane { y, 0 pigment { rgb 1 } }
 sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1.5 dispersion 1.2 dispersion_samples 5 }
          photons { target } }
 )");
-    const geometry::SceneGeometry geometry(scene);
-    auto shoot = [&](int threads) {
-        PhotonStats stats;
-        std::unique_ptr<const PhotonMap> map;
-        tbb::task_arena(threads).execute([&] { map = shoot_photons(scene, geometry, stats); });
-        return map;
-    };
-    const auto one = shoot(1);
-    const auto two = shoot(2);
-    ASSERT_TRUE(one && two);
-    ASSERT_EQ(one->size(), two->size());
-    EXPECT_EQ(std::memcmp(one->photons().data(), two->photons().data(), one->size() * sizeof(Photon)), 0);
+    test::expect_same_map_for_one_and_two_threads(scene);
 }
 
 }  // namespace

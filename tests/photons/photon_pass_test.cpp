@@ -11,6 +11,7 @@
 #include "geometry/scene_geometry.h"
 #include "photons/photon_map.h"
 #include "photons/photon_shooter.h"
+#include "same_map.h"
 
 namespace wardray::photons {
 namespace {
@@ -74,18 +75,7 @@ box { <-4, 5, -4>, <4, 5.1, 4> pigment { rgbf <1, 0.5, 0.25, 1> } photons { pass
 
 TEST(PhotonPass, SameMapForAnyNumberOfThreads) {
     const scene::Scene scene = parser::test::parse_ok(kClearTarget);
-    const geometry::SceneGeometry geometry(scene);
-    auto shoot = [&](int threads) {
-        PhotonStats stats;
-        std::unique_ptr<const PhotonMap> map;
-        tbb::task_arena(threads).execute([&] { map = shoot_photons(scene, geometry, stats); });
-        return map;
-    };
-    const auto one = shoot(1);
-    const auto two = shoot(2);
-    ASSERT_TRUE(one && two);
-    ASSERT_EQ(one->size(), two->size());
-    EXPECT_EQ(std::memcmp(one->photons().data(), two->photons().data(), one->size() * sizeof(Photon)), 0);
+    test::expect_same_map_for_one_and_two_threads(scene);
 }
 
 TEST(PhotonPass, NoTargetNoPhotons) {

@@ -210,16 +210,23 @@ TEST(Cli, RandomMediaSamplingGivesTheSameImageForAnyThreadCount) {
     EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
 }
 
-TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
-    // The photon pass shoots rows in parallel, each seeded by its unit and index, and builds one map in row order.
-    const fs::path dir = work_dir("photon_threads");
-    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "photons.pov", dir / "p.pov",
+// Renders scenes/parity/`scene` at 64x48 with 1 thread (adding `first_extra` to that run's switches), then twice
+// with 2, and expects the three images byte-identical.
+void expect_same_image_for_threads_and_runs(const std::string& scene, const fs::path& dir,
+                                            const std::string& first_extra = "") {
+    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / scene, dir / "p.pov",
                   fs::copy_options::overwrite_existing);
-    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT1 -o one.hdr --stats s.json", dir).exit_status, 0);
+    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT1 -o one.hdr " + first_extra, dir).exit_status, 0);
     ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o two.hdr", dir).exit_status, 0);
     ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o again.hdr", dir).exit_status, 0);
     EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
     EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
+}
+
+TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
+    // The photon pass shoots rows in parallel, each seeded by its unit and index, and builds one map in row order.
+    const fs::path dir = work_dir("photon_threads");
+    expect_same_image_for_threads_and_runs("photons.pov", dir, "--stats s.json");
     const auto stats = nlohmann::json::parse(read_file(dir / "s.json"));
     EXPECT_EQ(stats["photons"]["units"].get<int>(), 2);
     EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
@@ -227,14 +234,7 @@ TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
 
 TEST(Cli, DispersionGivesTheSameImageForAnyThreadCount) {
     // Photons split into bands at the prism in parallel rows, and camera rays split into bands through it.
-    const fs::path dir = work_dir("dispersion_threads");
-    fs::copy_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "prism_dispersion.pov", dir / "p.pov",
-                  fs::copy_options::overwrite_existing);
-    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT1 -o one.hdr", dir).exit_status, 0);
-    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o two.hdr", dir).exit_status, 0);
-    ASSERT_EQ(wardray("p.pov +W64 +H48 +FH +WT2 -o again.hdr", dir).exit_status, 0);
-    EXPECT_EQ(read_file(dir / "one.hdr"), read_file(dir / "two.hdr"));
-    EXPECT_EQ(read_file(dir / "two.hdr"), read_file(dir / "again.hdr"));
+    expect_same_image_for_threads_and_runs("prism_dispersion.pov", work_dir("dispersion_threads"));
 }
 
 // One stochastic part of a render each: --seed must move its samples, keep the image for any thread count, and leave

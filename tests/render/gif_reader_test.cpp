@@ -31,6 +31,17 @@ std::vector<std::uint8_t> pack(const std::vector<std::pair<int, int>>& codes) {
     return blocks;
 }
 
+// Appends the image data (`codes` packed), the trailer, and writes `f` to the temporary folder as `name`.
+fs::path finish_gif(std::vector<std::uint8_t>& f, const std::vector<std::pair<int, int>>& codes,
+                    const std::string& name) {
+    const std::vector<std::uint8_t> data = pack(codes);
+    f.insert(f.end(), data.begin(), data.end());
+    f.push_back(';');
+    const fs::path path = fs::temp_directory_path() / name;
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(f.data()), static_cast<std::streamsize>(f.size()));
+    return path;
+}
+
 // A GIF89a of w × h with a 4-entry global table, a comment extension, and the image (local table if asked).
 fs::path write_gif(const std::string& name, int w, int h, const std::vector<std::pair<int, int>>& codes,
                    bool interlaced = false, bool local_table = false) {
@@ -46,12 +57,7 @@ fs::path write_gif(const std::string& name, int w, int h, const std::vector<std:
     if (local_table)
         for (int i = 0; i < 12; ++i) f.push_back(7);
     f.push_back(2);  // minimum code size: codes 0..3, clear 4, end 5
-    const std::vector<std::uint8_t> data = pack(codes);
-    f.insert(f.end(), data.begin(), data.end());
-    f.push_back(';');
-    const fs::path path = fs::temp_directory_path() / name;
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(f.data()), static_cast<std::streamsize>(f.size()));
-    return path;
+    return finish_gif(f, codes, name);
 }
 
 TEST(GifReader, DecodesLiteralsClearCodesAndTheCodeBeingDefined) {
@@ -112,12 +118,7 @@ fs::path write_placed_gif(const std::string& name, int transparent, const std::v
         codes.push_back({i, 3});
     }
     codes.push_back({5, 3});
-    const std::vector<std::uint8_t> data = pack(codes);
-    f.insert(f.end(), data.begin(), data.end());
-    f.push_back(';');
-    const fs::path path = fs::temp_directory_path() / name;
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(f.data()), static_cast<std::streamsize>(f.size()));
-    return path;
+    return finish_gif(f, codes, name);
 }
 
 // Read without OpenImageIO, a GIF image map gives exactly what OpenImageIO gives: the same colours, alpha and flags.
