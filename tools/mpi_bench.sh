@@ -2,6 +2,9 @@
 # Wall time of 1 rank against 2 ranks (1 thread each) on POV-Ray's cornell.pov with its radiosity (256x256) and
 # on a direct-light scene (advanced/woodbox.pov, 640x480 +A0.3), the two rank counts alternating; prints each run,
 # the medians and their ratio, and checks that the images are byte-identical. Usage: tools/mpi_bench.sh BIN [RUNS]
+# It also measures the machine's own ceiling for two processes: a plain single-thread render alone, and two of them
+# started together (the slower one's wall time). 2 x alone / pair is the speed-up that perfectly independent halves
+# of the same work would get on these two cores, which slow each other down when both are busy.
 set -euo pipefail
 bin=$(realpath "${1:?usage: tools/mpi_bench.sh path/to/wardray [runs]}")
 runs=${2:-5}
@@ -21,6 +24,17 @@ for ((r = 1; r <= runs; r++)); do
       $mpirun -np $np "$bin" ${args[$scene]} -o "$work/$scene$np.png" > /dev/null 2>&1
       echo "$scene $np $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')" | tee -a "$work/times"
     done
+    start=$(date +%s.%N)
+    # shellcheck disable=SC2086
+    "$bin" ${args[$scene]} -o "$work/${scene}A.png" > /dev/null 2>&1
+    echo "$scene alone $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')" | tee -a "$work/times"
+    start=$(date +%s.%N)
+    # shellcheck disable=SC2086
+    "$bin" ${args[$scene]} -o "$work/${scene}P1.png" > /dev/null 2>&1 &
+    # shellcheck disable=SC2086
+    "$bin" ${args[$scene]} -o "$work/${scene}P2.png" > /dev/null 2>&1
+    wait
+    echo "$scene pair $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')" | tee -a "$work/times"
   done
 done
 median() { awk -v s="$1" -v n="$2" '$1 == s && $2 == n { print $3 }' "$work/times" | sort -g |
@@ -31,4 +45,8 @@ for scene in cornell woodbox; do
   m2=$(median "$scene" 2)
   printf "%s: 1 rank %.2f s, 2 ranks %.2f s (medians), speed-up %.2f, images %s\n" "$scene" "$m1" "$m2" \
     "$(awk -v a="$m1" -v b="$m2" 'BEGIN { print a / b }')" "$same"
+  ma=$(median "$scene" alone)
+  mp=$(median "$scene" pair)
+  printf "%s: plain render alone %.2f s, two at once %.2f s (medians): the machine's ceiling for 2 processes %.2f\n" \
+    "$scene" "$ma" "$mp" "$(awk -v a="$ma" -v b="$mp" 'BEGIN { print 2 * a / b }')"
 done
