@@ -13,6 +13,7 @@
 
 #include "app/app.h"
 #include "app/partial_render.h"
+#include "app/photon_file_io.h"
 #include "app/process_limits.h"
 #include "app/read_policy.h"
 #include "camera/camera.h"
@@ -347,7 +348,12 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
             if (const auto first = model.ray(i % options.width + 0.5, i / options.width + 0.5))
                 settings.camera_origin = first->origin;
     }
-    // The photon pass runs here, in the integrator's construction, when the scene has a photons block.
+    // The photon pass runs here, in the integrator's construction, when the scene has a photons block; a
+    // load_file replaces it with the photons of an earlier render, a save_file keeps them for write_outputs.
+    if (scene.global.photons && !scene.global.photons->file.empty()) {
+        if (scene.global.photons->load) settings.photons_from_file = load_photon_file(scene.global.photons->file);
+        else settings.keep_shot_photons = true;
+    }
     illumination.integrator = std::make_unique<lighting::Integrator>(scene, geometry, settings);
     for (const std::string& limitation : illumination.integrator->limitations())
         std::cerr << options.scene.string() << ": warning: " << limitation << "\n";
@@ -407,6 +413,9 @@ bool write_outputs(const Job& job, const scene::Scene& scene, const Illumination
                    mark_records(result.film, scene, illumination.cache.get(), options.width, options.height)))
         return false;
     if (illumination.cache && options.radiosity_save && !save_cache_file(*illumination.cache, illumination.cache_file))
+        return false;
+    if (const photons::ShotPhotons* shot = illumination.integrator->shot_photons();
+        shot && !save_photon_file(*shot, scene.global.photons->file))
         return false;
     return true;
 }

@@ -120,7 +120,13 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         // The photon pass, before any pixel: its map lights diffuse surfaces, and shadows through the targets that
         // shot it turn black (LightSampler).
         m_photon_stats = std::make_unique<photons::PhotonStats>();
-        m_photons = photons::shoot_photons(scene, geometry, *m_photon_stats, &m_media_photons, nullptr, options.seed);
+        photons::ShotPhotons shot =
+            options.photons_from_file
+                ? *options.photons_from_file
+                : photons::shoot_photon_sets(scene, geometry, *m_photon_stats, nullptr, options.seed);
+        if (options.keep_shot_photons) m_shot_photons = std::make_unique<const photons::ShotPhotons>(shot);
+        m_photons = photons::build_photon_maps(std::move(shot), *scene.global.photons, *m_photon_stats,
+                                               &m_media_photons, options.seed);
         if (m_photons) m_lights.use_photon_shadows();
         if (m_media_photons) m_media_gather = std::make_unique<const photons::MediaPhotonGather>(*m_media_photons);
         for (const scene::Light& light : scene.lights)

@@ -31,6 +31,7 @@ class PhotonMap;
 class MediaPhotonGather;
 struct Gathered;
 struct PhotonStats;
+struct ShotPhotons;
 }  // namespace wardray::photons
 
 namespace wardray::lighting {
@@ -57,6 +58,10 @@ struct IntegratorOptions {
     bool output_alpha = false;
     /// +Q: POV-Ray's quality level, 0..11 (lighting/quality.h); 9 and above render everything.
     int quality = 9;
+    /// The photons of a photon `load_file`, built into the maps instead of shooting (null: shoot).
+    std::shared_ptr<const photons::ShotPhotons> photons_from_file;
+    /// Keep what the photon pass stored, for a photon `save_file` (shot_photons()).
+    bool keep_shot_photons = false;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it
@@ -81,6 +86,8 @@ public:
 
     /// What the photon pass did (null without photons in the scene).
     const photons::PhotonStats* photon_stats() const { return m_photon_stats.get(); }
+    /// What the photon pass stored, when keep_shot_photons asked for it (else null).
+    const photons::ShotPhotons* shot_photons() const { return m_shot_photons.get(); }
 
 private:
     /// Where a texture is being shaded: the surface point, its normals and the ray that found it.
@@ -176,6 +183,7 @@ private:
     std::unique_ptr<const photons::PhotonMap> m_media_photons;  ///< the photons kept in media, or null
     std::unique_ptr<const photons::MediaPhotonGather> m_media_gather;  ///< reads m_media_photons for media/
     std::unique_ptr<photons::PhotonStats> m_photon_stats;
+    std::unique_ptr<const photons::ShotPhotons> m_shot_photons;  ///< kept for a photon save_file
     InteriorStack m_camera_interiors;  ///< the objects the camera is inside: camera rays start in them
     std::vector<std::string> m_limitations;
 };

@@ -140,12 +140,11 @@ void SceneReader::parse_photons(const Token& kw, PhotonSettings& ph) {
                                         : std::string("Cannot both load and save photon map. Now switching to ") +
                                               (load ? "load" : "save") + " mode.");
             const Token name_tok = peek();
-            ph.file = parse_string();
+            // Kept as found from the scene's folder, where the render reads or writes it (app/photon_file_io.cpp).
+            ph.file = scene_relative(parse_string()).string();
             ph.load = load;
-            // Not read or written yet, but confined already, as every file a scene names.
-            if (load) require_readable(name_tok, scene_relative(ph.file), "photons load_file");
-            else require_writable(name_tok, scene_relative(ph.file));
-            warn_unsupported(t, "photons " + w);
+            if (load) require_readable(name_tok, ph.file, "photons load_file");
+            else require_writable(name_tok, ph.file);
         } else {
             if (!is_keyword(w) && lookup(w) == nullptr) fail_undeclared(t);
             fail(t, "expected a photons setting but found '" + w + "'");

@@ -213,9 +213,8 @@ bool photons_replace_shadow(const scene::Object& blocker, const scene::Light& li
            (b.refraction == scene::PhotonSwitch::On || light.photon_refraction == scene::PhotonSwitch::On);
 }
 
-std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
-                                               PhotonStats& stats, std::unique_ptr<const PhotonMap>* media_map,
-                                               void (*progress)(std::uint64_t), std::uint64_t seed) {
+ShotPhotons shoot_photon_sets(const scene::Scene& scene, const geometry::SceneGeometry& geometry, PhotonStats& stats,
+                              void (*progress)(std::uint64_t), std::uint64_t seed) {
     const auto t0 = std::chrono::steady_clock::now();
     const scene::PhotonSettings& settings = *scene.global.photons;
     // The units: every global light but fill lights, with every target, in scene order (POV-Ray 3.7 shoots no
@@ -274,26 +273,45 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
             if (progress) progress(photons.size() + media_photons.size());
         }
     }
-    stats.stored = photons.size();
-    stats.media_stored = media_photons.size();
+    stats.shoot_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ShotPhotons shot;
+    shot.surface = std::move(photons);
+    shot.media = std::move(media_photons);
+    shot.surface_offset = tracer.surface_offset();
+    shot.media_offset = tracer.media_offset();
+    shot.spacing = spacing;
+    return shot;
+}
+
+std::unique_ptr<const PhotonMap> build_photon_maps(ShotPhotons shot, const scene::PhotonSettings& settings,
+                                                   PhotonStats& stats, std::unique_ptr<const PhotonMap>* media_map,
+                                                   std::uint64_t seed) {
     const auto t1 = std::chrono::steady_clock::now();
-    stats.shoot_seconds = std::chrono::duration<double>(t1 - t0).count();
+    stats.stored = shot.surface.size();
+    stats.media_stored = shot.media.size();
+    stats.spacing = shot.spacing;
     if (media_map) {
         media_map->reset();
-        if (!media_photons.empty()) {
-            *media_map = std::make_unique<const PhotonMap>(std::move(media_photons), settings, true, seed,
-                                                             tracer.media_offset());
+        if (!shot.media.empty()) {
+            *media_map = std::make_unique<const PhotonMap>(std::move(shot.media), settings, true, seed,
+                                                             shot.media_offset);
             stats.media_gather_radius = (*media_map)->min_gather_radius();
         }
     }
     std::unique_ptr<const PhotonMap> map;
-    if (!photons.empty()) {
-        map = std::make_unique<const PhotonMap>(std::move(photons), settings, false, seed,
-                                             tracer.surface_offset());
+    if (!shot.surface.empty()) {
+        map = std::make_unique<const PhotonMap>(std::move(shot.surface), settings, false, seed, shot.surface_offset);
         stats.gather_radius = map->min_gather_radius();
     }
     stats.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     return map;
+}
+
+std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const geometry::SceneGeometry& geometry,
+                                               PhotonStats& stats, std::unique_ptr<const PhotonMap>* media_map,
+                                               void (*progress)(std::uint64_t), std::uint64_t seed) {
+    return build_photon_maps(shoot_photon_sets(scene, geometry, stats, progress, seed), *scene.global.photons, stats,
+                             media_map, seed);
 }
 
 }  // namespace wardray::photons

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "photons/photon_file.h"
 #include "photons/photon_map.h"
 #include "scene/scene.h"
 
@@ -39,6 +40,16 @@ std::unique_ptr<const PhotonMap> shoot_photons(const scene::Scene& scene, const 
                                                PhotonStats& stats,
                                                std::unique_ptr<const PhotonMap>* media_map = nullptr,
                                                void (*progress)(std::uint64_t) = nullptr, std::uint64_t seed = 0);
+
+/// The shooting part of shoot_photons: the photons stored on surfaces and in media, in the order stored.
+ShotPhotons shoot_photon_sets(const scene::Scene& scene, const geometry::SceneGeometry& geometry, PhotonStats& stats,
+                              void (*progress)(std::uint64_t) = nullptr, std::uint64_t seed = 0);
+/// The maps part: the surface map (null when `shot` has no surface photon) and, into `media_map` when given, the
+/// media map, from photons shot now or read from a file (`load_file`), the same maps either way.
+std::unique_ptr<const PhotonMap> build_photon_maps(ShotPhotons shot, const scene::PhotonSettings& settings,
+                                                   PhotonStats& stats,
+                                                   std::unique_ptr<const PhotonMap>* media_map = nullptr,
+                                                   std::uint64_t seed = 0);
 
 /// POV-Ray's ComputeShadowColour test: with a photon map, a shadow ray through `blocker` (a target that refracts
 /// photons of `light`) is black, since the photons carry that light.

@@ -232,6 +232,45 @@ TEST(Cli, PhotonsGiveTheSameImageForAnyThreadCount) {
     EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
 }
 
+TEST(Cli, PhotonSaveFileThenLoadFileGiveTheImageOfShooting) {
+    // save_file writes what the pass stored; load_file builds the same maps from it without shooting. A damaged
+    // file is not used (a warning) and the photons are shot instead.
+    const fs::path dir = work_dir("photon_file");
+    const std::string scene = read_file(fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "parity" / "photons.pov");
+    const std::string block = "photons { spacing 0.006 jitter 0 autostop 0";
+    const auto at = scene.find(block);
+    ASSERT_NE(at, std::string::npos);
+    auto with = [&](const std::string& file_item) {
+        std::string s = scene;
+        s.insert(at + block.size(), " " + file_item);
+        return s;
+    };
+    write_file(dir / "shoot.pov", scene);
+    write_file(dir / "save.pov", with("save_file \"p.ph\""));
+    write_file(dir / "load.pov", with("load_file \"p.ph\""));
+    fs::remove(dir / "p.ph");
+    ASSERT_EQ(wardray("shoot.pov +W64 +H48 +FH -o shoot.hdr", dir).exit_status, 0);
+    ASSERT_EQ(wardray("save.pov +W64 +H48 +FH -o save.hdr", dir).exit_status, 0);
+    ASSERT_TRUE(fs::exists(dir / "p.ph"));
+    const auto loaded = wardray("load.pov +W64 +H48 +FH -o load.hdr --stats s.json", dir);
+    ASSERT_EQ(loaded.exit_status, 0) << loaded.output;
+    EXPECT_EQ(loaded.output.find("photon"), std::string::npos) << loaded.output;
+    const auto stats = nlohmann::json::parse(read_file(dir / "s.json"));
+    EXPECT_EQ(stats["photons"]["shot"].get<std::uint64_t>(), 0u);
+    EXPECT_GT(stats["photons"]["stored"].get<std::uint64_t>(), 10000u);
+    EXPECT_EQ(read_file(dir / "save.hdr"), read_file(dir / "shoot.hdr"));
+    EXPECT_EQ(read_file(dir / "load.hdr"), read_file(dir / "shoot.hdr"));
+
+    const std::string bytes = read_file(dir / "p.ph");
+    write_file(dir / "p.ph", bytes.substr(0, bytes.size() / 2));
+    const auto damaged = wardray("load.pov +W64 +H48 +FH -o damaged.hdr", dir);
+    ASSERT_EQ(damaged.exit_status, 0) << damaged.output;
+    EXPECT_NE(damaged.output.find("photon file '"), std::string::npos) << damaged.output;
+    EXPECT_NE(damaged.output.find("not used: the file is cut short; shooting photons"), std::string::npos)
+        << damaged.output;
+    EXPECT_EQ(read_file(dir / "damaged.hdr"), read_file(dir / "shoot.hdr"));
+}
+
 TEST(Cli, DispersionGivesTheSameImageForAnyThreadCount) {
     // Photons split into bands at the prism in parallel rows, and camera rays split into bands through it.
     expect_same_image_for_threads_and_runs("prism_dispersion.pov", work_dir("dispersion_threads"));
