@@ -3,10 +3,9 @@
 
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <string>
 
-#include "render/film.h"
+#include "app/whole_file.h"
 
 namespace wardray::app {
 
@@ -26,18 +25,7 @@ std::shared_ptr<const photons::ShotPhotons> load_photon_file(const std::filesyst
 }
 
 bool save_photon_file(const photons::ShotPhotons& shot, const std::filesystem::path& file) {
-    auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
-        std::ofstream out(tmp, std::ios::binary);
-        photons::write_photon_file(out, shot);
-        out.close();
-        if (!out) return std::string("write failed");
-        return std::nullopt;
-    };
-    if (const auto error = render::write_atomically(file, write)) {
-        std::cerr << "wardray: error: photon file: " << *error << "\n";
-        return false;
-    }
-    return true;
+    return write_whole_file(file, "photon file", [&](std::ostream& out) { photons::write_photon_file(out, shot); });
 }
 
 }  // namespace wardray::app

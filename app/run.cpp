@@ -16,6 +16,7 @@
 #include "app/photon_file_io.h"
 #include "app/process_limits.h"
 #include "app/read_policy.h"
+#include "app/whole_file.h"
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
@@ -206,18 +207,7 @@ render::Film mark_records(const render::Film& film, const scene::Scene& scene,
 
 // +RFO: every record of the cache into the radiosity file, whole or not at all.
 bool save_cache_file(const cache::IrradianceCache& irradiance_cache, const fs::path& file) {
-    auto write_cache = [&](const fs::path& tmp) -> std::optional<std::string> {
-        std::ofstream f(tmp, std::ios::binary);
-        irradiance_cache.save(f);
-        f.close();
-        if (!f) return std::string("write failed");
-        return std::nullopt;
-    };
-    if (const auto error = render::write_atomically(file, write_cache)) {
-        std::cerr << "wardray: error: radiosity file: " << *error << "\n";
-        return false;
-    }
-    return true;
+    return write_whole_file(file, "radiosity file", [&](std::ostream& out) { irradiance_cache.save(out); });
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 // --stats: the run's phase times, passes, rays and cache figures as a JSON file.
 #include "app/stats.h"
 
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "app/whole_file.h"
 #include "photons/photon_shooter.h"
 
 namespace wardray::app {
@@ -114,18 +114,7 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
                             {"media_gather_radius", ph->media_gather_radius},
                             {"shoot_seconds", ph->shoot_seconds}, {"build_seconds", ph->build_seconds}};
     if (!result.ranks.empty()) stats["processes"] = process_stats(result);
-    auto write = [&](const std::filesystem::path& tmp) -> std::optional<std::string> {
-        std::ofstream f(tmp);
-        f << stats.dump(2) << "\n";
-        f.close();
-        if (!f) return std::string("write failed");
-        return std::nullopt;
-    };
-    if (const auto error = render::write_atomically(path, write)) {
-        std::cerr << "wardray: error: statistics: " << *error << "\n";
-        return false;
-    }
-    return true;
+    return write_whole_file(path, "statistics", [&](std::ostream& out) { out << stats.dump(2) << "\n"; });
 }
 
 }  // namespace wardray::app
