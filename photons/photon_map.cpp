@@ -109,33 +109,86 @@ void PhotonMap::build(int begin, int end) {
     build(mid + 1, end);
 }
 
-void PhotonMap::search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
-                       std::vector<std::pair<double, const Photon*>>& heap) const {
-    if (end - begin < 1) return;
-    const int mid = (begin + end - 1) / 2;
-    const Photon& ph = m_photons[mid];
-    const Vec3 v = ph.point() - p;
-    double d2 = dot(v, v);
-    // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
-    if (n) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
-    if (d2 < max_d2) {
-        heap.emplace_back(d2, &ph);
-        std::push_heap(heap.begin(), heap.end());
-        if (heap.size() > limit) {
-            std::pop_heap(heap.begin(), heap.end());
-            heap.pop_back();
-            max_d2 = heap.front().first;
-        }
+namespace {
+
+/// A candidate photon: its (flattened) squared distance, then its address, which breaks ties the same on every run.
+using Candidate = std::pair<double, const Photon*>;
+
+/// Moves the heap's new top down to its place (a max-heap on Candidate's order).
+void sift_down(Candidate* heap, std::size_t size) {
+    std::size_t i = 0;
+    for (;;) {
+        const std::size_t left = 2 * i + 1;
+        if (left >= size) return;
+        std::size_t largest = left;
+        if (left + 1 < size && heap[largest] < heap[left + 1]) largest = left + 1;
+        if (!(heap[i] < heap[largest])) return;
+        std::swap(heap[i], heap[largest]);
+        i = largest;
     }
-    const int axis = ph.axis;
-    const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
-    const bool below = delta < 0.0;
-    // The near side first, then the far side while the splitting plane is within reach.
-    if (below) search(begin, mid, p, n, max_d2, limit, heap);
-    else search(mid + 1, end, p, n, max_d2, limit, heap);
-    if (delta * delta < max_d2) {
-        if (below) search(mid + 1, end, p, n, max_d2, limit, heap);
-        else search(begin, mid, p, n, max_d2, limit, heap);
+}
+
+}  // namespace
+
+void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+                       std::vector<Candidate>& heap) const {
+    // Depth first, near side first, as a recursion would (the order decides which of two photons at exactly the
+    // same distance is kept). A far side is visited only while its cell is within reach: the squared distance from
+    // p to the cell, kept per axis as the walk goes down (Arya & Mount 1993, "Algorithms for fast vector
+    // quantization": incremental distance), prunes more than the distance to the one splitting plane. Pruning
+    // skips only photons that could not be kept, so the photons found are the same. The tree is balanced, so 64
+    // levels hold any map.
+    struct Cell {
+        int begin, end;
+        double d2;          // squared distance from p to the cell
+        double offset[3];   // p's distance outside the cell along each axis
+    };
+    Cell pending[64];
+    int n_pending = 0;
+    Cell cell{0, static_cast<int>(m_photons.size()), 0.0, {0.0, 0.0, 0.0}};
+    for (;;) {
+        while (cell.end - cell.begin >= 1) {
+            const int mid = (cell.begin + cell.end - 1) / 2;
+            const Photon& ph = m_photons[mid];
+            const Vec3 v = ph.point() - p;
+            double d2 = dot(v, v);
+            // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
+            if (n && d2 < max_d2) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
+            if (d2 < max_d2) {
+                const Candidate c{d2, &ph};
+                if (heap.size() < limit) {
+                    heap.push_back(c);
+                    std::push_heap(heap.begin(), heap.end());
+                } else {
+                    // One more than the limit in reach: keep the nearest `limit` (the new photon replaces the
+                    // farthest when it is nearer), and from now on reach only as far as the farthest kept.
+                    if (c < heap.front()) {
+                        heap.front() = c;
+                        sift_down(heap.data(), heap.size());
+                    }
+                    max_d2 = heap.front().first;
+                }
+            }
+            const int axis = ph.axis;
+            const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
+            Cell& far = pending[n_pending++];
+            far = cell;
+            far.d2 += delta * delta - cell.offset[axis] * cell.offset[axis];
+            far.offset[axis] = delta;
+            if (delta < 0.0) {
+                far.begin = mid + 1;
+                cell.end = mid;
+            } else {
+                far.end = mid;
+                cell.begin = mid + 1;
+            }
+        }
+        // The far side once the near one is done, while its cell is within reach.
+        for (;;) {
+            if (n_pending == 0) return;
+            cell = pending[--n_pending];
+            if (cell.d2 < max_d2) break;
+        }
     }
 }
 
@@ -144,14 +197,15 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     out.radius = size;
     out.exponent_offset = m_exponent_offset;
     if (m_photons.empty() || m_gather_max <= 0) return;
-    std::vector<std::pair<double, const Photon*>> heap;
-    heap.reserve(static_cast<std::size_t>(m_gather_max) + 1);
+    // One buffer per thread: a gather runs at every lit surface point.
+    thread_local std::vector<Candidate> heap;
+    heap.clear();
+    heap.reserve(static_cast<std::size_t>(m_gather_max));
     double max_d2 = size * size;
-    search(0, static_cast<int>(m_photons.size()), p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
+    search(p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
     out.radius = std::sqrt(max_d2);
-    // Nearest first, ties by storage order, so the sum's rounding is the same on every run (the heap is ordered by
-    // the pair's operator<: distance, then address).
-    std::sort_heap(heap.begin(), heap.end());
+    // Nearest first, ties by storage order, so the sum's rounding is the same on every run.
+    std::sort(heap.begin(), heap.end());
     for (const auto& e : heap) out.photons.push_back(e.second);
 }
 

@@ -69,7 +69,9 @@ public:
 
 private:
     void build(int begin, int end);
-    void search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+    /// The k-nearest walk of gather: up to `limit` photons nearer than sqrt(max_d2) into the max-heap `heap`,
+    /// max_d2 shrinking to the farthest kept once it is full.
+    void search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
                 std::vector<std::pair<double, const Photon*>>& heap) const;
     void estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed);
 
