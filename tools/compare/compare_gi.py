@@ -7,8 +7,10 @@ scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 
 Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
 renderer: POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01, nearest_count 20; wardray's brute-force
 `--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
-changes the image by less than 0.5 % rRMSE. References are cached (build/compare-cache). Writes
-<out>/gi_comparison.csv, .json, .md and one error-against-time plot per scene under <out>/gi_comparison/.
+changes the image by less than 0.5 % rRMSE; and both against one common reference, POV-Ray's converged render.
+Each scene is rendered at the size its line in the scene list gives (cornell 256x256), else 160x120; --size sets
+one size for all. References are cached (build/compare-cache). Writes <out>/gi_comparison.csv, .json, .md and one
+error-against-time plot per scene under <out>/gi_comparison/.
 
 usage: tools/compare/compare_gi.py [--scenes FILE] [--size WxH] [--runs N] [--quick] [--out DIR]
                                    [--ladder-set full|extended] [--allow-unsupported]
@@ -33,14 +35,8 @@ from renderers import PovRay, RenderCache, RenderFailed, Wardray, run_timed  # n
 import report  # noqa: E402
 
 
-def load_scene_list(path):
-    scenes = []
-    for line in pathlib.Path(path).read_text().splitlines():
-        line = line.strip()
-        if line and not line.startswith("#"):
-            p = pathlib.Path(line)
-            scenes.append(p if p.is_absolute() else (ROOT / p))
-    return scenes
+# A scene's image size when its line in the list gives none (issue 18: at 64x48 start-up dominates).
+DEFAULT_SIZE = (160, 120)
 
 
 def parse_size(text):
@@ -48,6 +44,26 @@ def parse_size(text):
     if not (w.isdigit() and h.isdigit() and int(w) > 0 and int(h) > 0):
         raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT, got {text!r}")
     return int(w), int(h)
+
+
+def load_scene_list(path):
+    """[(scene path, size or None)]: one `.pov` path a line (absolute or relative to the repository), optionally
+    followed by the image size it is compared at, `WIDTHxHEIGHT`."""
+    scenes = []
+    for number, line in enumerate(pathlib.Path(path).read_text().splitlines(), 1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        words = line.split()
+        if len(words) > 2:
+            raise ValueError(f"{path}:{number}: expected a scene and at most a size, got {line!r}")
+        try:
+            size = parse_size(words[1]) if len(words) == 2 else None
+        except argparse.ArgumentTypeError as e:
+            raise ValueError(f"{path}:{number}: {e}") from None
+        p = pathlib.Path(words[0])
+        scenes.append((p if p.is_absolute() else (ROOT / p), size))
+    return scenes
 
 
 def scene_name(path):
@@ -107,7 +123,7 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
     scene_dir = path.parent
     text = path.read_text(errors="replace")
     result = {"scene": name, "path": str(path.relative_to(ROOT) if path.is_relative_to(ROOT) else path),
-              "references": {}, "points": [], "failures": []}
+              "size": list(size), "references": {}, "points": [], "failures": []}
     with tempfile.TemporaryDirectory(prefix=f"compare-{name}-") as tmp:
         work = pathlib.Path(tmp)
         ref_text, _ = rewrite_radiosity(text, cfg["povray_reference"])
@@ -185,8 +201,9 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenes", default=str(HERE / "scenes.txt"), help="scene list, one .pov per line")
     ap.add_argument("--ladder", default=str(HERE / "ladder.json"), help="quality ladders and reference settings")
-    ap.add_argument("--size", type=parse_size, default=(64, 48),
-                    help="image size WxH (default 64x48, so that the full run stays near half an hour on 2 cores)")
+    ap.add_argument("--size", type=parse_size, default=None,
+                    help="image size WxH for every scene (default: each scene's size in the list, else "
+                         f"{DEFAULT_SIZE[0]}x{DEFAULT_SIZE[1]})")
     ap.add_argument("--runs", type=int, default=3, help="timed runs per ladder point and renderer (default 3)")
     ap.add_argument("--quick", action="store_true",
                     help="smoke test: two ladder points and cheap, unconverged references")
@@ -234,7 +251,12 @@ def main():
 
     # Scenes a renderer cannot read are reported, not rendered.
     scenes, skipped = [], []
-    for path in load_scene_list(args.scenes):
+    try:
+        listed = load_scene_list(args.scenes)
+    except ValueError as e:
+        ap.error(str(e))
+    for path, listed_size in listed:
+        size = args.size or listed_size or DEFAULT_SIZE
         if not path.is_file():
             skipped.append({"scene": str(path), "reason": "file not found"})
             continue
@@ -254,12 +276,12 @@ def main():
             skipped.append({"scene": str(path), "reason": "wardray does not render all of it (use "
                             "--allow-unsupported to compare anyway): " + "; ".join(unsupported)})
             continue
-        scenes.append((path, warnings))
+        scenes.append((path, size, warnings))
     for s in skipped:
         print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
 
     plan = []
-    for path, _ in scenes:
+    for path, _, _ in scenes:
         name = scene_name(path)
         for r in renderers:
             plan += [(name, r.name, None)] * (2 if r.name == "wardray" and r.gi_mode != "off" else 1)
@@ -269,7 +291,7 @@ def main():
     data = {
         "command": " ".join(["tools/compare/compare_gi.py"] + sys.argv[1:]),
         "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-        "size": list(args.size), "runs": args.runs, "quick": args.quick, "ladder_set": set_name, "threads": 2,
+        "size": list(args.size) if args.size else None, "runs": args.runs, "quick": args.quick, "ladder_set": set_name, "threads": 2,
         "wall_seconds": 0.0,
         "renderers": {r.name: r.version for r in renderers},
         "wardray_gi": args.wardray_gi if "wardray" in wanted else None,
@@ -277,8 +299,8 @@ def main():
         "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
     }
     out.mkdir(parents=True, exist_ok=True)
-    for path, warnings in scenes:
-        result = measure_scene(path, renderers, points, cfg, args.size, args.runs, cache, progress)
+    for path, size, warnings in scenes:
+        result = measure_scene(path, renderers, points, cfg, size, args.runs, cache, progress)
         result["wardray_warnings"] = warnings
         data["scenes"].append(result)
         ward = next((r for r in renderers if r.name == "wardray"), None)

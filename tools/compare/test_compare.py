@@ -173,6 +173,60 @@ class HeadlineTest(unittest.TestCase):
         self.assertEqual(not_ahead["neither reaches the target"], ["fast at 1 %"])
 
 
+    def test_against_the_common_reference_wardray_carries_the_model_difference(self):
+        import report
+        # Against its own reference wardray is 4 times faster everywhere; against POV-Ray's its error never falls
+        # below the 1.5 % the two lighting models differ by.
+        points = [{"renderer": "povray", "seconds": t, "rrmse": e, "label": f"p{i}"}
+                  for i, (t, e) in enumerate([(4, 0.08), (16, 0.04), (64, 0.008)])]
+        points += [{"renderer": "wardray", "seconds": t, "rrmse": e, "rrmse_vs_povray_reference": c,
+                    "label": f"p{i}"} for i, (t, e, c) in enumerate([(1, 0.08, 0.081), (4, 0.04, 0.042),
+                                                                      (16, 0.008, 0.015)])]
+        data = {"scenes": [{"scene": "s", "points": points}]}
+        own, own_not_ahead, _ = report.headline(data)
+        common, common_not_ahead, measured = report.headline(data, common=True)
+        self.assertEqual(measured, 3)
+        self.assertTrue(own[2].endswith("| 0.25 | wardray |"), own[2])
+        self.assertTrue(common[1].endswith("| wardray |"), common[1])
+        self.assertEqual(sum(len(v) for v in own_not_ahead.values()), 0)
+        self.assertEqual(common_not_ahead["only POV-Ray reaches the target"], ["s at 1 %"])
+        self.assertIn("| s | 1 % |", common[2])
+        self.assertIn("not reached (best 1.5 % at 16.00 s)", common[2])
+
+
+class SceneListTest(unittest.TestCase):
+    def write(self, text):
+        import tempfile
+        f = tempfile.NamedTemporaryFile("w", suffix=".txt", delete=False)
+        f.write(text)
+        f.close()
+        self.addCleanup(pathlib.Path(f.name).unlink)
+        return f.name
+
+    def test_a_line_may_give_the_scene_its_size(self):
+        from compare_gi import ROOT, load_scene_list
+        listed = load_scene_list(self.write("# comment\n\n/abs/a.pov 256x256\nscenes/b.pov\n  c.pov   64x48  \n"))
+        self.assertEqual(listed, [(pathlib.Path("/abs/a.pov"), (256, 256)), (ROOT / "scenes/b.pov", None),
+                                  (ROOT / "c.pov", (64, 48))])
+
+    def test_a_bad_size_or_extra_words_name_the_line(self):
+        from compare_gi import load_scene_list
+        with self.assertRaisesRegex(ValueError, r":2: expected WIDTHxHEIGHT"):
+            load_scene_list(self.write("a.pov\nb.pov 256by256\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a scene and at most a size"):
+            load_scene_list(self.write("a.pov 64x48 extra\n"))
+
+    def test_the_shipped_list_compares_cornell_at_256_and_the_rest_at_their_default(self):
+        from compare_gi import DEFAULT_SIZE, HERE, load_scene_list
+        listed = dict(load_scene_list(HERE / "scenes.txt"))
+        cornell = [size for path, size in listed.items() if path.name == "cornell.pov"]
+        self.assertEqual(cornell, [(256, 256)])
+        self.assertGreaterEqual(DEFAULT_SIZE, (160, 120))
+        self.assertTrue(any(path.name == "stackerday.pov" for path in listed))
+        self.assertTrue(any(path.name == "stackernight.pov" for path in listed))
+        self.assertTrue(any(path.name == "mesh_terrain.pov" for path in listed))
+
+
 class ReferenceRaysTest(unittest.TestCase):
     def test_aims_past_the_tolerance_in_powers_of_two(self):
         from compare_gi import next_rays
