@@ -75,8 +75,15 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
     if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
-    else if (radiosity && options.gi == GiMode::Reference)
+    else if (radiosity && options.gi == GiMode::Reference) {
         m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed);
+        // The reference converges the direct light at camera hits too: each jittered area light is sampled at about
+        // as many points as the pixel has paths, shared out among the area lights.
+        int area_lights = 0;
+        for (const scene::Light& light : scene.lights) area_lights += light.area && light.jitter ? 1 : 0;
+        if (area_lights > 0 && options.fine_area_lights)
+            m_lights.sample_area_lights_finely(std::max(16, options.reference_rays / area_lights));
+    }
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
     // crossings along one ray from the camera. POV-Ray finds it once, at the origin of the first camera ray

@@ -65,6 +65,9 @@ struct IntegratorOptions {
     /// On gather rays' paths: the lights tested with a shadow ray at each hit, picked by their unshadowed light
     /// (light_choice.h); 0 tests every light, as the camera's hits always do.
     int gather_light_picks = 1;
+    /// Reference mode: jittered area lights at camera hits are sampled on a fine jittered grid (about reference_rays
+    /// points shared among them) so that their jitter converges with the paths; false keeps POV-Ray's own grid.
+    bool fine_area_lights = true;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it

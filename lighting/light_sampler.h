@@ -51,6 +51,11 @@ public:
         }
     }
 
+    /// The reference mode's converged direct light: a jittered area light is sampled at about `samples` points of a
+    /// fine jittered grid (same expectation as POV-Ray's grid fully subdivided) instead of its own adaptive grid;
+    /// 0 keeps POV-Ray's grid.
+    void sample_area_lights_finely(int samples) { m_fine_area_samples = samples; }
+
     /// POV-Ray's Q_QUICKC (+Q0 to +Q5): shadow rays see pigments' quick_color.
     void use_quick_colors(bool on) { m_quick_colors = on; }
 
@@ -106,6 +111,9 @@ private:
     static void area_axes(const scene::Light& light, const Vec3& p, Vec3& axis1, Vec3& axis2);
     /// Where grid coordinates (ju, jv) of an area light lie relative to its centre (circular lights mapped).
     static Vec3 area_offset(const scene::Light& light, const Vec3& axis1, const Vec3& axis2, double ju, double jv);
+    /// sample_area_lights_finely's area light: `colour` times the mean shadow over a fine jittered grid.
+    Vec3 area_light_fine(const scene::Light& light, const Vec3& colour, const Vec3& p, const InteriorStack& interiors,
+                         ShadowAtmosphere fog, TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
     Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
@@ -146,6 +154,7 @@ private:
     bool m_shadows = true;           ///< +Q4 and up: shadow rays are traced
     bool m_area_lights = true;       ///< +Q5 and up: area lights are sampled over their area
     bool m_quick_colors = false;     ///< +Q0 to +Q5: pigments' quick_color in shadow filters
+    int m_fine_area_samples = 0;     ///< sample_area_lights_finely's points per area light (0: POV-Ray's grid)
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::uint64_t m_seed = 0;

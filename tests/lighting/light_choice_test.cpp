@@ -121,5 +121,47 @@ TEST(LightChoice, ShadowedColouredLightsConvergeToTheSumOverAllLights) {
     EXPECT_LT(two.shadow, all.shadow);
 }
 
+// A floor half in the penumbra of a black bar under a jittered 4x4 area light (full subdivision: adaptive 5), with
+// a radiosity block whose indirect light is black (nothing but the floor reflects).
+std::string penumbra_scene() {
+    return "global_settings { radiosity { count 20 recursion_limit 1 } }\n"
+           "camera { location <0, 0.3, 0> look_at <0, 0, 0.1> }\n"
+           "plane { y, 0 pigment { rgb 1 } finish { diffuse 1 ambient 0 } }\n"
+           "box { <-0.05, 0.5, -5>, <0.05, 0.52, 5> pigment { rgb 0 } finish { diffuse 0 ambient 0 } }\n"
+           "light_source { <0, 1, 0> rgb 1 area_light 0.6*x, 0.6*z, 4, 4 jitter adaptive 5 }\n";
+}
+
+double floor_radiance(const Integrator& integrator, double x) {
+    TraceContext ctx;
+    return integrator.trace_camera_ray(geometry::Ray{{x, 0.3, 0.013}, {0, -1, 0}}, ctx).y;
+}
+
+TEST(AreaLightReference, FineGridHasTheExpectationOfPovRaysJitteredGrid) {
+    // The reference samples a jittered area light on a fine jittered grid over the same grid coordinates POV-Ray's
+    // jitter covers, [−½, n − ½]²: its value in the penumbra must be the mean of POV-Ray's 4x4 grid over many seeds.
+    const scene::Scene scene = parser::test::parse_ok(penumbra_scene());
+    const geometry::SceneGeometry geometry(scene);
+    IntegratorOptions fine_options;
+    fine_options.gi = GiMode::Reference;
+    fine_options.reference_rays = 4096;
+    const Integrator fine(scene, geometry, fine_options);
+    const std::vector<double> xs{0.0, 0.1, 0.3, 0.35, 0.4, 0.45};
+    std::vector<double> mean(xs.size(), 0.0);
+    const int seeds = 2000;
+    for (int seed = 1; seed <= seeds; ++seed) {
+        IntegratorOptions grid_options;
+        grid_options.seed = static_cast<std::uint64_t>(seed);
+        const Integrator grid(scene, geometry, grid_options);
+        for (std::size_t i = 0; i < xs.size(); ++i) mean[i] += floor_radiance(grid, xs[i]) / seeds;
+    }
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        const double sampled = floor_radiance(fine, xs[i]);
+        EXPECT_GT(sampled, 0.0) << "x " << xs[i];
+        EXPECT_NEAR(sampled, mean[i], 0.01) << "x " << xs[i];
+        std::cout << "[ area light] x " << xs[i] << ": fine " << sampled << ", POV-Ray's grid over " << seeds
+                  << " seeds " << mean[i] << "\n";
+    }
+}
+
 }  // namespace
 }  // namespace wardray::lighting
