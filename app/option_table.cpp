@@ -267,6 +267,10 @@ constexpr OptionSpec kOptions[] = {
     {.long_name = "--gi-rays", .kind = K::Value, .usage = "--gi-rays N",
      .help = "reference mode: paths per pixel (default 256)",
      .set = [](U u, Options& o) { return set_count(u.value, 1, 1000000, "needs a count 1..1000000", o.gi_rays); }},
+    {.long_name = "--gi-light-picks", .kind = K::Value, .usage = "--gi-light-picks N",
+     .help = "lights tested with a shadow ray at each hit of a gather ray's path, picked\n"
+             "by their unshadowed light (default 1; 0 tests every light)",
+     .set = [](U u, Options& o) { return set_count(u.value, 0, 64, "needs a count 0..64", o.gi_light_picks); }},
     {.long_name = "--seed", .kind = K::Value, .usage = "--seed N",
      .help = "another sample pattern for every stochastic part (reference paths, cache\n"
              "gathers, jitter, photons); the same N, the same image (default 0)",

@@ -61,6 +61,7 @@ struct Options {
     GammaCurve display_gamma = GammaCurve::srgb();  ///< Display_Gamma=: used for files only by 3.6 scenes
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
     int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
+    int gi_light_picks = 1;                         ///< --gi-light-picks: shadow-tested lights per gather hit
     std::uint64_t seed = 0;                         ///< --seed: 0 draws the samples the renders without it draw
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes

@@ -317,6 +317,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     lighting::IntegratorOptions& settings = illumination.settings;
     settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
     settings.reference_rays = options.gi_rays;
+    settings.gather_light_picks = options.gi_light_picks;
     settings.seed = options.seed;
     settings.gradients = options.gi_gradients;
     settings.output_alpha = options.output_alpha;

@@ -61,7 +61,8 @@ public:
             p, n, strata,
             [&](const Vec3& dir) {
                 cache::RadianceSample sample;
-                sample.radiance = m_tracer.gather_radiance(p, dir, state, 0, ctx, sample.distance);
+                // Each ray's own seed (after the gather's), for the lights its path picks.
+                sample.radiance = m_tracer.gather_radiance(p, dir, state, seeds.next(), ctx, sample.distance);
                 return sample;
             },
             seeds.next() ^ static_cast<std::uint64_t>(depth));

@@ -11,6 +11,7 @@
 #include "geometry/object_query.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/graininess.h"
+#include "lighting/light_choice.h"
 #include "lighting/metallic.h"
 #include "media/atmosphere.h"
 #include "media/fog.h"
@@ -30,17 +31,6 @@ bool InteriorStack::contains(const scene::Object& o) const {
 void InteriorStack::push(const scene::Object& o) {
     if (size < kMax) objects[size++] = &o;
 }
-
-namespace {
-
-/// True when the surface `o` is in light group `group` (its lights light it).
-bool in_light_group(const scene::Object& o, int group) {
-    for (const int g : o.light_groups)
-        if (g == group) return true;
-    return false;
-}
-
-}  // namespace
 
 bool hollow_ray(const InteriorStack& interiors) {
     for (int i = 0; i < interiors.size; ++i)
@@ -85,8 +75,15 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
     if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint);
-    else if (radiosity && options.gi == GiMode::Reference)
+    else if (radiosity && options.gi == GiMode::Reference) {
         m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed);
+        // The reference converges the direct light at camera hits too: each jittered area light is sampled at about
+        // as many points as the pixel has paths, shared out among the area lights.
+        int area_lights = 0;
+        for (const scene::Light& light : scene.lights) area_lights += light.area && light.jitter ? 1 : 0;
+        if (area_lights > 0 && options.fine_area_lights)
+            m_lights.sample_area_lights_finely(std::max(16, options.reference_rays / area_lights));
+    }
     // POV-Ray compat: camera rays start inside every object that contains the camera (an infinite plane's
     // inside too), which changes the relative indices of refraction. Containment is found by the parity of
     // crossings along one ray from the camera. POV-Ray finds it once, at the origin of the first camera ray
@@ -200,11 +197,14 @@ Vec3 Integrator::trace(const geometry::Ray& ray, const RayState& in, bool contin
 
 Vec3 Integrator::direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                               const Vec3& n, TraceContext& ctx) const {
+    // On a gather ray's path a few lights picked by importance stand for all (an unbiased estimate).
+    if (!s.highlights && m_options.gather_light_picks > 0 && m_scene.lights.size() > 1)
+        return direct_light_picked(finish, pigment, opacity, s, n, ctx);
     Vec3 colour;
     for (const scene::Light& light : m_scene.lights) {
         // POV-Ray's ComputeDiffuseLight: the global lights unless the surface's light group turns them off, and
         // the lights of the groups the surface is in.
-        if (light.group == 0 ? s.object->no_global_lights : !in_light_group(*s.object, light.group)) continue;
+        if (!lights_object(light, *s.object)) continue;
         Vec3 to_light;
         // POV-Ray compat (GetRadiosityQualityFlags): on a gather ray's path area lights are point lights.
         const Vec3 arriving =

@@ -62,6 +62,12 @@ struct IntegratorOptions {
     std::shared_ptr<const photons::ShotPhotons> photons_from_file;
     /// Keep what the photon pass stored, for a photon `save_file` (shot_photons()).
     bool keep_shot_photons = false;
+    /// On gather rays' paths: the lights tested with a shadow ray at each hit, picked by their unshadowed light
+    /// (light_choice.h); 0 tests every light, as the camera's hits always do.
+    int gather_light_picks = 1;
+    /// Reference mode: jittered area lights at camera hits are sampled on a fine jittered grid (about reference_rays
+    /// points shared among them) so that their jitter converges with the paths; false keeps POV-Ray's own grid.
+    bool fine_area_lights = true;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it
@@ -105,6 +111,8 @@ private:
         texture::SurfacePoint* surface = nullptr;
         /// POV-Ray compat: false on gather rays' paths, which see no phong or specular and area lights as points.
         bool highlights = true;
+        /// The path's seed (RayState::path_seed), from which a gather path picks the lights it tests.
+        std::uint64_t path_seed = 0;
     };
 
     /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then the atmosphere);
@@ -137,6 +145,10 @@ private:
     /// Direct light from every source on one layer (diffuse scaled by `opacity`, highlights not).
     Vec3 direct_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
                       const Vec3& n, TraceContext& ctx) const;
+    /// direct_light on a gather ray's path: the lights that need shadow rays are picked by their unshadowed light
+    /// and the picked ones divided by their chance (light_choice.cpp), so the expectation is every light's sum.
+    Vec3 direct_light_picked(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,
+                             const Vec3& n, TraceContext& ctx) const;
     /// One light's diffuse and (with `highlights`) phong, specular and iridescence on one layer, for the light
     /// `arriving` from the unit direction `to_light`; `grain_from` seeds crand's graininess.
     Vec3 finish_light(const scene::Finish& finish, const Vec3& pigment, double opacity, const Surface& s,

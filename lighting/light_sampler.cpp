@@ -233,23 +233,31 @@ Vec3 LightSampler::light_in_medium(const scene::Light& light, const Vec3& p, con
 
 Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3* n, const InteriorStack& interiors,
                             bool area_lights, Vec3& to_light, TraceContext& ctx) const {
+    const Reach r = reach_point(light, p, n);
+    to_light = r.to_light;
+    if (!r.lit) return {};
+    return through(light, r, p, interiors, area_lights, ctx);
+}
+
+LightSampler::Reach LightSampler::reach_point(const scene::Light& light, const Vec3& p, const Vec3* n) const {
     using Type = scene::Light::Type;
-    area_lights = area_lights && m_area_lights;
-    double distance = 0.0;
+    Reach r;
+    Vec3& to_light = r.to_light;
+    double& distance = r.distance;
     if (light.type == Type::Parallel || light.type == Type::Cylinder) {
         // Parallel light arrives along point_at → position; blockers count only up to the plane of the light.
         to_light = normalize(light.position - light.point_at);
         distance = dot(light.position - p, to_light);
         // A cylinder light lights nothing behind it (Attenuate_Light); a parallel light does, see below.
-        if (distance <= 0.0 && light.type == Type::Cylinder) return {};
+        if (distance <= 0.0 && light.type == Type::Cylinder) return r;
     } else {
         const Vec3 d = light.position - p;
         distance = length(d);
-        if (distance <= 0.0) return {};
+        if (distance <= 0.0) return r;
         to_light = d / distance;
     }
     // POV-Ray compat: lights at grazing angles below EPSILON do not reach the surface.
-    if (n != nullptr && dot(*n, to_light) < kPovEpsilon) return {};
+    if (n != nullptr && dot(*n, to_light) < kPovEpsilon) return r;
 
     double attenuation = 1.0;
     if (light.type == Type::Spot) {
@@ -259,10 +267,10 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
         const double cos_alpha = dot(-to_light, cone.axis);
         // POV-Ray compat: dark beyond falloff only through the ramp, which applies outside radius alone; so a
         // falloff smaller than radius lights the whole radius cone at full strength, with a hard edge there.
-        if (!(cos_alpha > 0.0)) return {};
+        if (!(cos_alpha > 0.0)) return r;
         if (cone.cos_radius > 0.0 && cos_alpha < cone.cos_radius) {
             const double ramp = smooth_ramp(cone.cos_falloff, cone.cos_radius, cos_alpha);
-            if (ramp == 0.0) return {};
+            if (ramp == 0.0) return r;
             attenuation *= ramp;
         }
         // pow(x, 1) is x exactly; the common tightness 1 skips the call.
@@ -274,9 +282,9 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
         const Vec3 axis = normalize(light.point_at - light.position);
         const Vec3 v = p - light.position;
         const double k = dot(v, axis);
-        if (k <= 0.0) return {};
+        if (k <= 0.0) return r;
         const double d = length(v - axis * k);
-        if (!(d < light.falloff)) return {};
+        if (!(d < light.falloff)) return r;
         const double closeness = 1.0 - d / light.falloff;
         attenuation *= std::pow(closeness, light.tightness);
         if (light.radius > 0.0 && d > light.radius)
@@ -288,9 +296,19 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
         const double ratio = distance / light.fade_distance;
         attenuation *= 2.0 / (1.0 + (light.fade_power == 2.0 ? ratio * ratio : std::pow(ratio, light.fade_power)));
     }
-    if (attenuation <= 0.0) return {};
+    if (attenuation <= 0.0) return r;
+    r.colour = light.color.rgb() * attenuation;
+    r.lit = true;
+    return r;
+}
 
-    const Vec3 colour = light.color.rgb() * attenuation;
+Vec3 LightSampler::through(const scene::Light& light, const Reach& reach, const Vec3& p,
+                           const InteriorStack& interiors, bool area_lights, TraceContext& ctx) const {
+    using Type = scene::Light::Type;
+    area_lights = area_lights && m_area_lights;
+    const Vec3& colour = reach.colour;
+    const Vec3& to_light = reach.to_light;
+    double distance = reach.distance;  // projected_through shortens it to the object
     // POV-Ray compat (+Q below 4): no shadow ray at all, so no projected_through either.
     if (!m_shadows) return colour;
     if (!m_projected.empty() && !light.projected_through.empty()) {
@@ -308,8 +326,10 @@ Vec3 LightSampler::arriving(const scene::Light& light, const Vec3& p, const Vec3
     const ShadowAtmosphere fog{attenuated ? m_fog.get() : nullptr,
                                attenuated && m_media && !m_media->atmosphere().empty()};
     if (area_lights && light.area && (light.area_size1 > 1 || light.area_size2 > 1) && light.type != Type::Parallel &&
-        light.type != Type::Cylinder)
+        light.type != Type::Cylinder) {
+        if (m_fine_area_samples > 0 && light.jitter) return area_light_fine(light, colour, p, interiors, fog, ctx);
         return area_light_shadow(light, colour, p, interiors, fog, ctx);
+    }
     return colour * shadow_towards(light, p, to_light, distance, interiors, fog, ctx);
 }
 
@@ -323,13 +343,27 @@ Vec3 LightSampler::shadow_towards(const scene::Light& light, const Vec3& p, cons
     return {1.0, 1.0, 1.0};
 }
 
-Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
-                                     const InteriorStack& interiors, ShadowAtmosphere fog,
-                                     TraceContext& ctx) const {
+Vec3 LightSampler::area_offset(const scene::Light& light, const Vec3& axis1, const Vec3& axis2, double ju,
+                               double jv) {
     const int n1 = light.area_size1;
     const int n2 = light.area_size2;
-    Vec3 axis1 = light.area_axis1;
-    Vec3 axis2 = light.area_axis2;
+    Vec3 offset;
+    if (light.circular && n1 > 1 && n2 > 1) {
+        // POV-Ray compat (circular area lights): the square grid's shells are mapped onto circles.
+        ju = ju / (n1 - 1) - 0.5 + 0.001;
+        jv = jv / (n2 - 1) - 0.5 + 0.001;
+        const double scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
+        offset = axis1 * (ju * scale) + axis2 * (jv * scale);
+    } else {
+        if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
+        if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
+    }
+    return offset;
+}
+
+void LightSampler::area_axes(const scene::Light& light, const Vec3& p, Vec3& axis1, Vec3& axis2) {
+    axis1 = light.area_axis1;
+    axis2 = light.area_axis2;
     if (light.orient) {
         // POV-Ray compat: `orient` turns the light's square to face the point, both axes as long as axis1.
         const Vec3 d = normalize(light.position - p);
@@ -338,6 +372,41 @@ Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colo
         axis1 = normalize(cross(d, helper)) * len;
         axis2 = normalize(cross(d, axis1)) * len;
     }
+}
+
+Vec3 LightSampler::area_light_fine(const scene::Light& light, const Vec3& colour, const Vec3& p,
+                                   const InteriorStack& interiors, ShadowAtmosphere fog, TraceContext& ctx) const {
+    Vec3 axis1, axis2;
+    area_axes(light, p, axis1, axis2);
+    const int n1 = light.area_size1;
+    const int n2 = light.area_size2;
+    // POV-Ray's jitter moves grid point u uniformly within [u − ½, u + ½] (area_light_shadow), so over a fully
+    // subdivided grid the points are uniform over the grid coordinates [−½, n − ½]²: a finer jittered grid over that
+    // range has the same expectation and far less variance.
+    const int m = std::max(1, static_cast<int>(std::ceil(std::sqrt(static_cast<double>(m_fine_area_samples)))));
+    const int m1 = n1 > 1 ? m : 1, m2 = n2 > 1 ? m : 1;
+    cache::SplitMix64 rng(cache::seed_from(p, light.position, reseed(0x41524541ull, m_seed)));
+    Vec3 sum;
+    for (int a = 0; a < m1; ++a) {
+        for (int b = 0; b < m2; ++b) {
+            const double ju = n1 > 1 ? -0.5 + n1 * (a + rng.uniform()) / m1 : 0.0;
+            const double jv = n2 > 1 ? -0.5 + n2 * (b + rng.uniform()) / m2 : 0.0;
+            const Vec3 d = light.position + area_offset(light, axis1, axis2, ju, jv) - p;
+            const double distance = length(d);
+            sum += distance > 0.0 ? shadow_towards(light, p, d / distance, distance, interiors, fog, ctx)
+                                  : Vec3{1.0, 1.0, 1.0};
+        }
+    }
+    return colour * (sum / static_cast<double>(m1 * m2));
+}
+
+Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
+                                     const InteriorStack& interiors, ShadowAtmosphere fog,
+                                     TraceContext& ctx) const {
+    const int n1 = light.area_size1;
+    const int n2 = light.area_size2;
+    Vec3 axis1, axis2;
+    area_axes(light, p, axis1, axis2);
     // Jitter is random in POV-Ray; here it is a fixed function of the point and the seed, so renders repeat exactly.
     cache::SplitMix64 rng(cache::seed_from(p, light.position, reseed(0, m_seed)));
     auto uniform = [&rng]() { return rng.uniform(); };
@@ -352,18 +421,7 @@ Vec3 LightSampler::area_light_shadow(const scene::Light& light, const Vec3& colo
             ju += uniform() - 0.5;
             jv += uniform() - 0.5;
         }
-        Vec3 offset;
-        if (light.circular && n1 > 1 && n2 > 1) {
-            // POV-Ray compat (circular area lights): the square grid's shells are mapped onto circles.
-            ju = ju / (n1 - 1) - 0.5 + 0.001;
-            jv = jv / (n2 - 1) - 0.5 + 0.001;
-            const double scale = std::max(std::fabs(ju), std::fabs(jv)) / std::sqrt(ju * ju + jv * jv);
-            offset = axis1 * (ju * scale) + axis2 * (jv * scale);
-        } else {
-            if (n1 > 1) offset += axis1 * (ju / (n1 - 1) - 0.5);
-            if (n2 > 1) offset += axis2 * (jv / (n2 - 1) - 0.5);
-        }
-        const Vec3 d = light.position + offset - p;
+        const Vec3 d = light.position + area_offset(light, axis1, axis2, ju, jv) - p;
         const double distance = length(d);
         const Vec3 c = distance > 0.0 ? colour * shadow_towards(light, p, d / distance, distance, interiors, fog, ctx)
                                         : colour;

@@ -51,6 +51,11 @@ public:
         }
     }
 
+    /// The reference mode's converged direct light: a jittered area light is sampled at about `samples` points of a
+    /// fine jittered grid (same expectation as POV-Ray's grid fully subdivided) instead of its own adaptive grid;
+    /// 0 keeps POV-Ray's grid.
+    void sample_area_lights_finely(int samples) { m_fine_area_samples = samples; }
+
     /// POV-Ray's Q_QUICKC (+Q0 to +Q5): shadow rays see pigments' quick_color.
     void use_quick_colors(bool on) { m_quick_colors = on; }
 
@@ -62,6 +67,31 @@ public:
     Vec3 light_arriving(const scene::Light& light, const Vec3& p, const Vec3& n, const InteriorStack& interiors,
                         bool area_lights, bool both_sides, Vec3& to_light, TraceContext& ctx) const;
 
+    /// What a light sends towards a point before any shadow test: light_arriving's answer when nothing stands
+    /// between (its colour times spot, cylinder and fade attenuation), and what the shadow test needs.
+    struct Reach {
+        bool lit = false;      ///< the light reaches the point unshadowed (in front of the surface, inside its cone)
+        Vec3 colour;           ///< colour × attenuation
+        Vec3 to_light;         ///< unit direction towards the light
+        double distance = 0.0; ///< to the light (to its plane for parallel and cylinder lights)
+    };
+
+    /// The first half of light_arriving: where `light` reaches `p` (facing `n` unless `both_sides`) unshadowed.
+    Reach reach(const scene::Light& light, const Vec3& p, const Vec3& n, bool both_sides) const {
+        return reach_point(light, p, both_sides ? nullptr : &n);
+    }
+
+    /// The second half of light_arriving: `reach`'s colour through whatever stands between (shadow rays, area-light
+    /// grids, projected_through, media attenuation); `reach` must be lit.
+    Vec3 through(const scene::Light& light, const Reach& reach, const Vec3& p, const InteriorStack& interiors,
+                 bool area_lights, TraceContext& ctx) const;
+
+    /// True when through() traces shadow rays for this light (false: it returns the reach's colour, unless the
+    /// light is projected_through an object).
+    bool casts_shadows(const scene::Light& light, const Reach& reach) const {
+        return m_shadows && !light.shadowless && reach.distance > 0.0;
+    }
+
     /// The light arriving at `p` inside a medium, as light_arriving without a surface to face (POV-Ray's TestShadow
     /// for a media sample).
     Vec3 light_in_medium(const scene::Light& light, const Vec3& p, const InteriorStack& interiors, bool area_lights,
@@ -71,10 +101,19 @@ private:
     /// light_arriving, with the facing test only when there is a surface normal `n`.
     Vec3 arriving(const scene::Light& light, const Vec3& p, const Vec3* n, const InteriorStack& interiors,
                   bool area_lights, Vec3& to_light, TraceContext& ctx) const;
+    /// reach(), with the facing test only when there is a surface normal `n`.
+    Reach reach_point(const scene::Light& light, const Vec3& p, const Vec3* n) const;
     /// The transmittance from `p` towards a light `distance` away along the unit `dir`: 0 or 1 when every object is
     /// opaque, else the filter colours of what stands between (shadow_filter).
     Vec3 shadow_towards(const scene::Light& light, const Vec3& p, const Vec3& dir, double distance,
                         const InteriorStack& interiors, ShadowAtmosphere fog, TraceContext& ctx) const;
+    /// The axes of an area light's square as seen from `p` (turned to face it by `orient`).
+    static void area_axes(const scene::Light& light, const Vec3& p, Vec3& axis1, Vec3& axis2);
+    /// Where grid coordinates (ju, jv) of an area light lie relative to its centre (circular lights mapped).
+    static Vec3 area_offset(const scene::Light& light, const Vec3& axis1, const Vec3& axis2, double ju, double jv);
+    /// sample_area_lights_finely's area light: `colour` times the mean shadow over a fine jittered grid.
+    Vec3 area_light_fine(const scene::Light& light, const Vec3& colour, const Vec3& p, const InteriorStack& interiors,
+                         ShadowAtmosphere fog, TraceContext& ctx) const;
     /// POV-Ray's area light shadow: `colour` (taken at the light's centre) times the adaptive average of the shadow
     /// towards the points of the light's grid.
     Vec3 area_light_shadow(const scene::Light& light, const Vec3& colour, const Vec3& p,
@@ -115,6 +154,7 @@ private:
     bool m_shadows = true;           ///< +Q4 and up: shadow rays are traced
     bool m_area_lights = true;       ///< +Q5 and up: area lights are sampled over their area
     bool m_quick_colors = false;     ///< +Q0 to +Q5: pigments' quick_color in shadow filters
+    int m_fine_area_samples = 0;     ///< sample_area_lights_finely's points per area light (0: POV-Ray's grid)
     std::vector<std::uint8_t> m_opaque;  ///< per top-level object: its textures never filter or transmit
     int m_noise_generator = 2;
     std::uint64_t m_seed = 0;

@@ -52,6 +52,7 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.depth = depth;
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
+    s.path_seed = state.path_seed;
     texture::SurfacePoint surface{hit.position, s.raw_normal, direction, m_quality.quick_colors};
     s.surface = &surface;
     std::vector<const scene::Pattern*> warps;

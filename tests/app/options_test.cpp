@@ -114,7 +114,7 @@ namespace {
 
 TEST(Options, RadiositySwitches) {
     const Options o = parse_ok({"+RFI", "+RFO", "+RFcache.rca", "--gi=reference", "--gi-rays", "64",
-                                "--gi-gradients=off", "--no-pretrace", "--aov", "irradiance", "irr.exr", "--aov",
+                                "--gi-light-picks", "0", "--gi-gradients=off", "--no-pretrace", "--aov", "irradiance", "irr.exr", "--aov",
                                 "records", "rec.png"});
     EXPECT_TRUE(o.radiosity_load);
     EXPECT_TRUE(o.radiosity_save);
@@ -122,6 +122,8 @@ TEST(Options, RadiositySwitches) {
     EXPECT_EQ(o.radiosity_file->string(), "cache.rca");
     EXPECT_EQ(o.gi, lighting::GiMode::Reference);
     EXPECT_EQ(o.gi_rays, 64);
+    EXPECT_EQ(o.gi_light_picks, 0);
+    EXPECT_EQ(parse_ok({}).gi_light_picks, 1);
     EXPECT_FALSE(o.gi_gradients);
     EXPECT_FALSE(o.pretrace);
     ASSERT_TRUE(o.aov_irradiance && o.aov_records);
@@ -129,6 +131,7 @@ TEST(Options, RadiositySwitches) {
     EXPECT_EQ(o.aov_records->string(), "rec.png");
     EXPECT_FALSE(parse_ok({"+RFI", "-RFI"}).radiosity_load);
     EXPECT_NE(parse_error({"--gi-rays", "0"}).find("--gi-rays"), std::string::npos);
+    EXPECT_NE(parse_error({"--gi-light-picks", "-1"}).find("--gi-light-picks"), std::string::npos);
     EXPECT_NE(parse_error({"--aov", "normals", "n.png"}).find("--aov"), std::string::npos);
     EXPECT_NE(parse_error({"--gi-gradients=maybe"}).find("--gi-gradients"), std::string::npos);
 }

@@ -197,6 +197,34 @@ TEST(Radiosity, SeedGivesTheSameImageForAnyThreadCountAndZeroIsTheDefault) {
     EXPECT_EQ(file_bytes(dir / "cache_default.hdr"), file_bytes(dir / "cache_zero.hdr")) << "cache mode: --seed 0";
 }
 
+TEST(Radiosity, LightsPickedOnGatherPathsRepeatForAnyThreadCountAndTurnWithTheSeed) {
+    // Five lights: each gather path's hit tests one picked light, drawn from the path's seed and its ray.
+    const fs::path dir = fresh_dir("picked_lights");
+    const fs::path scene_file = fs::path(WARDRAY_SOURCE_DIR) / "scenes" / "radiosity" / "lights.pov";
+    const std::string scene = " +I" + shell_quote(scene_file.string()) + " +W48 +H36 -A";
+    for (const char* run : {"+WT1 +Oone.hdr --stats one.json", "+WT2 +Otwo.hdr", "+WT2 +Oagain.hdr",
+                            "+WT2 --seed 3 +Oseeded.hdr", "--gi=reference --gi-rays 16 +WT1 +Oref_one.hdr",
+                            "--gi=reference --gi-rays 16 +WT2 +Oref_two.hdr",
+                            "--gi=off +Odirect.hdr --stats direct.json"}) {
+        const auto r = run_command(wardray() + scene + " " + run, dir.string());
+        ASSERT_EQ(r.exit_status, 0) << r.output;
+    }
+    const std::string one = file_bytes(dir / "one.hdr");
+    ASSERT_FALSE(one.empty());
+    EXPECT_EQ(one, file_bytes(dir / "two.hdr")) << "cache mode: 1 and 2 threads differ";
+    EXPECT_EQ(one, file_bytes(dir / "again.hdr")) << "cache mode: two runs differ";
+    EXPECT_NE(one, file_bytes(dir / "seeded.hdr")) << "--seed 3 gives the default image";
+    EXPECT_EQ(file_bytes(dir / "ref_one.hdr"), file_bytes(dir / "ref_two.hdr")) << "reference: 1 and 2 threads differ";
+    // One shadow ray per gather hit (every surface here is plain diffuse) on top of the camera hits' own, which the
+    // render without indirect light counts alone; testing every light would take four per gather hit.
+    const nlohmann::json stats = read_json(dir / "one.json");
+    const nlohmann::json direct = read_json(dir / "direct.json");
+    ASSERT_TRUE(stats.contains("rays") && direct.contains("rays")) << stats.dump();
+    const double gather_path_shadows = stats["rays"]["shadow"].get<double>() - direct["rays"]["shadow"].get<double>();
+    EXPECT_GT(gather_path_shadows, 0.0);
+    EXPECT_LE(gather_path_shadows, stats["rays"]["gather"].get<double>()) << stats.dump();
+}
+
 TEST(Radiosity, TwoSeedsOfTheReferenceConvergeTogether) {
     // Two seeds draw independent paths: their images differ by noise alone, which falls as 1/sqrt(paths), so with
     // 4 times the paths the rRMSE between them about halves. A seed that changed nothing, or changed what the paths
