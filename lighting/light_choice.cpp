@@ -82,19 +82,10 @@ Vec3 Integrator::direct_light_picked(const scene::Finish& finish, const Vec3& pi
     // depends on neither thread nor order, and --seed turns it.
     cache::SplitMix64 rng(cache::seed_from(s.direction, n, reseed(s.path_seed ^ 0x4C49474854ull, m_options.seed)));
     const double u = rng.uniform();
-    // Every light's unshadowed light is known without a ray; the picks estimate only what shadows take from it (a
-    // control variate), so a hit no shadow touches gets the exact sum, whatever the lights' colours.
-    for (const Candidate& c : candidates)
-        colour += finish_light(finish, pigment, opacity, s, n, c.reach.to_light, c.reach.colour, false,
-                               c.light->position);
     for (std::size_t k = 0; k < picks; ++k) {
         const LightPick pick = pick_light(importance, total, (static_cast<double>(k) + u) / static_cast<double>(picks));
         const Candidate& c = candidates[pick.index];
-        const Vec3 lost = c.reach.colour - m_lights.through(*c.light, c.reach, p, *s.interiors, false, ctx);
-        if (lost == Vec3{}) continue;
-        const double scale = 1.0 / (static_cast<double>(picks) * pick.probability);
-        colour -= finish_light(finish, pigment, opacity, s, n, c.reach.to_light, lost * scale, false,
-                               c.light->position);
+        colour += light_of(*c.light, c.reach, 1.0 / (static_cast<double>(picks) * pick.probability));
     }
     return colour;
 }

@@ -92,10 +92,10 @@ Rendered render_floor(const scene::Scene& scene, int picks, int rays) {
     return out;
 }
 
-TEST(LightChoice, UnshadowedLightsArePickedWithoutNoise) {
-    // Without blockers the picks estimate nothing (only what shadows take away is estimated), so whatever the
-    // lights' colours the render equals the one that tests every light (the same gather rays).
-    const scene::Scene scene = parser::test::parse_ok(lit_room("rgb <1, 0.2, 0.1>", "rgb <0.1, 0.6, 1>", ""));
+TEST(LightChoice, UnshadowedGreyLightsArePickedWithoutNoise) {
+    // Without blockers and with grey lights, the importance is each light's exact share, so the picked estimate is
+    // the sum over all lights itself: the render equals the one that tests every light (the same gather rays).
+    const scene::Scene scene = parser::test::parse_ok(lit_room("rgb 1", "rgb 0.5", ""));
     const Rendered all = render_floor(scene, 0, 32);
     const Rendered one = render_floor(scene, 1, 32);
     EXPECT_NEAR(one.sum, all.sum, 1e-9 * all.sum);
