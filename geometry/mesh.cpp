@@ -5,6 +5,9 @@
 #include <cstddef>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
+#include <tuple>
 
 namespace wardray::geometry {
 
@@ -34,12 +37,56 @@ double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
 
 }  // namespace
 
+namespace {
+
+// The shapes already made from a scene mesh, by the address of its vectors: an entry keeps those vectors (so no
+// other mesh can take their address while it lives) and the shape made, whose copies share its data.
+struct MadeMesh {
+    scene::SharedVector<Vec3> vertices, normals;
+    scene::SharedVector<scene::Mesh::Face> faces;
+    std::optional<MeshShape> shape;
+};
+using MeshKey = std::tuple<const void*, const void*, const void*, double, double, double>;
+std::mutex g_made_mutex;
+std::map<MeshKey, std::weak_ptr<const MadeMesh>> g_made;
+
+}  // namespace
+
 std::optional<MeshShape> MeshShape::create(const scene::Mesh& mesh) {
+    const MeshKey key{mesh.vertices.data(), mesh.normals.data(), mesh.faces.data(),
+                      mesh.inside_vector.x, mesh.inside_vector.y, mesh.inside_vector.z};
+    {
+        const std::lock_guard lock(g_made_mutex);
+        const auto it = g_made.find(key);
+        if (it != g_made.end()) {
+            if (auto made = it->second.lock()) {
+                std::optional<MeshShape> shape = made->shape;
+                if (shape) shape->m_source = std::move(made);
+                return shape;
+            }
+        }
+    }
+    auto made = std::make_shared<MadeMesh>();
+    made->vertices = mesh.vertices;
+    made->normals = mesh.normals;
+    made->faces = mesh.faces;
+    made->shape = build(mesh);
+    std::optional<MeshShape> shape = made->shape;
+    if (shape) shape->m_source = made;
+    const std::lock_guard lock(g_made_mutex);
+    // Forget the shapes no longer used, then remember this one.
+    for (auto it = g_made.begin(); it != g_made.end();) it = it->second.expired() ? g_made.erase(it) : std::next(it);
+    g_made[key] = made;
+    return shape;
+}
+
+std::optional<MeshShape> MeshShape::build(const scene::Mesh& mesh) {
     MeshShape m;
     for (const Vec3& v : mesh.vertices)
         if (!is_finite(v)) return std::nullopt;
     m.m_vertices = mesh.vertices;
     m.m_normals = mesh.normals;
+    std::vector<Face> faces;
     const int nv = static_cast<int>(mesh.vertices.size());
     const int nn = static_cast<int>(mesh.normals.size());
     for (std::size_t fi = 0; fi < mesh.faces.size(); ++fi) {
@@ -57,12 +104,13 @@ std::optional<MeshShape> MeshShape::create(const scene::Mesh& mesh) {
         for (int k = 0; k < 3; ++k)
             if (face.n[k] < 0 || face.n[k] >= nn || !(length(mesh.normals[face.n[k]]) > 0.0)) face.n = {-1, -1, -1};
         // Degenerate faces (zero area) can never be hit reliably: leave them out.
-        const Vec3 e1 = m.m_vertices[face.v[1]] - m.m_vertices[face.v[0]];
-        const Vec3 e2 = m.m_vertices[face.v[2]] - m.m_vertices[face.v[0]];
+        const Vec3 e1 = mesh.vertices[face.v[1]] - mesh.vertices[face.v[0]];
+        const Vec3 e2 = mesh.vertices[face.v[2]] - mesh.vertices[face.v[0]];
         if (!(length(cross(e1, e2)) > 0.0)) continue;
-        m.m_faces.push_back(face);
+        faces.push_back(face);
     }
-    if (m.m_faces.empty()) return std::nullopt;
+    if (faces.empty()) return std::nullopt;
+    m.m_faces = scene::SharedVector<Face>(std::move(faces));
     m.m_inside_vector = mesh.inside_vector;
     m.m_nearest_only = mesh.inside_vector == Vec3{};
     m.finish();
@@ -70,26 +118,31 @@ std::optional<MeshShape> MeshShape::create(const scene::Mesh& mesh) {
 }
 
 void MeshShape::finish() {
-    const Vec3& first = m_vertices[m_faces.front().v[0]];
+    // Read through const references: a non-const access to a shared vector would copy it.
+    const std::vector<Vec3>& verts = m_vertices.get();
+    const std::vector<Face>& all_faces = m_faces.get();
+    const Vec3& first = verts[all_faces.front().v[0]];
     m_bounds = {first, first};
-    for (const Face& f : m_faces)
-        for (int k = 0; k < 3; ++k) m_bounds = m_bounds.merged({m_vertices[f.v[k]], m_vertices[f.v[k]]});
+    for (const Face& f : all_faces)
+        for (int k = 0; k < 3; ++k) m_bounds = m_bounds.merged({verts[f.v[k]], verts[f.v[k]]});
     build_tree();
 }
 
 void MeshShape::build_tree() {
+    const std::vector<Vec3>& verts = m_vertices.get();
+    const std::vector<Face>& all_faces = m_faces.get();
     // A few faces are cheaper to test one by one than through a tree.
     constexpr std::size_t k_min_faces = 16, k_leaf_faces = 4;
-    if (m_faces.size() < k_min_faces || m_faces.size() > std::numeric_limits<std::uint32_t>::max()) return;
+    if (all_faces.size() < k_min_faces || all_faces.size() > std::numeric_limits<std::uint32_t>::max()) return;
     // Boxes are padded by a little more than rounding can move a crossing, so no face a ray meets is left out.
     const double pad = 1e-7 * (m_bounds.magnitude() + 1.0);
-    const std::size_t n = m_faces.size();
+    const std::size_t n = all_faces.size();
     std::vector<Bounds> boxes(n);
     std::vector<Vec3> centres(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const Face& f = m_faces[i];
-        Bounds b{m_vertices[f.v[0]], m_vertices[f.v[0]]};
-        for (int k = 1; k < 3; ++k) b = b.merged({m_vertices[f.v[k]], m_vertices[f.v[k]]});
+        const Face& f = all_faces[i];
+        Bounds b{verts[f.v[0]], verts[f.v[0]]};
+        for (int k = 1; k < 3; ++k) b = b.merged({verts[f.v[k]], verts[f.v[k]]});
         boxes[i] = {b.lower - Vec3{pad, pad, pad}, b.upper + Vec3{pad, pad, pad}};
         centres[i] = 0.5 * (b.lower + b.upper);
     }

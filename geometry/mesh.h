@@ -46,8 +46,8 @@ public:
     /// Distance to the nearest face (zero on the surface).
     double implicit(const Vec3& p) const;
 
-    const std::vector<Vec3>& vertices() const { return m_vertices; }
-    const std::vector<Face>& faces() const { return m_faces; }
+    const std::vector<Vec3>& vertices() const { return m_vertices.get(); }
+    const std::vector<Face>& faces() const { return m_faces.get(); }
     /// The surface parameters at a face's point of barycentric weights (bary_u, bary_v) for its second and third
     /// corners, interpolated from the vertices' (a tessellated bicubic patch's (u, v)); nothing without them.
     std::optional<Vec3> params_at(std::size_t face, double bary_u, double bary_v) const;
@@ -67,6 +67,8 @@ public:
 
 private:
     MeshShape() = default;
+    /// create() without the memo: the faces kept, the bounds and the face tree.
+    static std::optional<MeshShape> build(const scene::Mesh& mesh);
     void finish();
     void build_tree();
     /// The faces whose (padded) box the ray meets within [t_min, t_max], in increasing index order, so the hits
@@ -76,10 +78,12 @@ private:
     /// that starts beyond the last crossing found.
     SurfaceHits nearest_crossings(const LocalRay& ray, double t_min, double t_max) const;
 
-    std::vector<Vec3> m_vertices;
-    std::vector<Vec3> m_normals;
-    std::vector<Face> m_faces;
-    std::vector<Vec3> m_params;  ///< per vertex, or empty
+    // Shared by copies, and by the shapes made from one scene mesh (a declared mesh used many times).
+    scene::SharedVector<Vec3> m_vertices;
+    scene::SharedVector<Vec3> m_normals;
+    scene::SharedVector<Face> m_faces;
+    scene::SharedVector<Vec3> m_params;  ///< per vertex, or empty
+    std::shared_ptr<const void> m_source;  ///< keeps the scene mesh's vectors, the key of the shapes made from it
     Vec3 m_inside_vector;
     bool m_nearest_only = false;  ///< a mesh or mesh2 without an inside_vector (see nearest_crossings)
     Bounds m_bounds;

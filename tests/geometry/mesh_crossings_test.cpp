@@ -1,5 +1,5 @@
-// Tests of a mesh's crossings for CSG: the face tree finds what testing every face finds, and a mesh without an
-// inside_vector stops at its nearest crossing as POV-Ray's does.
+// Tests of a mesh's crossings for CSG: the face tree finds what testing every face finds, a mesh without an
+// inside_vector stops at its nearest crossing as POV-Ray's does, and shapes of one scene mesh share their data.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -119,6 +119,35 @@ TEST(MeshCrossings, WithoutAnInsideVectorTheNearestCrossingIsAlwaysAmongThoseGiv
         if (some.size() < all.size()) ++fewer;
     }
     EXPECT_GT(fewer, 100);  // the far crossings are left out for many rays
+}
+
+TEST(MeshCrossings, ShapesMadeFromOneSceneMeshShareTheirData) {
+    Random rng(41);
+    const scene::Mesh m = soup(rng, 200);
+    const scene::Mesh same = m;  // a copy that shares the vectors, as `object { M }` does
+    const auto a = MeshShape::create(m);
+    const auto b = MeshShape::create(same);
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->faces().data(), b->faces().data());
+    EXPECT_EQ(a->vertices().data(), m.vertices.data());  // the scene's own vertices, not a copy
+    // A mesh changed since (its own vectors) or with another inside_vector is a shape of its own.
+    scene::Mesh moved = m;
+    moved.vertices.mut()[0] += Vec3{0.25, 0.0, 0.0};
+    scene::Mesh closed = m;
+    closed.inside_vector = {0.0, 1.0, 0.0};
+    const auto c = MeshShape::create(moved);
+    const auto d = MeshShape::create(closed);
+    ASSERT_TRUE(c && d);
+    EXPECT_NE(c->faces().data(), a->faces().data());
+    EXPECT_NE(c->vertices()[0].x, a->vertices()[0].x);
+    EXPECT_NE(d->faces().data(), a->faces().data());
+    // Shared or not, they cross a ray alike where they are alike.
+    for (int i = 0; i < 500; ++i) {
+        const LocalRay ray{rng.vec(-4, 4), rng.direction()};
+        const SurfaceHits ha = a->intersect_all(ray, 1e-6, k_far), hb = b->intersect_all(ray, 1e-6, k_far);
+        ASSERT_EQ(ha.size(), hb.size());
+        for (std::size_t k = 0; k < ha.size(); ++k) EXPECT_EQ(ha[k].t, hb[k].t);
+    }
 }
 
 }  // namespace
