@@ -159,7 +159,11 @@ std::optional<MeshShape> MeshShape::create(const scene::BicubicPatch& bp) {
     t.build(world, 0.0, 1.0, 0.0, 1.0, 0);
     auto shape = create(t.mesh);
     // POV-Ray compat: a hit's (u, v) is the triangle's blend of its corners' (u, v), as intersect_subpatch gives.
-    if (shape) shape->m_params = std::move(t.params);
+    if (shape) {
+        shape->m_params = std::move(t.params);
+        // A bicubic patch is POV-Ray's own shape, which gives all its crossings, not a mesh's walk.
+        shape->m_nearest_only = false;
+    }
     return shape;
 }
 

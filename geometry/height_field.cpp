@@ -113,12 +113,19 @@ void HeightFieldShape::build_normals() {
             corner(j, i, j - 1, i, j, i - 1, sum);
             corner(j, i, j, i - 1, j + 1, i, sum);
             const Vec3 n = direction_or_up(sum);
-            // POV-Ray compat: vertex normals are stored as 16-bit integers, then taken to the object's space.
-            const Vec3 q{double(static_cast<short>(32767 * n.x)), double(static_cast<short>(32767 * n.y)),
-                         double(static_cast<short>(32767 * n.z))};
-            const Vec3 world = m_placement->normal({q.x * m_scale.x, q.y * m_scale.y, q.z * m_scale.z});
-            m_normals[static_cast<std::size_t>(i) * m_grid->width + j] = direction_or_up(world);
+            // POV-Ray compat: vertex normals are stored as 16-bit integers (6 bytes a point, as POV-Ray keeps
+            // them), then taken to the object's space where a hit needs them (world_normal).
+            m_normals[static_cast<std::size_t>(i) * m_grid->width + j] = {
+                static_cast<std::int16_t>(static_cast<short>(32767 * n.x)),
+                static_cast<std::int16_t>(static_cast<short>(32767 * n.y)),
+                static_cast<std::int16_t>(static_cast<short>(32767 * n.z))};
         }
+}
+
+Vec3 HeightFieldShape::world_normal(std::size_t i) const {
+    const auto& q = m_normals[i];
+    const Vec3 world = m_placement->normal({double(q[0]) * m_scale.x, double(q[1]) * m_scale.y, double(q[2]) * m_scale.z});
+    return direction_or_up(world);
 }
 
 std::optional<Bounds> HeightFieldShape::bounds() const {
@@ -153,7 +160,7 @@ Vec3 HeightFieldShape::smooth_normal(const Vec3& p) const {
     const int pz = std::clamp(static_cast<int>(p.z), 0, m_grid->height - 2);
     const double x = p.x - px, z = p.z - pz;
     const std::size_t w = static_cast<std::size_t>(m_grid->width), i = static_cast<std::size_t>(pz) * w + px;
-    const Vec3 &n0 = m_normals[i], &n1 = m_normals[i + 1], &n2 = m_normals[i + w], &n3 = m_normals[i + w + 1];
+    const Vec3 n0 = world_normal(i), n1 = world_normal(i + 1), n2 = world_normal(i + w), n3 = world_normal(i + w + 1);
     // POV-Ray compat: the world-space vertex normals are interpolated; the result goes back to object space
     // through the transpose of the placement, which the instance's inverse transpose undoes.
     const Vec3 n_world = (1.0 - z) * ((1.0 - x) * n0 + x * n1) + z * ((1.0 - x) * n2 + x * n3);

@@ -1,6 +1,8 @@
 // HeightFieldShape: POV-Ray's `height_field`, two triangles per grid cell over the unit square, in object space.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -59,7 +61,10 @@ private:
     double m_y_hi = 0.0;  ///< its top
     std::vector<std::vector<Range>> m_levels;  ///< m_levels[k]: nodes of 2^k x 2^k cells, row-major
     std::vector<int> m_level_width;             ///< nodes per row at each level
-    std::vector<Vec3> m_normals;                ///< smooth: per grid point, in world space, unit length
+    /// smooth: per grid point, POV-Ray's 16-bit normal (32767 * n), taken to world space when a hit needs it
+    std::vector<std::array<std::int16_t, 3>> m_normals;
+    /// The world-space unit normal of grid point `i` from its stored 16-bit one.
+    Vec3 world_normal(std::size_t i) const;
     /// Unit-square space to world (scene::HeightField::placement); on the heap, as every shape instance is as large
     /// as the largest kind of shape.
     std::shared_ptr<const Transform> m_placement;

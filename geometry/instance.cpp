@@ -131,8 +131,8 @@ const SkipReason& last_skip_reason() { return t_skip; }
 
 int max_csg_depth() { return k_max_csg_depth; }
 
-ShapeInstance::ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index)
-    : m_shape(shape),
+ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index)
+    : m_shape(std::move(shape)),
       m_transform(object.transform),
       m_object(&object),
       m_index(index),
@@ -168,7 +168,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     // POV-Ray compat: an inverted plane is the plane with its normal and distance negated (Plane::Invert).
     const auto* plane = std::get_if<PlaneShape>(&*shape);
     if (plane && inverted) shape = AnyShape(plane->inverted());
-    ShapeInstance inst(*shape, object, index);
+    ShapeInstance inst(std::move(*shape), object, index);
     inst.m_inverse = inverted && !csg && !plane;
     std::optional<Bounds> local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);

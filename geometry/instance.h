@@ -102,7 +102,7 @@ public:
     bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
 
 private:
-    ShapeInstance(const AnyShape& shape, const scene::Object& object, std::uint32_t index);
+    ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index);
     /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.
     bool ray_in_bounds(const LocalRay& ray) const;
 

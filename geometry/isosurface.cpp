@@ -198,6 +198,25 @@ bool IsosurfaceShape::find_root(Trace& tr, double& tmin, double tmax, double& ma
 }
 
 SurfaceHits IsosurfaceShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+    // POV-Ray compat: a ray that goes on past a crossing (a shadow ray walking through the surfaces it crosses) is a
+    // new ray from there in POV-Ray, and from inside the container a closed isosurface gives the container's far
+    // side where the field is negative there, which the ray from its first origin does not. A continuation that
+    // starts inside the container is traced from where it starts.
+    double d1 = 0.0, d2 = 0.0;
+    int side1 = -1, side2 = -1;
+    if (t_min > m_iso->accuracy && container_interval(ray, d1, d2, side1, side2) && d1 < t_min && t_min < d2) {
+        const SurfaceHits from_start = crossings({ray.origin + t_min * ray.direction, ray.direction}, 0.0, t_max - t_min);
+        SurfaceHits hits;
+        for (SurfaceHit h : from_start) {
+            h.t += t_min;
+            hits.push(h);
+        }
+        return hits;
+    }
+    return crossings(ray, t_min, t_max);
+}
+
+SurfaceHits IsosurfaceShape::crossings(const LocalRay& ray, double t_min, double t_max) const {
     SurfaceHits hits;
     double d1 = 0.0, d2 = 0.0;
     int side1 = -1, side2 = -1;

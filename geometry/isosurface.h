@@ -57,6 +57,8 @@ private:
     struct Trace;
     explicit IsosurfaceShape(const scene::Isosurface& iso);
     bool container_interval(const LocalRay& ray, double& t1, double& t2, int& side1, int& side2) const;
+    /// POV-Ray's All_Intersections for a ray from its origin: intersect_all's work.
+    SurfaceHits crossings(const LocalRay& ray, double t_min, double t_max) const;
     Vec3 container_normal(const Vec3& p, int side) const;
     Vec3 function_normal(const Vec3& p) const;
     bool find_root(Trace& tr, double& tmin, double tmax, double& maxg) const;

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -11,7 +13,8 @@
 namespace wardray::geometry {
 
 /// A triangle list with optional per-vertex normals. SceneGeometry gives top-level meshes to Embree as native
-/// triangles and refines their hits here in double; intersect_all (brute force) serves CSG and tests.
+/// triangles and refines their hits here in double; intersect_all and inside (through a bounding-box tree over the
+/// faces, shared by copies) serve CSG and tests.
 class MeshShape {
 public:
     /// One face: vertex indices and normal indices (-1 when flat).
@@ -43,22 +46,48 @@ public:
     /// Distance to the nearest face (zero on the surface).
     double implicit(const Vec3& p) const;
 
-    const std::vector<Vec3>& vertices() const { return m_vertices; }
-    const std::vector<Face>& faces() const { return m_faces; }
+    const std::vector<Vec3>& vertices() const { return m_vertices.get(); }
+    const std::vector<Face>& faces() const { return m_faces.get(); }
     /// The surface parameters at a face's point of barycentric weights (bary_u, bary_v) for its second and third
     /// corners, interpolated from the vertices' (a tessellated bicubic patch's (u, v)); nothing without them.
     std::optional<Vec3> params_at(std::size_t face, double bary_u, double bary_v) const;
 
+    /// A node of the face tree: a leaf holds `count` faces from `first` in the tree's face order; an inner node's
+    /// children are the next node and node `first`.
+    struct TreeNode {
+        Bounds box;
+        std::uint32_t first = 0;
+        std::uint32_t count = 0;
+    };
+    /// The face tree: nodes (root first) and the faces' indices in leaf order.
+    struct FaceTree {
+        std::vector<TreeNode> nodes;
+        std::vector<std::uint32_t> order;
+    };
+
 private:
     MeshShape() = default;
+    /// create() without the memo: the faces kept, the bounds and the face tree.
+    static std::optional<MeshShape> build(const scene::Mesh& mesh);
     void finish();
+    void build_tree();
+    /// The faces whose (padded) box the ray meets within [t_min, t_max], in increasing index order, so the hits
+    /// come in the same order as a test of every face.
+    void candidate_faces(const LocalRay& ray, double t_min, double t_max, std::vector<std::uint32_t>& out) const;
+    /// POV-Ray's crossings of a mesh without an inside_vector: its faces nearest box first, up to the first box
+    /// that starts beyond the last crossing found.
+    SurfaceHits nearest_crossings(const LocalRay& ray, double t_min, double t_max) const;
 
-    std::vector<Vec3> m_vertices;
-    std::vector<Vec3> m_normals;
-    std::vector<Face> m_faces;
-    std::vector<Vec3> m_params;  ///< per vertex, or empty
+    // Shared by copies, and by the shapes made from one scene mesh (a declared mesh used many times).
+    scene::SharedVector<Vec3> m_vertices;
+    scene::SharedVector<Vec3> m_normals;
+    scene::SharedVector<Face> m_faces;
+    scene::SharedVector<Vec3> m_params;  ///< per vertex, or empty
+    std::shared_ptr<const void> m_source;  ///< keeps the scene mesh's vectors, the key of the shapes made from it
     Vec3 m_inside_vector;
+    bool m_nearest_only = false;  ///< a mesh or mesh2 without an inside_vector (see nearest_crossings)
     Bounds m_bounds;
+    std::shared_ptr<const FaceTree> m_tree;  ///< nothing for a few faces
 };
 
 /// POV-Ray's texture coordinates of a bicubic patch at its parameters (u, v): the uv_vectors blended bilinearly,

@@ -113,7 +113,10 @@ std::optional<MeshShape> MeshShape::create(const scene::Polygon& polygon) {
         for (int k = 0; k < 3; ++k) face.v[k] = vertex(f->vertex(k));
         mesh.faces.push_back(face);
     }
-    return create(mesh);
+    auto shape = create(mesh);
+    // A polygon is POV-Ray's own shape, whose crossings are all given (one plane: at most one).
+    if (shape) shape->m_nearest_only = false;
+    return shape;
 }
 
 }  // namespace wardray::geometry

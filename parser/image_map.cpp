@@ -60,7 +60,7 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     std::string key = found.string() + '\n' + (file_gamma ? std::to_string(file_gamma->gamma) : "file") +
                       std::to_string(static_cast<int>(file_gamma ? file_gamma->kind : GammaCurve::Kind::Neutral)) +
                       '\n' + std::to_string(working.gamma) + std::to_string(handling) +
-                      std::to_string(m_version >= 3.7) + (colour ? "c" : "v");
+                      std::to_string(m_version >= 3.7) + std::to_string(m_version_given) + (colour ? "c" : "v");
     if (auto it = m_images.find(key); it != m_images.end()) {
         if (it->second->has_alpha && it->second->palette_alpha.empty() && it->second->alpha.empty() && colour)
             warn_unsupported(at, "image_map alpha channel");
@@ -77,8 +77,14 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
+    // POV-Ray compat: a scene with no #version is read as POV-Ray 3.62's, and a pre-3.7 scene with assumed_gamma
+    // takes an untagged file to be in the working gamma. Only a PNG may carry its own gamma (gAMA, sRGB), which
+    // POV-Ray honours there; a JPEG, GIF, TGA, BMP or PPM never does.
+    const std::string extension = found.extension().string();
+    const bool png = type == "png" || (type.empty() && (extension == ".png" || extension == ".PNG"));
+    const bool pre_37 = png ? m_version < 3.7 : !(m_version_given && m_version >= 3.7);
     if (file_gamma) from = *file_gamma;
-    else if (encoded && m_version < 3.7 && m_working_gamma) from = working;
+    else if (encoded && pre_37 && m_working_gamma) from = working;
     const GammaTranscoding to_working = transcoding(working, from);
     if (handling) {
         // Most texels are bytes over 255: each of the 256 is decoded once, the rest one by one.

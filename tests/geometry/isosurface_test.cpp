@@ -158,6 +158,28 @@ TEST(Isosurface, ContainerCapsOpenAndMaxTrace) {
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(all[i].t, expected[i], 2e-3);
 }
 
+// POV-Ray compat: a shadow ray walking through the surfaces it crosses is a new ray from each crossing in POV-Ray,
+// so past the entry cap of a closed isosurface (the ray now inside the container) it meets the far cap, which the
+// ray from its first origin does not report (ContainerCapsOpenAndMaxTrace).
+TEST(Isosurface, ARayGoingOnFromInsideTheContainerMeetsTheFarCap) {
+    const Vec3 o{0.0, 0.0, -5.0}, d{0.0, 0.0, 1.0};
+    const auto closed = ShapeInstance::create(
+        parse_object("isosurface { function { sqrt(x*x + y*y + z*z) - 2 } contained_by { box { -1, 1 } } }"), 0);
+    ASSERT_TRUE(closed.has_value());
+    ASSERT_EQ(closed->intersect_all(o, d, 1e-6, INFINITY).size(), 1u);  // the entry cap at t = 4
+    const SurfaceHits on = closed->intersect_all(o, d, 4.0 + 1e-4, INFINITY);
+    ASSERT_EQ(on.size(), 1u);
+    EXPECT_NEAR(on[0].t, 6.0, 1e-9);
+    EXPECT_NEAR(on[0].normal.z, 1.0, 1e-12);
+    EXPECT_FALSE(on[0].entering);
+    // Where the field is positive at the far cap (a sphere inside the container), the walk meets the sphere instead.
+    const auto ball = ShapeInstance::create(
+        parse_object("isosurface { function { sqrt(x*x + y*y + z*z) - 0.5 } contained_by { box { -1, 1 } } }"), 0);
+    const SurfaceHits ball_on = ball->intersect_all(o, d, 4.0 + 1e-4, INFINITY);
+    ASSERT_EQ(ball_on.size(), 1u);
+    EXPECT_NEAR(ball_on[0].t, 4.5, 2e-3);
+}
+
 // Scaled by 1e-4 and 1e4, an isosurface gives finite hits and normals. POV-Ray compat: accuracy is measured along
 // the world ray, so the tiny one needs an accuracy scaled with it (POV-Ray draws nothing of it otherwise).
 TEST(Isosurface, ExtremeScalesStayFinite) {

@@ -52,6 +52,32 @@ TEST(ImageMap, WithoutGammaAnEightBitFileIsSrgb) {
     EXPECT_NEAR(texture::evaluate_pigment(p, {0.25, 0.75, 0.0}, 2).r, GammaCurve::srgb().decode(0.5), 1e-6);
 }
 
+// The top-left texel's red (stored 0.5) of `pigment { image_map { TYPE "file" } }` in a scene that begins with
+// `head` and says assumed_gamma 1.
+double top_left_red(const std::string& head, const std::string& type) {
+    parser::ParseOptions options;
+    options.read_image = two_by_two;
+    options.read_paths.push_back(WARDRAY_SOURCE_DIR "/scenes");
+    const parser::ParseResult r = parser::parse_string(
+        head + "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { image_map { " + type + " \"" +
+            WARDRAY_SOURCE_DIR "/scenes/default.pov\" } } }",
+        "test.pov", options);
+    EXPECT_TRUE(r.ok());
+    if (!r.ok()) return -1.0;
+    return texture::evaluate_pigment(r.scene->objects.at(0).texture->pigment, {0.25, 0.75, 0.0}, 2).r;
+}
+
+TEST(ImageMap, AJpegInASceneWithoutVersionIsInTheWorkingGammaAsPovRay362Reads) {
+    const double srgb = GammaCurve::srgb().decode(0.5);
+    // POV-Ray reads a scene with no #version as 3.62's: an untagged 8-bit file is taken in the working gamma.
+    EXPECT_NEAR(top_left_red("", "jpeg"), 0.5, 1e-6);
+    EXPECT_NEAR(top_left_red("", "gif"), 0.5, 1e-6);
+    EXPECT_NEAR(top_left_red("#version 3.6;\n", "jpeg"), 0.5, 1e-6);
+    // With #version 3.7 it is sRGB, and a PNG (which may be tagged; POV-Ray honours its gAMA or sRGB) stays sRGB.
+    EXPECT_NEAR(top_left_red("#version 3.7;\n", "jpeg"), srgb, 1e-6);
+    EXPECT_NEAR(top_left_red("", "png"), srgb, 1e-6);
+}
+
 // Every byte value over 255 and a few that are not: the parser's table for byte values gives each exactly what
 // decoding it alone gives.
 std::shared_ptr<const scene::ImageData> all_bytes(const std::filesystem::path&, bool& encoded, std::string&) {
