@@ -84,6 +84,7 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& s
       m_expand_min(settings.expand_min),
       m_exponent_offset(exponent_offset) {
     if (m_photons.empty()) return;
+    m_boxes.resize(m_photons.size());
     build(0, static_cast<int>(m_photons.size()));
     estimate_radius(settings, media, seed);
 }
@@ -102,6 +103,7 @@ void PhotonMap::build(int begin, int end) {
     for (int a = 1; a < 3; ++a)
         if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
     const int mid = (begin + end - 1) / 2;
+    m_boxes[mid] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
     std::nth_element(m_photons.begin() + begin, m_photons.begin() + mid, m_photons.begin() + end,
                      [axis](const Photon& a, const Photon& b) { return a.position[axis] < b.position[axis]; });
     m_photons[mid].axis = static_cast<std::uint8_t>(axis);
@@ -109,33 +111,87 @@ void PhotonMap::build(int begin, int end) {
     build(mid + 1, end);
 }
 
-void PhotonMap::search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
-                       std::vector<std::pair<double, const Photon*>>& heap) const {
-    if (end - begin < 1) return;
-    const int mid = (begin + end - 1) / 2;
-    const Photon& ph = m_photons[mid];
-    const Vec3 v = ph.point() - p;
-    double d2 = dot(v, v);
-    // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
-    if (n) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
-    if (d2 < max_d2) {
-        heap.emplace_back(d2, &ph);
-        std::push_heap(heap.begin(), heap.end());
-        if (heap.size() > limit) {
-            std::pop_heap(heap.begin(), heap.end());
-            heap.pop_back();
-            max_d2 = heap.front().first;
-        }
+namespace {
+
+// A gather's candidates: a max-heap of (d², photon) pairs, reused by every gather on the thread.
+using Candidates = std::vector<std::pair<double, const Photon*>>;
+
+// A lower bound of d² from `p` to any photon in `box` (lower x y z, upper x y z), never above the d² the search
+// computes for one of them: the gaps are differences with the same operands' bounds, rounded the same way, and
+// summed in dot()'s order, and rounding is monotone.
+double box_distance2(const std::array<float, 6>& box, const Vec3& p) {
+    auto gap = [](double q, double lo, double hi) { return q < lo ? lo - q : q > hi ? q - hi : 0.0; };
+    const double gx = gap(p.x, box[0], box[3]), gy = gap(p.y, box[1], box[4]), gz = gap(p.z, box[2], box[5]);
+    return gx * gx + gy * gy + gz * gz;
+}
+
+// Puts `c` in the full heap in place of its largest entry when `c` is smaller (what a push followed by popping the
+// largest of the limit + 1 entries leaves: the same entries and the same largest one).
+void replace_largest(Candidates& heap, const std::pair<double, const Photon*>& c) {
+    if (!(c < heap.front())) return;
+    const std::size_t size = heap.size();
+    std::size_t i = 0;
+    while (true) {
+        const std::size_t left = 2 * i + 1;
+        if (left >= size) break;
+        std::size_t child = left;
+        if (left + 1 < size && heap[child] < heap[left + 1]) child = left + 1;
+        if (!(c < heap[child])) break;
+        heap[i] = heap[child];
+        i = child;
     }
-    const int axis = ph.axis;
-    const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
-    const bool below = delta < 0.0;
-    // The near side first, then the far side while the splitting plane is within reach.
-    if (below) search(begin, mid, p, n, max_d2, limit, heap);
-    else search(mid + 1, end, p, n, max_d2, limit, heap);
-    if (delta * delta < max_d2) {
-        if (below) search(mid + 1, end, p, n, max_d2, limit, heap);
-        else search(begin, mid, p, n, max_d2, limit, heap);
+    heap[i] = c;
+}
+
+}  // namespace
+
+void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+                       std::vector<std::pair<double, const Photon*>>& heap) const {
+    // Depth-first, each node before its near side and the far side after it while the splitting plane is within
+    // reach: the recursive order, kept so that photons at equal distances are kept as before. The far sides wait
+    // on a stack with their plane's squared distance, tested against the radius when they are reached. A subtree
+    // whose box is out of reach is skipped: none of its photons could be kept, so what is kept does not change.
+    struct Far {
+        int begin, end;
+        double plane_d2;
+    };
+    Far pending[64];  // one per level of a balanced tree: 2^64 photons
+    int top = 0;
+    int begin = 0, end = static_cast<int>(m_photons.size());
+    while (true) {
+        while (end - begin >= 1) {
+            const int mid = (begin + end - 1) / 2;
+            if (!(box_distance2(m_boxes[mid], p) < max_d2)) break;
+            const Photon& ph = m_photons[mid];
+            const Vec3 v = ph.point() - p;
+            double d2 = dot(v, v);
+            // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
+            if (n) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
+            if (d2 < max_d2) {
+                if (heap.size() < limit) {
+                    heap.emplace_back(d2, &ph);
+                    std::push_heap(heap.begin(), heap.end());
+                } else {
+                    replace_largest(heap, {d2, &ph});
+                    max_d2 = heap.front().first;
+                }
+            }
+            const int axis = ph.axis;
+            const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
+            if (delta < 0.0) {
+                pending[top++] = {mid + 1, end, delta * delta};
+                end = mid;
+            } else {
+                pending[top++] = {begin, mid, delta * delta};
+                begin = mid + 1;
+            }
+        }
+        do {
+            if (top == 0) return;
+            --top;
+        } while (!(pending[top].plane_d2 < max_d2));
+        begin = pending[top].begin;
+        end = pending[top].end;
     }
 }
 
@@ -144,14 +200,15 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     out.radius = size;
     out.exponent_offset = m_exponent_offset;
     if (m_photons.empty() || m_gather_max <= 0) return;
-    std::vector<std::pair<double, const Photon*>> heap;
-    heap.reserve(static_cast<std::size_t>(m_gather_max) + 1);
+    thread_local Candidates heap;
+    heap.clear();
     double max_d2 = size * size;
-    search(0, static_cast<int>(m_photons.size()), p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
+    search(p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
     out.radius = std::sqrt(max_d2);
     // Nearest first, ties by storage order, so the sum's rounding is the same on every run (the heap is ordered by
     // the pair's operator<: distance, then address).
     std::sort_heap(heap.begin(), heap.end());
+    out.photons.reserve(heap.size());
     for (const auto& e : heap) out.photons.push_back(e.second);
 }
 
@@ -161,12 +218,12 @@ void PhotonMap::gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) con
     if (previous == 0.0) previous = 1e-16;
     // POV-Ray's gatherNumSteps is 2: at most one wider gather, at the radius plus twice it.
     if (static_cast<int>(out.photons.size()) >= m_gather_min) return;
-    Gathered wider;
+    thread_local Gathered wider;
     gather(p, m_min_radius + m_radius_step, n, wider);
     const double density = wider.photons.size() / (wider.radius * wider.radius);
     const int found = static_cast<int>(wider.photons.size());
     if ((density - previous) / previous < m_expand_tolerance || (found < m_expand_min && found > 0))
-        out = std::move(wider);
+        std::swap(out, wider);
 }
 
 void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed) {
@@ -212,7 +269,7 @@ void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool medi
 }
 
 double MediaPhotonGather::gather(const Vec3& p, std::vector<Sample>& out) const {
-    Gathered g;
+    thread_local Gathered g;
     m_map.gather_adaptive(p, nullptr, g);
     out.clear();
     for (const Photon* ph : g.photons) out.push_back({photon_colour(*ph, g.exponent_offset), photon_direction(*ph)});

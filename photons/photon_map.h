@@ -69,11 +69,13 @@ public:
 
 private:
     void build(int begin, int end);
-    void search(int begin, int end, const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
+    void search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
                 std::vector<std::pair<double, const Photon*>>& heap) const;
     void estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed);
 
     std::vector<Photon> m_photons;
+    /// Per node (indexed as m_photons), the box of the photons below it, itself included: lower x y z, upper x y z.
+    std::vector<std::array<float, 6>> m_boxes;
     int m_gather_max = 100;
     int m_gather_min = 20;
     double m_expand_tolerance = 0.2;
