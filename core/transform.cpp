@@ -155,17 +155,4 @@ Vec3 Transform::normal(const Vec3& n) const {
             m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
 }
 
-Vec3 Transform::inverse_point(const Vec3& p) const {
-    const auto& m = m_inverse;
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-}
-
-Vec3 Transform::inverse_vector(const Vec3& v) const {
-    const auto& m = m_inverse;
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
-
 }  // namespace wardray

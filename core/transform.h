@@ -35,8 +35,18 @@ public:
     Vec3 vector(const Vec3& v) const;
     /// Transforms a surface normal (inverse transpose); the result is not normalized.
     Vec3 normal(const Vec3& n) const;
-    Vec3 inverse_point(const Vec3& p) const;
-    Vec3 inverse_vector(const Vec3& v) const;
+    /// Inline: every shape test of every ray maps the ray into object space through these two.
+    Vec3 inverse_point(const Vec3& p) const {
+        const auto& m = m_inverse;
+        return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+                m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+                m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+    }
+    Vec3 inverse_vector(const Vec3& v) const {
+        const auto& m = m_inverse;
+        return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+                m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
 
     const Matrix34& matrix() const { return m_forward; }
     bool operator==(const Transform&) const = default;

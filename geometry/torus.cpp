@@ -1,6 +1,7 @@
 // TorusShape: the quartic in the distance along the unit ray from its point nearest the centre.
 #include "geometry/torus.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/polynomial.h"
@@ -24,6 +25,7 @@ SurfaceHits TorusShape::intersect_all(const LocalRay& ray, double t_min, double 
     const double h2 = outer * outer - dot(o, o);
     if (h2 < 0.0) return hits;
     const double half = std::sqrt(h2) * (1.0 + 1e-9) + 1e-12 * outer;
+    if (misses_tube(u, o, half)) return hits;
     // (|o + s u|² + R² - r²)² - 4R²((ox + s ux)² + (oz + s uz)²) with |u| = 1 and o·u = 0.
     const double R2 = m_major * m_major;
     const double k = dot(o, o) + R2 - m_minor * m_minor;
@@ -43,6 +45,43 @@ SurfaceHits TorusShape::intersect_all(const LocalRay& ray, double t_min, double 
         hits.push({t, normal, dot(normal, ray.direction) < 0.0});
     }
     return hits;
+}
+
+bool TorusShape::misses_tube(const Vec3& u, const Vec3& o, double half) const {
+    // The quartic is positive wherever |y| > r or the distance from the axis is outside [R - r, R + r] (there
+    // (|p|² + R² - r²)² > 4 R² (x² + z²)), so a chord that stays out of that ring has no root to find. The margin
+    // keeps the quartic well above its rounding error where this says "no"; below r = 1e-6 R it would not.
+    const double r = m_minor, R = m_major;
+    if (!(r >= 1e-6 * R)) return false;
+    const double margin = 1e-4 * (R + r);
+    const double slab = r + margin;
+    // The chord's stretch within the slab |y| <= r + margin.
+    double lo = -half, hi = half;
+    if (u.y != 0.0) {
+        double a = (-slab - o.y) / u.y, b = (slab - o.y) / u.y;
+        if (a > b) std::swap(a, b);
+        lo = std::fmax(lo, a);
+        hi = std::fmin(hi, b);
+        if (!(lo <= hi)) return true;
+    } else if (!(std::fabs(o.y) <= slab)) {
+        return true;
+    }
+    // x² + z² over that stretch: largest at an end, smallest at an end or at the parabola's vertex.
+    auto rho2 = [&](double s) {
+        const double x = o.x + s * u.x, z = o.z + s * u.z;
+        return x * x + z * z;
+    };
+    const double at_lo = rho2(lo), at_hi = rho2(hi);
+    double smallest = std::fmin(at_lo, at_hi);
+    const double uxz = u.x * u.x + u.z * u.z;
+    if (uxz > 0.0) {
+        const double vertex = -(o.x * u.x + o.z * u.z) / uxz;
+        if (vertex > lo && vertex < hi) smallest = std::fmin(smallest, rho2(vertex));
+    }
+    const double outer = R + r + margin;
+    if (smallest > outer * outer) return true;
+    const double inner = R - r - margin;
+    return inner > 0.0 && std::fmax(at_lo, at_hi) < inner * inner;
 }
 
 std::optional<Bounds> TorusShape::bounds() const {

@@ -25,6 +25,9 @@ public:
 
 private:
     TorusShape(double major, double minor) : m_major(major), m_minor(minor) {}
+    /// True when the chord o + s u, |s| <= half (u a unit vector), provably misses the tube: it never enters the
+    /// slab |y| <= r or the ring R - r <= sqrt(x² + z²) <= R + r there, with a margin against rounding.
+    bool misses_tube(const Vec3& u, const Vec3& o, double half) const;
 
     double m_major;
     double m_minor;

@@ -206,6 +206,7 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     out.radius = std::sqrt(max_d2);
     // Nearest first, ties by storage order, so the sum's rounding is the same on every run.
     std::sort(heap.begin(), heap.end());
+    out.photons.reserve(heap.size());
     for (const auto& e : heap) out.photons.push_back(e.second);
 }
 
@@ -215,12 +216,12 @@ void PhotonMap::gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) con
     if (previous == 0.0) previous = 1e-16;
     // POV-Ray's gatherNumSteps is 2: at most one wider gather, at the radius plus twice it.
     if (static_cast<int>(out.photons.size()) >= m_gather_min) return;
-    Gathered wider;
+    thread_local Gathered wider;
     gather(p, m_min_radius + m_radius_step, n, wider);
     const double density = wider.photons.size() / (wider.radius * wider.radius);
     const int found = static_cast<int>(wider.photons.size());
     if ((density - previous) / previous < m_expand_tolerance || (found < m_expand_min && found > 0))
-        out = std::move(wider);
+        std::swap(out, wider);
 }
 
 void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed) {
@@ -266,7 +267,8 @@ void PhotonMap::estimate_radius(const scene::PhotonSettings& settings, bool medi
 }
 
 double MediaPhotonGather::gather(const Vec3& p, std::vector<Sample>& out) const {
-    Gathered g;
+    // One list per thread: a media sample gathers at every step of every ray through the medium.
+    thread_local Gathered g;
     m_map.gather_adaptive(p, nullptr, g);
     out.clear();
     for (const Photon* ph : g.photons) out.push_back({photon_colour(*ph, g.exponent_offset), photon_direction(*ph)});

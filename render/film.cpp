@@ -180,7 +180,7 @@ std::optional<Film> read_image(const std::filesystem::path& path, std::string& e
         error = *oversized;
         return std::nullopt;
     }
-    // PNGs (but palette ones with a tRNS chunk), JPEGs and GIFs (most image maps and JPEG height fields) through
+    // PNGs (but grey and RGB ones with a tRNS chunk), JPEGs and GIFs (most image maps and JPEG height fields) through
     // libpng, libjpeg and the GIF decoder; the rest through OpenImageIO, loaded on first use (about 0.5 s and 120 MB of libraries).
     int width = 0, height = 0;
     std::vector<float> pixels, png_alpha;

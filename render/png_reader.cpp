@@ -31,7 +31,7 @@ void quiet_warning(png_structp, png_const_charp) {}
 
 /// Reads the whole image as RGB, or returns false: a libpng error, or a file with an alpha channel or a tRNS
 /// chunk (left to OpenImageIO, whose alpha handling the rest of the program expects). With `alpha`, reads only a
-/// file with an alpha channel (grey or RGB, no tRNS), as RGBA.
+/// file with an alpha channel (grey or RGB, no tRNS) or a palette with a tRNS chunk, as RGBA.
 bool read_rows(std::FILE* file, PngRows& out, bool alpha) {
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, quiet_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -46,11 +46,16 @@ bool read_rows(std::FILE* file, PngRows& out, bool alpha) {
     png_init_io(png, file);
     png_read_info(png, info);
     const int color_type = png_get_color_type(png, info);
-    if (((color_type & PNG_COLOR_MASK_ALPHA) != 0) != alpha || png_get_valid(png, info, PNG_INFO_tRNS) != 0) {
+    const bool trns = png_get_valid(png, info, PNG_INFO_tRNS) != 0;
+    // A palette's tRNS chunk gives each entry an alpha: OpenImageIO reads such a file as RGBA (bumpmap_.png).
+    const bool palette_alpha = color_type == PNG_COLOR_TYPE_PALETTE && trns;
+    const bool channel_alpha = (color_type & PNG_COLOR_MASK_ALPHA) != 0;
+    if (alpha ? !(palette_alpha || (channel_alpha && !trns)) : (channel_alpha || trns)) {
         png_destroy_read_struct(&png, &info, nullptr);
         return false;
     }
     if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
+    if (palette_alpha) png_set_tRNS_to_alpha(png);
     if (color_type == PNG_COLOR_TYPE_GRAY && png_get_bit_depth(png, info) < 8) png_set_expand_gray_1_2_4_to_8(png);
     if (color_type == PNG_COLOR_TYPE_GRAY || color_type == PNG_COLOR_TYPE_GRAY_ALPHA) png_set_gray_to_rgb(png);
     if (png_get_bit_depth(png, info) == 16) png_set_swap(png);  // host (little-endian) order

@@ -43,7 +43,8 @@ void chunk(Bytes& png, const char* type, const Bytes& data) {
 }
 
 /// A PNG of `rows` (each with its filter byte 0 already in front), deflated as stored blocks.
-Bytes make_png(int width, int height, int depth, int color_type, const Bytes& rows, const Bytes& palette = {}) {
+Bytes make_png(int width, int height, int depth, int color_type, const Bytes& rows, const Bytes& palette = {},
+               const Bytes& trns = {}) {
     Bytes png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     Bytes ihdr;
     put32(ihdr, width);
@@ -51,6 +52,7 @@ Bytes make_png(int width, int height, int depth, int color_type, const Bytes& ro
     ihdr.insert(ihdr.end(), {static_cast<unsigned char>(depth), static_cast<unsigned char>(color_type), 0, 0, 0});
     chunk(png, "IHDR", ihdr);
     if (!palette.empty()) chunk(png, "PLTE", palette);
+    if (!trns.empty()) chunk(png, "tRNS", trns);
     Bytes z = {0x78, 0x01, 0x01, static_cast<unsigned char>(rows.size() & 0xff),
                static_cast<unsigned char>(rows.size() >> 8), static_cast<unsigned char>(~rows.size() & 0xff),
                static_cast<unsigned char>((~rows.size() >> 8) & 0xff)};
@@ -153,9 +155,25 @@ TEST(PngReader, AlphaAndOtherFilesAreLeftToOpenImageIO) {
     EXPECT_FALSE(read_image(text, error).has_value());
 }
 
-// PNGs with an alpha channel: the colours, straight, and the alpha exactly as OpenImageIO reads them.
+/// A 6x3 palette PNG of 8-bit indices into 16 entries, with a tRNS chunk for the first `trns_entries` of them.
+Bytes palette_with_trns(int trns_entries) {
+    Bytes palette, trns;
+    for (int i = 0; i < 16 * 3; ++i) palette.push_back(static_cast<unsigned char>(i * 5 + 3));
+    for (int i = 0; i < trns_entries; ++i) trns.push_back(static_cast<unsigned char>(255 - i * 37 % 256));
+    Bytes indices;
+    for (int y = 0; y < 3; ++y) {
+        indices.push_back(0);
+        for (int x = 0; x < 6; ++x) indices.push_back(static_cast<unsigned char>((x * 5 + y * 3) % 16));
+    }
+    return make_png(6, 3, 8, 3, indices, palette, trns);
+}
+
+// PNGs with an alpha channel, and palettes with a tRNS chunk (POV-Ray's bumpmap_.png): the colours, straight, and
+// the alpha exactly as OpenImageIO reads them.
 TEST(PngReader, AlphaKindsReadAsOpenImageIOReadsThem) {
-    for (const auto& [name, png] : {std::pair{"rgba8.png", make_png(3, 2, 8, 6, rows_of(3, 2, 12))},
+    for (const auto& [name, png] : {std::pair{"palette-trns.png", palette_with_trns(16)},
+                                    std::pair{"palette-short-trns.png", palette_with_trns(5)},
+                                    std::pair{"rgba8.png", make_png(3, 2, 8, 6, rows_of(3, 2, 12))},
                                     std::pair{"rgba16.png", make_png(5, 3, 16, 6, rows_of(5, 3, 40))},
                                     std::pair{"grey-alpha8.png", make_png(4, 3, 8, 4, rows_of(4, 3, 8))},
                                     std::pair{"grey-alpha16.png", make_png(3, 3, 16, 4, rows_of(3, 3, 12))}}) {
