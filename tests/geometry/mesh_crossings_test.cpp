@@ -17,21 +17,6 @@ using test::Random;
 
 constexpr double k_far = std::numeric_limits<double>::infinity();
 
-// A random triangle soup of `n` faces around the origin.
-scene::Mesh soup(Random& rng, int n) {
-    scene::Mesh m;
-    for (int i = 0; i < n; ++i) {
-        const Vec3 c = rng.vec(-2, 2);
-        scene::Mesh::Face f;
-        for (int k = 0; k < 3; ++k) {
-            f.v[k] = static_cast<int>(m.vertices.size());
-            m.vertices.push_back(c + rng.vec(-0.5, 0.5));
-        }
-        m.faces.push_back(f);
-    }
-    return m;
-}
-
 // The regular octahedron |x| + |y| + |z| = 1 as eight faces.
 scene::Mesh octahedron() {
     scene::Mesh m;
@@ -57,7 +42,7 @@ std::vector<double> every_face(const MeshShape& mesh, const LocalRay& ray, doubl
 
 TEST(MeshCrossings, TheFaceTreeFindsEveryCrossingThatTestingEachFaceFinds) {
     Random rng(2311);
-    scene::Mesh m = soup(rng, 600);
+    scene::Mesh m = test::random_soup(rng, 600, 0.5);
     m.inside_vector = {0.3, 1.0, 0.2};  // all crossings, as POV-Ray gives a mesh with an inside_vector
     const auto mesh = MeshShape::create(m);
     ASSERT_TRUE(mesh);
@@ -100,7 +85,7 @@ TEST(MeshCrossings, WithoutAnInsideVectorOnlyTheNearestCrossingOfAConvexMeshIsGi
 
 TEST(MeshCrossings, WithoutAnInsideVectorTheNearestCrossingIsAlwaysAmongThoseGiven) {
     Random rng(907);
-    scene::Mesh m = soup(rng, 300);
+    scene::Mesh m = test::random_soup(rng, 300, 0.5);
     const auto open = MeshShape::create(m);
     m.inside_vector = {0.3, 1.0, 0.2};
     const auto closed = MeshShape::create(m);
@@ -123,7 +108,7 @@ TEST(MeshCrossings, WithoutAnInsideVectorTheNearestCrossingIsAlwaysAmongThoseGiv
 
 TEST(MeshCrossings, ShapesMadeFromOneSceneMeshShareTheirData) {
     Random rng(41);
-    const scene::Mesh m = soup(rng, 200);
+    const scene::Mesh m = test::random_soup(rng, 200, 0.5);
     const scene::Mesh same = m;  // a copy that shares the vectors, as `object { M }` does
     const auto a = MeshShape::create(m);
     const auto b = MeshShape::create(same);

@@ -13,27 +13,6 @@ namespace {
 using test::make_object;
 using test::Random;
 
-// A random triangle soup of `n` faces around the origin, some faces smooth.
-scene::Mesh random_mesh(Random& rng, int n) {
-    scene::Mesh m;
-    for (int i = 0; i < n; ++i) {
-        const Vec3 c = rng.vec(-2, 2);
-        scene::Mesh::Face f;
-        for (int k = 0; k < 3; ++k) {
-            f.v[k] = static_cast<int>(m.vertices.size());
-            m.vertices.push_back(c + rng.vec(-0.6, 0.6));
-        }
-        if (rng.chance(0.3)) {
-            for (int k = 0; k < 3; ++k) {
-                f.n[k] = static_cast<int>(m.normals.size());
-                m.normals.push_back(rng.direction());
-            }
-        }
-        m.faces.push_back(f);
-    }
-    return m;
-}
-
 std::optional<Hit> brute_force(const scene::Scene& scene, const Ray& ray) {
     std::optional<Hit> best;
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
@@ -48,7 +27,7 @@ TEST(MeshScene, EmbreeTrianglesMatchBruteForce) {
     Random rng(77);
     scene::Scene scene;
     for (int i = 0; i < 8; ++i) {
-        scene::Object o = make_object(random_mesh(rng, 40), rng.transform(10.0));
+        scene::Object o = make_object(test::random_soup(rng, 40, 0.6, 0.3), rng.transform(10.0));
         o.no_shadow = rng.chance(0.2);
         o.no_image = rng.chance(0.2);
         scene.objects.push_back(o);

@@ -49,6 +49,28 @@ inline scene::Object make_object(const scene::Shape& shape, const Transform& xf 
     return o;
 }
 
+/// A random triangle soup of `n` faces around the origin: each face's corners within `spread` of a centre in
+/// [-2, 2]³, and with chance `smooth` (none drawn when 0) a normal at each corner.
+inline scene::Mesh random_soup(Random& rng, int n, double spread, double smooth = 0.0) {
+    scene::Mesh m;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 c = rng.vec(-2, 2);
+        scene::Mesh::Face f;
+        for (int k = 0; k < 3; ++k) {
+            f.v[k] = static_cast<int>(m.vertices.size());
+            m.vertices.push_back(c + rng.vec(-spread, spread));
+        }
+        if (smooth > 0.0 && rng.chance(smooth)) {
+            for (int k = 0; k < 3; ++k) {
+                f.n[k] = static_cast<int>(m.normals.size());
+                m.normals.push_back(rng.direction());
+            }
+        }
+        m.faces.push_back(f);
+    }
+    return m;
+}
+
 /// A random sphere, box or (when allowed) plane in object space.
 inline scene::Shape random_shape(Random& rng, bool allow_plane) {
     const int kind = rng.integer(0, allow_plane ? 2 : 1);
