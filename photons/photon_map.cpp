@@ -183,11 +183,13 @@ void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t
                 cell.begin = mid + 1;
             }
         }
-        // The far side once the near one is done, while its cell is within reach.
+        // The far side once the near one is done, while its cell is within reach. The cell's distance is summed in
+        // another order than a photon's own, so it is shaded down by a trillionth: rounding can then only visit a
+        // cell too many, never skip a photon at the cell's nearest corner.
         for (;;) {
             if (n_pending == 0) return;
             cell = pending[--n_pending];
-            if (cell.d2 < max_d2) break;
+            if (cell.d2 * (1.0 - 1e-12) < max_d2) break;
         }
     }
 }
