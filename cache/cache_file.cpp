@@ -149,7 +149,7 @@ void IrradianceCache::load(std::istream& in) {
 
     // Read everything into new octrees first, so a bad file leaves this cache untouched.
     std::vector<RecordOctree> trees;
-    for (const RecordOctree& t : m_octrees) trees.emplace_back(t.reach());
+    for (const RecordOctree& t : m_octrees) trees.push_back(t.empty_like());
     std::vector<std::vector<std::uint64_t>> per_pass;
     Checksum sum;
     std::array<unsigned char, kRecordBytes> buf{};

@@ -13,6 +13,14 @@ double largest_error_bound(const scene::RadiositySettings& settings) {
     return settings.error_bound * std::max(1.0, settings.low_error_factor) + 0.25;
 }
 
+/// The smaller filings: at the final pass's and the pretrace's error bounds, where most lookups are made (rays of
+/// weight 0.25 and more), as fractions of the largest bound. Only the filing walked changes; the records found and
+/// their order do not.
+std::array<double, 2> lookup_filings(const scene::RadiositySettings& settings) {
+    const double largest = largest_error_bound(settings);
+    return {settings.error_bound / largest, settings.error_bound * settings.low_error_factor / largest};
+}
+
 /// Neighbour clamping (Křivánek et al. 2006) of a new record against `tree`'s records and back: R_new ≤ R_i +
 /// |p_new − p_i| for the records closer than R_new, then R_i ≤ R_new + |p_i − p_new| for those whose sphere R_i
 /// holds the new point (reach ≥ 1 files them).
@@ -43,7 +51,7 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
 }  // namespace
 
 TileCache::TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {
-    for (int d = 0; d < cache.depth_count(); ++d) m_own.emplace_back(cache.reach(d));
+    for (int d = 0; d < cache.depth_count(); ++d) m_own.push_back(cache.empty_octree(d));
 }
 
 Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) {
@@ -83,7 +91,7 @@ TileCache::Contribution TileCache::contribution() const {
 
 void TileCache::adopt(const Contribution& contribution) {
     m_order.clear();
-    for (RecordOctree& own : m_own) own = RecordOctree(own.reach());
+    for (RecordOctree& own : m_own) own = own.empty_like();
     // Filed as they stand: merge_tiles() reads them back in this order and clamps them against the merged cache.
     for (const IrradianceRecord& record : contribution.records) {
         if (record.depth < 0 || record.depth >= static_cast<int>(m_own.size())) continue;
@@ -94,11 +102,15 @@ void TileCache::adopt(const Contribution& contribution) {
 }
 
 IrradianceCache::IrradianceCache(const scene::RadiositySettings& settings)
-    : IrradianceCache(std::max(settings.recursion_limit, 1), largest_error_bound(settings)) {}
+    : IrradianceCache(std::max(settings.recursion_limit, 1), largest_error_bound(settings), lookup_filings(settings)) {}
 
-IrradianceCache::IrradianceCache(int depths, double reach) {
+IrradianceCache::IrradianceCache(int depths, double reach, std::array<double, 2> inner) {
     const int n = std::max(depths, 1);
-    for (int d = 0; d < n; ++d) m_octrees.emplace_back(std::ldexp(reach, d));
+    for (int d = 0; d < n; ++d) m_octrees.emplace_back(std::ldexp(reach, d), inner);
+}
+
+RecordOctree IrradianceCache::empty_octree(int depth) const {
+    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))].empty_like();
 }
 
 double IrradianceCache::reach(int depth) const {
@@ -134,7 +146,7 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
         m_hits += t.m_hits;
         // The tile starts afresh: what it made is now part of the frozen cache.
         t.m_order.clear();
-        for (RecordOctree& own : t.m_own) own = RecordOctree(own.reach());
+        for (RecordOctree& own : t.m_own) own = own.empty_like();
         t.m_lookups = 0;
         t.m_hits = 0;
     }
@@ -204,7 +216,7 @@ std::size_t IrradianceCache::keep_records(const std::function<bool(const Irradia
     std::size_t dropped = 0;
     for (auto& per_depth : m_records_per_pass) std::fill(per_depth.begin(), per_depth.end(), 0);
     for (std::size_t d = 0; d < m_octrees.size(); ++d) {
-        RecordOctree kept(m_octrees[d].reach());
+        RecordOctree kept = m_octrees[d].empty_like();
         for (const IrradianceRecord& r : m_octrees[d].records()) {
             if (!keep(r)) {
                 ++dropped;

@@ -1,6 +1,7 @@
 // IrradianceCache: one record octree per bounce depth, filled in passes by tiles and merged in tile order.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <cstdint>
 #include <iosfwd>
@@ -85,12 +86,15 @@ class IrradianceCache {
 public:
     /// One depth per `recursion_limit` bounce; octrees filed for the largest error bound lookup_params() can give.
     explicit IrradianceCache(const scene::RadiositySettings& settings);
-    /// `depths` octrees whose filing reach at depth d is reach × 2^d.
-    IrradianceCache(int depths, double reach);
+    /// `depths` octrees whose filing reach at depth d is reach × 2^d, with their smaller filings at `inner`
+    /// fractions of it (RecordOctree).
+    IrradianceCache(int depths, double reach, std::array<double, 2> inner = {0.5, 0.25});
 
     int depth_count() const { return static_cast<int>(m_octrees.size()); }
     /// The filing reach at `depth`: lookups with a larger error bound are clamped to it.
     double reach(int depth) const;
+    /// An empty octree filed as the cache's at `depth`.
+    RecordOctree empty_octree(int depth) const;
 
     /// Freezes the cache and opens `tile_count` tile views; returns the pass number (0, 1, ...).
     int begin_pass(int tile_count);

@@ -10,9 +10,6 @@ namespace {
 /// Levels below the root at most; smaller spheres are filed at this level (correct, only less selective).
 constexpr int kMaxLevels = 30;
 
-/// Filings at reach, reach/2, reach/4.
-constexpr int kFilings = 3;
-
 /// Cubes are widened by this fraction of their size in the overlap tests, so that rounding can only add a record
 /// to a node, never leave it out.
 constexpr double kSlack = 1e-9;
@@ -48,9 +45,14 @@ unsigned overlapped_octants(const Vec3& lo, const Vec3& hi, const Vec3& cube_min
 
 }  // namespace
 
-RecordOctree::RecordOctree(double reach) {
+RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
     const double r = std::isfinite(reach) ? std::max(reach, 1.0) : 1.0;
-    for (int k = 0; k < kFilings; ++k) m_filings.push_back(Filing{std::ldexp(r, -k), {}, -1});
+    const std::array<double, 2> defaults{0.5, 0.25};
+    for (std::size_t k = 0; k < inner.size(); ++k)
+        if (!(inner[k] > 0.0 && inner[k] <= 1.0)) inner[k] = defaults[k];
+    m_inner = inner;
+    m_filings.push_back(Filing{r, {}, -1});
+    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, -1});
 }
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {

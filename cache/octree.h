@@ -14,14 +14,18 @@ namespace wardray::cache {
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
 /// are at least as wide as its sphere's radius and that its sphere's box overlaps (at most 27), so a lookup only
 /// walks from the root to the leaf holding the query point and tests each record it meets at most once.
-/// The records are filed three times, at reach, reach/2 and reach/4, so that a lookup with a small error bound
-/// (the pretrace's) walks a filing whose spheres are not much larger than its validity spheres.
+/// The records are filed three times, at reach and at two smaller fractions of it (by default 1/2 and 1/4; the cache
+/// chooses the error bounds its lookups use), so that a lookup walks a filing whose spheres are not much larger than
+/// its validity spheres: the candidates a node holds grow with the cube of that ratio.
 /// Not thread-safe for writing; any number of concurrent readers while nobody writes.
 class RecordOctree {
 public:
     /// `reach` ≥ the largest error bound lookups will use: validity implies |p − p_i| < error_bound × R_i.
-    /// Values below 1 are raised to 1 (neighbour clamping needs the R_i sphere).
-    explicit RecordOctree(double reach = 1.0);
+    /// Values below 1 are raised to 1 (neighbour clamping needs the R_i sphere). `inner` are the other two filings'
+    /// reaches as fractions of it, each in (0, 1] (others are replaced by the defaults).
+    explicit RecordOctree(double reach = 1.0, std::array<double, 2> inner = {0.5, 0.25});
+    /// An empty octree filed as this one.
+    RecordOctree empty_like() const { return RecordOctree(reach(), m_inner); }
 
     /// Files a copy of `record` and returns its index (indices follow insertion order). A record with a
     /// non-finite position or radius is kept but never found.
@@ -48,7 +52,7 @@ public:
     void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
         const Filing* filing = &m_filings.front();
         for (const Filing& f : m_filings)
-            if (f.reach >= error_bound) filing = &f;
+            if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanChunk];
         walk(*filing, q, [&](const Node& n) {
             for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
@@ -128,7 +132,8 @@ private:
     void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
-    std::vector<Filing> m_filings;  ///< reach, reach/2, reach/4
+    std::array<double, 2> m_inner{0.5, 0.25};
+    std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };
 
 }  // namespace wardray::cache

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -67,6 +68,41 @@ TEST(RecordOctree, LookupFindsExactlyTheValidRecords) {
             hits += brute.empty() ? 0 : 1;
         }
         EXPECT_GT(hits, 1000);
+    }
+}
+
+// visit_near() walks the tightest filing whose reach covers the bound: with filings chosen at the lookups' bounds
+// (as the cache files them) or the default halves, it finds exactly the records within error_bound × R_i, each once.
+TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
+    const double reach = 0.75;
+    for (const std::array<double, 2> inner : {std::array{0.5, 0.25}, std::array{2.0 / 3.0, 1.0 / 3.0},
+                                              std::array{0.2, 0.9}, std::array{0.0, 7.0}}) {
+        SplitMix64 rng(99);
+        RecordOctree tree(reach, inner);
+        std::vector<IrradianceRecord> all;
+        for (int i = 0; i < 2000; ++i) {
+            all.push_back(random_record(rng, Vec3{3, -2, 1}, 2.0));
+            tree.insert(all.back());
+        }
+        int hits = 0;
+        for (int qi = 0; qi < 2000; ++qi) {
+            const IrradianceRecord& near_record = all[static_cast<std::size_t>(qi) % all.size()];
+            const Vec3 q = near_record.position + random_direction(rng) * (uniform(rng, 0, 1) * near_record.radius);
+            for (const double bound : {0.75, 0.5, 0.4, 0.25, 0.1, 0.05}) {
+                std::vector<std::uint32_t> brute, found;
+                for (std::uint32_t i = 0; i < all.size(); ++i) {
+                    const Vec3 d = q - all[i].position;
+                    if (dot(d, d) < bound * all[i].radius * bound * all[i].radius) brute.push_back(i);
+                }
+                tree.visit_near(q, bound, [&](std::uint32_t i) { found.push_back(i); });
+                std::sort(found.begin(), found.end());
+                EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "visited twice";
+                ASSERT_EQ(found, brute) << "query " << qi << " bound " << bound << " inner " << inner[0];
+                hits += brute.empty() ? 0 : 1;
+            }
+        }
+        EXPECT_GT(hits, 3000);
+        EXPECT_EQ(tree.empty_like().reach(), tree.reach());
     }
 }
 
