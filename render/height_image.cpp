@@ -23,6 +23,15 @@ std::uint16_t grey_height(unsigned v, unsigned max) {
     return static_cast<std::uint16_t>(grey * 65535.0f);
 }
 
+// POV-Ray compat: a grey PNG of 8 bits or fewer is read through a colour table of v / max in float, and each texel
+// is stored in its 8-bit grey image as the table colour's grey (old weights 0.297, 0.589, 0.114 in float) times 255,
+// cut: for about a third of the levels the sum falls just below v / 255, and the texel is one level lower.
+unsigned grey8_stored(unsigned v, unsigned max) {
+    const float f = static_cast<float>(v) / static_cast<float>(max);
+    const float grey = f * 0.297f + f * 0.589f + f * 0.114f;
+    return static_cast<unsigned char>(grey * 255.0f);
+}
+
 // 16-bit colour: POV-Ray's old grey weights.
 std::uint16_t colour16_height(unsigned r, unsigned g, unsigned b) {
     const double grey = 0.297 * (static_cast<float>(r) / 65535.0f) + 0.589 * (static_cast<float>(g) / 65535.0f) +
@@ -108,12 +117,10 @@ std::shared_ptr<scene::HeightGrid> read_png(const std::filesystem::path& path, s
             if (palette) {
                 // POV-Ray compat: a palette image's height is its index times 256 (not 257).
                 h = static_cast<std::uint16_t>(sample(0) * 256u);
-            } else if (grey && bit_depth < 8) {
-                // POV-Ray reads low-depth grey through an 8-bit grey table.
-                const float v = static_cast<float>(sample(0)) / static_cast<float>(low_max);
-                h = grey_height(static_cast<unsigned>(std::floor(v * 255.0f + 0.5f)), 255);
+            } else if (grey && bit_depth <= 8) {
+                h = grey_height(grey8_stored(sample(0), low_max), 255);
             } else if (grey) {
-                h = grey_height(sample(0), bit_depth == 16 ? 65535u : 255u);
+                h = grey_height(sample(0), 65535u);
             } else if (bit_depth == 16) {
                 h = colour16_height(sample(0), sample(1), sample(2));
             } else {

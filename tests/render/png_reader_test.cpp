@@ -1,6 +1,7 @@
 // Tests of the libpng and libjpeg readers: every opaque kind of PNG, and grey and colour JPEGs, give exactly
 // what OpenImageIO gives, and files they leave alone (an alpha channel) still read through OpenImageIO.
 #include "render/film.h"
+#include "render/height_image.h"
 #include "render/image_header.h"
 #include "render/jpeg_reader.h"
 #include "render/png_reader.h"
@@ -259,6 +260,38 @@ TEST(JpegReader, HeightFieldReadsAnswerGreyAsOpenImageIO) {
         EXPECT_EQ(bits16, their_bits16);
         EXPECT_EQ(ours->data(), theirs->data());
     }
+}
+
+// POV-Ray 3.7 stores an 8-bit grey PNG texel as its colour table's grey in float times 255, cut, so some levels
+// come out one lower: measured with trace() on a height field of every level, levels 3, 5 and 127 stand as high as
+// 2, 4 and 126, 199 and 200 as 198 and 199, while 4 and 128 keep their own height. Low-depth grey goes the same way.
+TEST(PngReader, GreyHeightFieldLevelsAsPovRayStoresThem) {
+    Bytes rows;
+    for (int y = 0; y < 16; ++y) {
+        rows.push_back(0);
+        for (int x = 0; x < 16; ++x) rows.push_back(static_cast<unsigned char>(x + 16 * y));
+    }
+    std::string error, unsupported;
+    const auto grid = read_height_grid(write("levels8.png", make_png(16, 16, 8, 0, rows)), error, unsupported);
+    ASSERT_TRUE(grid) << error;
+    // Image row y is grid row 15 - y.
+    const auto level = [&](int v) { return grid->at(v % 16, 15 - v / 16); };
+    EXPECT_EQ(level(3), level(2));
+    EXPECT_EQ(level(5), level(4));
+    EXPECT_EQ(level(127), level(126));
+    EXPECT_NEAR(level(199), 198 * 257, 1);
+    EXPECT_NEAR(level(200), 199 * 257, 1);
+    EXPECT_GT(level(4), level(3));
+    EXPECT_GT(level(128), level(127));
+    EXPECT_NEAR(level(4), 4 * 257, 1);
+    EXPECT_NEAR(level(128), 128 * 257, 1);
+    // 2-bit grey: POV-Ray's middle levels 1 and 2 stand at 84 and 169 8-bit steps, not 85 and 170 (trace()).
+    Bytes low = {0, 0x1B};  // 00 01 10 11
+    const auto grid2 = read_height_grid(write("levels2.png", make_png(4, 1, 2, 0, low)), error, unsupported);
+    ASSERT_TRUE(grid2) << error;
+    EXPECT_NEAR(grid2->at(1, 0), 84 * 257, 1);
+    EXPECT_NEAR(grid2->at(2, 0), 169 * 257, 1);
+    EXPECT_GE(grid2->at(3, 0), 65534);
 }
 
 // A few bytes can claim billions of pixels: each header's claim is read before any pixel, and past the limit the
