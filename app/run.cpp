@@ -23,6 +23,7 @@
 #include "parser/read_access.h"
 #include "render/film.h"
 #include "render/height_image.h"
+#include "render/image_header.h"
 #include "render/output_gamma.h"
 #include "render/png_palette.h"
 #include "texture/noise.h"
@@ -90,6 +91,11 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         image->width = film->width();
         image->height = film->height();
         image->rgb = film->data();
+        if (const auto png = render::png_colour_info(file)) {
+            image->table_grey8 = png->colour_type == 0 && png->bit_depth <= 8;
+            image->declared_srgb = png->srgb;
+            image->declared_file_gamma = png->file_gamma;
+        }
         // A palette PNG's indices too (bump_map use_index, material_map, image_map filter N).
         int w = 0, h = 0;
         std::vector<std::uint8_t> index;

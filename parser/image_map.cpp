@@ -1,4 +1,5 @@
 // image_map pigments: the image file (read through ParseOptions::read_image), its gamma and its mapping.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -83,7 +84,12 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     const std::string extension = found.extension().string();
     const bool png = type == "png" || (type.empty() && (extension == ".png" || extension == ".PNG"));
     const bool pre_37 = png ? m_version < 3.7 : !(m_version_given && m_version >= 3.7);
+    // POV-Ray compat: a PNG's own sRGB chunk, else its gAMA chunk, says how it is encoded (a pre-3.7 scene's
+    // working-gamma default is only for a PNG that says neither).
+    const bool declared = png && encoded && (stored->declared_srgb || stored->declared_file_gamma > 0.0);
     if (file_gamma) from = *file_gamma;
+    else if (declared && stored->declared_srgb) from = srgb;
+    else if (declared) from = GammaCurve::power_law(1.0 / stored->declared_file_gamma);
     else if (encoded && pre_37 && m_working_gamma) from = working;
     const GammaTranscoding to_working = transcoding(working, from);
     if (handling) {
@@ -95,6 +101,15 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
             const float k = std::nearbyint(v * 255.0f);
             if (k >= 0.0f && k <= 255.0f && k * (1.0f / 255.0f) == v) v = byte_decoded[static_cast<int>(k)];
             else v = static_cast<float>(to_working.decode(v));
+        }
+    }
+    if (image->table_grey8) {
+        // POV-Ray compat: such a file is read through a colour table of decoded values, and each texel is stored
+        // in an 8-bit grey image as its entry's grey (weights 0.297, 0.589, 0.114 in float) times 255, cut: dark
+        // linear values fall to whole levels of 255 (most to 0), and about a third of the others one level lower.
+        for (float& v : image->rgb) {
+            const float grey = v * 0.297f + v * 0.589f + v * 0.114f;
+            v = static_cast<float>(static_cast<unsigned char>(std::clamp(grey, 0.0f, 1.0f) * 255.0f)) / 255.0f;
         }
     }
     m_images.emplace(std::move(key), image);

@@ -113,6 +113,36 @@ std::optional<ClaimedSize> claimed_image_size(const std::filesystem::path& path)
     return std::nullopt;
 }
 
+std::optional<PngColourInfo> png_colour_info(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    unsigned char head[33];
+    if (!in.read(reinterpret_cast<char*>(head), sizeof(head))) return std::nullopt;
+    const unsigned char magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (!std::equal(magic, magic + 8, head) || std::string(head + 12, head + 16) != "IHDR") return std::nullopt;
+    PngColourInfo info;
+    info.bit_depth = head[24];
+    info.colour_type = head[25];
+    // The chunks after IHDR up to the first IDAT (where the PNG specification puts sRGB and gAMA); each is length,
+    // type, data and CRC. A few hundred at most: a hostile file cannot make this walk long.
+    for (int chunks = 0; chunks < 512; ++chunks) {
+        unsigned char header[8];
+        if (!in.read(reinterpret_cast<char*>(header), sizeof(header))) break;
+        const std::uint64_t length = be32(header);
+        const std::string type(header + 4, header + 8);
+        if (type == "IDAT" || type == "IEND" || length > (1u << 30)) break;
+        if (type == "sRGB") info.srgb = true;
+        if (type == "gAMA" && length == 4) {
+            unsigned char value[4];
+            if (!in.read(reinterpret_cast<char*>(value), sizeof(value))) break;
+            info.file_gamma = static_cast<double>(be32(value)) / 100000.0;
+            in.seekg(4, std::ios::cur);
+            continue;
+        }
+        in.seekg(static_cast<std::streamoff>(length + 4), std::ios::cur);
+    }
+    return info;
+}
+
 std::string oversized_message(std::uint64_t width, std::uint64_t height, std::uint64_t max_pixels) {
     return "it claims " + std::to_string(width) + " x " + std::to_string(height) + " pixels, more than the " +
            std::to_string(max_pixels) + " the memory limit allows (16 bytes each); raise it with --max-memory MB";

@@ -22,6 +22,18 @@ struct ClaimedSize {
 /// for another format (OpenImageIO's reader checks those itself) or a header too short to say.
 std::optional<ClaimedSize> claimed_image_size(const std::filesystem::path& path);
 
+/// What a PNG's header chunks say of its colours: IHDR's colour type and bit depth, and the encoding it declares
+/// (an sRGB chunk, else a gAMA chunk's file gamma, as POV-Ray 3.7 honours them in that order).
+struct PngColourInfo {
+    int colour_type = 0;
+    int bit_depth = 0;
+    bool srgb = false;        ///< an sRGB chunk
+    double file_gamma = 0.0;  ///< a gAMA chunk's value (the encoding exponent, such as 0.45455); 0 without one
+};
+
+/// The chunks before the image data of a PNG; nothing for any other file or a header too short to say.
+std::optional<PngColourInfo> png_colour_info(const std::filesystem::path& path);
+
 /// The error for an image whose header claims more than `max_pixels` pixels ("it claims W x H pixels, ..."),
 /// checked before anything is allocated; nothing when it claims fewer or does not say.
 std::optional<std::string> oversized_image(const std::filesystem::path& path, std::uint64_t max_pixels);

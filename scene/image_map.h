@@ -22,6 +22,12 @@ struct ImageData {
     /// other images.
     std::vector<std::uint8_t> index;
     int palette_size = 0;
+    /// POV-Ray 3.7 keeps this file's texels as 8-bit grey read through a colour table (a grey PNG of 8 bits or
+    /// fewer), so each decoded value is cut to a level of 255 (see the parser's image reading).
+    bool table_grey8 = false;
+    /// The encoding a PNG declares: an sRGB chunk, else a gAMA chunk's file gamma (0 without one).
+    bool declared_srgb = false;
+    double declared_file_gamma = 0.0;
     /// A palette PNG's alpha per palette entry (its tRNS chunk); empty for an opaque one.
     std::vector<float> palette_alpha;
     bool indexed() const { return !index.empty(); }

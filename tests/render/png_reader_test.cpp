@@ -3,6 +3,7 @@
 #include "render/film.h"
 #include "render/height_image.h"
 #include "render/image_header.h"
+#include "render/image_header.h"
 #include "render/jpeg_reader.h"
 #include "render/png_reader.h"
 
@@ -292,6 +293,35 @@ TEST(PngReader, GreyHeightFieldLevelsAsPovRayStoresThem) {
     EXPECT_NEAR(grid2->at(1, 0), 84 * 257, 1);
     EXPECT_NEAR(grid2->at(2, 0), 169 * 257, 1);
     EXPECT_GE(grid2->at(3, 0), 65534);
+}
+
+// The encoding a PNG declares, which POV-Ray 3.7 honours for image maps: an sRGB chunk first, else gAMA.
+TEST(PngReader, DeclaredEncodingIsReadFromTheChunksBeforeTheImage) {
+    const Bytes rows = rows_of(2, 2, 2);
+    const auto plain = png_colour_info(write("plain.png", make_png(2, 2, 8, 0, rows)));
+    ASSERT_TRUE(plain);
+    EXPECT_EQ(plain->colour_type, 0);
+    EXPECT_EQ(plain->bit_depth, 8);
+    EXPECT_FALSE(plain->srgb);
+    EXPECT_EQ(plain->file_gamma, 0.0);
+    // make_png writes IHDR, then PLTE and tRNS; a gAMA chunk is put where a palette would go.
+    Bytes gama = make_png(2, 2, 8, 0, rows);
+    Bytes chunk_bytes;
+    chunk(chunk_bytes, "gAMA", {0x00, 0x00, 0xB1, 0x8F});  // 45455
+    gama.insert(gama.begin() + 33, chunk_bytes.begin(), chunk_bytes.end());
+    const auto tagged = png_colour_info(write("gama.png", gama));
+    ASSERT_TRUE(tagged);
+    EXPECT_NEAR(tagged->file_gamma, 0.45455, 1e-12);
+    EXPECT_FALSE(tagged->srgb);
+    Bytes srgb = make_png(2, 2, 8, 2, rows_of(2, 2, 6));
+    Bytes srgb_chunk;
+    chunk(srgb_chunk, "sRGB", {0x00});
+    srgb.insert(srgb.begin() + 33, srgb_chunk.begin(), srgb_chunk.end());
+    const auto declared = png_colour_info(write("srgb.png", srgb));
+    ASSERT_TRUE(declared);
+    EXPECT_TRUE(declared->srgb);
+    EXPECT_EQ(declared->colour_type, 2);
+    EXPECT_FALSE(png_colour_info(write("not.png", Bytes{'G', 'I', 'F', '8', '9', 'a'})));
 }
 
 // A few bytes can claim billions of pixels: each header's claim is read before any pixel, and past the limit the
