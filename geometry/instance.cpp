@@ -302,17 +302,6 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
     return hit;
 }
 
-bool ShapeInstance::visible_to(RayKind kind) const {
-    switch (kind) {
-        case RayKind::Camera: return !m_no_image;
-        case RayKind::Reflection: return !m_no_reflection;
-        case RayKind::Shadow: return !m_no_shadow;
-        // POV-Ray compat: no_radiosity makes an object invisible to radiosity (gather) rays.
-        case RayKind::Gather: return !m_no_radiosity;
-    }
-    return true;
-}
-
 bool ShapeInstance::inside(const Vec3& p_world) const {
     const Vec3 p = m_transform.inverse_point(p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).

@@ -44,6 +44,7 @@ struct QueryContext {
     double t_min = 0.0;
     double t_best = inf;  ///< nearest accepted hit so far (double)
     double t_shift = 0.0; ///< Embree's ray starts at origin + t_shift * direction
+    double dir_length = 0.0;  ///< length(direction), for occlusion's float test (clearly_between)
     RayKind kind = RayKind::Camera;
     bool has_hit = false;
     Hit hit;
@@ -171,7 +172,7 @@ void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
 // (t_min, t_best) that the double-precision crossing must too: the plane crossing's rounding is about 1e-7 of the
 // scene's size over the cosine, the margin 1e-4 of it at cosines of at least 0.05.
 bool clearly_between(const GeometryData& impl, const QueryContext& q, float t_float, const Vec3& ng) {
-    const double dir_len = length(q.direction);
+    const double dir_len = q.dir_length;
     const double ng_len = length(ng);
     if (!(std::fabs(dot(ng, q.direction)) >= 0.05 * ng_len * dir_len) || !std::isfinite(t_float)) return false;
     const double t = q.t_shift + static_cast<double>(t_float);
@@ -250,12 +251,24 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     if (bounded.empty() && meshes.empty()) return;
     // Start Embree's float ray where the double ray enters the scene's box: the float origin then carries
     // rounding of the scene's size, not of a far camera's, and the padding of the bounds covers it.
-    double t_enter = 0.0;
-    double t_exit = 0.0;
-    if (!slab_interval(padded_scene_bounds->lower, padded_scene_bounds->upper, q.origin, q.direction, t_enter, t_exit))
-        return;
-    const double t_start = std::fmax(q.t_min, t_enter);
-    if (!(t_start <= std::fmin(t_exit, q.t_best))) return;
+    const Vec3& lo = padded_scene_bounds->lower;
+    const Vec3& hi = padded_scene_bounds->upper;
+    const Vec3& o_world = q.origin;
+    double t_start = q.t_min;
+    double t_exit = inf;
+    if (q.t_min >= 0.0 && lo.x <= o_world.x && o_world.x <= hi.x && lo.y <= o_world.y && o_world.y <= hi.y &&
+        lo.z <= o_world.z && o_world.z <= hi.z) {
+        // From inside the box (gather and shadow rays) the ray entered before t_min: only where it leaves is
+        // needed, the same quotients slab_interval() keeps for that side, in its order.
+        for (int k = 0; k < 3; ++k)
+            if (q.direction[k] != 0.0)
+                t_exit = min_of(t_exit, ((q.direction[k] > 0.0 ? hi[k] : lo[k]) - o_world[k]) / q.direction[k]);
+    } else {
+        double t_enter = 0.0;
+        if (!slab_interval(lo, hi, q.origin, q.direction, t_enter, t_exit)) return;
+        t_start = max_of(q.t_min, t_enter);
+    }
+    if (!(t_start <= min_of(t_exit, q.t_best))) return;
     q.t_shift = t_start;
     const Vec3 o = q.origin + t_start * q.direction;
     const float tfar = float_up(q.t_best - t_start);
@@ -272,7 +285,8 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
         brute_force(q, shadow);
         return;
     }
-    alignas(16) RTCRayHit rh{};
+    // Only the ray and the hit's ids are read; the rest of the hit is Embree's to write.
+    alignas(16) RTCRayHit rh;
     RTCRay& ray = rh.ray;
     ray.org_x = org[0];
     ray.org_y = org[1];
@@ -284,6 +298,7 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     ray.tfar = tfar;
     ray.time = 0.0f;
     ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
     ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -393,13 +408,13 @@ namespace {
 // glass, renders: the second crossing is not seen. At scenes smaller than one unit the depth shrinks with the
 // scene (1e-4 of its magnitude), so that a scene scaled down draws what it draws at unit size.
 double min_isect_depth_of(const GeometryData& impl, const Vec3& direction) {
-    return 1e-4 * std::fmin(1.0, impl.magnitude) / length(direction);
+    return 1e-4 * min_of(1.0, impl.magnitude) / length(direction);
 }
 
 // A ray's t_min raised to MIN_ISECT_DEPTH; a query that reaches behind its origin (t_min < 0) asks for the whole
 // line and keeps its range.
 double first_t(const GeometryData& impl, const Ray& ray) {
-    return ray.t_min < 0.0 ? ray.t_min : std::fmax(ray.t_min, min_isect_depth_of(impl, ray.direction));
+    return ray.t_min < 0.0 ? ray.t_min : max_of(ray.t_min, min_isect_depth_of(impl, ray.direction));
 }
 
 }  // namespace
@@ -447,6 +462,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     q.direction = ray.direction;
     q.t_min = t_min;
     q.t_best = ray.t_max;
+    q.dir_length = length(ray.direction);
     q.kind = RayKind::Shadow;
     m_impl->trace(q, true);
     return q.has_hit;
@@ -471,7 +487,7 @@ double SceneGeometry::min_isect_parameter(const Vec3& direction) const {
 }
 
 double SceneGeometry::self_intersection_offset(const Vec3& p) const {
-    return 1e-9 * std::fmax(max_abs_component(p), 1e-6 * m_impl->magnitude);
+    return 1e-9 * max_of(max_abs_component(p), 1e-6 * m_impl->magnitude);
 }
 
 double self_intersection_offset(const Vec3& p) {
