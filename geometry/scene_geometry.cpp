@@ -5,8 +5,10 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -51,11 +53,20 @@ struct QueryContext {
 };
 static_assert(std::is_standard_layout_v<QueryContext>);
 
+struct GeometryData;
+
+/// One Embree user geometry: the bounded instances that the same kinds of ray see (Embree's mask is per geometry).
+struct UserGroup {
+    const GeometryData* impl = nullptr;
+    std::vector<std::uint32_t> prims;  ///< Embree primID -> index into GeometryData::bounded
+};
+
 // Everything the Embree callbacks read; SceneGeometry::Impl is this type (callbacks cannot name a private type).
 struct GeometryData {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    std::vector<ShapeInstance> bounded;    ///< Embree primID -> instance
+    std::vector<ShapeInstance> bounded;    ///< in scene order; UserGroup::prims index it
+    std::vector<UserGroup> user_groups;    ///< by visibility mask, the ones not empty
     std::vector<Bounds> padded_bounds;     ///< per bounded instance, grown for the float ray's rounding
     std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
     std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
@@ -93,6 +104,18 @@ struct SceneGeometry::Impl : GeometryData {};
 
 namespace {
 
+// The kinds of ray that see an instance, a bit per RayKind, as Embree's geometry mask: a ray then never meets (nor
+// calls back for) an object it cannot see, such as cornell's light patch (no_shadow) on every shadow ray.
+unsigned visibility_mask(const ShapeInstance& inst) {
+    unsigned mask = 0;
+    for (const RayKind kind : {RayKind::Camera, RayKind::Reflection, RayKind::Shadow, RayKind::Gather})
+        if (inst.visible_to(kind)) mask |= 1u << static_cast<unsigned>(kind);
+    return mask;
+}
+
+// A ray's mask: its kind's bit.
+unsigned ray_mask(RayKind kind) { return 1u << static_cast<unsigned>(kind); }
+
 void on_embree_error(void* user, RTCError code, const char* message) {
     auto* impl = static_cast<GeometryData*>(user);
     // Only record while building (single-threaded); queries never write shared state.
@@ -101,8 +124,8 @@ void on_embree_error(void* user, RTCError code, const char* message) {
 }
 
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const Bounds& b = impl->padded_bounds[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const Bounds& b = group->impl->padded_bounds[group->prims[args->primID]];
     RTCBounds* out = args->bounds_o;
     out->lower_x = float_down(b.lower.x);
     out->lower_y = float_down(b.lower.y);
@@ -116,8 +139,8 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
     // rtcIntersect1 always calls with one ray.
     if (args->N != 1 || !args->valid[0]) return;
     auto* q = reinterpret_cast<QueryContext*>(args->context);
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->bounded[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const ShapeInstance& inst = group->impl->bounded[group->prims[args->primID]];
     if (!inst.visible_to(q->kind)) return;
     // Double precision on the original ray, limited by the best double hit so far (not Embree's float tfar).
     const auto hit = inst.nearest(q->origin, q->direction, q->t_min, q->t_best);
@@ -140,8 +163,8 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
 void occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* q = reinterpret_cast<QueryContext*>(args->context);
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->bounded[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const ShapeInstance& inst = group->impl->bounded[group->prims[args->primID]];
     if (!inst.visible_to(RayKind::Shadow)) return;
     if (!inst.crosses(q->origin, q->direction, q->t_min, q->t_best)) return;
     q->has_hit = true;
@@ -222,6 +245,7 @@ void attach_mesh(GeometryData& impl, std::uint32_t mesh_index) {
     for (std::size_t i = 0; i < mesh.faces().size(); ++i)
         for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(mesh.faces()[i].v[k]);
     rtcSetGeometryUserData(geom, &impl);
+    rtcSetGeometryMask(geom, visibility_mask(inst));
     rtcSetGeometryIntersectFilterFunction(geom, triangle_intersect_filter);
     rtcSetGeometryOccludedFilterFunction(geom, triangle_occluded_filter);
     rtcCommitGeometry(geom);
@@ -297,7 +321,7 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     ray.tnear = 0.0f;
     ray.tfar = tfar;
     ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
+    ray.mask = ray_mask(q.kind);
     ray.id = 0;
     ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -386,17 +410,35 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
 namespace {
 
 void attach_user_geometry(GeometryData& impl) {
-    RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
-    impl.check("geometry creation");
-    rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(impl.bounded.size()));
-    rtcSetGeometryUserData(geom, &impl);
-    rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
-    rtcSetGeometryIntersectFunction(geom, intersect_callback);
-    rtcSetGeometryOccludedFunction(geom, occluded_callback);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(impl.scene, geom);
-    rtcReleaseGeometry(geom);
-    impl.check("geometry setup");
+    // A geometry per visibility mask, each listing its instances in scene order; one when every object is seen by
+    // every ray, as most scenes are.
+    std::uint32_t group_of_mask[16];
+    std::fill(std::begin(group_of_mask), std::end(group_of_mask), UINT32_MAX);
+    std::vector<unsigned> masks;
+    for (std::uint32_t i = 0; i < impl.bounded.size(); ++i) {
+        const unsigned mask = visibility_mask(impl.bounded[i]);
+        if (group_of_mask[mask] == UINT32_MAX) {
+            group_of_mask[mask] = static_cast<std::uint32_t>(impl.user_groups.size());
+            impl.user_groups.push_back({&impl, {}});
+            masks.push_back(mask);
+        }
+        impl.user_groups[group_of_mask[mask]].prims.push_back(i);
+    }
+    for (std::size_t g = 0; g < impl.user_groups.size(); ++g) {
+        UserGroup& group = impl.user_groups[g];
+        RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
+        impl.check("geometry creation");
+        rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(group.prims.size()));
+        rtcSetGeometryUserData(geom, &group);
+        rtcSetGeometryMask(geom, masks[g]);
+        rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
+        rtcSetGeometryIntersectFunction(geom, intersect_callback);
+        rtcSetGeometryOccludedFunction(geom, occluded_callback);
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(impl.scene, geom);
+        rtcReleaseGeometry(geom);
+        impl.check("geometry setup");
+    }
 }
 
 }  // namespace
