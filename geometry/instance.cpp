@@ -283,6 +283,14 @@ bool ShapeInstance::crosses(const Vec3& origin, const Vec3& direction, double t_
     return false;
 }
 
+bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
+                                 double t_max) const {
+    const auto* mesh = std::get_if<MeshShape>(&m_shape);
+    if (mesh == nullptr || face >= mesh->faces().size()) return false;
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    return mesh->face_crossed(local, face, t_min, t_max);
+}
+
 std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direction, std::size_t face,
                                            double t_min, double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);

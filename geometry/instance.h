@@ -69,6 +69,9 @@ public:
     /// For meshes: the crossing with one face that Embree found in float, recomputed in double, as a Hit.
     std::optional<Hit> face_hit(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
                                 double t_max) const;
+    /// For meshes: false when face_hit() finds no crossing for want of one in (t_min, t_max), true when it finds one
+    /// or refuses it only for a normal that maps to no finite one; cheaper, without the normal.
+    bool face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min, double t_max) const;
     /// True when a ray of this kind sees the object (inline: Embree's callbacks ask it of every candidate hit).
     bool visible_to(RayKind kind) const {
         switch (kind) {

@@ -220,7 +220,11 @@ void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
         q->has_hit = true;
         return;
     }
-    if (!inst.face_hit(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min, q->t_best)) {
+    // Near the ends (a light in a surface: cornell's lights lie in its ceiling) the face's double t decides, most
+    // often against it; the full hit only for a crossing that counts (face_hit() also refuses a non-finite normal).
+    const unsigned face = RTCHitN_primID(args->hit, args->N, 0);
+    if (!inst.face_crossed(q->origin, q->direction, face, q->t_min, q->t_best) ||
+        !inst.face_hit(q->origin, q->direction, face, q->t_min, q->t_best)) {
         args->valid[0] = 0;
         return;
     }
