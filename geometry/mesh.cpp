@@ -213,13 +213,15 @@ std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::si
         bary[0] = u;
         bary[1] = v;
     }
-    const Vec3 ng = cross(e1, e2);
+    // POV-Ray compat: a triangle's normal is (p3 - p1) x (p2 - p1), so the side a face's normal is on follows its
+    // vertex order as in POV-Ray (trace() returns it, interior_texture shows on the other side, a closed mesh is
+    // entered against it). Smooth triangles interpolate their vertex normals as given, whichever side they face.
+    const Vec3 ng = cross(e2, e1);
     Vec3 normal = ng;
     if (f.n[0] >= 0) {
-        // POV-Ray compat: smooth triangles interpolate their vertex normals, kept on the geometric side.
         const Vec3 ns = (1.0 - u - v) * normalize(m_normals[f.n[0]]) + u * normalize(m_normals[f.n[1]]) +
                         v * normalize(m_normals[f.n[2]]);
-        if (length(ns) > 0.0) normal = dot(ns, ng) < 0.0 ? -ns : ns;
+        if (length(ns) > 0.0) normal = m_normals_outward && dot(ns, ng) < 0.0 ? -ns : ns;
     }
     return SurfaceHit{t, normal, dot(ng, ray.direction) < 0.0};
 }

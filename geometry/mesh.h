@@ -100,6 +100,7 @@ private:
     std::shared_ptr<const void> m_source;  ///< keeps the scene mesh's vectors, the key of the shapes made from it
     Vec3 m_inside_vector;
     bool m_nearest_only = false;  ///< a mesh or mesh2 without an inside_vector (see nearest_crossings)
+    bool m_normals_outward = false;  ///< smooth normals turned to the face's side (wardray's own prism walls)
     Bounds m_bounds;
     std::shared_ptr<const FaceTree> m_tree;  ///< nothing for a few faces
 };

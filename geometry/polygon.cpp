@@ -7,6 +7,7 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <utility>
 
 #include "geometry/mesh.h"
 
@@ -110,7 +111,10 @@ std::optional<MeshShape> MeshShape::create(const scene::Polygon& polygon) {
         // POV-Ray compat: a point inside an odd number of sub-polygons is inside the polygon.
         if (f->info() % 2 != 1) continue;
         scene::Mesh::Face face;
+        // POV-Ray compat: the polygon's normal is its points' Newell normal; a face (a, b, c) counter-clockwise
+        // about it is stored as (a, c, b), since a mesh face's normal is (p3 - p1) x (p2 - p1).
         for (int k = 0; k < 3; ++k) face.v[k] = vertex(f->vertex(k));
+        std::swap(face.v[1], face.v[2]);
         mesh.faces.push_back(face);
     }
     auto shape = create(mesh);

@@ -136,7 +136,7 @@ std::optional<MeshShape> MeshShape::create(const scene::Prism& prism) {
             mesh.normals.mut().insert(mesh.normals.mut().end(), {normals[0], normals[1], normals[2]});
             f.n = {nb, nb + 1, nb + 2};
         }
-        if (dot(cross(b - a, c - a), outward) < 0.0) {
+        if (dot(cross(c - a, b - a), outward) < 0.0) {
             std::swap(f.v[1], f.v[2]);
             std::swap(f.n[1], f.n[2]);
         }
@@ -176,7 +176,11 @@ std::optional<MeshShape> MeshShape::create(const scene::Prism& prism) {
     }
     // Crossings along a direction in no special position decide the inside, as for a closed mesh.
     mesh.inside_vector = prism.open ? Vec3{1.0, 0.0123, 0.0371} : Vec3{0.0123, 1.0, 0.0371};
-    return create(mesh);
+    auto shape = create(mesh);
+    // The walls' vertex normals are the outline's, which near a kink can face away from a wall's face; a prism is
+    // solid, so its normal stays on the outside.
+    if (shape) shape->m_normals_outward = true;
+    return shape;
 }
 
 std::vector<PrismPiece> prism_spline_pieces(const scene::Prism& prism) {

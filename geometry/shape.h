@@ -46,7 +46,7 @@ inline std::optional<CentredLine> centre_line(const LocalRay& ray) {
 /// One place where a ray crosses a shape's surface.
 struct SurfaceHit {
     double t = 0.0;
-    Vec3 normal;           ///< object-space normal pointing out of the shape, not necessarily unit length
+    Vec3 normal;           ///< object-space normal out of the shape (a triangle: POV-Ray's side), not necessarily unit
     bool entering = true;  ///< the ray passes from outside to inside here
     const scene::Object* leaf = nullptr;  ///< the primitive whose surface this is (set by ShapeInstance)
 };

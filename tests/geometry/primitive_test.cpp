@@ -88,14 +88,14 @@ scene::Mesh tetrahedron(Random& r) {
     scene::Mesh m;
     m.vertices = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     for (Vec3& v : m.vertices) v = v + r.vec(-0.2, 0.2);
-    // Orient each face so that its normal points away from the opposite vertex.
+    // Orient each face so that its normal, (p3 - p1) x (p2 - p1) as in POV-Ray, points away from the opposite vertex.
     const int faces[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
     for (int f = 0; f < 4; ++f) {
         scene::Mesh::Face face;
         face.v = {faces[f][0], faces[f][1], faces[f][2]};
         const int opposite = 6 - faces[f][0] - faces[f][1] - faces[f][2];
         const Vec3 n = cross(m.vertices[face.v[1]] - m.vertices[face.v[0]], m.vertices[face.v[2]] - m.vertices[face.v[0]]);
-        if (dot(n, m.vertices[opposite] - m.vertices[face.v[0]]) > 0) std::swap(face.v[1], face.v[2]);
+        if (dot(n, m.vertices[opposite] - m.vertices[face.v[0]]) < 0) std::swap(face.v[1], face.v[2]);
         m.faces.push_back(face);
     }
     m.inside_vector = {0.3, 0.7, 0.1};
@@ -250,6 +250,39 @@ TEST(Primitives, SmoothTriangleInterpolatesNormals) {
     const auto near1 = inst->nearest({0.98, 0.01, -1}, {0, 0, 1}, 0.0, 1e30);
     ASSERT_TRUE(near1);
     EXPECT_GT(near1->normal.x, 0.6);
+}
+
+// POV-Ray's side of a flat face: a triangle's normal is (p3 - p1) x (p2 - p1) and a polygon's its points' Newell
+// normal, whichever side the ray comes from (trace() returns them so, and interior_texture follows them); a smooth
+// triangle's interpolated normal is kept as given even where it faces away from the geometric one. Measured with
+// POV-Ray 3.7's trace() on the same shapes.
+TEST(Primitives, FlatFaceNormalsFollowPovRaysVertexOrder) {
+    scene::Mesh tri;
+    tri.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}};
+    scene::Mesh::Face f;
+    f.v = {0, 1, 2};
+    tri.faces.push_back(f);
+    scene::Mesh reversed = tri;
+    reversed.faces[0].v = {0, 2, 1};
+    scene::Polygon poly;
+    poly.points = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}};
+    scene::Mesh smooth = tri;
+    smooth.kind = scene::Mesh::Kind::SmoothTriangle;
+    smooth.normals = {{0.1, -1, 0}, {0.1, -1, 0}, {0.1, -1, 0}};
+    smooth.faces[0].n = {0, 1, 2};
+    const struct {
+        scene::Shape shape;
+        double normal_y;
+    } cases[] = {{tri, 1.0}, {reversed, -1.0}, {poly, -1.0}, {smooth, -1.0}};
+    for (const auto& c : cases) {
+        const auto inst = ShapeInstance::create(make_object(c.shape), 0);
+        ASSERT_TRUE(inst);
+        for (const double side : {1.0, -1.0}) {
+            const auto hit = inst->nearest({0.2, side, 0.2}, {0, -side, 0}, 0.0, 1e30);
+            ASSERT_TRUE(hit);
+            EXPECT_NEAR(normalize(hit->normal).y, c.normal_y, 0.01) << "from y = " << side;
+        }
+    }
 }
 
 TEST(Primitives, CylinderCapsAndOpen) {
