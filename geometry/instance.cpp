@@ -283,6 +283,14 @@ bool ShapeInstance::crosses(const Vec3& origin, const Vec3& direction, double t_
     return false;
 }
 
+bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
+                                 double t_max) const {
+    const auto* mesh = std::get_if<MeshShape>(&m_shape);
+    if (mesh == nullptr || face >= mesh->faces().size()) return false;
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    return mesh->face_crossed(local, face, t_min, t_max);
+}
+
 std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direction, std::size_t face,
                                            double t_min, double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
@@ -300,17 +308,6 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
         hit.params = *params;
     }
     return hit;
-}
-
-bool ShapeInstance::visible_to(RayKind kind) const {
-    switch (kind) {
-        case RayKind::Camera: return !m_no_image;
-        case RayKind::Reflection: return !m_no_reflection;
-        case RayKind::Shadow: return !m_no_shadow;
-        // POV-Ray compat: no_radiosity makes an object invisible to radiosity (gather) rays.
-        case RayKind::Gather: return !m_no_radiosity;
-    }
-    return true;
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {

@@ -69,8 +69,20 @@ public:
     /// For meshes: the crossing with one face that Embree found in float, recomputed in double, as a Hit.
     std::optional<Hit> face_hit(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
                                 double t_max) const;
-    /// True when a ray of this kind sees the object.
-    bool visible_to(RayKind kind) const;
+    /// For meshes: false when face_hit() finds no crossing for want of one in (t_min, t_max), true when it finds one
+    /// or refuses it only for a normal that maps to no finite one; cheaper, without the normal.
+    bool face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min, double t_max) const;
+    /// True when a ray of this kind sees the object (inline: Embree's callbacks ask it of every candidate hit).
+    bool visible_to(RayKind kind) const {
+        switch (kind) {
+            case RayKind::Camera: return !m_no_image;
+            case RayKind::Reflection: return !m_no_reflection;
+            case RayKind::Shadow: return !m_no_shadow;
+            // POV-Ray compat: no_radiosity makes an object invisible to radiosity (gather) rays.
+            case RayKind::Gather: return !m_no_radiosity;
+        }
+        return true;
+    }
     /// True for points inside the object (after `inverse`, and within every clipping object).
     bool inside(const Vec3& p_world) const;
     /// POV-Ray compat (Find_Intersection): a top-level object is tested only on rays that meet its bounding box,

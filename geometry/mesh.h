@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -39,6 +40,19 @@ public:
     /// in float) only the plane's t is recomputed and the barycentrics are clamped, so no edge crack opens.
     std::optional<SurfaceHit> intersect_face(const LocalRay& ray, std::size_t face, double t_min, double t_max,
                                              bool known_hit = false, double* bary = nullptr) const;
+    /// True when intersect_face() with `known_hit` finds a crossing: the same t, by the same operations in the same
+    /// order, without the normal and barycentrics (a shadow ray's test of a face Embree found near its ends).
+    /// Change the two together.
+    bool face_crossed(const LocalRay& ray, std::size_t index, double t_min, double t_max) const {
+        const Face& f = m_faces[index];
+        const Vec3& a = m_vertices[f.v[0]];
+        const Vec3 e1 = m_vertices[f.v[1]] - a;
+        const Vec3 e2 = m_vertices[f.v[2]] - a;
+        const double det = dot(e1, cross(ray.direction, e2));
+        if (det == 0.0 || !std::isfinite(det)) return false;
+        const double t = dot(e2, cross(ray.origin - a, e1)) / det;
+        return t > t_min && t < t_max;
+    }
     /// Object-space bounding box of the vertices.
     std::optional<Bounds> bounds() const { return m_bounds; }
     /// With an inside_vector: an odd number of crossings along it; without: never inside.

@@ -5,8 +5,10 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -44,17 +46,27 @@ struct QueryContext {
     double t_min = 0.0;
     double t_best = inf;  ///< nearest accepted hit so far (double)
     double t_shift = 0.0; ///< Embree's ray starts at origin + t_shift * direction
+    double dir_length = 0.0;  ///< length(direction), for occlusion's float test (clearly_between)
     RayKind kind = RayKind::Camera;
     bool has_hit = false;
     Hit hit;
 };
 static_assert(std::is_standard_layout_v<QueryContext>);
 
+struct GeometryData;
+
+/// One Embree user geometry: the bounded instances that the same kinds of ray see (Embree's mask is per geometry).
+struct UserGroup {
+    const GeometryData* impl = nullptr;
+    std::vector<std::uint32_t> prims;  ///< Embree primID -> index into GeometryData::bounded
+};
+
 // Everything the Embree callbacks read; SceneGeometry::Impl is this type (callbacks cannot name a private type).
 struct GeometryData {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
-    std::vector<ShapeInstance> bounded;    ///< Embree primID -> instance
+    std::vector<ShapeInstance> bounded;    ///< in scene order; UserGroup::prims index it
+    std::vector<UserGroup> user_groups;    ///< by visibility mask, the ones not empty
     std::vector<Bounds> padded_bounds;     ///< per bounded instance, grown for the float ray's rounding
     std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
     std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
@@ -92,6 +104,18 @@ struct SceneGeometry::Impl : GeometryData {};
 
 namespace {
 
+// The kinds of ray that see an instance, a bit per RayKind, as Embree's geometry mask: a ray then never meets (nor
+// calls back for) an object it cannot see, such as cornell's light patch (no_shadow) on every shadow ray.
+unsigned visibility_mask(const ShapeInstance& inst) {
+    unsigned mask = 0;
+    for (const RayKind kind : {RayKind::Camera, RayKind::Reflection, RayKind::Shadow, RayKind::Gather})
+        if (inst.visible_to(kind)) mask |= 1u << static_cast<unsigned>(kind);
+    return mask;
+}
+
+// A ray's mask: its kind's bit.
+unsigned ray_mask(RayKind kind) { return 1u << static_cast<unsigned>(kind); }
+
 void on_embree_error(void* user, RTCError code, const char* message) {
     auto* impl = static_cast<GeometryData*>(user);
     // Only record while building (single-threaded); queries never write shared state.
@@ -100,8 +124,8 @@ void on_embree_error(void* user, RTCError code, const char* message) {
 }
 
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const Bounds& b = impl->padded_bounds[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const Bounds& b = group->impl->padded_bounds[group->prims[args->primID]];
     RTCBounds* out = args->bounds_o;
     out->lower_x = float_down(b.lower.x);
     out->lower_y = float_down(b.lower.y);
@@ -115,8 +139,8 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
     // rtcIntersect1 always calls with one ray.
     if (args->N != 1 || !args->valid[0]) return;
     auto* q = reinterpret_cast<QueryContext*>(args->context);
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->bounded[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const ShapeInstance& inst = group->impl->bounded[group->prims[args->primID]];
     if (!inst.visible_to(q->kind)) return;
     // Double precision on the original ray, limited by the best double hit so far (not Embree's float tfar).
     const auto hit = inst.nearest(q->origin, q->direction, q->t_min, q->t_best);
@@ -139,8 +163,8 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
 void occluded_callback(const RTCOccludedFunctionNArguments* args) {
     if (args->N != 1 || !args->valid[0]) return;
     auto* q = reinterpret_cast<QueryContext*>(args->context);
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->bounded[args->primID];
+    const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
+    const ShapeInstance& inst = group->impl->bounded[group->prims[args->primID]];
     if (!inst.visible_to(RayKind::Shadow)) return;
     if (!inst.crosses(q->origin, q->direction, q->t_min, q->t_best)) return;
     q->has_hit = true;
@@ -171,7 +195,7 @@ void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
 // (t_min, t_best) that the double-precision crossing must too: the plane crossing's rounding is about 1e-7 of the
 // scene's size over the cosine, the margin 1e-4 of it at cosines of at least 0.05.
 bool clearly_between(const GeometryData& impl, const QueryContext& q, float t_float, const Vec3& ng) {
-    const double dir_len = length(q.direction);
+    const double dir_len = q.dir_length;
     const double ng_len = length(ng);
     if (!(std::fabs(dot(ng, q.direction)) >= 0.05 * ng_len * dir_len) || !std::isfinite(t_float)) return false;
     const double t = q.t_shift + static_cast<double>(t_float);
@@ -196,7 +220,11 @@ void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
         q->has_hit = true;
         return;
     }
-    if (!inst.face_hit(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min, q->t_best)) {
+    // Near the ends (a light in a surface: cornell's lights lie in its ceiling) the face's double t decides, most
+    // often against it; the full hit only for a crossing that counts (face_hit() also refuses a non-finite normal).
+    const unsigned face = RTCHitN_primID(args->hit, args->N, 0);
+    if (!inst.face_crossed(q->origin, q->direction, face, q->t_min, q->t_best) ||
+        !inst.face_hit(q->origin, q->direction, face, q->t_min, q->t_best)) {
         args->valid[0] = 0;
         return;
     }
@@ -221,6 +249,7 @@ void attach_mesh(GeometryData& impl, std::uint32_t mesh_index) {
     for (std::size_t i = 0; i < mesh.faces().size(); ++i)
         for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(mesh.faces()[i].v[k]);
     rtcSetGeometryUserData(geom, &impl);
+    rtcSetGeometryMask(geom, visibility_mask(inst));
     rtcSetGeometryIntersectFilterFunction(geom, triangle_intersect_filter);
     rtcSetGeometryOccludedFilterFunction(geom, triangle_occluded_filter);
     rtcCommitGeometry(geom);
@@ -250,12 +279,24 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     if (bounded.empty() && meshes.empty()) return;
     // Start Embree's float ray where the double ray enters the scene's box: the float origin then carries
     // rounding of the scene's size, not of a far camera's, and the padding of the bounds covers it.
-    double t_enter = 0.0;
-    double t_exit = 0.0;
-    if (!slab_interval(padded_scene_bounds->lower, padded_scene_bounds->upper, q.origin, q.direction, t_enter, t_exit))
-        return;
-    const double t_start = std::fmax(q.t_min, t_enter);
-    if (!(t_start <= std::fmin(t_exit, q.t_best))) return;
+    const Vec3& lo = padded_scene_bounds->lower;
+    const Vec3& hi = padded_scene_bounds->upper;
+    const Vec3& o_world = q.origin;
+    double t_start = q.t_min;
+    double t_exit = inf;
+    if (q.t_min >= 0.0 && lo.x <= o_world.x && o_world.x <= hi.x && lo.y <= o_world.y && o_world.y <= hi.y &&
+        lo.z <= o_world.z && o_world.z <= hi.z) {
+        // From inside the box (gather and shadow rays) the ray entered before t_min: only where it leaves is
+        // needed, the same quotients slab_interval() keeps for that side, in its order.
+        for (int k = 0; k < 3; ++k)
+            if (q.direction[k] != 0.0)
+                t_exit = min_of(t_exit, ((q.direction[k] > 0.0 ? hi[k] : lo[k]) - o_world[k]) / q.direction[k]);
+    } else {
+        double t_enter = 0.0;
+        if (!slab_interval(lo, hi, q.origin, q.direction, t_enter, t_exit)) return;
+        t_start = max_of(q.t_min, t_enter);
+    }
+    if (!(t_start <= min_of(t_exit, q.t_best))) return;
     q.t_shift = t_start;
     const Vec3 o = q.origin + t_start * q.direction;
     const float tfar = float_up(q.t_best - t_start);
@@ -272,7 +313,8 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
         brute_force(q, shadow);
         return;
     }
-    alignas(16) RTCRayHit rh{};
+    // Only the ray and the hit's ids are read; the rest of the hit is Embree's to write.
+    alignas(16) RTCRayHit rh;
     RTCRay& ray = rh.ray;
     ray.org_x = org[0];
     ray.org_y = org[1];
@@ -283,7 +325,8 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     ray.tnear = 0.0f;
     ray.tfar = tfar;
     ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
+    ray.mask = ray_mask(q.kind);
+    ray.id = 0;
     ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -371,17 +414,35 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
 namespace {
 
 void attach_user_geometry(GeometryData& impl) {
-    RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
-    impl.check("geometry creation");
-    rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(impl.bounded.size()));
-    rtcSetGeometryUserData(geom, &impl);
-    rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
-    rtcSetGeometryIntersectFunction(geom, intersect_callback);
-    rtcSetGeometryOccludedFunction(geom, occluded_callback);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(impl.scene, geom);
-    rtcReleaseGeometry(geom);
-    impl.check("geometry setup");
+    // A geometry per visibility mask, each listing its instances in scene order; one when every object is seen by
+    // every ray, as most scenes are.
+    std::uint32_t group_of_mask[16];
+    std::fill(std::begin(group_of_mask), std::end(group_of_mask), UINT32_MAX);
+    std::vector<unsigned> masks;
+    for (std::uint32_t i = 0; i < impl.bounded.size(); ++i) {
+        const unsigned mask = visibility_mask(impl.bounded[i]);
+        if (group_of_mask[mask] == UINT32_MAX) {
+            group_of_mask[mask] = static_cast<std::uint32_t>(impl.user_groups.size());
+            impl.user_groups.push_back({&impl, {}});
+            masks.push_back(mask);
+        }
+        impl.user_groups[group_of_mask[mask]].prims.push_back(i);
+    }
+    for (std::size_t g = 0; g < impl.user_groups.size(); ++g) {
+        UserGroup& group = impl.user_groups[g];
+        RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
+        impl.check("geometry creation");
+        rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(group.prims.size()));
+        rtcSetGeometryUserData(geom, &group);
+        rtcSetGeometryMask(geom, masks[g]);
+        rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
+        rtcSetGeometryIntersectFunction(geom, intersect_callback);
+        rtcSetGeometryOccludedFunction(geom, occluded_callback);
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(impl.scene, geom);
+        rtcReleaseGeometry(geom);
+        impl.check("geometry setup");
+    }
 }
 
 }  // namespace
@@ -393,13 +454,13 @@ namespace {
 // glass, renders: the second crossing is not seen. At scenes smaller than one unit the depth shrinks with the
 // scene (1e-4 of its magnitude), so that a scene scaled down draws what it draws at unit size.
 double min_isect_depth_of(const GeometryData& impl, const Vec3& direction) {
-    return 1e-4 * std::fmin(1.0, impl.magnitude) / length(direction);
+    return 1e-4 * min_of(1.0, impl.magnitude) / length(direction);
 }
 
 // A ray's t_min raised to MIN_ISECT_DEPTH; a query that reaches behind its origin (t_min < 0) asks for the whole
 // line and keeps its range.
 double first_t(const GeometryData& impl, const Ray& ray) {
-    return ray.t_min < 0.0 ? ray.t_min : std::fmax(ray.t_min, min_isect_depth_of(impl, ray.direction));
+    return ray.t_min < 0.0 ? ray.t_min : max_of(ray.t_min, min_isect_depth_of(impl, ray.direction));
 }
 
 }  // namespace
@@ -447,6 +508,7 @@ bool SceneGeometry::occluded(const Ray& ray) const {
     q.direction = ray.direction;
     q.t_min = t_min;
     q.t_best = ray.t_max;
+    q.dir_length = length(ray.direction);
     q.kind = RayKind::Shadow;
     m_impl->trace(q, true);
     return q.has_hit;
@@ -471,7 +533,7 @@ double SceneGeometry::min_isect_parameter(const Vec3& direction) const {
 }
 
 double SceneGeometry::self_intersection_offset(const Vec3& p) const {
-    return 1e-9 * std::fmax(max_abs_component(p), 1e-6 * m_impl->magnitude);
+    return 1e-9 * max_of(max_abs_component(p), 1e-6 * m_impl->magnitude);
 }
 
 double self_intersection_offset(const Vec3& p) {
