@@ -355,7 +355,9 @@ void Preprocessor::directive_end(const Token& tok) {
             }
             const double value = n->v[0] + c.step;
             declare(c.ident, Numeric::scalar(value), true);
-            if (c.step > 0 ? value <= c.end : value >= c.end) {
+            // POV-Ray compat: the end is widened by 1e-10, so a sum of fractional steps that rounds just past it
+            // (2.6 + 5 * 0.4 = 4.6000000000000005) still runs the last pass.
+            if (c.step > 0 ? !(value > c.end + kPovEpsilon) : !(value < c.end - kPovEpsilon)) {
                 count_loop_iteration(c.where);
                 m_pos = c.restart_pos;
             } else {
@@ -391,9 +393,9 @@ void Preprocessor::directive_for(const Token& tok) {
     double step = 1.0;
     if (accept(",")) step = parse_float();
     expect(")");
-    if (step == 0.0) fail(tok, "#for step must not be zero");
+    if (!(std::fabs(step) >= kPovEpsilon)) fail(tok, "#for step must not be zero");
     declare(id.text, Numeric::scalar(start), true);
-    if (!(step > 0 ? start <= end : start >= end)) {
+    if (!(step > 0 ? start < end + kPovEpsilon : start > end - kPovEpsilon)) {
         skip_until(0, {"end"}, tok);
         return;
     }

@@ -249,14 +249,26 @@ void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
             const Token& t = peek();
             // POV-Ray compat: a parameter given a bare declared identifier is passed by reference.
             const auto& tokens = m_files[m_file]->tokens;
+            // POV-Ray compat (its look-ahead): a float, vector or colour identifier given with no comma before
+            // another declared identifier (`M(A, B C D, E)`) is passed as a reference to that next identifier, so
+            // B, C and D above become C, D and D. POV-Ray decides what the lone identifier refers to after it has
+            // read the next token, and an identifier there replaces it; a comma or parenthesis does not.
+            bool shifted = false;
             if (t.kind == TokenKind::Identifier && args.size() < macro.params.size() && m_pos + 1 < tokens.size() &&
-                (is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
+                tokens[m_pos + 1].kind == TokenKind::Identifier && !m_macros.count(tokens[m_pos + 1].text)) {
+                const Value* first = lookup(t.text);
+                const Value* next_value = lookup(tokens[m_pos + 1].text);
+                shifted = first && std::holds_alternative<Numeric>(*first) && next_value;
+            }
+            const Token& named = shifted ? tokens[m_pos + 1] : t;
+            if (named.kind == TokenKind::Identifier && args.size() < macro.params.size() && m_pos + 1 < tokens.size() &&
+                (shifted || is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
                 for (std::size_t s = m_scopes.size(); s > 0; --s) {
-                    if (m_scopes[s - 1].count(t.text)) {
+                    if (m_scopes[s - 1].count(named.text)) {
                         // A parameter that is itself a reference passes on what it refers to.
-                        std::pair<std::size_t, std::string> target{s - 1, t.text};
+                        std::pair<std::size_t, std::string> target{s - 1, named.text};
                         for (const Frame& f : m_frames)
-                            if (const auto r = f.references.find(t.text);
+                            if (const auto r = f.references.find(named.text);
                                 f.kind == Frame::Kind::Macro && f.scope_index == s - 1 && r != f.references.end())
                                 target = r->second;
                         references[macro.params[args.size()]] = std::move(target);
@@ -264,10 +276,14 @@ void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
                     }
                 }
             }
-            if (is_punct(t, ",") || is_punct(t, ")"))
+            if (shifted) {
+                next();
+                args.emplace_back(*lookup(named.text));
+            } else if (is_punct(t, ",") || is_punct(t, ")")) {
                 args.emplace_back();
-            else
+            } else {
                 args.emplace_back(parse_rvalue());
+            }
             if (accept(",")) {
                 // POV-Ray compat: a comma may follow the last argument (`M(A, B, )`), as every comma is optional.
                 if (args.size() == macro.params.size() && accept(")")) break;

@@ -43,6 +43,44 @@ TEST(Directives, WhileAndFor) {
     EXPECT_EQ(radius(s, 5), 4);
 }
 
+// POV-Ray widens a #for loop's end by 1e-10: 2.6 + 5 * 0.4 rounds to 4.6000000000000005 and still runs (as in
+// POV-Ray 3.7, counted with #debug), and so does a descending loop whose sum rounds just below its end.
+TEST(Directives, ForLoopEndHasPovRaysTolerance) {
+    const Scene s = parse_ok(R"(
+        #for (Y, 2.6, 4.6, 0.4) sphere { 0, Y } #end
+        #for (Z, 0.7, 0.1, -0.2) sphere { 0, Z } #end
+        #for (W, 1, 1 - 1e-11) sphere { 0, 50 } #end
+        #for (V, 0, 1, 0.6) sphere { 0, 60 + V } #end
+    )");
+    ASSERT_EQ(s.objects.size(), 6u + 4u + 1u + 2u);
+    EXPECT_NEAR(radius(s, 5), 4.6, 1e-12);
+    EXPECT_NEAR(radius(s, 9), 0.1, 1e-12);
+    EXPECT_EQ(radius(s, 10), 50);
+    EXPECT_NEAR(radius(s, 12), 60.6, 1e-12);
+}
+
+// POV-Ray 3.7 decides what a lone float, vector or colour identifier argument refers to after reading the next
+// token, so with no comma before another identifier the argument becomes that one: M(1, P Q R, 5) binds B, C and
+// D to Q, R and R (measured with #debug in POV-Ray 3.7, also for parameters passed on inside a macro).
+TEST(Directives, MacroArgumentBeforeAnIdentifierWithoutACommaTakesThatIdentifier) {
+    const Scene s = parse_ok(R"(
+        #macro M(A, B C D, E) sphere { 0, A } sphere { 0, B } sphere { 0, C } sphere { 0, D } sphere { 0, E } #end
+        #declare P = 10; #declare Q = 20; #declare R = 30;
+        M(1, P Q R, 5)
+        #macro W(A, B
+          C
+          D, E) M(A, B
+          C
+          D, E) #end
+        W(1, 2, 3, 4, 5)
+        M(1, P, Q, R, 5)
+        M(1 2 3 4 5)
+    )");
+    ASSERT_EQ(s.objects.size(), 20u);
+    const double expected[20] = {1, 20, 30, 30, 5, 1, 3, 4, 4, 5, 1, 10, 20, 30, 5, 1, 2, 3, 4, 5};
+    for (std::size_t i = 0; i < 20; ++i) EXPECT_EQ(radius(s, i), expected[i]) << "sphere " << i;
+}
+
 TEST(Directives, BreakLeavesLoop) {
     const Scene s = parse_ok(R"(
         #declare I = 0;
