@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace wardray::render {
@@ -90,6 +92,14 @@ public:
         T value;
         take(&value, sizeof(T));
         return value;
+    }
+    /// The next `count` values into `out`, replacing what it held.
+    template <typename T>
+    void get(std::vector<T>& out, std::size_t count) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        if (count > (m_bytes->size() - m_at) / sizeof(T)) throw std::out_of_range("tile exchange: a message ends early");
+        out.resize(count);
+        take(out.data(), count * sizeof(T));
     }
     bool done() const { return m_at == m_bytes->size(); }
 
