@@ -47,6 +47,10 @@ public:
     }
     /// Ends every process of the group with `status`, from any one of them.
     [[noreturn]] virtual void abort(int status) = 0;
+    /// Declares that this process makes no more collective calls, so that leaving the group (which takes tens of
+    /// milliseconds with MPI) may proceed while it finishes its own work, such as writing the image. Afterwards only
+    /// destruction is allowed.
+    virtual void release() {}
 
     /// What this process has sent and received through the collectives, and how long it spent in them
     /// (transfer and waiting for the slowest process), for --stats and the scaling model.
