@@ -1,5 +1,8 @@
 // join_processes() on Open MPI: the one file that includes mpi.h; the ranks of MPI_COMM_WORLD as a Communicator.
 #include <mpi.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <sys/socket.h>
 
 #include <algorithm>
 #include <chrono>
@@ -8,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -19,6 +23,32 @@
 namespace wardray::app {
 
 namespace {
+
+/// Turns off Nagle's algorithm on this process's TCP connections, which after MPI_Init are MPI's own: Open MPI 4.1
+/// talks to mpirun over PMIx on a loopback TCP connection without TCP_NODELAY, and in MPI_Finalize a few small
+/// messages in a row wait for the delayed acknowledgement of the one before (40 ms on Linux): MPI_Finalize takes
+/// 45-50 ms instead of 2-3 ms. TCP_NODELAY changes when bytes are sent, never what.
+void send_small_messages_at_once() {
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd", ec)) {
+        int fd = -1;
+        try {
+            fd = std::stoi(entry.path().filename().string());
+        } catch (const std::exception&) {
+            continue;
+        }
+        sockaddr_storage address{};
+        socklen_t length = sizeof address;
+        int type = 0;
+        socklen_t type_length = sizeof type;
+        if (fd <= 2 || getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0 ||
+            (address.ss_family != AF_INET && address.ss_family != AF_INET6) ||
+            getsockopt(fd, SOL_SOCKET, SO_TYPE, &type, &type_length) != 0 || type != SOCK_STREAM)
+            continue;
+        const int on = 1;
+        setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &on, sizeof on);
+    }
+}
 
 /// Counters in a one-sided MPI window on rank 0, drawn from with MPI_Fetch_and_op in one passive-target epoch
 /// that lasts as long as the counters. Worker threads draw while the main thread waits for them, and the calls go
@@ -184,6 +214,7 @@ private:
         MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &m_thread_level);
         MPI_Comm_rank(MPI_COMM_WORLD, &m_rank);
         MPI_Comm_size(MPI_COMM_WORLD, &m_size);
+        send_small_messages_at_once();
         std::unique_lock<std::mutex> lock(m_life_mutex);
         m_initialised = true;
         m_life_changed.notify_all();
