@@ -137,9 +137,10 @@ void warn_skipped_objects(const scene::Scene& scene, const geometry::SceneGeomet
 }
 
 // One frame of the job from its file to its image: each step prints why it fails; returns the exit status. Shared
-// among processes, every rank loads and builds the scene, they render it together, and rank 0 writes it.
+// among processes, every rank loads and builds the scene, they render it together, and rank 0 writes it; after the
+// `last` frame's render the processes leave their group while rank 0 writes.
 int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start, ProcessGroup& group,
-                     CacheCarry& carry) {
+                     CacheCarry& carry, bool last) {
     const std::optional<LoadedScene> loaded = load_scene(job.options, frame.clock);
     if (!group.agree(loaded.has_value(), "parse the scene")) return kExitScene;
     const scene::Scene& scene = loaded->scene;
@@ -163,6 +164,7 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
         render_frame(scene, illumination, job.options, job.region, group.communicator());
     for (const Diagnostic& w : built->geometry->shape_warnings()) std::cerr << format_diagnostic(w);
     if (illumination.cache) carry.finish(scene, *illumination.cache);
+    if (last) group.release();
     const auto write_start = Clock::now();
     Job frame_job = job;
     frame_job.output = frame.output;
@@ -197,7 +199,7 @@ int run_frames_split(const Job& job, const std::vector<const Frame*>& frames, Pr
             frame.output = local;
             ProcessGroup alone{ProcessGroup::Alone{}};
             CacheCarry none(CarryMode::Off);
-            ok = render_one_frame(job, frame, Clock::now(), alone, none) == kExitOk;
+            ok = render_one_frame(job, frame, Clock::now(), alone, none, false) == kExitOk;
             if (ok && !group.root()) {
                 std::ifstream in(local, std::ios::binary);
                 image.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -257,7 +259,8 @@ int run_frames(const Job& job, Clock::time_point start, ProcessGroup& group) {
             continue;
         }
         const Clock::time_point frame_start = &frame == &job.frames.front() ? start : Clock::now();
-        if (const int status = render_one_frame(job, frame, frame_start, group, carry); status != kExitOk)
+        const bool last = &frame == &job.frames.back();
+        if (const int status = render_one_frame(job, frame, frame_start, group, carry, last); status != kExitOk)
             return status;
         if (job.options.check_only) break;
     }

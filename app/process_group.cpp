@@ -20,7 +20,7 @@ ProcessGroup::~ProcessGroup() {
 }
 
 bool ProcessGroup::agree(bool ok, const char* what) {
-    if (!m_comm) return ok;
+    if (!m_comm || m_released) return ok;
     // Each rank's verdict, and what it printed when it failed.
     render::Bytes mine(1, ok ? 1 : 0);
     if (!ok) {
@@ -69,6 +69,13 @@ void ProcessGroup::share_cache(cache::IrradianceCache& irradiance_cache) {
     if (root()) return;
     std::istringstream in(std::string(all[0].begin(), all[0].end()));
     irradiance_cache.load(in);
+}
+
+void ProcessGroup::release() {
+    if (!m_comm || m_released) return;
+    // Another rank has nothing left to say: what it held was cleared by the last agreement.
+    m_released = true;
+    m_comm->release();
 }
 
 void ProcessGroup::fail(const std::string& what) {

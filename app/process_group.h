@@ -48,9 +48,14 @@ public:
     void share_cache(cache::IrradianceCache& irradiance_cache);
     /// Ends every process after `what` went wrong in this one, with a message naming the rank.
     [[noreturn]] void fail(const std::string& what);
+    /// The run makes no more collective calls (its last frame is rendered): the processes leave the group while
+    /// rank 0 writes the output. Later agreements are this process's own verdict; rank 0's failure to write then
+    /// shows in its own message and exit status, which mpirun passes on.
+    void release();
 
 private:
     std::unique_ptr<render::Communicator> m_comm;
+    bool m_released = false;
     std::ostringstream m_held;  ///< what a rank other than 0 printed to std::cerr since the last agreement
     std::streambuf* m_cerr = nullptr;
 };

@@ -89,14 +89,14 @@ TileCache::Contribution TileCache::contribution() const {
     return c;
 }
 
-void TileCache::adopt(const Contribution& contribution) {
+void TileCache::adopt(Contribution contribution) {
     m_order.clear();
     for (RecordOctree& own : m_own) own = own.empty_like();
-    // Filed as they stand: merge_tiles() reads them back in this order and clamps them against the merged cache.
-    for (const IrradianceRecord& record : contribution.records) {
-        if (record.depth < 0 || record.depth >= static_cast<int>(m_own.size())) continue;
-        m_order.emplace_back(record.depth, m_own[static_cast<std::size_t>(record.depth)].insert(record));
-    }
+    // As they stand: merge_tiles() takes them in this order and clamps them against the merged cache.
+    m_adopted = std::move(contribution.records);
+    std::erase_if(m_adopted, [&](const IrradianceRecord& record) {
+        return record.depth < 0 || record.depth >= static_cast<int>(m_own.size());
+    });
     m_lookups = contribution.lookups;
     m_hits = contribution.hits;
 }
@@ -136,16 +136,18 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
     for (const int i : tiles) {
         if (i < 0 || i >= static_cast<int>(m_tiles.size())) continue;
         TileCache& t = *m_tiles[static_cast<std::size_t>(i)];
-        for (const auto& [depth, index] : t.m_order) {
-            IrradianceRecord record = t.m_own[static_cast<std::size_t>(depth)].records()[index];
+        auto merge = [&](IrradianceRecord record) {
             clamp_mutual(record);
             m_octrees[static_cast<std::size_t>(record.depth)].insert(record);
             count_record(record);
-        }
+        };
+        for (const auto& [depth, index] : t.m_order) merge(t.m_own[static_cast<std::size_t>(depth)].records()[index]);
+        for (const IrradianceRecord& record : t.m_adopted) merge(record);
         m_lookups += t.m_lookups;
         m_hits += t.m_hits;
         // The tile starts afresh: what it made is now part of the frozen cache.
         t.m_order.clear();
+        t.m_adopted.clear();
         for (RecordOctree& own : t.m_own) own = own.empty_like();
         t.m_lookups = 0;
         t.m_hits = 0;

@@ -59,8 +59,9 @@ public:
     };
     Contribution contribution() const;
     /// Takes over a contribution made by this tile in another process (rendering across processes), replacing
-    /// whatever this view holds, so that merge_tiles() then merges exactly what that process would have.
-    void adopt(const Contribution& contribution);
+    /// whatever this view holds, so that merge_tiles() then merges exactly what that process would have. The records
+    /// are kept as a list, not filed: nothing looks them up before the merge.
+    void adopt(Contribution contribution);
 
 private:
     friend class IrradianceCache;
@@ -72,6 +73,8 @@ private:
     std::vector<RecordOctree> m_own;
     /// (depth, index) of each record in the order it was made: the order end_pass() merges them in.
     std::vector<std::pair<int, std::uint32_t>> m_order;
+    /// Records adopted from another process, in the order it made them (merged instead of m_order's).
+    std::vector<IrradianceRecord> m_adopted;
     std::uint64_t m_lookups = 0;
     std::uint64_t m_hits = 0;
 };

@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace wardray::render {
@@ -45,6 +47,10 @@ public:
     }
     /// Ends every process of the group with `status`, from any one of them.
     [[noreturn]] virtual void abort(int status) = 0;
+    /// Declares that this process makes no more collective calls, so that leaving the group (which takes tens of
+    /// milliseconds with MPI) may proceed while it finishes its own work, such as writing the image. Afterwards only
+    /// destruction is allowed.
+    virtual void release() {}
 
     /// What this process has sent and received through the collectives, and how long it spent in them
     /// (transfer and waiting for the slowest process), for --stats and the scaling model.
@@ -90,6 +96,14 @@ public:
         T value;
         take(&value, sizeof(T));
         return value;
+    }
+    /// The next `count` values into `out`, replacing what it held.
+    template <typename T>
+    void get(std::vector<T>& out, std::size_t count) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        if (count > (m_bytes->size() - m_at) / sizeof(T)) throw std::out_of_range("tile exchange: a message ends early");
+        out.resize(count);
+        take(out.data(), count * sizeof(T));
     }
     bool done() const { return m_at == m_bytes->size(); }
 

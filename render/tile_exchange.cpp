@@ -8,6 +8,7 @@
 #include <ctime>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include "cache/irradiance_cache.h"
 
@@ -214,12 +215,11 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
             c.lookups = in.get<std::uint64_t>();
             c.hits = in.get<std::uint64_t>();
             const auto count = in.get<std::uint64_t>();
-            c.records.reserve(count);
-            for (std::uint64_t i = 0; i < count; ++i) c.records.push_back(in.get<cache::IrradianceRecord>());
+            in.get(c.records, static_cast<std::size_t>(count));
             if (static_cast<int>(r) == m_comm->rank()) continue;
             m_mine.records_received += count;
             stats.records += count;
-            cache->tile(tile).adopt(c);
+            cache->tile(tile).adopt(std::move(c));
         }
     }
     m_wave_stats.push_back(stats);
