@@ -4,6 +4,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <unordered_map>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
@@ -20,16 +21,68 @@ bool is_object_keyword(const Token& t) {
 
 namespace {
 
+/// Moves textures by one transform so that objects that shared a texture before it share one after it (the parts
+/// of a textured union, copies of one declared object): a shared texture is moved and copied once, not per object.
+class TextureMover {
+public:
+    explicit TextureMover(const Transform& tr) : m_tr(tr) {}
+
+    void move(scene::Cow<Texture>& t) {
+        if (t.unique()) {
+            transform_texture(*t, m_tr);
+            return;
+        }
+        const void* before = &t.get();
+        if (const auto it = m_moved.find(before); it != m_moved.end()) {
+            t = it->second.after;
+            return;
+        }
+        Moved moved{t, {}};
+        transform_texture(*t, m_tr);
+        moved.after = t;
+        m_moved.emplace(before, std::move(moved));
+    }
+
+    void move(scene::SharedVector<Texture>& textures) {
+        if (textures.unique()) {
+            for (Texture& t : textures) transform_texture(t, m_tr);
+            return;
+        }
+        const void* before = &textures.get();
+        if (const auto it = m_moved_lists.find(before); it != m_moved_lists.end()) {
+            textures = it->second.after;
+            return;
+        }
+        MovedList moved{textures, {}};
+        for (Texture& t : textures) transform_texture(t, m_tr);
+        moved.after = textures;
+        m_moved_lists.emplace(before, std::move(moved));
+    }
+
+    void move(Texture& t) { transform_texture(t, m_tr); }
+
+private:
+    // The value before keeps its address taken while it lives, so no other texture can be mistaken for it.
+    struct Moved {
+        scene::Cow<Texture> before, after;
+    };
+    struct MovedList {
+        scene::SharedVector<Texture> before, after;
+    };
+    const Transform& m_tr;
+    std::unordered_map<const void*, Moved> m_moved;
+    std::unordered_map<const void*, MovedList> m_moved_lists;
+};
+
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
-void transform_textures(Object& o, bool own_texture, const Transform& tr) {
+void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
     // POV-Ray compat: an object with uv_mapping keeps its textures in uv space.
     if (o.uv_mapping) return;
-    if (own_texture) transform_texture(*o.texture, tr);
-    for (Texture& inside : o.interior_texture) transform_texture(inside, tr);
-    if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty())
-        for (Texture& t : mesh->textures) transform_texture(t, tr);
+    if (own_texture) mover.move(o.texture);
+    for (Texture& inside : o.interior_texture) mover.move(inside);
+    if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty()) mover.move(mesh->textures);
     if (auto* csg = std::get_if<Csg>(&o.shape))
-        for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
+        for (Object& child : csg->children) transform_textures(child, child.has_texture, mover);
 }
 
 // POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents', and a smooth
@@ -302,9 +355,10 @@ Texture& ObjectReader::texture_to_modify(ObjectValue& ov) {
 }
 
 void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
+    TextureMover mover(tr);
     for (ObjectPart& part : ov.parts) {
         part.object.transform = part.object.transform.then(tr);
-        transform_textures(part.object, part.has_texture, tr);
+        transform_textures(part.object, part.has_texture, mover);
         place_patches(part.object, tr);
         // POV-Ray compat (Transform_Interior): the interiors' media move with the object.
         transform_interiors(part.object, tr);
