@@ -68,13 +68,12 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     }
     bool encoded = false;
     std::string error;
-    const std::shared_ptr<const ImageData> stored = m_options.read_image(found, encoded, error);
-    if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
+    const std::shared_ptr<ImageData> image = m_options.read_image(found, encoded, error);
+    if (!image) fail(at, "cannot read image file '" + found.string() + "': " + error);
     // POV-Ray takes transparency from an alpha channel (a true-colour image's alpha, a palette's tRNS); a reader
     // that returns neither is warned of. Bump maps and material maps use only the colours or indices.
-    if (stored->has_alpha && stored->palette_alpha.empty() && stored->alpha.empty() && colour)
+    if (image->has_alpha && image->palette_alpha.empty() && image->alpha.empty() && colour)
         warn_unsupported(at, "image_map alpha channel");
-    auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
     // POV-Ray compat: a scene with no #version is read as POV-Ray 3.62's, and a pre-3.7 scene with assumed_gamma

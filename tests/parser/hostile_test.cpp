@@ -32,7 +32,7 @@ protected:
     ParseOptions options() {
         ParseOptions o = test::default_options();
         // Records every image the parser asks for: a refused one must never reach the reader.
-        o.read_image = [this](const fs::path& file, bool&, std::string& error) -> std::shared_ptr<const ImageData> {
+        o.read_image = [this](const fs::path& file, bool&, std::string& error) -> std::shared_ptr<ImageData> {
             m_images_read.push_back(file);
             error = "test reader";
             return nullptr;
