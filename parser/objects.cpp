@@ -4,11 +4,11 @@
 #include <iterator>
 #include <map>
 #include <memory>
-#include <unordered_map>
 
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -20,59 +20,6 @@ bool is_object_keyword(const Token& t) {
 }
 
 namespace {
-
-/// Moves textures by one transform so that objects that shared a texture before it share one after it (the parts
-/// of a textured union, copies of one declared object): a shared texture is moved and copied once, not per object.
-class TextureMover {
-public:
-    explicit TextureMover(const Transform& tr) : m_tr(tr) {}
-
-    void move(scene::Cow<Texture>& t) {
-        if (t.unique()) {
-            transform_texture(*t, m_tr);
-            return;
-        }
-        const void* before = &t.get();
-        if (const auto it = m_moved.find(before); it != m_moved.end()) {
-            t = it->second.after;
-            return;
-        }
-        Moved moved{t, {}};
-        transform_texture(*t, m_tr);
-        moved.after = t;
-        m_moved.emplace(before, std::move(moved));
-    }
-
-    void move(scene::SharedVector<Texture>& textures) {
-        if (textures.unique()) {
-            for (Texture& t : textures) transform_texture(t, m_tr);
-            return;
-        }
-        const void* before = &textures.get();
-        if (const auto it = m_moved_lists.find(before); it != m_moved_lists.end()) {
-            textures = it->second.after;
-            return;
-        }
-        MovedList moved{textures, {}};
-        for (Texture& t : textures) transform_texture(t, m_tr);
-        moved.after = textures;
-        m_moved_lists.emplace(before, std::move(moved));
-    }
-
-    void move(Texture& t) { transform_texture(t, m_tr); }
-
-private:
-    // The value before keeps its address taken while it lives, so no other texture can be mistaken for it.
-    struct Moved {
-        scene::Cow<Texture> before, after;
-    };
-    struct MovedList {
-        scene::SharedVector<Texture> before, after;
-    };
-    const Transform& m_tr;
-    std::unordered_map<const void*, Moved> m_moved;
-    std::unordered_map<const void*, MovedList> m_moved_lists;
-};
 
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
 void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
