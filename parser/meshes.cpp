@@ -8,6 +8,7 @@
 
 #include "core/constants.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -48,7 +49,8 @@ Mesh Parser::parse_mesh_body(const Token& kw) {
                     // rather than a 3 KB copy each.
                     Texture tx = parse_texture_body(item);
                     const auto& textures = std::as_const(mesh.textures);
-                    if (textures.empty() || !(textures.back() == tx)) mesh.textures.push_back(std::move(tx));
+                    if (textures.empty() || !interchangeable(textures.back(), tx))
+                        mesh.textures.push_back(std::move(tx));
                     face.tex = {static_cast<int>(textures.size()) - 1, -1, -1};
                 } else if (is_word(item, "texture_list")) {
                     // `texture_list { T1, T2, T3 }`: a texture at each corner, blended across the triangle.

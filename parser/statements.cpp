@@ -5,6 +5,7 @@
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -234,7 +235,9 @@ void SceneReader::share_equal_textures(Object& o, bool own_texture) {
     // share one value instead of a copy each (a Texture is about 3 KB). Only textures given on the object count.
     if (own_texture) {
         const auto same = [&](const scene::Cow<Texture>& recent) { return recent.shares(o.texture); };
-        const auto equal = [&](const scene::Cow<Texture>& recent) { return recent.get() == o.texture.get(); };
+        const auto equal = [&](const scene::Cow<Texture>& recent) {
+            return interchangeable(recent.get(), o.texture.get());
+        };
         if (std::none_of(m_recent_textures.begin(), m_recent_textures.end(), same)) {
             const auto found = std::find_if(m_recent_textures.begin(), m_recent_textures.end(), equal);
             if (found != m_recent_textures.end()) {

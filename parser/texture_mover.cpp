@@ -1,9 +1,47 @@
-// TextureMover: moves textures by one transform, keeping textures that objects shared shared.
+// Textures that objects share: TextureMover moves textures by one transform, keeping shared ones shared, and
+// interchangeable() says when an equal texture may stand in for another.
 #include "parser/texture_mover.h"
 
 #include <utility>
 
 namespace wardray::parser {
+
+namespace {
+
+bool has_function(const scene::Pigment& p);
+
+bool has_function(const scene::Pattern& p) {
+    return static_cast<bool>(p.function) || (p.pigment.pigment && has_function(*p.pigment.pigment));
+}
+
+bool has_function(const scene::Pigment& p) {
+    if (has_function(p.pattern)) return true;
+    for (const scene::PigmentMapEntry& e : p.pigment_map)
+        if (has_function(e.pigment)) return true;
+    return false;
+}
+
+bool has_function(const scene::Normal& n) {
+    if (has_function(n.pattern)) return true;
+    for (const scene::NormalMapEntry& e : n.normal_map)
+        if (has_function(e.normal)) return true;
+    return false;
+}
+
+bool has_function(const scene::Texture& t) {
+    if (has_function(t.pigment) || has_function(t.normal) || has_function(t.map_pattern)) return true;
+    for (const scene::TextureMapEntry& e : t.texture_map)
+        if (has_function(e.texture)) return true;
+    for (const scene::Texture& layer : t.layers)
+        if (has_function(layer)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool interchangeable(const scene::Texture& a, const scene::Texture& b) {
+    return a == b && !has_function(a);
+}
 
 void TextureMover::move(scene::Cow<scene::Texture>& t) {
     if (t.unique()) {

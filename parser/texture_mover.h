@@ -1,4 +1,5 @@
-// TextureMover: moves textures by one transform, keeping textures that objects shared shared.
+// Textures that objects share: TextureMover moves textures by one transform, keeping shared ones shared, and
+// interchangeable() says when an equal texture may stand in for another.
 #pragma once
 
 #include <unordered_map>
@@ -8,6 +9,10 @@
 #include "scene/texture.h"
 
 namespace wardray::parser {
+
+/// True when `b` may stand in for `a`: equal, and without a `function` pattern anywhere (a function compares its
+/// calls of declared pigment and pattern functions by count only, so two equal-looking ones may differ).
+bool interchangeable(const scene::Texture& a, const scene::Texture& b);
 
 /// Moves textures by one transform so that objects that shared a texture before it share one after it (the parts
 /// of a textured union, copies of one declared object): a shared texture is moved and copied once, not per object.

@@ -354,6 +354,17 @@ TEST(SharedObjects, EqualTexturesOfObjectsInALoopShareOneValue) {
     EXPECT_EQ(s.objects[5].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
 }
 
+// Function patterns calling different declared pattern functions look equal (a program compares its calls of
+// declared functions by count): objects with them keep textures of their own.
+TEST(SharedObjects, TexturesWithFunctionPatternsAreNotShared) {
+    const Scene s = test::parse_ok(
+        "#declare F1 = function { pattern { bozo } }\n#declare F2 = function { pattern { granite } }\n"
+        "sphere { 0, 1 pigment { function { F1(x, y, z) } } }\n"
+        "sphere { x, 1 pigment { function { F2(x, y, z) } } }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_FALSE(s.objects[0].texture.shares(s.objects[1].texture));
+}
+
 // Uses of a declared object share its parts until they change them (PartList): a later #declare of the name, and
 // the transforms and textures of each use, must still leave every other use as POV-Ray's copies would be.
 TEST(SharedObjects, ARedeclaredNameLeavesEarlierUsesAsTheyWere) {
