@@ -79,10 +79,10 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
     // (about 16 bytes each while it is read) is refused before anything is allocated.
     const std::uint64_t max_pixels = (options.max_memory.value_or(kDefaultMaxMemoryMb) << 20) / 16;
     parse_options.read_image = [max_pixels](const fs::path& file, bool& encoded, std::string& error)
-        -> std::shared_ptr<const scene::ImageData> {
+        -> std::shared_ptr<scene::ImageData> {
         bool alpha = false;
         std::vector<float> alpha_values;
-        const std::optional<render::Film> film =
+        std::optional<render::Film> film =
             render::read_image(file, error, &encoded, &alpha, nullptr, nullptr, &alpha_values, max_pixels);
         if (!film) return nullptr;
         auto image = std::make_shared<scene::ImageData>();
@@ -90,7 +90,7 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
         image->alpha = std::move(alpha_values);
         image->width = film->width();
         image->height = film->height();
-        image->rgb = film->data();
+        image->rgb = film->take_data();  // moved, not copied: an image map's samples are held once
         if (const auto png = render::png_colour_info(file)) {
             image->table_grey8 = png->colour_type == 0 && png->bit_depth <= 8;
             image->declared_srgb = png->srgb;

@@ -69,13 +69,12 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     }
     bool encoded = false;
     std::string error;
-    const std::shared_ptr<const ImageData> stored = m_options.read_image(found, encoded, error);
-    if (!stored) fail(at, "cannot read image file '" + found.string() + "': " + error);
+    const std::shared_ptr<ImageData> image = m_options.read_image(found, encoded, error);
+    if (!image) fail(at, "cannot read image file '" + found.string() + "': " + error);
     // POV-Ray takes transparency from an alpha channel (a true-colour image's alpha, a palette's tRNS); a reader
     // that returns neither is warned of. Bump maps and material maps use only the colours or indices.
-    if (stored->has_alpha && stored->palette_alpha.empty() && stored->alpha.empty() && colour)
+    if (image->has_alpha && image->palette_alpha.empty() && image->alpha.empty() && colour)
         warn_unsupported(at, "image_map alpha channel");
-    auto image = std::make_shared<ImageData>(*stored);
     const GammaCurve srgb = GammaCurve::srgb();
     GammaCurve from = encoded ? srgb : GammaCurve::neutral();
     // POV-Ray compat: a scene with no #version is read as POV-Ray 3.62's, and a pre-3.7 scene with assumed_gamma
@@ -86,10 +85,10 @@ std::shared_ptr<const ImageData> Parser::read_image_file(const Token& at, const 
     const bool pre_37 = png ? m_version < 3.7 : !(m_version_given && m_version >= 3.7);
     // POV-Ray compat: a PNG's own sRGB chunk, else its gAMA chunk, says how it is encoded (a pre-3.7 scene's
     // working-gamma default is only for a PNG that says neither).
-    const bool declared = png && encoded && (stored->declared_srgb || stored->declared_file_gamma > 0.0);
+    const bool declared = png && encoded && (image->declared_srgb || image->declared_file_gamma > 0.0);
     if (file_gamma) from = *file_gamma;
-    else if (declared && stored->declared_srgb) from = srgb;
-    else if (declared) from = GammaCurve::power_law(1.0 / stored->declared_file_gamma);
+    else if (declared && image->declared_srgb) from = srgb;
+    else if (declared) from = GammaCurve::power_law(1.0 / image->declared_file_gamma);
     else if (encoded && pre_37 && m_working_gamma) from = working;
     const GammaTranscoding to_working = transcoding(working, from);
     if (handling) {

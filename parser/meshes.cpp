@@ -4,9 +4,11 @@
 #include <cmath>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 #include "core/constants.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -43,8 +45,13 @@ Mesh Parser::parse_mesh_body(const Token& kw) {
             while (!accept("}")) {
                 const Token item = next();
                 if (is_word(item, "texture")) {
-                    face.tex = {static_cast<int>(mesh.textures.size()), -1, -1};
-                    mesh.textures.push_back(parse_texture_body(item));
+                    // Triangles that each repeat one texture (`texture { T_Water }`) share one entry of the list
+                    // rather than a 3 KB copy each.
+                    Texture tx = parse_texture_body(item);
+                    const auto& textures = std::as_const(mesh.textures);
+                    if (textures.empty() || !interchangeable(textures.back(), tx))
+                        mesh.textures.push_back(std::move(tx));
+                    face.tex = {static_cast<int>(textures.size()) - 1, -1, -1};
                 } else if (is_word(item, "texture_list")) {
                     // `texture_list { T1, T2, T3 }`: a texture at each corner, blended across the triangle.
                     expect("{");

@@ -8,6 +8,7 @@
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -21,15 +22,14 @@ bool is_object_keyword(const Token& t) {
 namespace {
 
 // POV-Ray compat: a transform moves the textures given before it (Transform_Textures), down a CSG tree.
-void transform_textures(Object& o, bool own_texture, const Transform& tr) {
+void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
     // POV-Ray compat: an object with uv_mapping keeps its textures in uv space.
     if (o.uv_mapping) return;
-    if (own_texture) transform_texture(*o.texture, tr);
-    for (Texture& inside : o.interior_texture) transform_texture(inside, tr);
-    if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty())
-        for (Texture& t : mesh->textures) transform_texture(t, tr);
+    if (own_texture) mover.move(o.texture);
+    for (Texture& inside : o.interior_texture) mover.move(inside);
+    if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty()) mover.move(mesh->textures);
     if (auto* csg = std::get_if<Csg>(&o.shape))
-        for (Object& child : csg->children) transform_textures(child, child.has_texture, tr);
+        for (Object& child : csg->children) transform_textures(child, child.has_texture, mover);
 }
 
 // POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents', and a smooth
@@ -302,9 +302,10 @@ Texture& ObjectReader::texture_to_modify(ObjectValue& ov) {
 }
 
 void ObjectReader::apply_transform(ObjectValue& ov, const Transform& tr) {
+    TextureMover mover(tr);
     for (ObjectPart& part : ov.parts) {
         part.object.transform = part.object.transform.then(tr);
-        transform_textures(part.object, part.has_texture, tr);
+        transform_textures(part.object, part.has_texture, mover);
         place_patches(part.object, tr);
         // POV-Ray compat (Transform_Interior): the interiors' media move with the object.
         transform_interiors(part.object, tr);

@@ -93,8 +93,9 @@ struct ParseOptions {
     /// for vturbulence(); when empty that function is an error.
     std::function<Vec3(const Vec3& p, int octaves, double omega, double lambda)> vector_turbulence;
     /// The render layer's image reader, for image_map: RGB texels as the file stores them (8- and 16-bit values
-    /// scaled to [0, 1], `encoded` then set) or nothing with `error` set; when empty image_map is an error.
-    std::function<std::shared_ptr<const ImageData>(const std::filesystem::path& file, bool& encoded,
+    /// scaled to [0, 1], `encoded` then set) or nothing with `error` set; when empty image_map is an error. The
+    /// image is a new one the parser keeps and changes (its gamma), not a copy of it.
+    std::function<std::shared_ptr<ImageData>(const std::filesystem::path& file, bool& encoded,
                                                    std::string& error)>
         read_image;
     /// The render layer's height field image reader: the 16-bit heights POV-Ray takes from each pixel (palette

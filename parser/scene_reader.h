@@ -1,6 +1,8 @@
 // SceneReader: the top-level statements of a scene file (objects, lights, camera, global settings, ...).
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
 
 #include "parser/object_reader.h"
@@ -17,6 +19,9 @@ protected:
     void parse_statement();
     /// Places an object statement's parts and lights in the scene, with the default texture where none is given.
     void place_object(ObjectValue ov);
+    /// Gives `o` (when `own_texture`: its texture was given on it) and its CSG children with textures of their own
+    /// a recently placed texture of equal value in place of their own copy.
+    void share_equal_textures(Object& o, bool own_texture);
     void warn_uv_unsupported(const Object& o, bool in_csg);
     /// Reads `camera { ... }` after its keyword.
     CameraSpec parse_camera_body(const Token& kw);
@@ -40,6 +45,9 @@ protected:
 
     SceneBuilder m_builder;
     bool m_charset_utf8 = false;  ///< global_settings { charset utf8 }: text strings are decoded as UTF-8
+    /// The last few distinct textures placed, which equal textures of the next objects share.
+    std::array<scene::Cow<Texture>, 4> m_recent_textures;
+    std::size_t m_recent_next = 0;
 };
 
 }  // namespace wardray::parser

@@ -5,6 +5,7 @@
 #include "parser/keyword_table.h"
 #include "parser/keywords.h"
 #include "parser/parser.h"
+#include "parser/texture_mover.h"
 
 namespace wardray::parser {
 
@@ -229,6 +230,28 @@ void SceneReader::warn_uv_unsupported(const Object& o, bool in_csg) {
     emit_feature_warning(std::move(d));
 }
 
+void SceneReader::share_equal_textures(Object& o, bool own_texture) {
+    // A loop that writes `sphere { ... pigment { White } }` parses one texture per sphere, all equal: the objects
+    // share one value instead of a copy each (a Texture is about 3 KB). Only textures given on the object count.
+    if (own_texture) {
+        const auto same = [&](const scene::Cow<Texture>& recent) { return recent.shares(o.texture); };
+        const auto equal = [&](const scene::Cow<Texture>& recent) {
+            return interchangeable(recent.get(), o.texture.get());
+        };
+        if (std::none_of(m_recent_textures.begin(), m_recent_textures.end(), same)) {
+            const auto found = std::find_if(m_recent_textures.begin(), m_recent_textures.end(), equal);
+            if (found != m_recent_textures.end()) {
+                o.texture = *found;
+            } else {
+                m_recent_textures[m_recent_next] = o.texture;
+                m_recent_next = (m_recent_next + 1) % m_recent_textures.size();
+            }
+        }
+    }
+    if (auto* csg = std::get_if<Csg>(&o.shape))
+        for (Object& child : csg->children) share_equal_textures(child, child.has_texture);
+}
+
 void SceneReader::place_object(ObjectValue ov) {
     renumber_light_groups(ov);
     for (const ObjectPart& part : ov.parts) warn_uv_unsupported(part.object, false);
@@ -247,6 +270,7 @@ void SceneReader::place_object(ObjectValue ov) {
             part.object.bounded_by.clear();
         if (!part.has_texture) part.object.texture = inherited;
         inherit_textures(part.object);
+        share_equal_textures(part.object, part.has_texture);
         // POV-Ray compat (Post_Process): a top-level object without an interior gets a new one, which the parts
         // of a union without one share.
         if (part.object.interior_id == 0) {

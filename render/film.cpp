@@ -118,6 +118,8 @@ const char* extension_of(ImageFormat format) {
 Film::Film(int width, int height)
     : m_width(width), m_height(height), m_rgb(static_cast<std::size_t>(width) * height * 3, 0.0f) {}
 
+Film::Film(int width, int height, std::vector<float> rgb) : m_width(width), m_height(height), m_rgb(std::move(rgb)) {}
+
 Vec3 Film::pixel(int x, int y) const {
     const std::size_t i = (static_cast<std::size_t>(y) * m_width + x) * 3;
     return {m_rgb[i], m_rgb[i + 1], m_rgb[i + 2]};
@@ -197,15 +199,11 @@ std::optional<Film> read_image(const std::filesystem::path& path, std::string& e
             gif = true;
         }
     }
-    Film film(width, height);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const float* p = &pixels[(static_cast<std::size_t>(y) * width + x) * 3];
-            Vec3 rgb{p[0], p[1], p[2]};
-            if (!stored) rgb = {srgb_decode(rgb.x), srgb_decode(rgb.y), srgb_decode(rgb.z)};
-            film.set_pixel(x, y, rgb);
-        }
-    }
+    // The decoded samples become the film's own (a large image map is not held twice while it is read).
+    pixels.resize(static_cast<std::size_t>(width) * height * 3);
+    if (!stored)
+        for (float& v : pixels) v = static_cast<float>(srgb_decode(v));
+    Film film(width, height, std::move(pixels));
     if (stored) *stored = true;
     // POV-Ray compat (of OpenImageIO's reading): a GIF reports an alpha channel without values (OpenImageIO
     // names channel 4 of its 4), so an image map warns that its alpha is not rendered and is opaque.

@@ -5,6 +5,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vec3.h"
@@ -29,6 +30,8 @@ class Film {
 public:
     Film() = default;
     Film(int width, int height);
+    /// A film holding `rgb` (width * height float RGB triples, rows from the top) without copying it.
+    Film(int width, int height, std::vector<float> rgb);
 
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -36,6 +39,11 @@ public:
     void set_pixel(int x, int y, const Vec3& rgb);
     /// The samples as float RGB triples, row-major from the top-left pixel.
     const std::vector<float>& data() const { return m_rgb; }
+    /// Hands the samples over without copying them; the film is left empty (0 x 0).
+    std::vector<float> take_data() {
+        m_width = m_height = 0;
+        return std::move(m_rgb);
+    }
 
 private:
     int m_width = 0;

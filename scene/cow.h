@@ -36,6 +36,8 @@ public:
 
     /// True when both hold the very same value (a copy not changed since).
     bool shares(const Cow& other) const { return m_value == other.m_value; }
+    /// True when this Cow holds a value no other copy shares, so a change needs no copy.
+    bool unique() const { return m_value && m_value.use_count() == 1; }
     bool operator==(const Cow& other) const { return m_value == other.m_value || get() == other.get(); }
 
 private:
@@ -66,6 +68,8 @@ public:
     std::vector<T>& mut() { return m_data.mut(); }
     /// True when both hold the very same elements (a copy not changed since).
     bool shares(const SharedVector& other) const { return m_data.shares(other.m_data); }
+    /// True when no other copy shares these elements, so a change needs no copy.
+    bool unique() const { return m_data.unique(); }
     /// The address of the elements, the same for copies that share them.
     const T* data() const { return get().data(); }
 

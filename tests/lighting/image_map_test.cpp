@@ -12,7 +12,7 @@ namespace wardray::lighting {
 namespace {
 
 // Rows from the top: red-ish and green over blue and white, stored as 8-bit (encoded) values.
-std::shared_ptr<const scene::ImageData> two_by_two(const std::filesystem::path&, bool& encoded, std::string&) {
+std::shared_ptr<scene::ImageData> two_by_two(const std::filesystem::path&, bool& encoded, std::string&) {
     auto image = std::make_shared<scene::ImageData>();
     image->width = 2;
     image->height = 2;
@@ -80,7 +80,7 @@ TEST(ImageMap, AJpegInASceneWithoutVersionIsInTheWorkingGammaAsPovRay362Reads) {
 
 // Every byte value over 255 and a few that are not: the parser's table for byte values gives each exactly what
 // decoding it alone gives.
-std::shared_ptr<const scene::ImageData> all_bytes(const std::filesystem::path&, bool& encoded, std::string&) {
+std::shared_ptr<scene::ImageData> all_bytes(const std::filesystem::path&, bool& encoded, std::string&) {
     auto image = std::make_shared<scene::ImageData>();
     for (int k = 0; k < 256; ++k) image->rgb.push_back(static_cast<float>(k) * (1.0f / 255.0f));
     for (const float v : {0.3f, 1.0f / 3.0f, 0.5f, 1.5f, -0.25f, 0.999f}) image->rgb.push_back(v);
@@ -163,7 +163,7 @@ TEST(ImagePattern, UseAlphaWithoutAlphaTakesRedAndOnceLeavesZero) {
 }
 
 // A 2 x 1 palette image whose entry 1 is 40 % opaque (a tRNS chunk): rows from the top, indices 0 and 1.
-std::shared_ptr<const scene::ImageData> palette_with_alpha(const std::filesystem::path&, bool& encoded, std::string&) {
+std::shared_ptr<scene::ImageData> palette_with_alpha(const std::filesystem::path&, bool& encoded, std::string&) {
     auto image = std::make_shared<scene::ImageData>();
     image->width = 2;
     image->height = 1;

@@ -89,7 +89,7 @@ TEST(ImagePatterns, NumberOfWavesIsAtLeastOne) {
 }
 
 // A 3 x 1 palette image: indices 0, 1, 2 with grey levels 0, 0.5, 1 (rows from the top).
-std::shared_ptr<const scene::ImageData> palette_strip(const std::filesystem::path&, bool& encoded, std::string&) {
+std::shared_ptr<scene::ImageData> palette_strip(const std::filesystem::path&, bool& encoded, std::string&) {
     auto image = std::make_shared<scene::ImageData>();
     image->width = 3;
     image->height = 1;

@@ -322,7 +322,7 @@ TEST(Grammar, AnImageNamedWithoutExtensionIsFoundByItsType) {
         auto image = std::make_shared<ImageData>();
         image->width = image->height = 1;
         image->rgb = {0.5f, 0.5f, 0.5f};
-        return std::shared_ptr<const ImageData>(image);
+        return image;
     };
     ParseResult r = parse_file(main, o);
     ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);

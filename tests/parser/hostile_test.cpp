@@ -32,7 +32,7 @@ protected:
     ParseOptions options() {
         ParseOptions o = test::default_options();
         // Records every image the parser asks for: a refused one must never reach the reader.
-        o.read_image = [this](const fs::path& file, bool&, std::string& error) -> std::shared_ptr<const ImageData> {
+        o.read_image = [this](const fs::path& file, bool&, std::string& error) -> std::shared_ptr<ImageData> {
             m_images_read.push_back(file);
             error = "test reader";
             return nullptr;
@@ -324,6 +324,45 @@ TEST(SharedObjects, PartsOfATexturedUnionShareItsTexture) {
     ASSERT_EQ(t.objects.size(), 4u);
     EXPECT_EQ(t.objects[0].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
     EXPECT_EQ(t.objects[2].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
+}
+
+// A transform after a union's texture moves that one texture once: the parts still share one value, equal to the
+// pattern transform a single object with the same modifiers gets.
+TEST(SharedObjects, TransformedPartsOfATexturedUnionStillShareItsTexture) {
+    const Scene s = test::parse_ok(
+        "union { sphere { 0, 1 } sphere { x, 1 } sphere { y, 1 } pigment { checker } translate x rotate 30*y }\n"
+        "sphere { 0, 1 pigment { checker } translate x rotate 30*y }\n");
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_TRUE(s.objects[0].texture.shares(s.objects[1].texture));
+    EXPECT_TRUE(s.objects[0].texture.shares(s.objects[2].texture));
+    const Vec3 p{0.3, -1.2, 2.5};
+    EXPECT_EQ(s.objects[0].texture->pigment.pattern.transform.point(p),
+              s.objects[3].texture->pigment.pattern.transform.point(p));
+    EXPECT_NE(s.objects[0].texture->pigment.pattern.transform.point(p), p);
+}
+
+// Objects a loop writes with equal textures of their own share one texture value; a different one stays apart.
+TEST(SharedObjects, EqualTexturesOfObjectsInALoopShareOneValue) {
+    const Scene s = test::parse_ok(
+        "#declare I = 0;\n#while (I < 5)\n  sphere { I*x, 0.4 pigment { rgb 1 } finish { phong 1 } }\n"
+        "  #declare I = I + 1;\n#end\nsphere { 9*x, 1 pigment { rgb x } finish { phong 1 } }\n");
+    ASSERT_EQ(s.objects.size(), 6u);
+    for (std::size_t i = 1; i < 5; ++i) EXPECT_TRUE(s.objects[0].texture.shares(s.objects[i].texture)) << i;
+    EXPECT_FALSE(s.objects[5].texture.shares(s.objects[0].texture));
+    EXPECT_EQ(s.objects[0].texture->pigment.color.rgb(), (Vec3{1, 1, 1}));
+    EXPECT_EQ(s.objects[0].texture->finish.phong, 1.0);
+    EXPECT_EQ(s.objects[5].texture->pigment.color.rgb(), (Vec3{1, 0, 0}));
+}
+
+// Function patterns calling different declared pattern functions look equal (a program compares its calls of
+// declared functions by count): objects with them keep textures of their own.
+TEST(SharedObjects, TexturesWithFunctionPatternsAreNotShared) {
+    const Scene s = test::parse_ok(
+        "#declare F1 = function { pattern { bozo } }\n#declare F2 = function { pattern { granite } }\n"
+        "sphere { 0, 1 pigment { function { F1(x, y, z) } } }\n"
+        "sphere { x, 1 pigment { function { F2(x, y, z) } } }\n");
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_FALSE(s.objects[0].texture.shares(s.objects[1].texture));
 }
 
 // Uses of a declared object share its parts until they change them (PartList): a later #declare of the name, and

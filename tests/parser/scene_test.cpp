@@ -509,7 +509,7 @@ TEST(PatternList, EveryKeywordParsesToItsTypeAndIsReserved) {
             auto image = std::make_shared<ImageData>();
             image->width = image->height = 1;
             image->rgb = {0.5f, 0.5f, 0.5f};
-            return std::shared_ptr<const ImageData>(image);
+            return image;
         };
         const Scene s = parse_ok("sphere { 0, 1 pigment { " + pattern + " } normal { " + pattern +
                                      " } }\nsphere { 0, 1 texture { " + pattern +

@@ -270,6 +270,30 @@ TEST(Mesh, UsesOfADeclaredMeshShareItsArrays) {
     EXPECT_FALSE(s.objects[2].texture.shares(s.objects[0].texture));
 }
 
+// Triangles that each repeat one declared texture share one entry of the mesh's texture list; a different texture
+// gets its own, and a triangle after it that repeats the first again another (only neighbours are compared).
+TEST(Mesh, TrianglesRepeatingOneTextureShareOneListEntry) {
+    const Scene s = parse_ok(R"(
+        #declare T = texture { pigment { rgb x } finish { phong 1 } }
+        mesh {
+          triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> texture { T } }
+          triangle { <1, 0, 0>, <1, 1, 0>, <0, 1, 0> texture { T } }
+          triangle { <0, 0, 1>, <1, 0, 1>, <0, 1, 1> texture { T } }
+          triangle { <0, 0, 2>, <1, 0, 2>, <0, 1, 2> texture { pigment { rgb y } } }
+          triangle { <0, 0, 3>, <1, 0, 3>, <0, 1, 3> texture { T } }
+        }
+    )");
+    ASSERT_EQ(s.objects.size(), 1u);
+    const auto& mesh = std::get<Mesh>(s.objects[0].shape);
+    ASSERT_EQ(mesh.textures.size(), 3u);
+    ASSERT_EQ(mesh.faces.size(), 5u);
+    const int expected[] = {0, 0, 0, 1, 2};
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(mesh.faces[i].tex[0], expected[i]) << i;
+    EXPECT_EQ(mesh.textures[0].pigment.color.rgb(), (Vec3{1, 0, 0}));
+    EXPECT_EQ(mesh.textures[1].pigment.color.rgb(), (Vec3{0, 1, 0}));
+    EXPECT_EQ(mesh.textures[2], mesh.textures[0]);
+}
+
 TEST(BoundedBy, TopLevelCheapShapesLoseTheirBoundsPolynomialsAndCsgKeepThem) {
     // POV-Ray compat (Link_To_Frame): only CSG, polynomials, text and quadrics keep a top-level bounded_by.
     const Scene s = parse_ok(R"(

@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: parse_bench [--eager] FILE [RUNS]\n");
         return 2;
     }
-    // As the wardray command does (render/main.cpp): freed blocks stay in the heap for reuse.
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    // As the wardray command does (app/main.cpp): freed blocks stay in the heap for reuse.
+    mallopt(M_MMAP_THRESHOLD, 1 << 20);
     mallopt(M_TRIM_THRESHOLD, 64 << 20);
     const int runs = argc > 2 ? std::max(1, std::atoi(argv[2])) : 50;
     wardray::parser::ParseOptions options;
