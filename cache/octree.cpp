@@ -140,7 +140,11 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                         std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
     if (f.nodes[node].size <= target_size) {
         Node& n = f.nodes[node];
-        n.entries.push_back({record.position, record.radius, index});
+        const Vec3 local = record.position - n.min;
+        float radius = static_cast<float>(record.radius);
+        if (static_cast<double>(radius) < record.radius) radius = std::nextafter(radius, HUGE_VALF);
+        n.entries.push_back({static_cast<float>(local.x), static_cast<float>(local.y), static_cast<float>(local.z),
+                             radius, index});
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
         if (home) n.homes.push_back({record.position, index});
@@ -159,10 +163,14 @@ std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_b
     const std::size_t end = std::min(n.entries.size(), begin + kScanChunk);
     const Node::Entry* e = n.entries.data();
     std::size_t found = 0;
+    // A filed sphere overlaps the node, so its centre lies within about two node sizes of `min`: each float
+    // coordinate is off by at most 2^-24 of that, and the distance by less than 2^-20 of the node's size.
+    const Vec3 local = q - n.min;
+    const double slack = 0x1p-20 * n.size;
     // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
     for (std::size_t i = begin; i < end; ++i) {
-        const double dx = q.x - e[i].position.x, dy = q.y - e[i].position.y, dz = q.z - e[i].position.z;
-        const double reach = error_bound * e[i].radius;
+        const double dx = local.x - e[i].x, dy = local.y - e[i].y, dz = local.z - e[i].z;
+        const double reach = error_bound * e[i].radius + slack;
         near[found] = e[i].index;
         found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
     }
