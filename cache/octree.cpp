@@ -51,8 +51,8 @@ RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
     for (std::size_t k = 0; k < inner.size(); ++k)
         if (!(inner[k] > 0.0 && inner[k] <= 1.0)) inner[k] = defaults[k];
     m_inner = inner;
-    m_filings.push_back(Filing{r, {}, -1});
-    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, -1});
+    m_filings.push_back(Filing{r, {}, {}, -1});
+    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, {}, -1});
 }
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
@@ -147,7 +147,13 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                              radius, index});
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
-        if (home) n.homes.push_back({record.position, index});
+        if (home) {
+            if (n.home_list < 0) {
+                n.home_list = static_cast<std::int32_t>(f.home_lists.size());
+                f.home_lists.emplace_back();
+            }
+            f.home_lists[static_cast<std::size_t>(n.home_list)].push_back({record.position, index});
+        }
         return;
     }
     // Into every child the sphere's box overlaps: at most three per axis once cells are as wide as its radius.
@@ -178,12 +184,15 @@ std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_b
 }
 
 void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& bound) const {
-    const Node& n = m_filings.front().nodes[node];
+    const Filing& f = m_filings.front();
+    const Node& n = f.nodes[node];
     // A record is filed in up to 27 nodes; it is tested only in the one that holds its position. Only records
     // closer than the bound can lower it (R_i > 0).
-    for (const Node::Home& h : n.homes) {
-        const double d = length(h.position - centre);
-        if (d < bound) bound = std::min(bound, m_records[h.index].radius + d);
+    if (n.home_list >= 0) {
+        for (const Node::Home& h : f.home_lists[static_cast<std::size_t>(n.home_list)]) {
+            const double d = length(h.position - centre);
+            if (d < bound) bound = std::min(bound, m_records[h.index].radius + d);
+        }
     }
     // The child holding the centre first: its records are the likeliest to lower the bound for the others.
     const double half = 0.5 * n.size;

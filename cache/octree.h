@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "cache/irradiance_record.h"
@@ -87,18 +88,21 @@ private:
         std::vector<Entry> entries;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
         /// the first filing), so that range queries test each record once; positions packed for the scan.
+        /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
+        /// none.)
         struct Home {
             Vec3 position;
             std::uint32_t index = 0;
         };
-        std::vector<Home> homes;
+        std::int32_t home_list = -1;
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
     };
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
         double reach = 1.0;
-        std::vector<Node> nodes;
+        std::deque<Node> nodes;  ///< a deque: no copy of every node and no doubled capacity as it grows
+        std::deque<std::vector<Node::Home>> home_lists;
         std::int32_t root = -1;
     };
 
