@@ -163,13 +163,22 @@ TEST(Sor, NearlyLevelRaysAgreeWithLevelOnes) {
     ASSERT_TRUE(inst);
     const auto level = inst->nearest({-5, 0.9, 0.2}, {1, 0, 0}, 0.0, 1e30);
     ASSERT_TRUE(level);
-    for (const double tilt : {1e-12, 1e-9, 1e-7, 1e-5, 1e-3}) {
+    for (const double tilt : {1e-12, 1e-9, 1e-7, 1e-5}) {
         const auto hit = inst->nearest({-5, 0.9, 0.2}, {1, tilt, 0}, 0.0, 1e30);
         ASSERT_TRUE(hit) << "tilt " << tilt;
         EXPECT_NEAR(hit->position.x, level->position.x, 1e-6 + 10 * tilt) << "tilt " << tilt;
     }
+    // POV-Ray compat: at tilt 1e-3 the cubic's leading coefficient (about 1e-9 of the next) is no longer dropped, and
+    // POV-Ray's closed form puts the crossing at x = -1.5123, not -1.098: POV-Ray 3.7.0.10's value, read back from
+    // 1x1 renders of this ray (camera { perspective location <-5, 0.9, 0.2> direction <1, 0.001, 0> }) with
+    // pigment { function { -x/2 } } and, for the last digits, function { -x*8 }, finish { ambient 1 diffuse 0 }.
+    const auto tilted = inst->nearest({-5, 0.9, 0.2}, {1, 1e-3, 0}, 0.0, 1e30);
+    ASSERT_TRUE(tilted);
+    EXPECT_NEAR(tilted->position.x, -1.51231, 2e-4);
 }
 
+// POV-Ray compat: the crossings come from POV-Ray's closed-form cubic, whose roots are off the surface by up to about
+// 1e-4 of the shape's size on these rays (shallow ones and far ones), as POV-Ray draws them.
 TEST(Sor, RandomRays) {
     check_shape([](Random& r) {
         std::vector<Vec3> points;
@@ -179,7 +188,7 @@ TEST(Sor, RandomRays) {
             y += r.uniform(0.3, 0.8);
         }
         return sor_of(points, r.chance(0.3));
-    }, false, 51, 1e-8);
+    }, false, 51, 1e-4);
 }
 
 }  // namespace
