@@ -172,8 +172,9 @@ std::optional<SorShape> SorShape::create(const scene::Sor& sor) {
         const auto& c = piece.c;
         piece.y_min = w1;
         piece.y_max = w2;
-        // POV-Ray compat: the shell's radii are sqrt(f) at the ends and at the extremes of f within the piece; where
-        // f dips below zero that is NaN, kept or dropped as std::min and std::max meet it.
+        // POV-Ray compat: the shell's radii are the least and the greatest of the two points' radii and sqrt(f) at the
+        // extremes of f within the piece; where f dips below zero that is NaN, kept or dropped as std::min and
+        // std::max meet it (a NaN radius fails every comparison, so the ray never enters that shell's wall).
         double x[4] = {P[i + 1].x, P[i + 2].x, P[i + 1].x, P[i + 2].x};
         const double slope[3] = {3.0 * c[3], 2.0 * c[2], c[1]};
         double roots[2];
