@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 #include "core/constants.h"
 
@@ -258,13 +259,9 @@ SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_
     // POV-Ray compat (Intersect_BCyl): a piece is solved only when the ray crosses the walls of its shell (the ring
     // between its two radii, its two heights) two or four times, not all behind; the pieces are visited in the
     // order of where the ray enters their shells (0 when it starts inside).
-    Entry small[16];
-    std::vector<Entry> large;
-    Entry* order = small;
-    if (m_pieces->size() > 16) {
-        large.resize(m_pieces->size());
-        order = large.data();
-    }
+    thread_local std::vector<Entry> order_buffer;
+    order_buffer.resize(std::max(order_buffer.size(), m_pieces->size()));
+    Entry* order = order_buffer.data();
     int count = 0;
     for (int i = 0; i < static_cast<int>(m_pieces->size()); ++i) {
         const Piece& piece = (*m_pieces)[i];
