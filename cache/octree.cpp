@@ -58,6 +58,7 @@ RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
     const auto index = static_cast<std::uint32_t>(m_records.size());
     m_records.push_back(record);
+    m_geometry.push_back(geometry_of(record));
     for (std::size_t k = 0; k < m_filings.size(); ++k) insert_into(m_filings[k], record, index, k == 0);
     return index;
 }

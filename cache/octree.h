@@ -33,8 +33,13 @@ public:
     std::uint32_t insert(const IrradianceRecord& record);
     /// Every record in insertion order.
     const std::vector<IrradianceRecord>& records() const { return m_records; }
-    /// Mutable access for neighbour clamping: the radius may only shrink (the filing stays conservative).
-    IrradianceRecord& record(std::uint32_t index) { return m_records[index]; }
+    /// The position, normal and radius of record `index`, packed (what lookups test before reading the record).
+    const RecordGeometry& geometry(std::uint32_t index) const { return m_geometry[index]; }
+    /// Neighbour clamping: record `index`'s radius becomes `radius` when that is smaller (the filing stays
+    /// conservative).
+    void shrink_radius(std::uint32_t index, double radius) {
+        if (radius < m_records[index].radius) m_records[index].radius = m_geometry[index].radius = radius;
+    }
     std::size_t size() const { return m_records.size(); }
     double reach() const { return m_filings.front().reach; }
 
@@ -46,9 +51,10 @@ public:
             for (const Node::Entry& e : n.entries) visit(e.index);
         });
     }
-    /// Calls `visit(index)` for the records with |q − position| < error_bound × radius, from the tightest filing that
-    /// holds them all; deterministic order, but not visit()'s. Found by a branch-free scan of each node's packed
-    /// positions and radii (floats, the test widened by their rounding), then the exact test on the record.
+    /// Calls `visit(index, geometry(index))` for the records with |q − position| < error_bound × radius, from the
+    /// tightest filing that holds them all; deterministic order, but not visit()'s. Found by a branch-free scan of
+    /// each node's packed positions and radii (floats, the test widened by their rounding), then the exact test on
+    /// the record's packed geometry (one cache line; the record itself is not read).
     template <typename Visit>
     void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
         const Filing* filing = &m_filings.front();
@@ -59,10 +65,10 @@ public:
             for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
                 const std::size_t found = scan_near(n, q, error_bound, begin, near);
                 for (std::size_t i = 0; i < found; ++i) {
-                    const IrradianceRecord& r = m_records[near[i]];
-                    const Vec3 d = q - r.position;
-                    const double reach = error_bound * r.radius;
-                    if (dot(d, d) < reach * reach) visit(near[i]);
+                    const RecordGeometry& g = m_geometry[near[i]];
+                    const Vec3 d = q - g.position;
+                    const double reach = error_bound * g.radius;
+                    if (dot(d, d) < reach * reach) visit(near[i], g);
                 }
             }
         });
@@ -142,6 +148,7 @@ private:
     void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
+    std::vector<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
     std::array<double, 2> m_inner{0.5, 0.25};
     std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };

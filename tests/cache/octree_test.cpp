@@ -94,7 +94,10 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
                     const Vec3 d = q - all[i].position;
                     if (dot(d, d) < bound * all[i].radius * bound * all[i].radius) brute.push_back(i);
                 }
-                tree.visit_near(q, bound, [&](std::uint32_t i) { found.push_back(i); });
+                tree.visit_near(q, bound, [&](std::uint32_t i, const RecordGeometry& g) {
+                    found.push_back(i);
+                    EXPECT_EQ(&g, &tree.geometry(i));
+                });
                 std::sort(found.begin(), found.end());
                 EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "visited twice";
                 ASSERT_EQ(found, brute) << "query " << qi << " bound " << bound << " inner " << inner[0];
@@ -103,6 +106,41 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
         }
         EXPECT_GT(hits, 3000);
         EXPECT_EQ(tree.empty_like().reach(), tree.reach());
+    }
+}
+
+// The packed geometry lookups test follows the records, through shrunk radii too, and visit_near() then finds
+// exactly the records within the shrunk spheres.
+TEST(RecordOctree, PackedGeometryFollowsShrunkRadii) {
+    SplitMix64 rng(7);
+    RecordOctree tree(1.0);
+    std::vector<IrradianceRecord> all;
+    for (int i = 0; i < 1000; ++i) {
+        all.push_back(random_record(rng, {0, 0, 0}, 1.0));
+        tree.insert(all.back());
+    }
+    for (std::uint32_t i = 0; i < all.size(); i += 3) {
+        tree.shrink_radius(i, all[i].radius * 0.5);
+        tree.shrink_radius(i, all[i].radius * 2.0);  // never grows
+        all[i].radius *= 0.5;
+    }
+    for (std::uint32_t i = 0; i < all.size(); ++i) {
+        const RecordGeometry& g = tree.geometry(i);
+        ASSERT_EQ(g.radius, all[i].radius);
+        ASSERT_EQ(tree.records()[i].radius, all[i].radius);
+        ASSERT_EQ(g.position, all[i].position);
+        ASSERT_EQ(g.normal, all[i].normal);
+    }
+    for (int qi = 0; qi < 500; ++qi) {
+        const Vec3 q{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+        std::vector<std::uint32_t> brute, found;
+        for (std::uint32_t i = 0; i < all.size(); ++i) {
+            const Vec3 d = q - all[i].position;
+            if (dot(d, d) < 0.9 * all[i].radius * (0.9 * all[i].radius)) brute.push_back(i);
+        }
+        tree.visit_near(q, 0.9, [&](std::uint32_t i, const RecordGeometry&) { found.push_back(i); });
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, brute) << "query " << qi;
     }
 }
 
