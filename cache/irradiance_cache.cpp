@@ -41,8 +41,10 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
     thread_local std::vector<Valid> valid;
     valid.clear();
     tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i, const RecordGeometry& g) {
-        RecordWeight w;
-        if (acc.weigh_near(g, w)) valid.push_back({i, w});
+        // Weighed in place: no copy of the weights through the stack.
+        Valid& v = valid.emplace_back();
+        v.index = i;
+        if (!acc.weigh_near(g, v.weight)) valid.pop_back();
     });
     std::sort(valid.begin(), valid.end(), [](const Valid& a, const Valid& b) { return a.index < b.index; });
     const auto& records = tree.records();

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 namespace wardray::cache {
 namespace {
@@ -141,11 +143,29 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                         std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
     if (f.nodes[node].size <= target_size) {
         Node& n = f.nodes[node];
-        const Vec3 local = record.position - n.min;
-        float radius = static_cast<float>(record.radius);
-        if (static_cast<double>(radius) < record.radius) radius = std::nextafter(radius, HUGE_VALF);
-        n.entries.push_back({static_cast<float>(local.x), static_cast<float>(local.y), static_cast<float>(local.z),
-                             radius, index});
+        // In units of the node's size (a power of two, so the scaling is exact): the scan's floats neither
+        // underflow nor overflow at any scene scale.
+        const double unit = 1.0 / n.size;
+        const Vec3 local = (record.position - n.min) * unit;
+        float radius = static_cast<float>(record.radius * unit);
+        if (static_cast<double>(radius) < record.radius * unit) radius = std::nextafter(radius, HUGE_VALF);
+        if (n.blocks.empty() || n.blocks.back().index[kBlock - 1] != kNoRecord) {
+            Node::Block unused;
+            for (std::size_t k = 0; k < kBlock; ++k) {
+                unused.x[k] = unused.y[k] = unused.z[k] = HUGE_VALF;
+                unused.radius[k] = 0.0f;
+                unused.index[k] = kNoRecord;
+            }
+            n.blocks.push_back(unused);
+        }
+        Node::Block& b = n.blocks.back();
+        std::size_t lane = 0;
+        while (b.index[lane] != kNoRecord) ++lane;
+        b.x[lane] = static_cast<float>(local.x);
+        b.y[lane] = static_cast<float>(local.y);
+        b.z[lane] = static_cast<float>(local.z);
+        b.radius[lane] = radius;
+        b.index[lane] = index;
         bool home = homes;
         for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
         if (home) {
@@ -167,19 +187,33 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
 
 std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
                                    std::uint32_t* near) {
-    const std::size_t end = std::min(n.entries.size(), begin + kScanChunk);
-    const Node::Entry* e = n.entries.data();
+    // Four lanes at a time (GCC/Clang vector extensions: SSE on x86-64, NEON on ARM).
+    using Floats = float __attribute__((vector_size(16)));
+    const std::size_t end = std::min(n.blocks.size(), begin + kScanBlocks);
+    // In node sizes, as filed. A filed sphere overlaps the node and is at most as wide as it (error_bound ≤ the
+    // filing's reach), so its centre lies within two sizes of `min`, q within one, and every term below is under a
+    // few: float rounding (2^-24 of each) moves the distance and the reach by far less than this slack.
+    const Vec3 local = (q - n.min) * (1.0 / n.size);
+    const float slack = 0x1p-16f;
+    const Floats qx = Floats{} + static_cast<float>(local.x), qy = Floats{} + static_cast<float>(local.y),
+                 qz = Floats{} + static_cast<float>(local.z);
+    const Floats bound = Floats{} + static_cast<float>(error_bound);
     std::size_t found = 0;
-    // A filed sphere overlaps the node, so its centre lies within about two node sizes of `min`: each float
-    // coordinate is off by at most 2^-24 of that, and the distance by less than 2^-20 of the node's size.
-    const Vec3 local = q - n.min;
-    const double slack = 0x1p-20 * n.size;
-    // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
     for (std::size_t i = begin; i < end; ++i) {
-        const double dx = local.x - e[i].x, dy = local.y - e[i].y, dz = local.z - e[i].z;
-        const double reach = error_bound * e[i].radius + slack;
-        near[found] = e[i].index;
-        found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
+        const Node::Block& b = n.blocks[i];
+        Floats x, y, z, radius;
+        std::memcpy(&x, b.x, sizeof x);
+        std::memcpy(&y, b.y, sizeof y);
+        std::memcpy(&z, b.z, sizeof z);
+        std::memcpy(&radius, b.radius, sizeof radius);
+        const Floats dx = qx - x, dy = qy - y, dz = qz - z;
+        const Floats reach = bound * radius + slack;
+        const auto inside = dx * dx + dy * dy + dz * dz < reach * reach;  // -1 in the lanes that pass
+        // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
+        for (std::size_t k = 0; k < kBlock; ++k) {
+            near[found] = b.index[k];
+            found -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[k]));
+        }
     }
     return found;
 }

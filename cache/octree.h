@@ -48,21 +48,23 @@ public:
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
         walk(m_filings.front(), q, [&](const Node& n) {
-            for (const Node::Entry& e : n.entries) visit(e.index);
+            for (const Node::Block& b : n.blocks)
+                for (const std::uint32_t index : b.index)
+                    if (index != kNoRecord) visit(index);
         });
     }
     /// Calls `visit(index, geometry(index))` for the records with |q − position| < error_bound × radius, from the
     /// tightest filing that holds them all; deterministic order, but not visit()'s. Found by a branch-free scan of
-    /// each node's packed positions and radii (floats, the test widened by their rounding), then the exact test on
-    /// the record's packed geometry (one cache line; the record itself is not read).
+    /// each node's packed positions and radii (floats, four at a time, the test widened by their rounding), then
+    /// the exact test on the record's packed geometry (one cache line; the record itself is not read).
     template <typename Visit>
     void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
         const Filing* filing = &m_filings.front();
         for (const Filing& f : m_filings)
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
-        std::uint32_t near[kScanChunk];
+        std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n) {
-            for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
+            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
                 const std::size_t found = scan_near(n, q, error_bound, begin, near);
                 for (std::size_t i = 0; i < found; ++i) {
                     const RecordGeometry& g = m_geometry[near[i]];
@@ -79,19 +81,25 @@ public:
     double clamped_radius(const Vec3& centre, double bound) const;
 
 private:
+    /// Entries per Node::Block: one SSE register of floats.
+    static constexpr std::size_t kBlock = 4;
+    /// The index of an unused lane.
+    static constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
     struct Node {
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
         Vec3 min;           ///< the cube [min, min + size)
         double size = 0.0;  ///< a power of two
-        /// The records filed here in insertion order: position relative to `min` and radius at filing as floats
-        /// (the radius rounded up), and index, side by side (one allocation per node, read in order by the scans):
-        /// 20 bytes, against 40 in doubles, for up to 27 entries a record in each of three filings.
-        struct Entry {
-            float x = 0.0f, y = 0.0f, z = 0.0f;
-            float radius = 0.0f;
-            std::uint32_t index = 0;
+        /// The records filed here in insertion order, four to a block: position relative to `min` and radius at
+        /// filing, both in units of `size`, as floats (the radius rounded up), and index, each field side by side for the scan (one
+        /// allocation per node, read in order): 20 bytes an entry, against 40 in doubles, for up to 27 entries a
+        /// record in each of three filings. The last block's unused lanes have index kNoRecord and a position
+        /// no query is near.
+        struct alignas(16) Block {
+            float x[kBlock], y[kBlock], z[kBlock];
+            float radius[kBlock];
+            std::uint32_t index[kBlock];
         };
-        std::vector<Entry> entries;
+        std::vector<Block> blocks;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
         /// the first filing), so that range queries test each record once; positions packed for the scan.
         /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
@@ -124,20 +132,27 @@ private:
         std::int32_t node = f.root;
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
-            at(n);
             const double half = 0.5 * n.size;
             int octant = 0;
             for (int a = 0; a < 3; ++a) {
                 if (q[a] >= n.min[a] + half) octant |= 1 << a;
             }
-            node = n.children[static_cast<std::size_t>(octant)];
+            const std::int32_t next = n.children[static_cast<std::size_t>(octant)];
+            // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
+            if (next >= 0) {
+                const char* bytes = reinterpret_cast<const char*>(&f.nodes[static_cast<std::size_t>(next)]);
+                __builtin_prefetch(bytes);
+                __builtin_prefetch(bytes + sizeof(Node) - 1);
+            }
+            at(n);
+            node = next;
         }
     }
 
-    /// How many entries visit_near() tests in one scan.
-    static constexpr std::size_t kScanChunk = 64;
-    /// Writes to `near` the indices of the records among entries [begin, begin + kScanChunk) of `n` within
-    /// error_bound × radius of q; returns how many.
+    /// How many blocks visit_near() tests in one scan.
+    static constexpr std::size_t kScanBlocks = 16;
+    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` that may lie within
+    /// error_bound × radius of q (a superset: the test is widened by the floats' rounding); returns how many.
     static std::size_t scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
                                  std::uint32_t* near);
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
