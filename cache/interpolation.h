@@ -97,6 +97,8 @@ private:
     Vec3 m_p;
     Vec3 m_n;
     LookupParams m_params;
+    double m_inverse_bound = 0.0;  ///< 1 / error_bound
+    double m_weight_floor = 0.0;   ///< the ε at which Ward's weight is bounded
     Vec3 m_sum;
     double m_weight_sum = 0.0;
     double m_coverage = 0.0;

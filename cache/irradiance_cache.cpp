@@ -40,14 +40,22 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
     };
     thread_local std::vector<Valid> valid;
     valid.clear();
+    const auto& records = tree.records();
     tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i, const RecordGeometry& g) {
         // Weighed in place: no copy of the weights through the stack.
         Valid& v = valid.emplace_back();
         v.index = i;
-        if (!acc.weigh_near(g, v.weight)) valid.pop_back();
+        if (!acc.weigh_near(g, v.weight)) {
+            valid.pop_back();
+            return;
+        }
+        // The values add_weighted() reads (irradiance and gradients) are fetched meanwhile.
+        const char* values = reinterpret_cast<const char*>(&records[i].irradiance);
+        const char* values_end = reinterpret_cast<const char*>(&records[i] + 1) - 1;
+        for (const char* line = values; line < values_end; line += 64) __builtin_prefetch(line);
+        __builtin_prefetch(values_end);
     });
     std::sort(valid.begin(), valid.end(), [](const Valid& a, const Valid& b) { return a.index < b.index; });
-    const auto& records = tree.records();
     for (const Valid& v : valid) acc.add_weighted(records[v.index], v.weight);
 }
 

@@ -66,6 +66,8 @@ public:
         walk(*filing, q, [&](const Node& n) {
             for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
                 const std::size_t found = scan_near(n, q, error_bound, begin, near);
+                // The candidates' geometry is fetched together, not one miss after another.
+                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
                 for (std::size_t i = 0; i < found; ++i) {
                     const RecordGeometry& g = m_geometry[near[i]];
                     const Vec3 d = q - g.position;
