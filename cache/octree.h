@@ -47,7 +47,7 @@ public:
     /// for any error bound ≤ reach), walking from the root to the leaf that holds q; deterministic order.
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
-        walk(m_filings.front(), q, [&](const Node& n) {
+        walk(m_filings.front(), q, [&](const Node& n, const Cube&) {
             for (const Node::Block& b : n.blocks)
                 for (const std::uint32_t index : b.index)
                     if (index != kNoRecord) visit(index);
@@ -63,9 +63,9 @@ public:
         for (const Filing& f : m_filings)
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanBlocks * kBlock];
-        walk(*filing, q, [&](const Node& n) {
+        walk(*filing, q, [&](const Node& n, const Cube& cube) {
             for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, q, error_bound, begin, near);
+                const std::size_t found = scan_near(n, cube, q, error_bound, begin, near);
                 // The candidates' geometry is fetched together, not one miss after another.
                 for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
                 for (std::size_t i = 0; i < found; ++i) {
@@ -87,12 +87,32 @@ private:
     static constexpr std::size_t kBlock = 4;
     /// The index of an unused lane.
     static constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
-    struct Node {
+    /// A node's cube [min, min + size), size a power of two. Not stored in the node: the root's is the filing's,
+    /// and each child's is derived from its parent's on the way down, as child() once made it.
+    struct Cube {
+        Vec3 min;
+        double size = 0.0;
+        /// The octant of the cube that holds p, one bit per axis.
+        int octant_of(const Vec3& p) const {
+            const double half = 0.5 * size;
+            int octant = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (p[a] >= min[a] + half) octant |= 1 << a;
+            }
+            return octant;
+        }
+        Cube child(int octant) const {
+            const double half = 0.5 * size;
+            return {{min.x + ((octant & 1) ? half : 0.0), min.y + ((octant & 2) ? half : 0.0),
+                     min.z + ((octant & 4) ? half : 0.0)},
+                    half};
+        }
+    };
+    /// One cache line (with a 24-byte vector), so that a walk reads one line per node.
+    struct alignas(64) Node {
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
-        Vec3 min;           ///< the cube [min, min + size)
-        double size = 0.0;  ///< a power of two
-        /// The records filed here in insertion order, four to a block: position relative to `min` and radius at
-        /// filing, both in units of `size`, as floats (the radius rounded up), and index, each field side by side for the scan (one
+        /// The records filed here in insertion order, four to a block: position relative to the cube's min and
+        /// radius at filing, both in units of its size, as floats (the radius rounded up), and index, each field side by side for the scan (one
         /// allocation per node, read in order): 20 bytes an entry, against 40 in doubles, for up to 27 entries a
         /// record in each of three filings. The last block's unused lanes have index kNoRecord and a position
         /// no query is near.
@@ -114,39 +134,34 @@ private:
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
     };
+    static_assert(sizeof(Node) == 64 || sizeof(void*) != 8, "a node no longer fits one cache line");
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
         double reach = 1.0;
         std::deque<Node> nodes;  ///< a deque: no copy of every node and no doubled capacity as it grows
         std::deque<std::vector<Node::Home>> home_lists;
         std::int32_t root = -1;
+        Cube root_cube;
     };
 
-    /// Calls `at(node)` for every node from `f`'s root down to the leaf that holds q (Ward, Rubinstein & Clear
-    /// 1988's multi-resolution lookup).
+    /// Calls `at(node, cube)` for every node from `f`'s root down to the leaf that holds q (Ward, Rubinstein &
+    /// Clear 1988's multi-resolution lookup).
     template <typename At>
     static void walk(const Filing& f, const Vec3& q, At&& at) {
         if (f.root < 0 || !is_finite(q)) return;
-        const Node& root = f.nodes[static_cast<std::size_t>(f.root)];
+        Cube cube = f.root_cube;
         for (int a = 0; a < 3; ++a) {
-            if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
+            if (q[a] < cube.min[a] || q[a] >= cube.min[a] + cube.size) return;
         }
         std::int32_t node = f.root;
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
-            const double half = 0.5 * n.size;
-            int octant = 0;
-            for (int a = 0; a < 3; ++a) {
-                if (q[a] >= n.min[a] + half) octant |= 1 << a;
-            }
+            const int octant = cube.octant_of(q);
             const std::int32_t next = n.children[static_cast<std::size_t>(octant)];
             // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
-            if (next >= 0) {
-                const char* bytes = reinterpret_cast<const char*>(&f.nodes[static_cast<std::size_t>(next)]);
-                __builtin_prefetch(bytes);
-                __builtin_prefetch(bytes + sizeof(Node) - 1);
-            }
-            at(n);
+            if (next >= 0) __builtin_prefetch(&f.nodes[static_cast<std::size_t>(next)]);
+            at(n, cube);
+            cube = cube.child(octant);
             node = next;
         }
     }
@@ -155,14 +170,14 @@ private:
     static constexpr std::size_t kScanBlocks = 16;
     /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` that may lie within
     /// error_bound × radius of q (a superset: the test is widened by the floats' rounding); returns how many.
-    static std::size_t scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
-                                 std::uint32_t* near);
+    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+                                 std::size_t begin, std::uint32_t* near);
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
     static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
     static std::int32_t child(Filing& f, std::int32_t node, int octant);
     static void file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes, std::int32_t node,
-                     const Vec3& lo, const Vec3& hi, double target_size);
-    void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
+                     const Cube& cube, const Vec3& lo, const Vec3& hi, double target_size);
+    void clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
     std::vector<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
