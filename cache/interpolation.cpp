@@ -44,7 +44,7 @@ LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, 
     return params;
 }
 
-double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n) {
+double record_error(const RecordGeometry& record, const Vec3& p, const Vec3& n) {
     // Ward, Rubinstein & Clear 1988, the split-sphere error ε = |p − p_i|/R_i + √(1 − n·n_i);
     // POV-Ray compat: the rotational term is doubled (radiosity.cpp, error_reuse_rotate).
     const double translation = length(p - record.position) / record.radius;
@@ -52,13 +52,21 @@ double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n
     return translation + rotation;
 }
 
-double front_distance(const IrradianceRecord& record, const Vec3& p, const Vec3& n) {
+double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n) {
+    return record_error(geometry_of(record), p, n);
+}
+
+double front_distance(const RecordGeometry& record, const Vec3& p, const Vec3& n) {
     // Ward, Rubinstein & Clear 1988, the "in front" test d_i = (p − p_i)·(n + n_i)/2, here against the unit
     // half vector and divided by R_i so that it does not depend on the scene's scale.
     const Vec3 half = n + record.normal;
     const double len = length(half);
     if (!(len > 1e-12)) return -HUGE_VAL;
     return dot(p - record.position, half) / (len * record.radius);
+}
+
+double front_distance(const IrradianceRecord& record, const Vec3& p, const Vec3& n) {
+    return front_distance(geometry_of(record), p, n);
 }
 
 bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, double error_bound) {
@@ -83,29 +91,55 @@ Vec3 extrapolate(const IrradianceRecord& record, const Vec3& p, const Vec3& n, b
 }
 
 InterpolationAccumulator::InterpolationAccumulator(const Vec3& p, const Vec3& n, const LookupParams& params)
-    : m_p(p), m_n(normalize(n)), m_params(params) {}
+    : m_p(p),
+      m_n(normalize(n)),
+      m_params(params),
+      m_inverse_bound(1.0 / params.error_bound),
+      m_weight_floor(kWeightFloor * params.error_bound) {}
 
 bool InterpolationAccumulator::add(const IrradianceRecord& record) {
+    RecordWeight w;
+    if (!weigh(geometry_of(record), w)) return false;
+    add_weighted(record, w);
+    return true;
+}
+
+bool InterpolationAccumulator::weigh_near(const RecordGeometry& record, RecordWeight& out) const {
     const double eb = m_params.error_bound;
-    // Quick rejections first (most candidates fail one): farther than ε alone allows, or facing away.
-    if (!may_accept(record.position, record.normal, record.radius)) return false;
-    // is_valid(), with ε and the behind measure computed once.
+    // Facing away: the cheapest rejection left once the distance test has passed.
+    const double cos_normals = dot(m_n, record.normal);
+    if (!(cos_normals > 0.0)) return false;
+    // is_valid(): ε as record_error() computes it, with the offset shared by the behind test.
     if (!(eb > 0.0)) return false;
-    const double eps = record_error(record, m_p, m_n);
+    const Vec3 offset = m_p - record.position;
+    const double eps = std::sqrt(dot(offset, offset)) / record.radius +
+                       2.0 * std::sqrt(std::max(0.0, 1.0 - cos_normals));
     if (!(eps < eb)) return false;
-    const double front = front_distance(record, m_p, m_n);
-    if (!(front > -kFrontLimit)) return false;
-    const double fade = front_fade(front);
+    // front_distance(): a record level with p or behind it (offset·(n + n_i) ≥ 0) has front ≥ 0 and no fade, known
+    // without its square root and division; |n + n_i|² > 1 whenever unit normals face the same side.
+    const Vec3 half = m_n + record.normal;
+    const double half2 = dot(half, half);
+    const double along = dot(offset, half);
+    double fade = 1.0;
+    if (!(along >= 0.0 && half2 > 1.0)) {
+        const double len = std::sqrt(half2);
+        if (!(len > 1e-12)) return false;
+        const double front = along / (len * record.radius);
+        if (!(front > -kFrontLimit)) return false;
+        fade = front_fade(front);
+    }
     // Ward, Rubinstein & Clear 1988's weight 1/ε, bounded at ε → 0 and shifted by 1/error_bound so it reaches
     // zero at the edge of validity (no seams where a record stops being valid).
-    const double w = fade * (1.0 / std::max(eps, kWeightFloor * eb) - 1.0 / eb);
-    const double cover = fade * coverage_weight(eps / eb, m_params.smooth_coverage);
-    if (!(w > 0.0)) return false;
-    m_sum += extrapolate(record, m_p, m_n, m_params.gradients) * w;
-    m_weight_sum += w;
-    m_coverage += cover;
+    out.weight = fade * (1.0 / std::max(eps, m_weight_floor) - m_inverse_bound);
+    out.coverage = fade * coverage_weight(eps / eb, m_params.smooth_coverage);
+    return out.weight > 0.0;
+}
+
+void InterpolationAccumulator::add_weighted(const IrradianceRecord& record, const RecordWeight& w) {
+    m_sum += extrapolate(record, m_p, m_n, m_params.gradients) * w.weight;
+    m_weight_sum += w.weight;
+    m_coverage += w.coverage;
     ++m_records;
-    return true;
 }
 
 Interpolation InterpolationAccumulator::result() const {

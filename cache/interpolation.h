@@ -32,10 +32,14 @@ LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, 
 /// Ward, Rubinstein & Clear 1988's error term with POV-Ray's doubled rotational part (see LookupParams):
 /// ε = |p − p_i| / R_i + 2 √(1 − n·n_i).
 double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n);
+/// record_error() of a record's packed geometry.
+double record_error(const RecordGeometry& record, const Vec3& p, const Vec3& n);
 
 /// The behind test's measure (Ward, Rubinstein & Clear 1988, "in front" test), scale-free:
 /// (p − p_i)·(n + n_i)/|n + n_i| / R_i; clearly negative means the record lies in front of p.
 double front_distance(const IrradianceRecord& record, const Vec3& p, const Vec3& n);
+/// front_distance() of a record's packed geometry.
+double front_distance(const RecordGeometry& record, const Vec3& p, const Vec3& n);
 
 /// True when `record` may be reused at (p, n): ε below the bound, normals within 90°, and not in front of p.
 bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, double error_bound);
@@ -53,14 +57,29 @@ struct Interpolation {
     bool sufficient = false;  ///< enough records to skip a new gather (LookupParams::reuse_count, accept_any)
 };
 
+/// A valid record's weights at the lookup point: Ward's w_i and POV-Ray's coverage weight.
+struct RecordWeight {
+    double weight = 0.0;
+    double coverage = 0.0;
+};
+
 /// Sums valid records into the interpolation at one point, in the order they are offered (which makes the result
 /// deterministic for a deterministic order).
 class InterpolationAccumulator {
 public:
     /// `n` is normalised here.
     InterpolationAccumulator(const Vec3& p, const Vec3& n, const LookupParams& params);
-    /// Tests `record` and adds it when valid; returns whether it was valid.
+    /// Tests `record` and adds it when valid; returns whether it was valid (weigh(), then add_weighted()).
     bool add(const IrradianceRecord& record);
+    /// Tests a record by its geometry alone; when valid, writes its weights to `out` and returns true.
+    bool weigh(const RecordGeometry& record, RecordWeight& out) const {
+        return may_accept(record.position, record.normal, record.radius) && weigh_near(record, out);
+    }
+    /// weigh() for a record already known to lie within error_bound() × R_i of the point (RecordOctree::visit_near
+    /// makes that test exactly as may_accept() does): the other tests only.
+    bool weigh_near(const RecordGeometry& record, RecordWeight& out) const;
+    /// Adds a record that weigh() accepted with weights `w`; the record is read only here.
+    void add_weighted(const IrradianceRecord& record, const RecordWeight& w);
     /// A quick necessary condition for add() to accept a record at `position` with `normal` and (at least) `radius`:
     /// near enough for ε alone and facing the same side (the distance first: it rejects most candidates).
     bool may_accept(const Vec3& position, const Vec3& normal, double radius) const {
@@ -78,6 +97,8 @@ private:
     Vec3 m_p;
     Vec3 m_n;
     LookupParams m_params;
+    double m_inverse_bound = 0.0;  ///< 1 / error_bound
+    double m_weight_floor = 0.0;   ///< the ε at which Ward's weight is bounded
     Vec3 m_sum;
     double m_weight_sum = 0.0;
     double m_coverage = 0.0;

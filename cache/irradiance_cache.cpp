@@ -28,24 +28,35 @@ void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
     record.radius = tree.clamped_radius(record.position, record.radius);
     std::vector<std::uint32_t> candidates;
     tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
-    for (const std::uint32_t i : candidates) {
-        IrradianceRecord& other = tree.record(i);
-        other.radius = clamped_radius(other, record);
-    }
+    for (const std::uint32_t i : candidates) tree.shrink_radius(i, clamped_radius(tree.records()[i], record));
 }
 
 /// Adds the records of `tree` valid at p to `acc` in insertion order, so that the sum does not depend on how the
-/// tree files them.
+/// tree files them. Validity and weights come from the octree's packed geometry; only the valid records are read.
 void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& tree, const Vec3& p) {
-    thread_local std::vector<std::uint32_t> candidates;
-    candidates.clear();
+    struct Valid {
+        std::uint32_t index;
+        RecordWeight weight;
+    };
+    thread_local std::vector<Valid> valid;
+    valid.clear();
     const auto& records = tree.records();
-    tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i) {
-        const IrradianceRecord& r = records[i];
-        if (acc.may_accept(r.position, r.normal, r.radius)) candidates.push_back(i);
+    tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i, const RecordGeometry& g) {
+        // Weighed in place: no copy of the weights through the stack.
+        Valid& v = valid.emplace_back();
+        v.index = i;
+        if (!acc.weigh_near(g, v.weight)) {
+            valid.pop_back();
+            return;
+        }
+        // The values add_weighted() reads (irradiance and gradients) are fetched meanwhile.
+        const char* values = reinterpret_cast<const char*>(&records[i].irradiance);
+        const char* values_end = reinterpret_cast<const char*>(&records[i] + 1) - 1;
+        for (const char* line = values; line < values_end; line += 64) __builtin_prefetch(line);
+        __builtin_prefetch(values_end);
     });
-    std::sort(candidates.begin(), candidates.end());
-    for (const std::uint32_t i : candidates) acc.add(records[i]);
+    std::sort(valid.begin(), valid.end(), [](const Valid& a, const Valid& b) { return a.index < b.index; });
+    for (const Valid& v : valid) acc.add_weighted(records[v.index], v.weight);
 }
 
 }  // namespace

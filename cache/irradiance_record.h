@@ -22,6 +22,19 @@ struct IrradianceRecord {
     std::int32_t pass = 0;   ///< the pass that made it (statistics only)
 };
 
+/// What the validity test reads of a record (interpolation.h), packed in one cache line and kept by the octree beside
+/// the records, so that a lookup reads a whole record only for those it uses.
+struct alignas(64) RecordGeometry {
+    Vec3 position;        ///< IrradianceRecord::position
+    Vec3 normal;          ///< IrradianceRecord::normal
+    double radius = 0.0;  ///< IrradianceRecord::radius
+};
+
+/// A record's position, normal and radius.
+inline RecordGeometry geometry_of(const IrradianceRecord& record) {
+    return {record.position, record.normal, record.radius};
+}
+
 /// The range a record's radius is clamped into, in world units.
 struct RadiusLimits {
     double min = 0.0;

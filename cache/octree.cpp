@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 namespace wardray::cache {
 namespace {
@@ -13,10 +15,6 @@ constexpr int kMaxLevels = 30;
 /// Cubes are widened by this fraction of their size in the overlap tests, so that rounding can only add a record
 /// to a node, never leave it out.
 constexpr double kSlack = 1e-9;
-
-Vec3 octant_offset(int octant, double half) {
-    return {(octant & 1) ? half : 0.0, (octant & 2) ? half : 0.0, (octant & 4) ? half : 0.0};
-}
 
 bool box_overlaps_cube(const Vec3& lo, const Vec3& hi, const Vec3& cube_min, double size) {
     const double slack = kSlack * size;
@@ -51,13 +49,14 @@ RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
     for (std::size_t k = 0; k < inner.size(); ++k)
         if (!(inner[k] > 0.0 && inner[k] <= 1.0)) inner[k] = defaults[k];
     m_inner = inner;
-    m_filings.push_back(Filing{r, {}, {}, -1});
-    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, {}, -1});
+    m_filings.push_back(Filing{r, {}, {}, -1, {}});
+    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, {}, -1, {}});
 }
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
     const auto index = static_cast<std::uint32_t>(m_records.size());
     m_records.push_back(record);
+    m_geometry.push_back(geometry_of(record));
     for (std::size_t k = 0; k < m_filings.size(); ++k) insert_into(m_filings[k], record, index, k == 0);
     return index;
 }
@@ -72,44 +71,41 @@ void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::u
         // The first root: a power-of-two cube aligned to its size, so that later cube corners are exact.
         int e = 0;
         std::frexp(4.0 * s, &e);
-        Node root;
+        Cube& root = f.root_cube;
         root.size = std::ldexp(1.0, e);
         for (int a = 0; a < 3; ++a) root.min[a] = std::floor(lo[a] / root.size) * root.size;
-        f.nodes.push_back(std::move(root));
+        f.nodes.emplace_back();
         f.root = 0;
     }
     grow_to_fit(f, lo, hi);
 
     // Ward, Rubinstein & Clear 1988 file at the level whose cells are as wide as the sphere's diameter; one level
     // finer (cells as wide as its radius) costs up to 27 entries a record but fetches about 3x fewer candidates.
-    double target = f.nodes[f.root].size;
+    double target = f.root_cube.size;
     for (int level = 0; level < kMaxLevels && target * 0.5 >= s; ++level) target *= 0.5;
-    file(f, record, index, homes, f.root, lo, hi, target);
+    file(f, record, index, homes, f.root, f.root_cube, lo, hi, target);
     if (!homes) return;
     // Count the home on the path from the root down to the node that holds it.
+    Cube cube = f.root_cube;
     for (std::int32_t node = f.root; node >= 0;) {
         Node& n = f.nodes[static_cast<std::size_t>(node)];
         ++n.subtree_homes;
-        if (n.size <= target) break;
-        const double half = 0.5 * n.size;
-        int octant = 0;
-        for (int a = 0; a < 3; ++a) {
-            if (record.position[a] >= n.min[a] + half) octant |= 1 << a;
-        }
+        if (cube.size <= target) break;
+        const int octant = cube.octant_of(record.position);
+        cube = cube.child(octant);
         node = n.children[static_cast<std::size_t>(octant)];
     }
 }
 
 void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
     for (;;) {
-        const Node& root = f.nodes[f.root];
+        const Cube& root = f.root_cube;
         bool fits = hi.x - lo.x <= root.size;
         for (int a = 0; a < 3; ++a) fits = fits && lo[a] >= root.min[a] && hi[a] < root.min[a] + root.size;
         if (fits) return;
         // Double the root towards the box: the old root becomes the octant on the far side of the growth.
-        Node bigger;
+        Cube bigger;
         bigger.size = 2.0 * root.size;
-        bigger.subtree_homes = root.subtree_homes;
         int octant = 0;
         for (int a = 0; a < 3; ++a) {
             if (lo[a] < root.min[a]) {
@@ -119,34 +115,53 @@ void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
                 bigger.min[a] = root.min[a];
             }
         }
-        bigger.children[octant] = f.root;
-        f.nodes.push_back(std::move(bigger));
+        Node node;
+        node.children[octant] = f.root;
+        node.subtree_homes = f.nodes[static_cast<std::size_t>(f.root)].subtree_homes;
+        f.nodes.push_back(std::move(node));
         f.root = static_cast<std::int32_t>(f.nodes.size() - 1);
+        f.root_cube = bigger;
     }
 }
 
 std::int32_t RecordOctree::child(Filing& f, std::int32_t node, int octant) {
     if (f.nodes[node].children[octant] < 0) {
-        Node c;
-        c.size = 0.5 * f.nodes[node].size;
-        c.min = f.nodes[node].min + octant_offset(octant, c.size);
-        f.nodes.push_back(std::move(c));
+        f.nodes.emplace_back();
         f.nodes[node].children[octant] = static_cast<std::int32_t>(f.nodes.size() - 1);
     }
     return f.nodes[node].children[octant];
 }
 
 void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes,
-                        std::int32_t node, const Vec3& lo, const Vec3& hi, double target_size) {
-    if (f.nodes[node].size <= target_size) {
+                        std::int32_t node, const Cube& cube, const Vec3& lo, const Vec3& hi, double target_size) {
+    if (cube.size <= target_size) {
         Node& n = f.nodes[node];
-        const Vec3 local = record.position - n.min;
-        float radius = static_cast<float>(record.radius);
-        if (static_cast<double>(radius) < record.radius) radius = std::nextafter(radius, HUGE_VALF);
-        n.entries.push_back({static_cast<float>(local.x), static_cast<float>(local.y), static_cast<float>(local.z),
-                             radius, index});
+        // In units of the node's size (a power of two, so the scaling is exact): the scan's floats neither
+        // underflow nor overflow at any scene scale.
+        const double unit = 1.0 / cube.size;
+        const Vec3 local = (record.position - cube.min) * unit;
+        float radius = static_cast<float>(record.radius * unit);
+        if (static_cast<double>(radius) < record.radius * unit) radius = std::nextafter(radius, HUGE_VALF);
+        if (n.blocks.empty() || n.blocks.back().index[kBlock - 1] != kNoRecord) {
+            Node::Block unused;
+            for (std::size_t k = 0; k < kBlock; ++k) {
+                unused.x[k] = unused.y[k] = unused.z[k] = HUGE_VALF;
+                unused.radius[k] = 0.0f;
+                unused.index[k] = kNoRecord;
+            }
+            n.blocks.push_back(unused);
+        }
+        Node::Block& b = n.blocks.back();
+        std::size_t lane = 0;
+        while (b.index[lane] != kNoRecord) ++lane;
+        b.x[lane] = static_cast<float>(local.x);
+        b.y[lane] = static_cast<float>(local.y);
+        b.z[lane] = static_cast<float>(local.z);
+        b.radius[lane] = radius;
+        b.index[lane] = index;
         bool home = homes;
-        for (int a = 0; a < 3; ++a) home = home && record.position[a] >= n.min[a] && record.position[a] < n.min[a] + n.size;
+        for (int a = 0; a < 3; ++a)
+            home = home && record.position[a] >= cube.min[a] && record.position[a] < cube.min[a] + cube.size;
         if (home) {
             if (n.home_list < 0) {
                 n.home_list = static_cast<std::int32_t>(f.home_lists.size());
@@ -157,33 +172,47 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
         return;
     }
     // Into every child the sphere's box overlaps: at most three per axis once cells are as wide as its radius.
-    const double half = 0.5 * f.nodes[node].size;
-    const unsigned octants = overlapped_octants(lo, hi, f.nodes[node].min, half);
+    const unsigned octants = overlapped_octants(lo, hi, cube.min, 0.5 * cube.size);
     for (int octant = 0; octant < 8; ++octant) {
-        if (octants & (1u << octant)) file(f, record, index, homes, child(f, node, octant), lo, hi, target_size);
+        if (octants & (1u << octant))
+            file(f, record, index, homes, child(f, node, octant), cube.child(octant), lo, hi, target_size);
     }
 }
 
-std::size_t RecordOctree::scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
-                                   std::uint32_t* near) {
-    const std::size_t end = std::min(n.entries.size(), begin + kScanChunk);
-    const Node::Entry* e = n.entries.data();
+std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+                                   std::size_t begin, std::uint32_t* near) {
+    // Four lanes at a time (GCC/Clang vector extensions: SSE on x86-64, NEON on ARM).
+    using Floats = float __attribute__((vector_size(16)));
+    const std::size_t end = std::min(n.blocks.size(), begin + kScanBlocks);
+    // In node sizes, as filed. A filed sphere overlaps the node and is at most as wide as it (error_bound ≤ the
+    // filing's reach), so its centre lies within two sizes of `min`, q within one, and every term below is under a
+    // few: float rounding (2^-24 of each) moves the distance and the reach by far less than this slack.
+    const Vec3 local = (q - cube.min) * (1.0 / cube.size);
+    const float slack = 0x1p-16f;
+    const Floats qx = Floats{} + static_cast<float>(local.x), qy = Floats{} + static_cast<float>(local.y),
+                 qz = Floats{} + static_cast<float>(local.z);
+    const Floats bound = Floats{} + static_cast<float>(error_bound);
     std::size_t found = 0;
-    // A filed sphere overlaps the node, so its centre lies within about two node sizes of `min`: each float
-    // coordinate is off by at most 2^-24 of that, and the distance by less than 2^-20 of the node's size.
-    const Vec3 local = q - n.min;
-    const double slack = 0x1p-20 * n.size;
-    // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
     for (std::size_t i = begin; i < end; ++i) {
-        const double dx = local.x - e[i].x, dy = local.y - e[i].y, dz = local.z - e[i].z;
-        const double reach = error_bound * e[i].radius + slack;
-        near[found] = e[i].index;
-        found += (dx * dx + dy * dy + dz * dz < reach * reach) ? 1 : 0;
+        const Node::Block& b = n.blocks[i];
+        Floats x, y, z, radius;
+        std::memcpy(&x, b.x, sizeof x);
+        std::memcpy(&y, b.y, sizeof y);
+        std::memcpy(&z, b.z, sizeof z);
+        std::memcpy(&radius, b.radius, sizeof radius);
+        const Floats dx = qx - x, dy = qy - y, dz = qz - z;
+        const Floats reach = bound * radius + slack;
+        const auto inside = dx * dx + dy * dy + dz * dz < reach * reach;  // -1 in the lanes that pass
+        // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
+        for (std::size_t k = 0; k < kBlock; ++k) {
+            near[found] = b.index[k];
+            found -= static_cast<std::size_t>(static_cast<std::ptrdiff_t>(inside[k]));
+        }
     }
     return found;
 }
 
-void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& bound) const {
+void RecordOctree::clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const {
     const Filing& f = m_filings.front();
     const Node& n = f.nodes[node];
     // A record is filed in up to 27 nodes; it is tested only in the one that holds its position. Only records
@@ -195,18 +224,16 @@ void RecordOctree::clamp_within(std::int32_t node, const Vec3& centre, double& b
         }
     }
     // The child holding the centre first: its records are the likeliest to lower the bound for the others.
-    const double half = 0.5 * n.size;
-    int first = 0;
-    for (int a = 0; a < 3; ++a) {
-        if (centre[a] >= n.min[a] + half) first |= 1 << a;
-    }
+    const double half = 0.5 * cube.size;
+    const int first = cube.octant_of(centre);
     for (int k = 0; k < 8; ++k) {
         const int octant = k ^ first;
         const std::int32_t c = n.children[static_cast<std::size_t>(octant)];
         if (c < 0 || m_filings.front().nodes[static_cast<std::size_t>(c)].subtree_homes == 0) continue;
         // Only children within the bound found so far.
         const Vec3 b{bound, bound, bound};
-        if (overlapped_octants(centre - b, centre + b, n.min, half) & (1u << octant)) clamp_within(c, centre, bound);
+        if (overlapped_octants(centre - b, centre + b, cube.min, half) & (1u << octant))
+            clamp_within(c, cube.child(octant), centre, bound);
     }
 }
 
@@ -214,8 +241,8 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
     const Filing& f = m_filings.front();
     if (f.root < 0 || !is_finite(centre) || !(bound >= 0.0)) return bound;
     const Vec3 b{bound, bound, bound};
-    const Node& root = f.nodes[static_cast<std::size_t>(f.root)];
-    if (box_overlaps_cube(centre - b, centre + b, root.min, root.size)) clamp_within(f.root, centre, bound);
+    const Cube& root = f.root_cube;
+    if (box_overlaps_cube(centre - b, centre + b, root.min, root.size)) clamp_within(f.root, root, centre, bound);
     return bound;
 }
 

@@ -33,8 +33,13 @@ public:
     std::uint32_t insert(const IrradianceRecord& record);
     /// Every record in insertion order.
     const std::vector<IrradianceRecord>& records() const { return m_records; }
-    /// Mutable access for neighbour clamping: the radius may only shrink (the filing stays conservative).
-    IrradianceRecord& record(std::uint32_t index) { return m_records[index]; }
+    /// The position, normal and radius of record `index`, packed (what lookups test before reading the record).
+    const RecordGeometry& geometry(std::uint32_t index) const { return m_geometry[index]; }
+    /// Neighbour clamping: record `index`'s radius becomes `radius` when that is smaller (the filing stays
+    /// conservative).
+    void shrink_radius(std::uint32_t index, double radius) {
+        if (radius < m_records[index].radius) m_records[index].radius = m_geometry[index].radius = radius;
+    }
     std::size_t size() const { return m_records.size(); }
     double reach() const { return m_filings.front().reach; }
 
@@ -42,27 +47,32 @@ public:
     /// for any error bound ≤ reach), walking from the root to the leaf that holds q; deterministic order.
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
-        walk(m_filings.front(), q, [&](const Node& n) {
-            for (const Node::Entry& e : n.entries) visit(e.index);
+        walk(m_filings.front(), q, [&](const Node& n, const Cube&) {
+            for (const Node::Block& b : n.blocks)
+                for (const std::uint32_t index : b.index)
+                    if (index != kNoRecord) visit(index);
         });
     }
-    /// Calls `visit(index)` for the records with |q − position| < error_bound × radius, from the tightest filing that
-    /// holds them all; deterministic order, but not visit()'s. Found by a branch-free scan of each node's packed
-    /// positions and radii (floats, the test widened by their rounding), then the exact test on the record.
+    /// Calls `visit(index, geometry(index))` for the records with |q − position| < error_bound × radius, from the
+    /// tightest filing that holds them all; deterministic order, but not visit()'s. Found by a branch-free scan of
+    /// each node's packed positions and radii (floats, four at a time, the test widened by their rounding), then
+    /// the exact test on the record's packed geometry (one cache line; the record itself is not read).
     template <typename Visit>
     void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
         const Filing* filing = &m_filings.front();
         for (const Filing& f : m_filings)
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
-        std::uint32_t near[kScanChunk];
-        walk(*filing, q, [&](const Node& n) {
-            for (std::size_t begin = 0; begin < n.entries.size(); begin += kScanChunk) {
-                const std::size_t found = scan_near(n, q, error_bound, begin, near);
+        std::uint32_t near[kScanBlocks * kBlock];
+        walk(*filing, q, [&](const Node& n, const Cube& cube) {
+            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
+                const std::size_t found = scan_near(n, cube, q, error_bound, begin, near);
+                // The candidates' geometry is fetched together, not one miss after another.
+                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
                 for (std::size_t i = 0; i < found; ++i) {
-                    const IrradianceRecord& r = m_records[near[i]];
-                    const Vec3 d = q - r.position;
-                    const double reach = error_bound * r.radius;
-                    if (dot(d, d) < reach * reach) visit(near[i]);
+                    const RecordGeometry& g = m_geometry[near[i]];
+                    const Vec3 d = q - g.position;
+                    const double reach = error_bound * g.radius;
+                    if (dot(d, d) < reach * reach) visit(near[i], g);
                 }
             }
         });
@@ -73,19 +83,45 @@ public:
     double clamped_radius(const Vec3& centre, double bound) const;
 
 private:
-    struct Node {
+    /// Entries per Node::Block: one SSE register of floats.
+    static constexpr std::size_t kBlock = 4;
+    /// The index of an unused lane.
+    static constexpr std::uint32_t kNoRecord = 0xFFFFFFFFu;
+    /// A node's cube [min, min + size), size a power of two. Not stored in the node: the root's is the filing's,
+    /// and each child's is derived from its parent's on the way down, as child() once made it.
+    struct Cube {
+        Vec3 min;
+        double size = 0.0;
+        /// The octant of the cube that holds p, one bit per axis.
+        int octant_of(const Vec3& p) const {
+            const double half = 0.5 * size;
+            int octant = 0;
+            for (int a = 0; a < 3; ++a) {
+                if (p[a] >= min[a] + half) octant |= 1 << a;
+            }
+            return octant;
+        }
+        Cube child(int octant) const {
+            const double half = 0.5 * size;
+            return {{min.x + ((octant & 1) ? half : 0.0), min.y + ((octant & 2) ? half : 0.0),
+                     min.z + ((octant & 4) ? half : 0.0)},
+                    half};
+        }
+    };
+    /// One cache line (with a 24-byte vector), so that a walk reads one line per node.
+    struct alignas(64) Node {
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
-        Vec3 min;           ///< the cube [min, min + size)
-        double size = 0.0;  ///< a power of two
-        /// The records filed here in insertion order: position relative to `min` and radius at filing as floats
-        /// (the radius rounded up), and index, side by side (one allocation per node, read in order by the scans):
-        /// 20 bytes, against 40 in doubles, for up to 27 entries a record in each of three filings.
-        struct Entry {
-            float x = 0.0f, y = 0.0f, z = 0.0f;
-            float radius = 0.0f;
-            std::uint32_t index = 0;
+        /// The records filed here in insertion order, four to a block: position relative to the cube's min and
+        /// radius at filing, both in units of its size, as floats (the radius rounded up), and index, each field side by side for the scan (one
+        /// allocation per node, read in order): 20 bytes an entry, against 40 in doubles, for up to 27 entries a
+        /// record in each of three filings. The last block's unused lanes have index kNoRecord and a position
+        /// no query is near.
+        struct alignas(16) Block {
+            float x[kBlock], y[kBlock], z[kBlock];
+            float radius[kBlock];
+            std::uint32_t index[kBlock];
         };
-        std::vector<Entry> entries;
+        std::vector<Block> blocks;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
         /// the first filing), so that range queries test each record once; positions packed for the scan.
         /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
@@ -98,50 +134,53 @@ private:
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
     };
+    static_assert(sizeof(Node) == 64 || sizeof(void*) != 8, "a node no longer fits one cache line");
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
         double reach = 1.0;
         std::deque<Node> nodes;  ///< a deque: no copy of every node and no doubled capacity as it grows
         std::deque<std::vector<Node::Home>> home_lists;
         std::int32_t root = -1;
+        Cube root_cube;
     };
 
-    /// Calls `at(node)` for every node from `f`'s root down to the leaf that holds q (Ward, Rubinstein & Clear
-    /// 1988's multi-resolution lookup).
+    /// Calls `at(node, cube)` for every node from `f`'s root down to the leaf that holds q (Ward, Rubinstein &
+    /// Clear 1988's multi-resolution lookup).
     template <typename At>
     static void walk(const Filing& f, const Vec3& q, At&& at) {
         if (f.root < 0 || !is_finite(q)) return;
-        const Node& root = f.nodes[static_cast<std::size_t>(f.root)];
+        Cube cube = f.root_cube;
         for (int a = 0; a < 3; ++a) {
-            if (q[a] < root.min[a] || q[a] >= root.min[a] + root.size) return;
+            if (q[a] < cube.min[a] || q[a] >= cube.min[a] + cube.size) return;
         }
         std::int32_t node = f.root;
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
-            at(n);
-            const double half = 0.5 * n.size;
-            int octant = 0;
-            for (int a = 0; a < 3; ++a) {
-                if (q[a] >= n.min[a] + half) octant |= 1 << a;
-            }
-            node = n.children[static_cast<std::size_t>(octant)];
+            const int octant = cube.octant_of(q);
+            const std::int32_t next = n.children[static_cast<std::size_t>(octant)];
+            // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
+            if (next >= 0) __builtin_prefetch(&f.nodes[static_cast<std::size_t>(next)]);
+            at(n, cube);
+            cube = cube.child(octant);
+            node = next;
         }
     }
 
-    /// How many entries visit_near() tests in one scan.
-    static constexpr std::size_t kScanChunk = 64;
-    /// Writes to `near` the indices of the records among entries [begin, begin + kScanChunk) of `n` within
-    /// error_bound × radius of q; returns how many.
-    static std::size_t scan_near(const Node& n, const Vec3& q, double error_bound, std::size_t begin,
-                                 std::uint32_t* near);
+    /// How many blocks visit_near() tests in one scan.
+    static constexpr std::size_t kScanBlocks = 16;
+    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` that may lie within
+    /// error_bound × radius of q (a superset: the test is widened by the floats' rounding); returns how many.
+    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+                                 std::size_t begin, std::uint32_t* near);
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
     static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
     static std::int32_t child(Filing& f, std::int32_t node, int octant);
     static void file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes, std::int32_t node,
-                     const Vec3& lo, const Vec3& hi, double target_size);
-    void clamp_within(std::int32_t node, const Vec3& centre, double& bound) const;
+                     const Cube& cube, const Vec3& lo, const Vec3& hi, double target_size);
+    void clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const;
 
     std::vector<IrradianceRecord> m_records;
+    std::vector<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
     std::array<double, 2> m_inner{0.5, 0.25};
     std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cache/hemisphere_sampler.h"
 #include "cache/irradiance_record.h"
 #include "test_scenes.h"
 
@@ -137,6 +138,48 @@ TEST(Interpolation, GradientsLowerTheErrorAgainstBruteForce) {
                 std::size(queries), error_with, error_without, better);
     EXPECT_LT(error_with, 0.8 * error_without);
     EXPECT_GE(better, 6);
+}
+
+// Weighing a record by its packed geometry (as lookups do) and adding it afterwards gives what add() gives, bit for
+// bit, and weigh_near() agrees with weigh() on the records within error_bound × R_i.
+TEST(Interpolation, WeighThenAddWeightedEqualsAdd) {
+    SplitMix64 rng(5);
+    auto u = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+    for (int qi = 0; qi < 200; ++qi) {
+        const Vec3 p{u(-1, 1), u(-1, 1), u(-1, 1)};
+        const Vec3 n = normalize(Vec3{u(-0.3, 0.3), 1.0, u(-0.3, 0.3)});
+        LookupParams lp = params(u(0.2, 2.0));
+        lp.smooth_coverage = qi % 2 == 0;
+        InterpolationAccumulator whole(p, n, lp), split(p, n, lp);
+        int valid = 0;
+        for (int i = 0; i < 50; ++i) {
+            IrradianceRecord r = flat_record(p + Vec3{u(-1, 1), u(-0.2, 0.2), u(-1, 1)}, {u(0, 1), u(0, 1), 1}, u(0.1, 1));
+            r.normal = normalize(Vec3{u(-1, 1), 1.0, u(-1, 1)});
+            r.translational[0] = {u(-1, 1), 0.1, 0.2};
+            r.rotational[2] = {0.3, u(-1, 1), 0.1};
+            const bool added = whole.add(r);
+            RecordWeight w;
+            const RecordGeometry g = geometry_of(r);
+            ASSERT_EQ(split.weigh(g, w), added);
+            const Vec3 d = p - r.position;
+            const double reach = lp.error_bound * r.radius;
+            if (dot(d, d) < reach * reach) {
+                RecordWeight near;
+                ASSERT_EQ(split.weigh_near(g, near), added);
+                if (added) {
+                    ASSERT_TRUE(near.weight == w.weight && near.coverage == w.coverage);
+                }
+            }
+            if (added) {
+                split.add_weighted(r, w);
+                EXPECT_TRUE(is_valid(r, p, n, lp.error_bound));
+            }
+            valid += added ? 1 : 0;
+        }
+        const Interpolation a = whole.result(), b = split.result();
+        ASSERT_TRUE(a.irradiance == b.irradiance && a.weight_sum == b.weight_sum && a.coverage == b.coverage);
+        ASSERT_EQ(a.records, valid);
+    }
 }
 
 TEST(Interpolation, ExtrapolationNeverGoesNegative) {

@@ -94,7 +94,10 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
                     const Vec3 d = q - all[i].position;
                     if (dot(d, d) < bound * all[i].radius * bound * all[i].radius) brute.push_back(i);
                 }
-                tree.visit_near(q, bound, [&](std::uint32_t i) { found.push_back(i); });
+                tree.visit_near(q, bound, [&](std::uint32_t i, const RecordGeometry& g) {
+                    found.push_back(i);
+                    EXPECT_EQ(&g, &tree.geometry(i));
+                });
                 std::sort(found.begin(), found.end());
                 EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "visited twice";
                 ASSERT_EQ(found, brute) << "query " << qi << " bound " << bound << " inner " << inner[0];
@@ -103,6 +106,72 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
         }
         EXPECT_GT(hits, 3000);
         EXPECT_EQ(tree.empty_like().reach(), tree.reach());
+    }
+}
+
+// The scan's fixed point is relative to each node's cube, so visit_near() stays exact at any scale and offset.
+TEST(RecordOctree, NearLookupIsExactAtEveryScale) {
+    for (const auto& [offset, scale] : {std::pair{Vec3{0, 0, 0}, 1e-9}, std::pair{Vec3{1e6, -3e5, 7}, 1e3},
+                                        std::pair{Vec3{-0.3, 0.2, 0.1}, 1e-3}, std::pair{Vec3{5, 5, 5}, 1e8}}) {
+        SplitMix64 rng(31);
+        RecordOctree tree(1.5, {0.5, 0.2});
+        std::vector<IrradianceRecord> all;
+        for (int i = 0; i < 1500; ++i) {
+            all.push_back(random_record(rng, offset, scale));
+            tree.insert(all.back());
+        }
+        int hits = 0;
+        for (int qi = 0; qi < 1000; ++qi) {
+            const IrradianceRecord& near_record = all[static_cast<std::size_t>(qi) % all.size()];
+            const Vec3 q = near_record.position + random_direction(rng) * (uniform(rng, 0, 1.6) * near_record.radius);
+            for (const double bound : {1.5, 1.0, 0.75, 0.3, 0.2, 0.01}) {
+                std::vector<std::uint32_t> brute, found;
+                for (std::uint32_t i = 0; i < all.size(); ++i) {
+                    const Vec3 d = q - all[i].position;
+                    if (dot(d, d) < bound * all[i].radius * (bound * all[i].radius)) brute.push_back(i);
+                }
+                tree.visit_near(q, bound, [&](std::uint32_t i, const RecordGeometry&) { found.push_back(i); });
+                std::sort(found.begin(), found.end());
+                ASSERT_EQ(found, brute) << "query " << qi << " bound " << bound << " scale " << scale;
+                hits += brute.empty() ? 0 : 1;
+            }
+        }
+        EXPECT_GT(hits, 2000);
+    }
+}
+
+// The packed geometry lookups test follows the records, through shrunk radii too, and visit_near() then finds
+// exactly the records within the shrunk spheres.
+TEST(RecordOctree, PackedGeometryFollowsShrunkRadii) {
+    SplitMix64 rng(7);
+    RecordOctree tree(1.0);
+    std::vector<IrradianceRecord> all;
+    for (int i = 0; i < 1000; ++i) {
+        all.push_back(random_record(rng, {0, 0, 0}, 1.0));
+        tree.insert(all.back());
+    }
+    for (std::uint32_t i = 0; i < all.size(); i += 3) {
+        tree.shrink_radius(i, all[i].radius * 0.5);
+        tree.shrink_radius(i, all[i].radius * 2.0);  // never grows
+        all[i].radius *= 0.5;
+    }
+    for (std::uint32_t i = 0; i < all.size(); ++i) {
+        const RecordGeometry& g = tree.geometry(i);
+        ASSERT_EQ(g.radius, all[i].radius);
+        ASSERT_EQ(tree.records()[i].radius, all[i].radius);
+        ASSERT_EQ(g.position, all[i].position);
+        ASSERT_EQ(g.normal, all[i].normal);
+    }
+    for (int qi = 0; qi < 500; ++qi) {
+        const Vec3 q{uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+        std::vector<std::uint32_t> brute, found;
+        for (std::uint32_t i = 0; i < all.size(); ++i) {
+            const Vec3 d = q - all[i].position;
+            if (dot(d, d) < 0.9 * all[i].radius * (0.9 * all[i].radius)) brute.push_back(i);
+        }
+        tree.visit_near(q, 0.9, [&](std::uint32_t i, const RecordGeometry&) { found.push_back(i); });
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, brute) << "query " << qi;
     }
 }
 
