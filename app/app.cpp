@@ -18,6 +18,7 @@
 #include "app/run.h"
 #include "app/stats.h"
 #include "core/diagnostics.h"
+#include "geometry/coincident_surfaces.h"
 #include "geometry/scene_geometry.h"
 
 namespace wardray::app {
@@ -144,6 +145,9 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     const std::optional<LoadedScene> loaded = load_scene(job.options, frame.clock);
     if (!group.agree(loaded.has_value(), "parse the scene")) return kExitScene;
     const scene::Scene& scene = loaded->scene;
+    // Surfaces on one another, which POV-Ray draws as a random speckle: said before anything is rendered.
+    if (group.root())
+        for (const Diagnostic& w : geometry::coincident_surface_warnings(scene)) std::cerr << format_diagnostic(w);
     if (job.options.check_only) {
         if (group.root()) describe_scene(scene, std::cout);
         return kExitOk;

@@ -1,14 +1,14 @@
-// SorShape: POV-Ray 3.7's pieces of squared radius (sor.cpp, Compute_Sor) and the cubic in the distance along a
-// ray recentred at its point nearest the origin.
+// SorShape: POV-Ray 3.7's pieces of squared radius (sor.cpp, Compute_Sor), their bounding shells (bcyl.cpp) and
+// the cubic in the distance along a ray, in the arithmetic POV-Ray uses, so that ill-conditioned pieces render alike.
 #include "geometry/sor.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <tuple>
+#include <vector>
 
 #include "core/constants.h"
-#include "geometry/polynomial.h"
 
 namespace wardray::geometry {
 
@@ -18,59 +18,120 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 // POV-Ray compat: its EPSILON, and the DEPTH_TOLERANCE below which a closing disc is left out.
 constexpr double kEpsilon = kPovEpsilon;
 constexpr double kDiscTolerance = 1e-4;
+// POV-Ray compat: Solve_Polynomial's SMALL_ENOUGH, for leading coefficients and a quadratic's discriminant.
+constexpr double kSmallEnough = 1e-10;
 
-double cubic(const std::array<double, 4>& c, double y) { return ((c[3] * y + c[2]) * y + c[1]) * y + c[0]; }
-double dcubic(const std::array<double, 4>& c, double y) { return (3.0 * c[3] * y + 2.0 * c[2]) * y + c[1]; }
+double cubic(const std::array<double, 4>& c, double y) { return y * (y * (y * c[3] + c[2]) + c[1]) + c[0]; }
 
-// Solves the 4x4 system m x = b by Gaussian elimination with partial pivoting; false when singular.
-bool solve4(double m[4][4], double b[4], double x[4]) {
-    for (int col = 0; col < 4; ++col) {
-        int pivot = col;
-        for (int r = col + 1; r < 4; ++r)
-            if (std::fabs(m[r][col]) > std::fabs(m[pivot][col])) pivot = r;
-        if (m[pivot][col] == 0.0) return false;
-        std::swap(m[col], m[pivot]);
-        std::swap(b[col], b[pivot]);
-        for (int r = col + 1; r < 4; ++r) {
-            const double f = m[r][col] / m[col][col];
-            for (int k = col; k < 4; ++k) m[r][k] -= f * m[col][k];
-            b[r] -= f * b[col];
+// POV-Ray compat: std::min and std::max as POV-Ray's bounds use them, NaN kept or dropped by argument order.
+double first_min(double a, double b) { return b < a ? b : a; }
+double first_max(double a, double b) { return a < b ? b : a; }
+
+// A piece whose shell the ray meets, and the distance where it enters.
+struct Entry {
+    double entry;
+    int piece;
+};
+
+// The 3x3 minor of m without row `row` and column `col`, by the rule of Sarrus: the three products along the
+// diagonals, then the three along the anti-diagonals taken from the bottom row up, summed left to right (POV-Ray
+// compat: MInvers's order of operations, which decides the rounding of nearly singular systems).
+double minor3(const double m[4][4], int row, int col) {
+    int r[3], c[3];
+    for (int i = 0, nr = 0, nc = 0; i < 4; ++i) {
+        if (i != row) r[nr++] = i;
+        if (i != col) c[nc++] = i;
+    }
+    const double* a = m[r[0]];
+    const double* b = m[r[1]];
+    const double* z = m[r[2]];
+    return a[c[0]] * b[c[1]] * z[c[2]] + a[c[1]] * b[c[2]] * z[c[0]] + a[c[2]] * b[c[0]] * z[c[1]] -
+           z[c[0]] * b[c[1]] * a[c[2]] - z[c[1]] * b[c[2]] * a[c[0]] - z[c[2]] * b[c[0]] * a[c[1]];
+}
+
+// The inverse of m by cofactors, the determinant expanded along the first row; false when it is exactly zero.
+bool cofactor_inverse(const double m[4][4], double inv[4][4]) {
+    double minors[4][4];
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) minors[i][j] = minor3(m, i, j);
+    const double det = m[0][0] * minors[0][0] - m[0][1] * minors[0][1] + m[0][2] * minors[0][2] -
+                       m[0][3] * minors[0][3];
+    if (det == 0.0) return false;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const double v = minors[j][i] / det;
+            inv[i][j] = (i + j) % 2 == 0 ? v : -v;
         }
-    }
-    for (int r = 3; r >= 0; --r) {
-        double v = b[r];
-        for (int k = r + 1; k < 4; ++k) v -= m[r][k] * x[k];
-        x[r] = v / m[r][r];
-    }
     return true;
 }
 
-// POV-Ray compat: Compute_Sor bounds a piece by the radii at its ends and at the extremes of f, as sqrt(f); where
-// f dips below zero that is NaN, and when the NaN lands where std::min and std::max keep it, the piece's bounding
-// cylinder rejects every ray, so POV-Ray never draws the piece. This repeats its root order and min/max order.
-bool pov_bound_is_nan(const std::array<double, 4>& c, double y0, double y1, double x0, double x1) {
-    double x[4] = {x0, x1, x0, x1};
-    // Roots of 3A y² + 2B y + C as POV-Ray's Solve_Polynomial orders them: the larger first.
-    const double q2 = 3.0 * c[3], q1 = 2.0 * c[2], q0 = c[1];
-    double r[2];
-    int n = 0;
-    if (std::fabs(q2) >= 1e-10) {
-        const double b = -q1 / q2, cc = q0 / q2;
-        const double d = b * b - 4.0 * cc;
-        if (d > -1e-10 && d < 1e-10) {
-            r[n++] = 0.5 * b;
-        } else if (d >= 0.0) {
-            r[n++] = 0.5 * (b + std::sqrt(d));
-            r[n++] = 0.5 * (b - std::sqrt(d));
-        }
-    } else if (std::fabs(q1) >= 1e-10) {
-        r[n++] = -q0 / q1;
+// Real roots of x[0] y² + x[1] y + x[2] (POV-Ray compat: solve_quadratic, a near-zero discriminant of the monic
+// form taken as one double root).
+int quadratic_roots(const double* x, double* y) {
+    double a = x[0], b = -x[1], c = x[2];
+    if (a == 0.0) {
+        if (b == 0.0) return 0;
+        y[0] = c / b;
+        return 1;
     }
-    while (n--)
-        if (r[n] >= y0 && r[n] <= y1) x[n] = std::sqrt(cubic(c, r[n]));
-    const double lo = std::min(std::min(x[0], x[1]), std::min(x[2], x[3]));
-    const double hi = std::max(std::max(x[0], x[1]), std::max(x[2], x[3]));
-    return std::isnan(lo) || std::isnan(hi);
+    b /= a;
+    c /= a;
+    const double d = b * b - 4.0 * c;
+    if (d > -kSmallEnough && d < kSmallEnough) {
+        y[0] = 0.5 * b;
+        return 1;
+    }
+    if (d < 0.0) return 0;
+    const double s = std::sqrt(d);
+    y[0] = (b + s) / 2.0;
+    y[1] = (b - s) / 2.0;
+    return 2;
+}
+
+// Real roots of x[0] y³ + x[1] y² + x[2] y + x[3] in closed form: three by the trigonometric method when the
+// discriminant allows, else one by Cardano's (POV-Ray compat: solve_cubic's arrangement and its lost precision).
+int cubic_roots(const double* x, double* y) {
+    if (x[0] == 0.0) return quadratic_roots(x + 1, y);
+    double a1 = x[1], a2 = x[2], a3 = x[3];
+    if (x[0] != 1.0) {
+        a1 = x[1] / x[0];
+        a2 = x[2] / x[0];
+        a3 = x[3] / x[0];
+    }
+    const double a1_sq = a1 * a1;
+    const double q = (a1_sq - 3.0 * a2) / 9.0;
+    const double r = (a1 * (a1_sq - 4.5 * a2) + 13.5 * a3) / 27.0;
+    const double q3 = q * q * q, r2 = r * r;
+    const double shift = a1 / 3.0;
+    if (q3 - r2 >= 0.0) {
+        const double theta = std::acos(r / std::sqrt(q3)) / 3.0;
+        const double scale = -2.0 * std::sqrt(q);
+        // 2π/3 and 4π/3 as POV-Ray spells them.
+        y[0] = scale * std::cos(theta) - shift;
+        y[1] = scale * std::cos(theta + 2.0943951023931954923084) - shift;
+        y[2] = scale * std::cos(theta + 4.1887902047863909846168) - shift;
+        return 3;
+    }
+    const double s = std::pow(std::sqrt(r2 - q3) + std::fabs(r), 1.0 / 3.0);
+    y[0] = (r < 0.0 ? s + q / s : -(s + q / s)) - shift;
+    return 1;
+}
+
+// Real roots of the polynomial x[0] y^order + ... + x[order] for order 2 or 3, highest power first (POV-Ray compat:
+// Solve_Polynomial without Sturm sequences, which first drops leading coefficients below 1e-10 in magnitude).
+int pov_roots(const double* x, int order, double* y) {
+    int lead = 0;
+    while (lead < order && std::fabs(x[lead]) < kSmallEnough) ++lead;
+    const double* c = x + lead;
+    switch (order - lead) {
+        case 1:
+            if (c[0] == 0.0) return 0;
+            y[0] = -c[1] / c[0];
+            return 1;
+        case 2: return quadratic_roots(c, y);
+        case 3: return cubic_roots(c, y);
+        default: return 0;
+    }
 }
 
 }  // namespace
@@ -84,42 +145,59 @@ std::optional<SorShape> SorShape::create(const scene::Sor& sor) {
     SorShape shape;
     shape.m_open = sor.open;
     auto pieces = std::make_shared<std::vector<Piece>>();
+    double r_max = -inf, y_low = inf, y_high = -inf;
     for (int i = 0; i + 3 < n; ++i) {
         if (std::fabs(P[i + 2].y - P[i].y) < kEpsilon || std::fabs(P[i + 3].y - P[i + 1].y) < kEpsilon)
             return std::nullopt;
         // The cubic through the squared radii of points i+1 and i+2, with the slopes of the secants around them.
-        double b[4] = {P[i + 1].x * P[i + 1].x, P[i + 2].x * P[i + 2].x,
-                       2.0 * P[i + 1].x * (P[i + 2].x - P[i].x) / (P[i + 2].y - P[i].y),
-                       2.0 * P[i + 2].x * (P[i + 3].x - P[i + 1].x) / (P[i + 3].y - P[i + 1].y)};
+        double k[4] = {P[i + 1].x * P[i + 1].x, P[i + 2].x * P[i + 2].x,
+                       (P[i + 2].x - P[i].x) / (P[i + 2].y - P[i].y),
+                       (P[i + 3].x - P[i + 1].x) / (P[i + 3].y - P[i + 1].y)};
+        k[2] *= 2.0 * P[i + 1].x;
+        k[3] *= 2.0 * P[i + 2].x;
         const double w1 = P[i + 1].y, w2 = P[i + 2].y;
-        double m[4][4] = {{w1 * w1 * w1, w1 * w1, w1, 1.0},
-                          {w2 * w2 * w2, w2 * w2, w2, 1.0},
-                          {3.0 * w1 * w1, 2.0 * w1, 1.0, 0.0},
-                          {3.0 * w2 * w2, 2.0 * w2, 1.0, 0.0}};
-        double abcd[4];
-        if (!solve4(m, b, abcd)) return std::nullopt;
+        const double m[4][4] = {{w1 * w1 * w1, w1 * w1, w1, 1.0},
+                                {w2 * w2 * w2, w2 * w2, w2, 1.0},
+                                {3.0 * w1 * w1, 2.0 * w1, 1.0, 0.0},
+                                {3.0 * w2 * w2, 2.0 * w2, 1.0, 0.0}};
+        // POV-Ray compat: the system is solved by its inverse, not by elimination; nearly singular pieces (inner
+        // points a hair apart) take their shape from this rounding.
+        double inv[4][4];
+        if (!cofactor_inverse(m, inv)) return std::nullopt;
         Piece piece;
-        // POV-Ray compat: tiny coefficients are set to zero.
-        for (int k = 0; k < 4; ++k) piece.c[3 - k] = std::fabs(abcd[k]) < kEpsilon ? 0.0 : abcd[k];
-        piece.y_min = std::fmin(w1, w2);
-        piece.y_max = std::fmax(w1, w2);
-        double f_max = std::fmax(cubic(piece.c, w1), cubic(piece.c, w2));
-        const double d[3] = {piece.c[1], 2.0 * piece.c[2], 3.0 * piece.c[3]};
+        for (int row = 0; row < 4; ++row) {
+            const double v = k[0] * inv[row][0] + k[1] * inv[row][1] + k[2] * inv[row][2] + k[3] * inv[row][3];
+            // POV-Ray compat: tiny coefficients are set to zero.
+            piece.c[3 - row] = std::fabs(v) < kEpsilon ? 0.0 : v;
+        }
+        const auto& c = piece.c;
+        piece.y_min = w1;
+        piece.y_max = w2;
+        // POV-Ray compat: the shell's radii are the least and the greatest of the two points' radii and sqrt(f) at the
+        // extremes of f within the piece; where f dips below zero that is NaN, kept or dropped as std::min and
+        // std::max meet it (a NaN radius fails every comparison, so the ray never enters that shell's wall).
+        double x[4] = {P[i + 1].x, P[i + 2].x, P[i + 1].x, P[i + 2].x};
+        const double slope[3] = {3.0 * c[3], 2.0 * c[2], c[1]};
         double roots[2];
-        const int nr = polynomial_roots(d, 2, piece.y_min, piece.y_max, roots);
-        for (int k = 0; k < nr; ++k) f_max = std::fmax(f_max, cubic(piece.c, roots[k]));
-        piece.r_max = std::sqrt(std::fmax(0.0, f_max));
-        piece.hidden = pov_bound_is_nan(piece.c, w1, w2, P[i + 1].x, P[i + 2].x);
-        shape.m_r_max = std::fmax(shape.m_r_max, piece.r_max);
+        for (int nr = pov_roots(slope, 2, roots); nr--;)
+            if (roots[nr] >= w1 && roots[nr] <= w2) x[nr] = std::sqrt(cubic(c, roots[nr]));
+        const double r_in = first_min(first_min(x[0], x[1]), first_min(x[2], x[3]));
+        const double r_out = first_max(first_max(x[0], x[1]), first_max(x[2], x[3]));
+        piece.r2_inner = r_in * r_in;
+        piece.r2_outer = r_out * r_out;
+        r_max = first_max(r_max, r_out);
+        y_low = first_min(y_low, w1);
+        y_high = first_max(y_high, w2);
         pieces->push_back(piece);
     }
     const Piece& first = pieces->front();
     const Piece& last = pieces->back();
     shape.m_base_r2 = std::fmax(0.0, cubic(first.c, first.y_min));
     shape.m_cap_r2 = std::fmax(0.0, cubic(last.c, last.y_max));
-    const double r = shape.m_r_max;
-    shape.m_bounds = {{-r, first.y_min, -r}, {r, last.y_max, r}};
-    if (!is_finite(shape.m_bounds.lower) || !is_finite(shape.m_bounds.upper)) return std::nullopt;
+    shape.m_r_max = r_max;
+    shape.m_bounds = {{-r_max, y_low, -r_max}, {r_max, y_high, r_max}};
+    if (!(r_max >= 0.0) || !is_finite(shape.m_bounds.lower) || !is_finite(shape.m_bounds.upper))
+        return std::nullopt;
     shape.m_pieces = std::move(pieces);
     return shape;
 }
@@ -131,6 +209,7 @@ const SorShape::Piece* SorShape::piece_at(double y) const {
 }
 
 bool SorShape::inside(const Vec3& p) const {
+    if (p.y < m_bounds.lower.y || p.y > m_bounds.upper.y) return false;
     const double rho2 = p.x * p.x + p.z * p.z;
     if (rho2 > m_r_max * m_r_max) return false;
     // POV-Ray compat: the first piece whose height range holds the point decides.
@@ -140,45 +219,105 @@ bool SorShape::inside(const Vec3& p) const {
 
 SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
     SurfaceHits hits;
-    const auto line = centre_line(ray);
-    if (!line) return hits;
-    const auto& [u, o, s0, len] = *line;
-    double b0, b1;
-    if (!slab_interval(m_bounds.lower, m_bounds.upper, o, u, b0, b1)) return hits;
-    // Structured bindings copied into the lambda by name: clang 14 cannot capture them by reference.
-    auto push = [&, s0 = s0, len = len](double s, const Vec3& normal) {
-        const double t = (s0 + s) / len;
-        if (t > t_min && t < t_max) hits.push({t, normal, dot(normal, ray.direction) < 0.0});
+    // POV-Ray compat: the cubic is in the distance k along the unit direction from the ray's own origin.
+    const double len = std::sqrt(ray.direction.x * ray.direction.x + ray.direction.y * ray.direction.y +
+                                 ray.direction.z * ray.direction.z);
+    if (!(len > 0.0) || !std::isfinite(len)) return hits;
+    const Vec3& P = ray.origin;
+    const double inv_len = 1.0 / len;
+    const Vec3 D{ray.direction.x * inv_len, ray.direction.y * inv_len, ray.direction.z * inv_len};
+    const double y_low = m_bounds.lower.y, y_high = m_bounds.upper.y, r_max = m_r_max;
+    // A query reaching behind its origin (t_min < 0) wants the whole line: none of the one-way culls then.
+    const bool forward = t_min >= 0.0;
+    if (forward && ((D.y >= 0.0 && P.y > y_high) || (D.y <= 0.0 && P.y < y_low) || (D.x >= 0.0 && P.x > r_max) ||
+                    (D.x <= 0.0 && P.x < -r_max)))
+        return hits;
+    // The ray's distance from the axis (signed, as POV-Ray tests it).
+    const double a = D.x * D.x + D.z * D.z;
+    double r0 = P.x * D.z - P.z * D.x;
+    if (a > 0.0) r0 /= std::sqrt(a);
+    if (r0 > r_max) return hits;
+    // The nearest crossing kept so far, in k.
+    double best = inf;
+    auto push = [&](double k, const Vec3& normal) {
+        const double t = k / len;
+        if (!(t > t_min && t < t_max)) return;
+        hits.push({t, normal, dot(normal, ray.direction) < 0.0});
+        best = std::fmin(best, k);
     };
-    if (!m_open && std::fabs(u.y) > kEpsilon) {
-        for (const auto& [y, r2, ny] : {std::tuple{m_bounds.lower.y, m_base_r2, -1.0},
-                                        std::tuple{m_bounds.upper.y, m_cap_r2, 1.0}}) {
+    if (!m_open && std::fabs(D.y) > kEpsilon) {
+        for (const auto& [y, r2, ny] : {std::tuple{y_low, m_base_r2, -1.0}, std::tuple{y_high, m_cap_r2, 1.0}}) {
             if (!(r2 > kDiscTolerance)) continue;
-            const double s = (y - o.y) / u.y;
-            const double px = o.x + s * u.x, pz = o.z + s * u.z;
-            if (px * px + pz * pz <= r2) push(s, {0.0, ny, 0.0});
+            const double k = (y - P.y) / D.y;
+            const double u = P.x + k * D.x, v = P.z + k * D.z;
+            if (u * u + v * v <= r2) push(k, {0.0, ny, 0.0});
         }
     }
-    const double rho2 = o.x * o.x + o.z * o.z;
-    const double m = o.x * u.x + o.z * u.z;
-    const double rr = u.x * u.x + u.z * u.z;
-    for (const Piece& piece : *m_pieces) {
-        if (piece.hidden) continue;
-        double p0, p1;
-        const Vec3 lo{-piece.r_max, piece.y_min, -piece.r_max}, hi{piece.r_max, piece.y_max, piece.r_max};
-        if (!slab_interval(lo, hi, o, u, p0, p1)) continue;
-        const double pad = 1e-9 * (1.0 + std::fabs(p0) + std::fabs(p1));
-        // f(oy + s uy) - (rho² + 2 m s + rr s²), expanded about oy.
-        const auto& c = piece.c;
-        const double f0 = cubic(c, o.y), f1 = dcubic(c, o.y), f2 = c[2] + 3.0 * c[3] * o.y;
-        const double g[4] = {f0 - rho2, f1 * u.y - 2.0 * m, f2 * u.y * u.y - rr, c[3] * u.y * u.y * u.y};
+    const double b = P.x * D.x + P.z * D.z;
+    const double c = P.x * P.x + P.z * P.z;
+    const bool crosses_planes = D.y < -kEpsilon || D.y > kEpsilon;
+    // POV-Ray compat (Intersect_BCyl): a piece is solved only when the ray crosses the walls of its shell (the ring
+    // between its two radii, its two heights) two or four times, not all behind; the pieces are visited in the
+    // order of where the ray enters their shells (0 when it starts inside).
+    thread_local std::vector<Entry> order_buffer;
+    order_buffer.resize(std::max(order_buffer.size(), m_pieces->size()));
+    Entry* order = order_buffer.data();
+    int count = 0;
+    for (int i = 0; i < static_cast<int>(m_pieces->size()); ++i) {
+        const Piece& piece = (*m_pieces)[i];
+        double dist[6];
+        int nd = 0;
+        if (crosses_planes) {
+            for (const double h : {piece.y_max, piece.y_min}) {
+                const double k = (h - P.y) / D.y;
+                const double w = k * (a * k + 2.0 * b) + c;
+                if (w >= piece.r2_inner && w <= piece.r2_outer) dist[nd++] = k;
+            }
+        }
+        for (const double r2 : {piece.r2_inner, piece.r2_outer}) {
+            if (!(r2 > kEpsilon)) continue;
+            double d = b * b - a * (c - r2);
+            if (!(d > 0.0)) continue;
+            d = std::sqrt(d);
+            for (const double k : {(-b + d) / a, (-b - d) / a}) {
+                const double h = P.y + k * D.y;
+                if (h >= piece.y_min && h <= piece.y_max) dist[nd++] = k;
+            }
+        }
+        if (nd != 2 && nd != 4) continue;
+        std::sort(dist, dist + nd);
+        double entry;
+        if (dist[0] > kEpsilon) entry = dist[0];
+        else if (dist[1] > kEpsilon) entry = 0.0;
+        else if (nd == 4 && dist[2] > kEpsilon) entry = dist[2];
+        else if (nd == 4 && dist[3] > kEpsilon) entry = 0.0;
+        else if (forward) continue;
+        else entry = dist[0];
+        // Inserted before the first entry at least as near, as POV-Ray's insert_hit does.
+        int at = 0;
+        while (at < count && entry > order[at].entry) ++at;
+        for (int j = count; j > at; --j) order[j] = order[j - 1];
+        order[at] = {entry, i};
+        ++count;
+    }
+    for (int j = 0; j < count; ++j) {
+        // POV-Ray compat: on its own (not a CSG child) the shape stops at the first shell entered beyond its
+        // nearest crossing so far.
+        if (m_first_only && forward && order[j].entry > best) break;
+        const Piece& piece = (*m_pieces)[order[j].piece];
+        // (P + k D)² across the axis = f(Py + k Dy), in POV-Ray's expansion.
+        const double A = piece.c[3], B = piece.c[2], C = piece.c[1], Dc = piece.c[0];
+        const double x[4] = {A * D.y * D.y * D.y, D.y * D.y * (3.0 * A * P.y + B) - a,
+                             D.y * (P.y * (3.0 * A * P.y + 2.0 * B) + C) - 2.0 * (P.x * D.x + P.z * D.z),
+                             P.y * (P.y * (A * P.y + B) + C) + Dc - P.x * P.x - P.z * P.z};
         double roots[3];
-        const int nr = polynomial_roots(g, 3, p0 - pad, p1 + pad, roots);
-        for (int k = 0; k < nr; ++k) {
-            const Vec3 p = o + roots[k] * u;
-            if (p.y < piece.y_min || p.y > piece.y_max) continue;
+        for (int nr = pov_roots(x, 3, roots); nr--;) {
+            const double k = roots[nr];
+            const double h = P.y + k * D.y;
+            if (!(h >= piece.y_min && h <= piece.y_max)) continue;
+            const Vec3 p{P.x + k * D.x, h, P.z + k * D.z};
             // The gradient of rho² - f(y), halved: outward.
-            push(roots[k], {p.x, -0.5 * dcubic(c, p.y), p.z});
+            push(k, {p.x, -0.5 * (p.y * (3.0 * A * p.y + 2.0 * B) + C), p.z});
         }
     }
     hits.sort_by_t();

@@ -15,6 +15,7 @@
 #include "media/atmosphere.h"
 #include "media/participating_media.h"
 #include "media/transmittance.h"
+#include "scene/opacity.h"
 #include "photons/photon_shooter.h"
 #include "texture/image_map.h"
 #include "texture/normal.h"
@@ -35,46 +36,6 @@ double smooth_ramp(double low, double high, double x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-bool pigment_opaque(const scene::Pigment& p) {
-    if (p.is_solid()) return p.color.filter == 0.0 && p.color.transmit == 0.0;
-    // An image map lets light through with filter or transmit all, an alpha channel, and where `once` leaves no
-    // image.
-    if (p.image_map) {
-        if (p.image_map->image && !p.image_map->image->alpha.empty()) return false;
-        for (const scene::PaletteFT& ft : p.image_map->palette_ft)
-            if (ft.filter != 0.0f || ft.transmit != 0.0f) return false;
-        return !p.image_map->once && p.image_map->filter_all == 0.0 && p.image_map->transmit_all == 0.0;
-    }
-    for (const auto& e : p.color_map)
-        if (e.color.filter != 0.0 || e.color.transmit != 0.0) return false;
-    for (const auto& e : p.pigment_map)
-        if (!pigment_opaque(e.pigment)) return false;
-    return true;
-}
-
-bool texture_opaque(const scene::Texture& t) {
-    if (!t.texture_map.empty()) {
-        for (const auto& e : t.texture_map)
-            if (!texture_opaque(e.texture)) return false;
-        return true;
-    }
-    // POV-Ray compat: only the layers' pigments decide whether light passes.
-    if (!pigment_opaque(t.pigment)) return false;
-    for (const auto& layer : t.layers)
-        if (!texture_opaque(layer)) return false;
-    return true;
-}
-
-bool object_opaque(const scene::Object& o) {
-    if (!texture_opaque(o.texture)) return false;
-    for (const scene::Texture& inside : o.interior_texture)
-        if (!texture_opaque(inside)) return false;
-    if (const auto* csg = std::get_if<scene::Csg>(&o.shape))
-        for (const scene::Object& child : csg->children)
-            if (!object_opaque(child)) return false;
-    return true;
-}
-
 }  // namespace
 
 LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeometry& geometry, std::uint64_t seed)
@@ -88,7 +49,7 @@ LightSampler::LightSampler(const scene::Scene& scene, const geometry::SceneGeome
     // Shadow rays need to look through objects only when something lets light pass.
     m_opaque.reserve(scene.objects.size());
     for (const scene::Object& o : scene.objects) {
-        const bool opaque = object_opaque(o);
+        const bool opaque = scene::object_opaque(o);
         m_opaque.push_back(opaque ? 1 : 0);
         m_any_transparent = m_any_transparent || !opaque;
     }

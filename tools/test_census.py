@@ -34,6 +34,20 @@ class ClassifyTest(unittest.TestCase):
         self.assertEqual(self.cat(ward="timeout"), "blocked")
         self.assertEqual(census.classify(record(ward="error"))[1], "s.pov:1:1: error: y")
 
+    def test_a_coincident_surface_warning_is_not_silent_and_keeps_the_reason(self):
+        rec = record(rrmse=0.3)
+        rec["wardray"]["cautions"] = ["coincident surfaces"]
+        category, reason = census.classify(rec)
+        self.assertEqual(category, "differ-with-warning")
+        self.assertTrue(reason.startswith("warned: coincident surfaces; "))
+        self.assertIn("no assumed_gamma", census.classify(record(rrmse=0.3, gamma=()))[1])
+        self.assertEqual(census.classify(record(rrmse=0.3))[0], "differ-silently")
+        rec["metrics"]["rrmse"] = 0.0
+        self.assertEqual(census.classify(rec)[0], "match")
+        self.assertEqual(census.wardray_cautions("a.pov:1:1: warning: coincident surfaces: this box ..."),
+                         ["coincident surfaces"])
+        self.assertEqual(census.wardray_cautions("a.pov:1:1: warning: fog is not rendered yet"), [])
+
     def test_match_needs_both_figures(self):
         self.assertEqual(self.cat(rrmse=0.01, bad=0.005), "match")
         self.assertEqual(self.cat(rrmse=0.0101, bad=0.0), "differ-small")
@@ -117,6 +131,19 @@ class ConvergedTest(unittest.TestCase):
             self.assertFalse((d / "b.inc").exists())
         self.assertEqual(census.converged_options(["w", "-A", "+FH"], ["crand"]), ["w", "+A0.0", "+R6", "-J", "+FH"])
         self.assertEqual(census.converged_options(["w", "-A"], ["radiosity"]), ["w", "-A"])
+        self.assertEqual(census.converged_options(["w", "-A"], ["focal blur"]), ["w", "-A"])
+
+    def test_the_copy_converges_literal_blur_samples(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            d = pathlib.Path(tmp)
+            files = [("a.pov", "camera { aperture 1 blur_samples 37 }\n#case(1) blur_samples 7, 19 #break\n"),
+                     ("b.inc", "#declare N = 5; camera { blur_samples N }\n")]
+            self.assertEqual(census.converged_copy(files, d, ["focal blur"]), ["a.pov"])
+            text = (d / "a.pov").read_text()
+            self.assertEqual(text.count("blur_samples 4000, 4000"), 2)
+            self.assertNotIn("37", text)
+            self.assertNotIn("7, 19", text)
+            self.assertFalse((d / "b.inc").exists())
 
 
 class SceneTextTest(unittest.TestCase):
@@ -133,7 +160,7 @@ class SceneTextTest(unittest.TestCase):
 
     def test_randomness_of_the_parsed_scene(self):
         out = "scene: s.pov\nradiosity: off\nrandomness: area light jitter, crand, focal blur\nwarnings: 0\n"
-        self.assertEqual(census.parsed_randomness_words(out), ["jitter", "crand"])
+        self.assertEqual(census.parsed_randomness_words(out), ["jitter", "crand", "focal blur"])
         self.assertEqual(census.parsed_randomness_words("randomness: none\n"), [])
         self.assertEqual(census.parsed_randomness_words("no such line"), [])
 

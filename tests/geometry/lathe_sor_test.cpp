@@ -163,13 +163,50 @@ TEST(Sor, NearlyLevelRaysAgreeWithLevelOnes) {
     ASSERT_TRUE(inst);
     const auto level = inst->nearest({-5, 0.9, 0.2}, {1, 0, 0}, 0.0, 1e30);
     ASSERT_TRUE(level);
-    for (const double tilt : {1e-12, 1e-9, 1e-7, 1e-5, 1e-3}) {
+    for (const double tilt : {1e-12, 1e-9, 1e-7, 1e-5}) {
         const auto hit = inst->nearest({-5, 0.9, 0.2}, {1, tilt, 0}, 0.0, 1e30);
         ASSERT_TRUE(hit) << "tilt " << tilt;
         EXPECT_NEAR(hit->position.x, level->position.x, 1e-6 + 10 * tilt) << "tilt " << tilt;
     }
+    // POV-Ray compat: at tilt 1e-3 the cubic's leading coefficient (about 1e-9 of the next) is no longer dropped, and
+    // POV-Ray's closed form puts the crossing at x = -1.5123, not -1.098: POV-Ray 3.7.0.10's value, read back from
+    // 1x1 renders of this ray (camera { perspective location <-5, 0.9, 0.2> direction <1, 0.001, 0> }) with
+    // pigment { function { -x/2 } } and, for the last digits, function { -x*8 }, finish { ambient 1 diffuse 0 }.
+    const auto tilted = inst->nearest({-5, 0.9, 0.2}, {1, 1e-3, 0}, 0.0, 1e30);
+    ASSERT_TRUE(tilted);
+    EXPECT_NEAR(tilted->position.x, -1.51231, 2e-4);
 }
 
+// Inner points 0.001 apart in height make each piece's 4x4 system nearly singular, and POV-Ray's cofactor inverse
+// rounds it into another curve: the piece over [4, 4.001] bulges to r = 1.256 (exactly solved it stays within 1 and
+// 1.02), the one over [4.001, 4.002] has f < 0 and leaves a slit, and a ray that should cross the bulge's side is
+// not found by its closed-form cubic. The expected x are POV-Ray 3.7.0.10's, read back from 1x1 renders of this sor
+// with camera { perspective location <o> direction <d> } and pigment { function { -x/2 } } (and -x*8 for the last
+// digits), finish { ambient 1 diffuse 0 }.
+TEST(Sor, CloseHeightsAsPovRayRendersThem) {
+    const auto inst = ShapeInstance::create(make_object(sor_of({{0.6, 3, 0}, {0.8, 3.5, 0}, {1, 4, 0}, {1.02, 4.001, 0},
+                                                                  {1, 4.002, 0}, {0.7, 4.5, 0}, {0.6, 5, 0}})), 0);
+    ASSERT_TRUE(inst);
+    struct Case {
+        Vec3 origin, direction;
+        double x;  // NaN: POV-Ray sees the background
+    };
+    const double miss = std::nan("");
+    for (const Case& c : {Case{{-5, 4.0005, 0}, {1, 0, 0}, -1.25592}, Case{{-5, 4.0005, 0.3}, {1, 0, 0}, -1.21956},
+                          Case{{-5, 4.0015, 0}, {1, 0, 0}, miss}, Case{{-5, 4.25, 0.1}, {1, 0.05, 0}, -0.70819},
+                          Case{{-5, 4.3749, 0}, {1, -0.1, 0}, -0.98858}}) {
+        const auto hit = inst->nearest(c.origin, c.direction, 0.0, 1e30);
+        if (std::isnan(c.x)) {
+            EXPECT_FALSE(hit) << "from y " << c.origin.y;
+            continue;
+        }
+        ASSERT_TRUE(hit) << "from y " << c.origin.y;
+        EXPECT_NEAR(hit->position.x, c.x, 2e-4) << "from y " << c.origin.y;
+    }
+}
+
+// POV-Ray compat: the crossings come from POV-Ray's closed-form cubic, whose roots are off the surface by up to about
+// 1e-4 of the shape's size on these rays (shallow ones and far ones), as POV-Ray draws them.
 TEST(Sor, RandomRays) {
     check_shape([](Random& r) {
         std::vector<Vec3> points;
@@ -179,7 +216,7 @@ TEST(Sor, RandomRays) {
             y += r.uniform(0.3, 0.8);
         }
         return sor_of(points, r.chance(0.3));
-    }, false, 51, 1e-8);
+    }, false, 51, 1e-4);
 }
 
 }  // namespace
