@@ -2,6 +2,7 @@
 // shapes and CSG as user geometry computed in double precision, meshes as native triangles refined in double,
 // and unbounded shapes intersected outside the BVH.
 #include "geometry/scene_geometry.h"
+#include "geometry/float_padding.h"
 
 #include <embree3/rtcore.h>
 
@@ -59,6 +60,7 @@ struct GeometryData;
 struct UserGroup {
     const GeometryData* impl = nullptr;
     std::vector<std::uint32_t> prims;  ///< Embree primID -> index into GeometryData::bounded
+    const std::vector<Bounds>* padded = nullptr;  ///< per bounded instance: the boxes this geometry's BVH holds
 };
 
 // Everything the Embree callbacks read; SceneGeometry::Impl is this type (callbacks cannot name a private type).
@@ -68,6 +70,13 @@ struct GeometryData {
     std::vector<ShapeInstance> bounded;    ///< in scene order; UserGroup::prims index it
     std::vector<UserGroup> user_groups;    ///< by visibility mask, the ones not empty
     std::vector<Bounds> padded_bounds;     ///< per bounded instance, grown for the float ray's rounding
+    /// A second BVH of the bounded instances when one object (a sky sphere) makes the scene far larger than the
+    /// rest: `scene` then holds them in boxes padded only for rays whose float origin is within near_magnitude,
+    /// and `far_scene` in boxes padded for any origin (padded_bounds), for the other rays.
+    RTCScene far_scene = nullptr;
+    std::vector<UserGroup> far_groups;
+    std::vector<Bounds> near_bounds;
+    double near_magnitude = inf;
     std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
     std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
     std::vector<std::uint32_t> mesh_of_geometry;  ///< Embree geomID -> index into meshes
@@ -80,6 +89,7 @@ struct GeometryData {
     std::string error;
 
     ~GeometryData() {
+        if (far_scene) rtcReleaseScene(far_scene);
         if (scene) rtcReleaseScene(scene);
         if (device) rtcReleaseDevice(device);
     }
@@ -116,6 +126,9 @@ unsigned visibility_mask(const ShapeInstance& inst) {
 // A ray's mask: its kind's bit.
 unsigned ray_mask(RayKind kind) { return 1u << static_cast<unsigned>(kind); }
 
+// With a far BVH, the near boxes' masks are the kinds' bits shifted by this (past RayKind's 4 bits).
+constexpr unsigned kFarShift = 4;
+
 void on_embree_error(void* user, RTCError code, const char* message) {
     auto* impl = static_cast<GeometryData*>(user);
     // Only record while building (single-threaded); queries never write shared state.
@@ -125,7 +138,7 @@ void on_embree_error(void* user, RTCError code, const char* message) {
 
 void bounds_callback(const RTCBoundsFunctionArguments* args) {
     const auto* group = static_cast<const UserGroup*>(args->geometryUserPtr);
-    const Bounds& b = group->impl->padded_bounds[group->prims[args->primID]];
+    const Bounds& b = (*group->padded)[group->prims[args->primID]];
     RTCBounds* out = args->bounds_o;
     out->lower_x = float_down(b.lower.x);
     out->lower_y = float_down(b.lower.y);
@@ -330,16 +343,34 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    if (shadow) {
-        rtcOccluded1(scene, &q.base, &ray);
-    } else {
-        rtcIntersect1(scene, &q.base, &rh);
+    const auto run = [&](RTCScene s) {
+        if (shadow) rtcOccluded1(s, &q.base, &ray);
+        else rtcIntersect1(s, &q.base, &rh);
+    };
+    if (!far_scene) {
+        run(scene);
+        return;
     }
+    if (max_abs_component(o) <= near_magnitude) {
+        // The near boxes hold for this origin: one traversal meets meshes and bounded instances alike.
+        ray.mask |= ray.mask << kFarShift;
+        run(scene);
+        return;
+    }
+    // A far origin: the meshes (the only geometries left under the kind's own bit), then the loose boxes.
+    if (!meshes.empty()) {
+        run(scene);
+        if (shadow && q.has_hit) return;
+        ray.tfar = float_up(q.t_best - t_start);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    }
+    run(far_scene);
 }
 
 namespace {
 // The analytic shapes and CSG objects as one Embree user geometry (a primitive per object).
-void attach_user_geometry(GeometryData& impl);
+void attach_user_geometry(GeometryData& impl, RTCScene scene, std::vector<UserGroup>& groups,
+                           const std::vector<Bounds>& padded, unsigned mask_shift);
 }  // namespace
 
 SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()) {
@@ -385,16 +416,19 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
         impl.building = false;
         return;
     }
-    // Pad every box by more than the float ray's rounding (relative ~1e-7 of the scene's coordinates).
+    // Pad every box by more than the float ray's rounding, for rays from anywhere in the scene.
     const double scene_pad = 1e-6 * impl.bounds->magnitude();
-    for (const ShapeInstance& inst : impl.bounded) {
-        const Bounds& b = *inst.world_bounds();
-        const double pad = scene_pad + 1e-6 * max_abs_component(b.upper - b.lower);
-        const Vec3 v{pad, pad, pad};
-        impl.padded_bounds.push_back({b.lower - v, b.upper + v});
-    }
+    std::vector<Bounds> boxes;
+    boxes.reserve(impl.bounded.size());
+    for (const ShapeInstance& inst : impl.bounded) boxes.push_back(*inst.world_bounds());
+    impl.padded_bounds = padded_for_scene(boxes, impl.bounds->magnitude());
     const Vec3 v{2 * scene_pad, 2 * scene_pad, 2 * scene_pad};
     impl.padded_scene_bounds = Bounds{impl.bounds->lower - v, impl.bounds->upper + v};
+    // Rays from near the objects need far less when one object makes the scene huge: a sky sphere of radius 1e6
+    // pads a chair's 1 cm tubes by 1 unit, and each ray near them then calls back for dozens of objects.
+    impl.near_magnitude = near_origin_magnitude(boxes, impl.bounds->magnitude());
+    if (std::isfinite(impl.near_magnitude))
+        impl.near_bounds = padded_for_origins(boxes, impl.padded_bounds, impl.near_magnitude);
 
     impl.device = rtcNewDevice(nullptr);
     if (!impl.device) throw std::runtime_error("Embree error: cannot create device");
@@ -405,7 +439,22 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
     rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
 
     for (std::uint32_t i = 0; i < impl.meshes.size(); ++i) attach_mesh(impl, i);
-    if (!impl.bounded.empty()) attach_user_geometry(impl);
+    if (!impl.bounded.empty()) {
+        if (std::isfinite(impl.near_magnitude)) {
+            // The near boxes in the scene with the meshes, under masks shifted past the ray kinds' bits so that a far
+            // ray can meet the meshes alone there; the loose boxes in a BVH of their own.
+            attach_user_geometry(impl, impl.scene, impl.user_groups, impl.near_bounds, kFarShift);
+            impl.far_scene = rtcNewScene(impl.device);
+            impl.check("scene creation");
+            rtcSetSceneFlags(impl.far_scene, RTC_SCENE_FLAG_ROBUST);
+            rtcSetSceneBuildQuality(impl.far_scene, RTC_BUILD_QUALITY_HIGH);
+            attach_user_geometry(impl, impl.far_scene, impl.far_groups, impl.padded_bounds, 0);
+            rtcCommitScene(impl.far_scene);
+            impl.check("BVH build");
+        } else {
+            attach_user_geometry(impl, impl.scene, impl.user_groups, impl.padded_bounds, 0);
+        }
+    }
     rtcCommitScene(impl.scene);
     impl.check("BVH build");
     impl.building = false;
@@ -413,7 +462,8 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
 
 namespace {
 
-void attach_user_geometry(GeometryData& impl) {
+void attach_user_geometry(GeometryData& impl, RTCScene scene, std::vector<UserGroup>& groups,
+                           const std::vector<Bounds>& padded, unsigned mask_shift) {
     // A geometry per visibility mask, each listing its instances in scene order; one when every object is seen by
     // every ray, as most scenes are.
     std::uint32_t group_of_mask[16];
@@ -422,24 +472,24 @@ void attach_user_geometry(GeometryData& impl) {
     for (std::uint32_t i = 0; i < impl.bounded.size(); ++i) {
         const unsigned mask = visibility_mask(impl.bounded[i]);
         if (group_of_mask[mask] == UINT32_MAX) {
-            group_of_mask[mask] = static_cast<std::uint32_t>(impl.user_groups.size());
-            impl.user_groups.push_back({&impl, {}});
+            group_of_mask[mask] = static_cast<std::uint32_t>(groups.size());
+            groups.push_back({&impl, {}, &padded});
             masks.push_back(mask);
         }
-        impl.user_groups[group_of_mask[mask]].prims.push_back(i);
+        groups[group_of_mask[mask]].prims.push_back(i);
     }
-    for (std::size_t g = 0; g < impl.user_groups.size(); ++g) {
-        UserGroup& group = impl.user_groups[g];
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        UserGroup& group = groups[g];
         RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_USER);
         impl.check("geometry creation");
         rtcSetGeometryUserPrimitiveCount(geom, static_cast<unsigned>(group.prims.size()));
         rtcSetGeometryUserData(geom, &group);
-        rtcSetGeometryMask(geom, masks[g]);
+        rtcSetGeometryMask(geom, masks[g] << mask_shift);
         rtcSetGeometryBoundsFunction(geom, bounds_callback, nullptr);
         rtcSetGeometryIntersectFunction(geom, intersect_callback);
         rtcSetGeometryOccludedFunction(geom, occluded_callback);
         rtcCommitGeometry(geom);
-        rtcAttachGeometry(impl.scene, geom);
+        rtcAttachGeometry(scene, geom);
         rtcReleaseGeometry(geom);
         impl.check("geometry setup");
     }

@@ -84,11 +84,16 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const scene::PhotonSettings& s
       m_expand_min(settings.expand_min),
       m_exponent_offset(exponent_offset) {
     if (m_photons.empty()) return;
-    build(0, static_cast<int>(m_photons.size()));
+    // Boxes for the top of the tree (about one per 8 photons): enough to skip a subtree whose photons all lie off
+    // a query's reach, as the planes of the cells alone cannot when the photons cover a thin layer.
+    std::size_t boxes = 1;
+    while (boxes * 16 <= m_photons.size()) boxes *= 2;
+    m_boxes.resize(boxes);
+    build(0, static_cast<int>(m_photons.size()), 1);
     estimate_radius(settings, media, seed);
 }
 
-void PhotonMap::build(int begin, int end) {
+void PhotonMap::build(int begin, int end, std::size_t id) {
     if (end - begin < 1) return;
     // Split at the median of the axis along which the photons spread most (a balanced kd-tree, stored implicitly:
     // the node of [begin, end) is its middle element).
@@ -98,6 +103,7 @@ void PhotonMap::build(int begin, int end) {
             lo[a] = std::min(lo[a], m_photons[i].position[a]);
             hi[a] = std::max(hi[a], m_photons[i].position[a]);
         }
+    if (id < m_boxes.size()) m_boxes[id] = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
     int axis = 0;
     for (int a = 1; a < 3; ++a)
         if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
@@ -105,8 +111,8 @@ void PhotonMap::build(int begin, int end) {
     std::nth_element(m_photons.begin() + begin, m_photons.begin() + mid, m_photons.begin() + end,
                      [axis](const Photon& a, const Photon& b) { return a.position[axis] < b.position[axis]; });
     m_photons[mid].axis = static_cast<std::uint8_t>(axis);
-    build(begin, mid);
-    build(mid + 1, end);
+    build(begin, mid, 2 * id);
+    build(mid + 1, end, 2 * id + 1);
 }
 
 namespace {
@@ -140,12 +146,27 @@ void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t
     // levels hold any map.
     struct Cell {
         int begin, end;
+        std::size_t id;     // the node (see build)
         double d2;          // squared distance from p to the cell
         double offset[3];   // p's distance outside the cell along each axis
     };
+    // Near the top of the tree the cell shrinks to its photons' box, which lies inside it: p's distance to it along
+    // each axis is no less than to the cell, and the splits below stay within it, so the walk goes on as above.
+    const auto tighten = [&](Cell& c) {
+        if (c.id >= m_boxes.size()) return;
+        const std::array<float, 6>& b = m_boxes[c.id];
+        const double q[3] = {p.x, p.y, p.z};
+        c.d2 = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            c.offset[a] = q[a] < b[a] ? b[a] - q[a] : q[a] > b[a + 3] ? q[a] - b[a + 3] : 0.0;
+            c.d2 += c.offset[a] * c.offset[a];
+        }
+    };
     Cell pending[64];
     int n_pending = 0;
-    Cell cell{0, static_cast<int>(m_photons.size()), 0.0, {0.0, 0.0, 0.0}};
+    Cell cell{0, static_cast<int>(m_photons.size()), 1, 0.0, {0.0, 0.0, 0.0}};
+    tighten(cell);
+    if (!(cell.d2 * (1.0 - 1e-12) < max_d2)) return;
     for (;;) {
         while (cell.end - cell.begin >= 1) {
             const int mid = (cell.begin + cell.end - 1) / 2;
@@ -177,11 +198,19 @@ void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t
             far.offset[axis] = delta;
             if (delta < 0.0) {
                 far.begin = mid + 1;
+                far.id = 2 * cell.id + 1;
                 cell.end = mid;
+                cell.id = 2 * cell.id;
             } else {
                 far.end = mid;
+                far.id = 2 * cell.id;
                 cell.begin = mid + 1;
+                cell.id = 2 * cell.id + 1;
             }
+            tighten(far);
+            tighten(cell);
+            // The near side too is left when its box is out of reach.
+            if (!(cell.d2 * (1.0 - 1e-12) < max_d2)) break;
         }
         // The far side once the near one is done, while its cell is within reach. The cell's distance is summed in
         // another order than a photon's own, so it is shaded down by a trillionth: rounding can then only visit a

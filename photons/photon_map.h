@@ -68,7 +68,8 @@ public:
     void gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) const;
 
 private:
-    void build(int begin, int end);
+    /// Builds the subtree of [begin, end), node `id` (the root 1, a node's children 2·id and 2·id + 1).
+    void build(int begin, int end, std::size_t id);
     /// The k-nearest walk of gather: up to `limit` photons nearer than sqrt(max_d2) into the max-heap `heap`,
     /// max_d2 shrinking to the farthest kept once it is full.
     void search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
@@ -76,6 +77,8 @@ private:
     void estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed);
 
     std::vector<Photon> m_photons;
+    /// The photons' bounding box per node id, for the nodes of at least 8 photons or so: lo x y z, hi x y z.
+    std::vector<std::array<float, 6>> m_boxes;
     int m_gather_max = 100;
     int m_gather_min = 20;
     double m_expand_tolerance = 0.2;

@@ -126,6 +126,54 @@ TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
     EXPECT_GT(hits, 5000);
 }
 
+// One huge object (a sky sphere of radius 1e6) around small ones: rays from near them take the BVH of tight boxes,
+// rays from far the scene-wide one; both must find what the double loop finds, flagged objects and shadows included.
+TEST(SceneGeometry, HugeObjectKeepsNearAndFarRaysExact) {
+    Random rng(29);
+    scene::Scene scene;
+    for (int i = 0; i < 60; ++i) {
+        if (i % 2 == 0) {
+            const Vec3 lo = rng.vec(-3.0, 3.0);
+            scene.objects.push_back(make_object(scene::Box{lo, lo + rng.vec(0.01, 1.0)}));
+        } else {
+            scene.objects.push_back(make_object(test::random_shape(rng, false), rng.transform(3.0)));
+        }
+        scene.objects.back().no_shadow = rng.chance(0.15);
+        scene.objects.back().no_image = rng.chance(0.15);
+    }
+    scene::Object sky = make_object(scene::Sphere{{0, 0, 0}, 1.0});
+    sky.transform = Transform::scaling({1e6, 1e6, 3e5});
+    scene.objects.push_back(sky);
+    const SceneGeometry g(scene);
+    int hits = 0, blocked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Ray ray;
+        const bool far = rng.chance(0.5);
+        ray.origin = far ? rng.direction() * std::pow(10.0, rng.uniform(1.5, 5.4)) : rng.vec(-5.0, 5.0);
+        const auto& obj = scene.objects[rng.integer(0, 59)];
+        Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
+        if (const auto* box = std::get_if<scene::Box>(&obj.shape)) {
+            // A point on an edge of the box, nudged by up to 1e-6 either way.
+            for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
+            const int along = rng.integer(0, 2);
+            toward[along] = rng.uniform(box->corner1[along], box->corner2[along]);
+            toward += rng.vec(-1e-6, 1e-6);
+        }
+        ray.direction = normalize(toward - ray.origin);
+        ray.kind = static_cast<RayKind>(rng.integer(0, 3));
+        const auto want = brute_force(scene, ray);
+        expect_same_hit(g.intersect(ray), want, far ? "far ray" : "near ray");
+        hits += want.has_value() && want->object < 60;
+        ray.kind = RayKind::Shadow;
+        const bool occ = g.occluded(ray);
+        ASSERT_EQ(occ, brute_force(scene, ray).has_value()) << "ray " << i;
+        blocked += occ;
+        if (::testing::Test::HasFailure()) return;
+    }
+    EXPECT_GT(hits, 5000);
+    EXPECT_GT(blocked, 5000);
+}
+
 TEST(SceneGeometry, OnlyBoundedObjectsAndOnlyPlanes) {
     Random rng(8);
     const scene::Scene bounded = random_scene(rng, 50, false, false);
