@@ -57,7 +57,6 @@ struct Leaf {
     bool clipped = false;     ///< below an intersection or difference, or clipped_by: its extent is not its own
 };
 
-
 // A planar face in world space: `normal` in a canonical orientation (its first clearly nonzero component
 // positive), `facing` saying whether the outward normal is +normal or -normal.
 struct Face {
@@ -216,7 +215,6 @@ private:
         f.first = static_cast<std::uint32_t>(mark);
         f.count = static_cast<std::uint32_t>(m_points.size() - mark);
         f.bounded = f.count > 0;
-        // A plane clipped by shapes of unknown extent (quadrics, ...) is left alone rather than taken as infinite.
         Vec3 lo{kInfinity, kInfinity, kInfinity}, hi = -lo;
         for (std::size_t k = mark; k < m_points.size(); ++k)
             for (int a = 0; a < 3; ++a) {
@@ -224,6 +222,7 @@ private:
                 hi[a] = std::max(hi[a], m_points[k][a]);
             }
         f.size = f.bounded ? std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) : 0.0;
+        // A plane clipped by shapes of unknown extent (quadrics, ...) is left alone rather than taken as infinite.
         if ((!f.bounded && m_leaves[leaf].clipped) || (f.bounded && !(f.size > 0.0)) || !std::isfinite(f.offset) ||
             !std::isfinite(f.size)) {
             m_points.resize(mark);

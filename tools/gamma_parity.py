@@ -4,20 +4,41 @@
 The scenes are gamma/ and the woods, stones and metals demos of incdemo/ that wardray renders with no "not rendered"
 warning. Each is rendered by both programs as PNG and as HDR, same size, same switches, one thread each. Reported
 per scene: the fraction of pixels whose every channel is within one level of POV-Ray's PNG, and the HDR rRMSE and
-bad-pixel fraction as docs/metrics.md defines them.
+bad-pixel fraction as docs/metrics.md defines them. A scene with randomness (radiosity, jitter, crand, focal blur, in
+its text or, as `wardray --check` names it, in the parsed scene) is rendered converged by both, as tools/census.py
+converges it (a scratch copy of its folder with converged radiosity and blur_samples, every pixel supersampled 6x6
+without jitter where the randomness is per sample): at its own settings two renders differ by their noise.
 
-usage: tools/gamma_parity.py WARDRAY [--size 160x120] [--switches "-A"] [--out DIR]
+usage: tools/gamma_parity.py WARDRAY [--size 160x120] [--switches "-A"] [--out DIR] [--only STEM ...]
 exit status: 0 when every scene has at least 99 % of its PNG pixels within one level, 1 otherwise.
 """
 import argparse
 import pathlib
+import shutil
 import subprocess
 import sys
+import tempfile
 
 import numpy as np
 import OpenImageIO as oiio
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import census  # noqa: E402  (the census's scene files, randomness and convergence)
+
 EXAMPLES = pathlib.Path("/usr/share/povray-3.7/scenes")
+
+
+def converged_folder(scene, stochastic, scratch):
+    """A copy of the scene's folder in `scratch` (subfolders linked) with its randomness converged: the new scene
+    path."""
+    for item in scene.parent.iterdir():
+        target = scratch / item.name
+        if item.is_dir():
+            target.symlink_to(item)
+        else:
+            shutil.copyfile(item, target)
+    census.converged_copy(census.scene_files(scene), scratch, stochastic)
+    return scratch / scene.name
 
 
 def demo_scenes():
@@ -47,6 +68,7 @@ def main():
     ap.add_argument("--size", default="160x120")
     ap.add_argument("--switches", default="-A")
     ap.add_argument("--out", default="gamma_parity_out")
+    ap.add_argument("--only", nargs="*", help="scene names (stems) to measure, all when not given")
     args = ap.parse_args()
     width, height = args.size.split("x")
     out = pathlib.Path(args.out).resolve()
@@ -56,20 +78,33 @@ def main():
     print(f"{'scene':28} {'PNG within 1':>12} {'HDR rRMSE':>10} {'HDR bad':>8}")
     failed = 0
     for scene in demo_scenes():
+        if args.only and scene.stem not in args.only:
+            continue
         name = f"{scene.parent.name}_{scene.stem}"
         check = subprocess.run([wardray, str(scene), "--check"], cwd=scene.parent, capture_output=True, text=True)
         if "not rendered" in check.stderr or check.returncode != 0:
             print(f"{name:28} {'skipped: a feature is not rendered yet':>32}")
             continue
-        for ext, fmt in (("png", "+FN"), ("hdr", "+FH")):
-            # POV-Ray may only write below its working folder: run it in the output folder.
-            subprocess.run(["povray", f"+I{scene}", f"+L{scene.parent}", f"+O{name}.pov.{ext}", fmt, "-D", "-V",
-                            "-GA"] + common, cwd=out, capture_output=True)
-            subprocess.run([wardray, str(scene), "-o", str(out / f"{name}.wr.{ext}"), fmt] + common,
-                           cwd=scene.parent, capture_output=True)
+        texts = [t for _, t in census.scene_files(scene)]
+        stochastic = census.stochastic_features(texts)
+        stochastic += [w for w in census.parsed_randomness_words(check.stdout) if w not in stochastic]
+        with tempfile.TemporaryDirectory(prefix="gamma-parity-") as tmp:
+            source, switches = scene, common
+            if stochastic:
+                source = converged_folder(scene, stochastic, pathlib.Path(tmp))
+                switches = census.converged_options(common, stochastic)
+                name += " (converged)"
+            for ext, fmt in (("png", "+FN"), ("hdr", "+FH")):
+                # POV-Ray may only write below its working folder: run it in the output folder.
+                subprocess.run(["povray", f"+I{source}", f"+L{source.parent}", f"+L{scene.parent}",
+                                f"+O{scene.parent.name}_{scene.stem}.pov.{ext}", fmt, "-D", "-V", "-GA"] + switches,
+                               cwd=out, capture_output=True)
+                subprocess.run([wardray, str(source), "-o", str(out / f"{scene.parent.name}_{scene.stem}.wr.{ext}"),
+                                fmt] + switches, cwd=source.parent, capture_output=True)
+        name_file = f"{scene.parent.name}_{scene.stem}"
         try:
-            png_w, png_p = read(out / f"{name}.wr.png"), read(out / f"{name}.pov.png")
-            hdr_w, hdr_p = read(out / f"{name}.wr.hdr"), read(out / f"{name}.pov.hdr")
+            png_w, png_p = read(out / f"{name_file}.wr.png"), read(out / f"{name_file}.pov.png")
+            hdr_w, hdr_p = read(out / f"{name_file}.wr.hdr"), read(out / f"{name_file}.pov.hdr")
         except Exception as e:  # a renderer failed: say so and count it
             print(f"{name:28} failed: {e}")
             failed += 1
