@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <functional>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -55,6 +56,7 @@ struct Leaf {
     std::optional<Aabb> clip; ///< what an intersection or difference above it leaves of space, when bounded
     std::vector<Cut> cuts;
     bool clipped = false;     ///< below an intersection or difference, or clipped_by: its extent is not its own
+    std::uint32_t top = 0;    ///< the top-level object it is part of
 };
 
 // A planar face in world space: `normal` in a canonical orientation (its first clearly nonzero component
@@ -69,7 +71,7 @@ struct Face {
     std::uint32_t first = 0, count = 0;  ///< its corners in Finder::m_points: world points whose hull covers it
     double size = 0.0;                   ///< the largest extent of its corners
     std::uint32_t group = 0;             ///< its group of faces of one normal, whose basis (u, v) it is drawn in
-    bool shaped = false;                 ///< `shape` is made (at once for faces with cuts, else when needed)
+    bool shaped = false;                 ///< `shape` is made (when a pair needs it)
     std::vector<Point2> shape;           ///< in its group's (u, v): the convex hull of its corners less the cuts
     std::array<double, 4> uv{};          ///< bounds of `shape`: u0, u1, v0, v1
 };
@@ -97,7 +99,10 @@ bool may_see_through(const scene::Texture& t) {
 class Finder {
 public:
     explicit Finder(const scene::Scene& scene) {
-        for (const scene::Object& o : scene.objects) collect(o, Transform{}, -1, std::nullopt, {});
+        for (const scene::Object& o : scene.objects) {
+            collect(o, Transform{}, -1, std::nullopt, {});
+            ++m_top;
+        }
     }
 
     // Every coincident pair found, in the order of the primitives, each pair of primitives once.
@@ -169,7 +174,7 @@ private:
         for (const Cut& c : clipped)
             if (c.plane != &o) own.push_back(c);
         const bool clipped_somewhere = clip.has_value() || !clipped.empty() || !o.clipped_by.empty() || in_clipping(node);
-        m_leaves.push_back({&o, node, see_through, clip, std::move(own), clipped_somewhere});
+        m_leaves.push_back({&o, node, see_through, clip, std::move(own), clipped_somewhere, m_top});
         add_surfaces(o.shape, world, index);
     }
 
@@ -222,6 +227,15 @@ private:
                 hi[a] = std::max(hi[a], m_points[k][a]);
             }
         f.size = f.bounded ? std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) : 0.0;
+        // A face wholly outside what a CSG keeps never shows (a cylinder's caps beyond the box it is cut to).
+        if (clip && f.bounded) {
+            const double slack = kTolerance * std::max(f.size, std::abs(f.offset));
+            for (int a = 0; a < 3; ++a)
+                if (lo[a] > clip->hi[a] + slack || hi[a] < clip->lo[a] - slack) {
+                    m_points.resize(mark);
+                    return;
+                }
+        }
         // A plane clipped by shapes of unknown extent (quadrics, ...) is left alone rather than taken as infinite.
         if ((!f.bounded && m_leaves[leaf].clipped) || (f.bounded && !(f.size > 0.0)) || !std::isfinite(f.offset) ||
             !std::isfinite(f.size)) {
@@ -311,12 +325,18 @@ private:
 
     void match_faces() {
         // Faces grouped by their normal to about 1e-6, each group sorted by offset.
-        std::map<std::array<long long, 3>, std::vector<std::size_t>> groups;
+        std::vector<std::pair<std::array<long long, 3>, std::size_t>> keyed(m_faces.size());
         for (std::size_t k = 0; k < m_faces.size(); ++k) {
             const Vec3& n = m_faces[k].normal;
-            groups[{std::llround(n.x * 1e6), std::llround(n.y * 1e6), std::llround(n.z * 1e6)}].push_back(k);
+            keyed[k] = {{std::llround(n.x * 1e6), std::llround(n.y * 1e6), std::llround(n.z * 1e6)}, k};
         }
-        for (auto& [key, members] : groups) {
+        std::sort(keyed.begin(), keyed.end());
+        std::vector<std::vector<std::size_t>> groups;
+        for (std::size_t k = 0; k < keyed.size(); ++k) {
+            if (k == 0 || keyed[k].first != keyed[k - 1].first) groups.emplace_back();
+            groups.back().push_back(keyed[k].second);
+        }
+        for (auto& members : groups) {
             const auto group = static_cast<std::uint32_t>(m_bases.size());
             m_bases.push_back(plane_basis(m_faces[members.front()].normal));
             double reach = 0.0;
@@ -349,20 +369,25 @@ private:
             f.uv = {-kInfinity, kInfinity, -kInfinity, kInfinity};
             return;
         }
-        const Leaf& leaf = m_leaves[f.leaf];
-        if (!leaf.cuts.empty() || leaf.clip) {
-            make_shape(f);
-            return;
-        }
         const auto& [u, v] = m_bases[f.group];
         f.uv = {kInfinity, -kInfinity, kInfinity, -kInfinity};
         for (std::uint32_t k = f.first; k < f.first + f.count; ++k) {
             const double a = dot(m_points[k], u), b = dot(m_points[k], v);
             f.uv = {std::min(f.uv[0], a), std::max(f.uv[1], a), std::min(f.uv[2], b), std::max(f.uv[3], b)};
         }
+        // Within what a CSG keeps: that box's extent in (u, v) limits it too.
+        if (const std::optional<Aabb>& kept = m_leaves[f.leaf].clip) {
+            std::array<double, 4> box{kInfinity, -kInfinity, kInfinity, -kInfinity};
+            for (const Vec3& c : kept->corners()) {
+                const double a = dot(c, u), b = dot(c, v);
+                box = {std::min(box[0], a), std::max(box[1], a), std::min(box[2], b), std::max(box[3], b)};
+            }
+            f.uv = {std::max(f.uv[0], box[0]), std::min(f.uv[1], box[1]), std::max(f.uv[2], box[2]),
+                    std::min(f.uv[3], box[3])};
+        }
     }
 
-    // The face's convex shape in its group's (u, v) less its leaf's cuts, and its bounds.
+    // The face's convex shape in its group's (u, v) less its leaf's cuts (its bounds, which sweeps use, stay).
     void make_shape(Face& f) {
         if (f.shaped) return;
         f.shaped = true;
@@ -387,28 +412,45 @@ private:
             if (std::hypot(a, b) > 1e-9) f.shape = clip(f.shape, a, b, c);
             else if (c < -kTolerance * (std::abs(cut.offset) + f.size)) f.shape.clear();  // wholly cut away
         }
-        f.uv = {kInfinity, -kInfinity, kInfinity, -kInfinity};
-        for (const Point2& q : f.shape)
-            f.uv = {std::min(f.uv[0], q[0]), std::max(f.uv[1], q[0]), std::min(f.uv[2], q[1]), std::max(f.uv[3], q[1])};
-        if (f.shape.size() < 3 || !(area(f.shape) > 0.0)) f.uv = {1.0, -1.0, 1.0, -1.0};  // nothing left
+        if (f.shape.size() < 3 || !(area(f.shape) > 0.0)) f.shape.clear();  // nothing left
     }
 
-    // A run of faces in one plane: where none lets light through or is clipped by a CSG, only faces facing the same
-    // way can matter (opaque solids touching face to face hide their contact), so each facing is swept alone.
+    // A run of faces in one plane: where none lets light through, faces facing opposite ways matter only when a CSG
+    // clips one by the other, inside one top-level object (opaque solids touching face to face hide their contact),
+    // so each facing is swept alone, and each clipped object's faces together.
     void sweep_run(const std::vector<std::size_t>& run) {
-        const bool any_order_matters = std::any_of(run.begin(), run.end(), [&](std::size_t k) {
-            const Leaf& leaf = m_leaves[m_faces[k].leaf];
-            return leaf.see_through || in_clipping(leaf.node);
-        });
-        if (any_order_matters) return sweep(run);
+        const bool see_through = std::any_of(run.begin(), run.end(),
+                                             [&](std::size_t k) { return m_leaves[m_faces[k].leaf].see_through; });
+        if (see_through) return sweep(run);
         std::vector<std::size_t> facing[2];
+        std::vector<std::pair<std::uint32_t, std::size_t>> clipped;  // (top-level object, face)
         for (std::size_t k : run) {
             const Face& f = m_faces[k];
             if (f.two_sided || f.facing > 0) facing[0].push_back(k);
             if (f.two_sided || f.facing < 0) facing[1].push_back(k);
+            const Leaf& leaf = m_leaves[f.leaf];
+            if (in_clipping(leaf.node)) clipped.emplace_back(leaf.top, k);
         }
-        for (const auto& side : facing)
-            if (side.size() > 1) sweep(side);
+        // Faces facing one way matter only with different textures: one texture shared by all settles the side.
+        for (const auto& side : facing) {
+            if (side.empty()) continue;
+            const scene::Object& first = *m_leaves[m_faces[side.front()].leaf].object;
+            const bool one_texture = std::all_of(side.begin(), side.end(), [&](std::size_t k) {
+                return m_leaves[m_faces[k].leaf].object->texture.shares(first.texture);
+            });
+            if (side.size() > 1 && !one_texture) sweep(side);
+        }
+        std::sort(clipped.begin(), clipped.end());
+        for (std::size_t begin = 0; begin < clipped.size();) {
+            std::size_t end = begin + 1;
+            while (end < clipped.size() && clipped[end].first == clipped[begin].first) ++end;
+            if (end - begin > 1) {
+                std::vector<std::size_t> same_object;
+                for (std::size_t k = begin; k < end; ++k) same_object.push_back(clipped[k].second);
+                sweep(same_object);
+            }
+            begin = end;
+        }
     }
 
     // Tests one pair of faces of a run (offsets within the window): reports them if they coincide over an area.
@@ -419,13 +461,16 @@ private:
         if (std::min(a.uv[1], b.uv[1]) - std::max(a.uv[0], b.uv[0]) <= tol) return;
         if (std::abs(a.offset - b.offset) > tol) return;
         if (length(cross(a.normal, b.normal)) > 1e-8) return;
+        // The cheap questions first: whether the choice shows, and whether the pair is known already.
+        const bool same_facing = a.two_sided || b.two_sided || a.facing == b.facing;
+        if (m_found.contains({std::min(a.leaf, b.leaf), std::max(a.leaf, b.leaf)})) return;
+        if (!matters(a.leaf, b.leaf, same_facing)) return;
         if (a.bounded && b.bounded) {
             make_shape(a);
             make_shape(b);
-            if (!overlap(a.shape, b.shape, tol)) return;
+            if (a.shape.empty() || b.shape.empty() || !overlap(a.shape, b.shape, tol)) return;
         }
-        const bool same_facing = a.two_sided || b.two_sided || a.facing == b.facing;
-        if (matters(a.leaf, b.leaf, same_facing)) found(a.leaf, b.leaf, "flat faces");
+        found(a.leaf, b.leaf, "flat faces");
     }
 
     // The pairs of a run of faces in one plane whose bounds overlap: all pairs for a short run; else the faces in a
@@ -519,6 +564,7 @@ private:
     std::vector<Round> m_rounds;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> m_found;
     std::size_t m_tests = 0;
+    std::uint32_t m_top = 0;  // the top-level object being collected
 };
 
 std::string place(const SourceLoc& loc) {
@@ -534,12 +580,14 @@ std::vector<CoincidentPair> find_coincident_surfaces(const scene::Scene& scene, 
     const auto pairs = finder.pairs(surfaces);
     std::vector<CoincidentPair> out;
     // One report per pair of places: a declared object used many times shows its pair once.
-    std::set<std::tuple<std::string, std::uint32_t, std::uint32_t, std::string, std::uint32_t, std::uint32_t>> seen;
+    std::set<std::tuple<std::uint32_t, std::uint32_t, std::size_t, std::uint32_t, std::uint32_t, std::size_t>> seen;
+    const std::hash<std::string> hash;
     std::size_t distinct = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
         const scene::Object& a = *finder.leaf(pairs[k].first).object;
         const scene::Object& b = *finder.leaf(pairs[k].second).object;
-        if (!seen.emplace(a.loc.path, a.loc.line, a.loc.column, b.loc.path, b.loc.line, b.loc.column).second) continue;
+        if (!seen.emplace(a.loc.line, a.loc.column, hash(a.loc.path), b.loc.line, b.loc.column, hash(b.loc.path)).second)
+            continue;
         ++distinct;
         if (out.size() >= limit) continue;
         auto part_of = [&](std::uint32_t leaf) -> std::string {

@@ -10,16 +10,17 @@ namespace wardray::geometry {
 
 namespace {
 
-// A flat round face (a disc, a cylinder's or cone's cap) as the 16-gon inside it.
+// A flat round face (a disc, a cylinder's or cone's cap) as the octagon inside it.
 void add_round(std::vector<FlatPiece>& out, const Vec3& center, const Vec3& outward, double radius, bool two_sided) {
     const double len = length(outward);
     if (!(len > 0.0) || !(radius > 0.0)) return;
     FlatPiece piece{outward / len, center, {}, two_sided};
     const auto [u, v] = plane_basis(piece.normal);
-    for (int k = 0; k < 16; ++k) {
-        const double angle = std::numbers::pi / 8.0 * k;
-        piece.corners.push_back(center + radius * (std::cos(angle) * u + std::sin(angle) * v));
-    }
+    const double h = std::numbers::sqrt2 / 2.0;
+    constexpr int kCos[8] = {2, 1, 0, -1, -2, -1, 0, 1};  // in units of h, 1 for 2
+    constexpr int kSin[8] = {0, 1, 2, 1, 0, -1, -2, -1};
+    auto unit = [h](int k) { return k == 2 ? 1.0 : (k == -2 ? -1.0 : k * h); };
+    for (int k = 0; k < 8; ++k) piece.corners.push_back(center + radius * (unit(kCos[k]) * u + unit(kSin[k]) * v));
     out.push_back(std::move(piece));
 }
 

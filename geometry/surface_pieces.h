@@ -61,7 +61,7 @@ struct RoundPiece {
 };
 
 /// The flat faces of a box, plane, disc, polygon (when flat), or a cylinder's or cone's caps; round faces as the
-/// 16-gon inside them, so that round faces that only touch do not overlap.
+/// octagon inside them, so that round faces that only touch do not overlap.
 std::vector<FlatPiece> flat_pieces(const scene::Shape& shape);
 /// A sphere, or a cylinder's side.
 std::vector<RoundPiece> round_pieces(const scene::Shape& shape);
