@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <deque>
 #include <limits>
 #include <functional>
 #include <map>
@@ -62,18 +63,17 @@ struct Leaf {
 // A planar face in world space: `normal` in a canonical orientation (its first clearly nonzero component
 // positive), `facing` saying whether the outward normal is +normal or -normal.
 struct Face {
-    std::uint32_t leaf = 0;
     Vec3 normal;
-    double offset = 0.0;  ///< dot(normal, p) for p on the face
-    int facing = 1;
+    double offset = 0.0;                 ///< dot(normal, p) for p on the face
+    double size = 0.0;                   ///< the largest extent of its corners
+    std::array<double, 4> uv{};          ///< bounds in its group's (u, v): u0, u1, v0, v1
+    std::uint32_t leaf = 0;
+    std::uint32_t first = 0, count = 0;  ///< its corners in Finder::m_points: world points whose hull covers it
+    std::uint32_t group = 0;             ///< its group of faces of one normal, whose basis (u, v) it is drawn in
+    std::int32_t shape = -1;             ///< its shape in Finder::m_shapes once a pair needs it
+    std::int8_t facing = 1;
     bool two_sided = false;  ///< a disc or polygon: both sides are its surface
     bool bounded = true;     ///< false for a plane
-    std::uint32_t first = 0, count = 0;  ///< its corners in Finder::m_points: world points whose hull covers it
-    double size = 0.0;                   ///< the largest extent of its corners
-    std::uint32_t group = 0;             ///< its group of faces of one normal, whose basis (u, v) it is drawn in
-    bool shaped = false;                 ///< `shape` is made (when a pair needs it)
-    std::vector<Point2> shape;           ///< in its group's (u, v): the convex hull of its corners less the cuts
-    std::array<double, 4> uv{};          ///< bounds of `shape`: u0, u1, v0, v1
 };
 
 // A sphere or a cylinder's side in world space.
@@ -205,7 +205,7 @@ private:
         n = n / len;
         Face f;
         f.leaf = leaf;
-        f.facing = canonical_sign(n);
+        f.facing = static_cast<std::int8_t>(canonical_sign(n));
         f.normal = n * static_cast<double>(f.facing);
         f.offset = dot(f.normal, world.point(p_object));
         f.two_sided = two_sided;
@@ -387,15 +387,16 @@ private:
         }
     }
 
-    // The face's convex shape in its group's (u, v) less its leaf's cuts (its bounds, which sweeps use, stay).
-    void make_shape(Face& f) {
-        if (f.shaped) return;
-        f.shaped = true;
+    // The face's convex shape in its group's (u, v), the hull of its corners less its leaf's cuts, made once (its
+    // bounds, which the sweeps use, stay); empty when nothing is left.
+    const std::vector<Point2>& make_shape(Face& f) {
+        if (f.shape >= 0) return m_shapes[static_cast<std::size_t>(f.shape)];
+        f.shape = static_cast<std::int32_t>(m_shapes.size());
         const auto& [u, v] = m_bases[f.group];
         std::vector<Point2> flat;
         for (std::uint32_t k = f.first; k < f.first + f.count; ++k)
             flat.push_back({dot(m_points[k], u), dot(m_points[k], v)});
-        f.shape = hull(std::move(flat));
+        std::vector<Point2> shape = hull(std::move(flat));
         // The cuts in the face's plane: a*u + b*v <= c with p = offset*normal + u*U + v*V.
         const Vec3 origin = f.normal * f.offset;
         std::vector<Cut> cuts = m_leaves[f.leaf].cuts;
@@ -409,10 +410,12 @@ private:
         for (const Cut& cut : cuts) {
             const double a = dot(cut.normal, u), b = dot(cut.normal, v);
             const double c = cut.offset - dot(cut.normal, origin);
-            if (std::hypot(a, b) > 1e-9) f.shape = clip(f.shape, a, b, c);
-            else if (c < -kTolerance * (std::abs(cut.offset) + f.size)) f.shape.clear();  // wholly cut away
+            if (std::hypot(a, b) > 1e-9) shape = clip(shape, a, b, c);
+            else if (c < -kTolerance * (std::abs(cut.offset) + f.size)) shape.clear();  // wholly cut away
         }
-        if (f.shape.size() < 3 || !(area(f.shape) > 0.0)) f.shape.clear();  // nothing left
+        if (shape.size() < 3 || !(area(shape) > 0.0)) shape.clear();  // nothing left
+        m_shapes.push_back(std::move(shape));
+        return m_shapes.back();
     }
 
     // A run of faces in one plane: where none lets light through, faces facing opposite ways matter only when a CSG
@@ -466,9 +469,9 @@ private:
         if (m_found.contains({std::min(a.leaf, b.leaf), std::max(a.leaf, b.leaf)})) return;
         if (!matters(a.leaf, b.leaf, same_facing)) return;
         if (a.bounded && b.bounded) {
-            make_shape(a);
-            make_shape(b);
-            if (a.shape.empty() || b.shape.empty() || !overlap(a.shape, b.shape, tol)) return;
+            const std::vector<Point2>& shape_a = make_shape(a);
+            const std::vector<Point2>& shape_b = make_shape(b);
+            if (shape_a.empty() || shape_b.empty() || !overlap(shape_a, shape_b, tol)) return;
         }
         found(a.leaf, b.leaf, "flat faces");
     }
@@ -560,6 +563,7 @@ private:
     std::vector<Leaf> m_leaves;
     std::vector<Face> m_faces;
     std::vector<Vec3> m_points;                // the faces' corners
+    std::deque<std::vector<Point2>> m_shapes;  // the faces' shapes, made when needed (stable while others are made)
     std::vector<std::pair<Vec3, Vec3>> m_bases;  // each group's (u, v)
     std::vector<Round> m_rounds;
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::string> m_found;
