@@ -54,7 +54,7 @@ struct Leaf {
     const scene::Object* object = nullptr;
     std::int32_t node = -1;   ///< the CSG node it is a child of, -1 for a top-level primitive
     bool see_through = false; ///< its textures may filter or transmit
-    std::optional<Aabb> clip; ///< what an intersection or difference above it leaves of space, when bounded
+    std::optional<Bounds> clip; ///< what an intersection or difference above it leaves of space, when bounded
     std::vector<Cut> cuts;
     bool clipped = false;     ///< below an intersection or difference, or clipped_by: its extent is not its own
     std::uint32_t top = 0;    ///< the top-level object it is part of
@@ -130,20 +130,20 @@ public:
     }
 
 private:
-    void collect(const scene::Object& o, const Transform& outer, std::int32_t node, std::optional<Aabb> clip,
+    void collect(const scene::Object& o, const Transform& outer, std::int32_t node, std::optional<Bounds> clip,
                  const std::vector<Cut>& cuts) {
         if (o.no_image) return;  // never seen by the camera
         const Transform world = o.transform.then(outer);
         // clipped_by keeps what lies inside its objects, as an intersection does.
         std::vector<Cut> clipped = cuts;
         for (const scene::Object& c : o.clipped_by) {
-            if (const std::optional<Aabb> kept = world_bounds(c, world)) clip = clip ? clip->meet(*kept) : *kept;
+            if (const std::optional<Bounds> kept = world_bounds(c, world)) clip = intersect_bounds(clip, kept);
             if (const std::optional<Cut> cut = plane_cut(c, world)) clipped.push_back(*cut);
         }
         if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
             // Only what an intersection or difference keeps of space holds its parts' surfaces (planes included).
             if (csg->op == scene::Csg::Op::Intersection || csg->op == scene::Csg::Op::Difference)
-                if (const std::optional<Aabb> kept = world_bounds(o, outer)) clip = clip ? clip->meet(*kept) : *kept;
+                if (const std::optional<Bounds> kept = world_bounds(o, outer)) clip = intersect_bounds(clip, kept);
             Node n;
             n.object = &o;
             n.parent = node;
@@ -212,7 +212,7 @@ private:
         const std::size_t mark = m_points.size();
         for (const Vec3& c : corners_object) m_points.push_back(world.point(c));
         // A plane below an intersection or difference is bounded by what that keeps: its section of that box.
-        const std::optional<Aabb>& clip = m_leaves[leaf].clip;
+        const std::optional<Bounds>& clip = m_leaves[leaf].clip;
         if (corners_object.empty() && clip) {
             for (const Vec3& c : section(*clip, n, dot(n, world.point(p_object)))) m_points.push_back(c);
             if (m_points.size() == mark) return;  // the plane misses what is kept
@@ -231,7 +231,7 @@ private:
         if (clip && f.bounded) {
             const double slack = kTolerance * std::max(f.size, std::abs(f.offset));
             for (int a = 0; a < 3; ++a)
-                if (lo[a] > clip->hi[a] + slack || hi[a] < clip->lo[a] - slack) {
+                if (lo[a] > clip->upper[a] + slack || hi[a] < clip->lower[a] - slack) {
                     m_points.resize(mark);
                     return;
                 }
@@ -276,9 +276,9 @@ private:
         r.from = std::min(dot(a, r.axis), dot(b, r.axis));
         r.to = std::max(dot(a, r.axis), dot(b, r.axis));
         // Below an intersection or difference only the part within what it keeps can show.
-        if (const std::optional<Aabb>& kept = m_leaves[leaf].clip) {
+        if (const std::optional<Bounds>& kept = m_leaves[leaf].clip) {
             double lo = kInfinity, hi = -kInfinity;
-            for (const Vec3& c : kept->corners()) {
+            for (const Vec3& c : corners(*kept)) {
                 lo = std::min(lo, dot(c, r.axis));
                 hi = std::max(hi, dot(c, r.axis));
             }
@@ -376,9 +376,9 @@ private:
             f.uv = {std::min(f.uv[0], a), std::max(f.uv[1], a), std::min(f.uv[2], b), std::max(f.uv[3], b)};
         }
         // Within what a CSG keeps: that box's extent in (u, v) limits it too.
-        if (const std::optional<Aabb>& kept = m_leaves[f.leaf].clip) {
+        if (const std::optional<Bounds>& kept = m_leaves[f.leaf].clip) {
             std::array<double, 4> box{kInfinity, -kInfinity, kInfinity, -kInfinity};
-            for (const Vec3& c : kept->corners()) {
+            for (const Vec3& c : corners(*kept)) {
                 const double a = dot(c, u), b = dot(c, v);
                 box = {std::min(box[0], a), std::max(box[1], a), std::min(box[2], b), std::max(box[3], b)};
             }
@@ -400,12 +400,12 @@ private:
         // The cuts in the face's plane: a*u + b*v <= c with p = offset*normal + u*U + v*V.
         const Vec3 origin = f.normal * f.offset;
         std::vector<Cut> cuts = m_leaves[f.leaf].cuts;
-        if (const std::optional<Aabb>& kept = m_leaves[f.leaf].clip)
+        if (const std::optional<Bounds>& kept = m_leaves[f.leaf].clip)
             for (int k = 0; k < 3; ++k) {
                 Vec3 axis;
                 axis[k] = 1.0;
-                cuts.push_back({axis, kept->hi[k], nullptr});
-                cuts.push_back({-axis, -kept->lo[k], nullptr});
+                cuts.push_back({axis, kept->upper[k], nullptr});
+                cuts.push_back({-axis, -kept->lower[k], nullptr});
             }
         for (const Cut& cut : cuts) {
             const double a = dot(cut.normal, u), b = dot(cut.normal, v);

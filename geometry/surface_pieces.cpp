@@ -29,9 +29,9 @@ double cross2(const Point2& o, const Point2& a, const Point2& b) {
 }
 
 double largest_extent(const std::vector<Vec3>& points) {
-    Aabb box;
-    for (const Vec3& p : points) box.add(p);
-    return std::max({box.hi.x - box.lo.x, box.hi.y - box.lo.y, box.hi.z - box.lo.z, 0.0});
+    Bounds box = no_bounds();
+    for (const Vec3& p : points) box = including(box, p);
+    return std::max({box.upper.x - box.lower.x, box.upper.y - box.lower.y, box.upper.z - box.lower.z, 0.0});
 }
 
 }  // namespace
@@ -39,19 +39,17 @@ double largest_extent(const std::vector<Vec3>& points) {
 std::vector<FlatPiece> flat_pieces(const scene::Shape& shape) {
     std::vector<FlatPiece> out;
     if (const auto* box = std::get_if<scene::Box>(&shape)) {
-        Aabb b;
-        b.add(box->corner1);
-        b.add(box->corner2);
+        const Bounds b = including(including(no_bounds(), box->corner1), box->corner2);
         for (int axis = 0; axis < 3; ++axis) {
             const int s = (axis + 1) % 3, t = (axis + 2) % 3;
             for (int side = 0; side < 2; ++side) {
                 FlatPiece piece;
-                piece.point = side ? b.hi : b.lo;
+                piece.point = side ? b.upper : b.lower;
                 piece.normal[axis] = side ? 1.0 : -1.0;
                 for (int i = 0; i < 4; ++i) {
                     Vec3 c = piece.point;
-                    c[s] = (i & 1) ? b.hi[s] : b.lo[s];
-                    c[t] = (i & 2) ? b.hi[t] : b.lo[t];
+                    c[s] = (i & 1) ? b.upper[s] : b.lower[s];
+                    c[t] = (i & 2) ? b.upper[t] : b.lower[t];
                     piece.corners.push_back(c);
                 }
                 out.push_back(std::move(piece));
@@ -131,23 +129,21 @@ std::pair<Vec3, Vec3> plane_basis(const Vec3& n) {
 
 // A world box around an object, when its shape is one this file knows the extent of (nothing: unbounded or
 // unknown).
-std::optional<Aabb> world_bounds(const scene::Object& o, const Transform& outer) {
+std::optional<Bounds> world_bounds(const scene::Object& o, const Transform& outer) {
     const Transform world = o.transform.then(outer);
-    Aabb local;  // in the object's own space
+    Bounds local = no_bounds();  // in the object's own space
     if (const auto* csg = std::get_if<scene::Csg>(&o.shape)) {
-        std::optional<Aabb> out;
+        std::optional<Bounds> out;
         for (std::size_t k = 0; k < csg->children.size(); ++k) {
-            const std::optional<Aabb> b = world_bounds(csg->children[k], world);
+            const std::optional<Bounds> b = world_bounds(csg->children[k], world);
             switch (csg->op) {
             case scene::Csg::Op::Union:
             case scene::Csg::Op::Merge:
                 if (!b) return std::nullopt;
-                if (!out) out = Aabb{};
-                out->add(b->lo);
-                out->add(b->hi);
+                out = out ? out->merged(*b) : *b;
                 break;
             case scene::Csg::Op::Intersection:
-                if (b) out = out ? out->meet(*b) : *b;
+                out = intersect_bounds(out, b);
                 break;
             case scene::Csg::Op::Difference:
                 if (k == 0) return b;
@@ -156,39 +152,47 @@ std::optional<Aabb> world_bounds(const scene::Object& o, const Transform& outer)
         }
         return out;
     } else if (const auto* box = std::get_if<scene::Box>(&o.shape)) {
-        local.add(box->corner1);
-        local.add(box->corner2);
+        local = including(local, box->corner1);
+        local = including(local, box->corner2);
     } else if (const auto* sphere = std::get_if<scene::Sphere>(&o.shape)) {
-        local.add(sphere->center - Vec3{1, 1, 1} * sphere->radius);
-        local.add(sphere->center + Vec3{1, 1, 1} * sphere->radius);
+        local = including(local, sphere->center - Vec3{1, 1, 1} * sphere->radius);
+        local = including(local, sphere->center + Vec3{1, 1, 1} * sphere->radius);
     } else if (const auto* cylinder = std::get_if<scene::Cylinder>(&o.shape)) {
         for (const Vec3& end : {cylinder->base, cylinder->cap}) {
-            local.add(end - Vec3{1, 1, 1} * cylinder->radius);
-            local.add(end + Vec3{1, 1, 1} * cylinder->radius);
+            local = including(local, end - Vec3{1, 1, 1} * cylinder->radius);
+            local = including(local, end + Vec3{1, 1, 1} * cylinder->radius);
         }
     } else if (const auto* cone = std::get_if<scene::Cone>(&o.shape)) {
         const double r = std::max(std::abs(cone->base_radius), std::abs(cone->cap_radius));
         for (const Vec3& end : {cone->base, cone->cap}) {
-            local.add(end - Vec3{1, 1, 1} * r);
-            local.add(end + Vec3{1, 1, 1} * r);
+            local = including(local, end - Vec3{1, 1, 1} * r);
+            local = including(local, end + Vec3{1, 1, 1} * r);
         }
     } else if (const auto* polygon = std::get_if<scene::Polygon>(&o.shape)) {
-        for (const Vec3& p : polygon->points) local.add(p);
+        for (const Vec3& p : polygon->points) local = including(local, p);
     } else {
         return std::nullopt;
     }
-    if (!(local.lo.x <= local.hi.x)) return std::nullopt;
+    if (local.empty()) return std::nullopt;
     if (o.inverse) return std::nullopt;  // all space but the shape
-    Aabb out;
-    for (const Vec3& c : local.corners()) out.add(world.point(c));
+    Bounds out = no_bounds();
+    for (const Vec3& c : corners(local)) out = including(out, world.point(c));
     for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(out.lo[k]) || !std::isfinite(out.hi[k])) return std::nullopt;
+        if (!std::isfinite(out.lower[k]) || !std::isfinite(out.upper[k])) return std::nullopt;
     return out;
 }
 
 // The points where the plane dot(n, p) = d crosses the edges of a box: their hull is the plane's section of it.
-std::vector<Vec3> section(const Aabb& box, const Vec3& n, double d) {
-    const std::vector<Vec3> c = box.corners();
+std::array<Vec3, 8> corners(const Bounds& box) {
+    std::array<Vec3, 8> out;
+    for (int i = 0; i < 8; ++i)
+        out[static_cast<std::size_t>(i)] = {(i & 1) ? box.upper.x : box.lower.x, (i & 2) ? box.upper.y : box.lower.y,
+                                            (i & 4) ? box.upper.z : box.lower.z};
+    return out;
+}
+
+std::vector<Vec3> section(const Bounds& box, const Vec3& n, double d) {
+    const std::array<Vec3, 8> c = corners(box);
     std::vector<Vec3> out;
     for (int i = 0; i < 8; ++i)
         for (int bit = 1; bit < 8; bit <<= 1) {

@@ -10,38 +10,19 @@
 
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "geometry/shape.h"
 #include "scene/object.h"
 
 namespace wardray::geometry {
 
 inline constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-/// An axis-aligned box in world space; empty when lo > hi.
-struct Aabb {
-    Vec3 lo{kUnbounded, kUnbounded, kUnbounded};
-    Vec3 hi{-kUnbounded, -kUnbounded, -kUnbounded};
-    void add(const Vec3& p) {
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], p[k]);
-            hi[k] = std::max(hi[k], p[k]);
-        }
-    }
-    Aabb meet(const Aabb& o) const {
-        Aabb r;
-        for (int k = 0; k < 3; ++k) {
-            r.lo[k] = std::max(lo[k], o.lo[k]);
-            r.hi[k] = std::min(hi[k], o.hi[k]);
-        }
-        return r;
-    }
-    std::vector<Vec3> corners() const {
-        std::vector<Vec3> out;
-        for (int i = 0; i < 8; ++i)
-            out.push_back({(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z});
-        return out;
-    }
-};
-
+/// The smallest box holding `box` and `p` (`box` may be empty(): then {p, p}).
+inline Bounds including(const Bounds& box, const Vec3& p) { return box.merged({p, p}); }
+/// An empty box, for including() points into.
+inline Bounds no_bounds() { return {{kUnbounded, kUnbounded, kUnbounded}, {-kUnbounded, -kUnbounded, -kUnbounded}}; }
+/// The eight corners of a box.
+std::array<Vec3, 8> corners(const Bounds& box);
 
 /// A flat face of a primitive in its own space: a point of its plane, its outward unit normal, and corners whose
 /// convex hull covers it (none for a plane).
@@ -75,9 +56,9 @@ double similarity_scale(const Transform& t);
 std::pair<Vec3, Vec3> plane_basis(const Vec3& n);
 /// A world box around an object, when its shape is one this file knows the extent of (nothing: unbounded or
 /// unknown); an intersection's is the meet of its parts', a difference's its first part's.
-std::optional<Aabb> world_bounds(const scene::Object& o, const Transform& outer);
+std::optional<Bounds> world_bounds(const scene::Object& o, const Transform& outer);
 /// The points where the plane dot(n, p) = d crosses the edges of a box: their hull is the plane's section of it.
-std::vector<Vec3> section(const Aabb& box, const Vec3& n, double d);
+std::vector<Vec3> section(const Bounds& box, const Vec3& n, double d);
 
 /// A point in a plane's (u, v) coordinates.
 using Point2 = std::array<double, 2>;
