@@ -10,7 +10,6 @@
 #include <limits>
 #include <functional>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -42,11 +41,10 @@ struct Node {
     bool clips = false;
 };
 
-// A half-space dot(normal, p) <= offset in world space that an intersection or difference keeps of its parts: a
-// plane among an intersection's children, or outside a plane a difference takes away.
+// A half-space an intersection or difference keeps of its parts, in world space: a plane among an intersection's
+// children, or outside a plane a difference takes away.
 struct Cut {
-    Vec3 normal;
-    double offset = 0.0;
+    HalfSpace space;
     const scene::Object* plane = nullptr;  ///< the plane it comes from (which it does not cut)
 };
 
@@ -86,16 +84,6 @@ struct Round {
     double from = 0.0, to = 0.0;  ///< the cylinder's extent along `axis`
 };
 
-// Whether light can pass a texture: every layer lets some through (an opaque layer hides those below it and the
-// object's inside), or some entry of its texture_map does.
-bool may_see_through(const scene::Texture& t) {
-    if (!t.texture_map.empty())
-        return std::any_of(t.texture_map.begin(), t.texture_map.end(),
-                           [](const auto& e) { return may_see_through(e.texture); });
-    if (scene::pigment_opaque(t.pigment)) return false;
-    return std::all_of(t.layers.begin(), t.layers.end(), [](const scene::Texture& layer) { return may_see_through(layer); });
-}
-
 class Finder {
 public:
     explicit Finder(const scene::Scene& scene) {
@@ -106,15 +94,10 @@ public:
     }
 
     // Every coincident pair found, in the order of the primitives, each pair of primitives once.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs(std::vector<std::string>& surfaces) {
+    const std::map<std::pair<std::uint32_t, std::uint32_t>, std::string>& pairs() {
         match_faces();
         match_rounds();
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-        for (const auto& [pair, surface] : m_found) {
-            out.push_back(pair);
-            surfaces.push_back(surface);
-        }
-        return out;
+        return m_found;
     }
 
     const Leaf& leaf(std::uint32_t i) const { return m_leaves[i]; }
@@ -160,15 +143,15 @@ private:
                 if (!cut) continue;
                 if (csg->op == scene::Csg::Op::Intersection) inner.push_back(*cut);
                 if (csg->op == scene::Csg::Op::Difference && k > 0)
-                    first.push_back({-cut->normal, -cut->offset, cut->plane});
+                    first.push_back({{-cut->space.normal, -cut->space.distance}, cut->plane});
             }
             for (std::size_t k = 0; k < csg->children.size(); ++k)
                 collect(csg->children[k], world, id, clip,
                         csg->op == scene::Csg::Op::Difference && k == 0 ? first : inner);
             return;
         }
-        bool see_through = may_see_through(o.texture);
-        for (const scene::Texture& inside : o.interior_texture) see_through = see_through || may_see_through(inside);
+        bool see_through = scene::texture_may_show_through(o.texture);
+        for (const scene::Texture& inside : o.interior_texture) see_through = see_through || scene::texture_may_show_through(inside);
         const auto index = static_cast<std::uint32_t>(m_leaves.size());
         std::vector<Cut> own;
         for (const Cut& c : clipped)
@@ -194,7 +177,7 @@ private:
             n = -n;
             d = -d;
         }
-        return Cut{n, d, &child};
+        return Cut{{n, d}, &child};
     }
 
     void add_face(std::uint32_t leaf, const Transform& world, const Vec3& n_object, const Vec3& p_object,
@@ -396,25 +379,10 @@ private:
         std::vector<Point2> flat;
         for (std::uint32_t k = f.first; k < f.first + f.count; ++k)
             flat.push_back({dot(m_points[k], u), dot(m_points[k], v)});
-        std::vector<Point2> shape = hull(std::move(flat));
-        // The cuts in the face's plane: a*u + b*v <= c with p = offset*normal + u*U + v*V.
-        const Vec3 origin = f.normal * f.offset;
-        std::vector<Cut> cuts = m_leaves[f.leaf].cuts;
-        if (const std::optional<Bounds>& kept = m_leaves[f.leaf].clip)
-            for (int k = 0; k < 3; ++k) {
-                Vec3 axis;
-                axis[k] = 1.0;
-                cuts.push_back({axis, kept->upper[k], nullptr});
-                cuts.push_back({-axis, -kept->lower[k], nullptr});
-            }
-        for (const Cut& cut : cuts) {
-            const double a = dot(cut.normal, u), b = dot(cut.normal, v);
-            const double c = cut.offset - dot(cut.normal, origin);
-            if (std::hypot(a, b) > 1e-9) shape = clip(shape, a, b, c);
-            else if (c < -kTolerance * (std::abs(cut.offset) + f.size)) shape.clear();  // wholly cut away
-        }
-        if (shape.size() < 3 || !(area(shape) > 0.0)) shape.clear();  // nothing left
-        m_shapes.push_back(std::move(shape));
+        std::vector<HalfSpace> cuts;
+        for (const Cut& cut : m_leaves[f.leaf].cuts) cuts.push_back(cut.space);
+        m_shapes.push_back(cut_polygon(hull(std::move(flat)), f.normal * f.offset, {u, v}, cuts,
+                                       m_leaves[f.leaf].clip, kTolerance * (f.size + std::abs(f.offset))));
         return m_shapes.back();
     }
 
@@ -493,7 +461,7 @@ private:
             if (m_faces[k].bounded) sizes.push_back(std::max(m_faces[k].uv[1] - m_faces[k].uv[0], m_faces[k].uv[3] - m_faces[k].uv[2]));
         std::nth_element(sizes.begin(), sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2), sizes.end());
         const double cell = sizes.empty() ? 0.0 : 2.0 * sizes[sizes.size() / 2];
-        std::vector<std::size_t> wide;
+        std::vector<std::size_t> wide, narrow;
         // Each face listed in every cell it covers; sorted by cell, the faces of one cell lie together.
         std::vector<std::tuple<long long, long long, std::size_t>> grid;
         auto span = [&](const Face& f) {
@@ -509,19 +477,18 @@ private:
                 wide.push_back(k);
                 continue;
             }
+            narrow.push_back(k);
             const auto c = span(f);
             for (long long i = c[0]; i <= c[1]; ++i)
                 for (long long j = c[2]; j <= c[3]; ++j) grid.emplace_back(i, j, k);
         }
         std::sort(grid.begin(), grid.end());
-        for (std::size_t x = 0; x < wide.size(); ++x)
-            for (std::size_t k : run) {
-                if (k == wide[x] || (std::find(wide.begin(), wide.begin() + static_cast<std::ptrdiff_t>(x), k) !=
-                                     wide.begin() + static_cast<std::ptrdiff_t>(x)))
-                    continue;  // each pair of wide faces once
-                if (!spend()) return;
-                test_faces(m_faces[wide[x]], m_faces[k]);
-            }
+        for (std::size_t x = 0; x < wide.size(); ++x) {
+            for (std::size_t y = x + 1; y < wide.size(); ++y)
+                if (spend()) test_faces(m_faces[wide[x]], m_faces[wide[y]]);
+            for (std::size_t k : narrow)
+                if (spend()) test_faces(m_faces[wide[x]], m_faces[k]);
+        }
         for (std::size_t begin = 0; begin < grid.size();) {
             const auto [i, j, first] = grid[begin];
             std::size_t end = begin + 1;
@@ -580,16 +547,14 @@ std::string place(const SourceLoc& loc) {
 std::vector<CoincidentPair> find_coincident_surfaces(const scene::Scene& scene, std::size_t limit,
                                                      std::size_t* total) {
     Finder finder(scene);
-    std::vector<std::string> surfaces;
-    const auto pairs = finder.pairs(surfaces);
     std::vector<CoincidentPair> out;
     // One report per pair of places: a declared object used many times shows its pair once.
     std::set<std::tuple<std::uint32_t, std::uint32_t, std::size_t, std::uint32_t, std::uint32_t, std::size_t>> seen;
     const std::hash<std::string> hash;
     std::size_t distinct = 0;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        const scene::Object& a = *finder.leaf(pairs[k].first).object;
-        const scene::Object& b = *finder.leaf(pairs[k].second).object;
+    for (const auto& [pair, surface] : finder.pairs()) {
+        const scene::Object& a = *finder.leaf(pair.first).object;
+        const scene::Object& b = *finder.leaf(pair.second).object;
         if (!seen.emplace(a.loc.line, a.loc.column, hash(a.loc.path), b.loc.line, b.loc.column, hash(b.loc.path)).second)
             continue;
         ++distinct;
@@ -598,8 +563,8 @@ std::vector<CoincidentPair> find_coincident_surfaces(const scene::Scene& scene, 
             const scene::Object* parent = finder.context(leaf);
             return parent ? std::string("the ") + scene::shape_keyword(parent->shape) + " at " + place(parent->loc) : "";
         };
-        out.push_back({a.loc, b.loc, scene::shape_keyword(a.shape), scene::shape_keyword(b.shape), surfaces[k],
-                       part_of(pairs[k].first), part_of(pairs[k].second)});
+        out.push_back({a.loc, b.loc, scene::shape_keyword(a.shape), scene::shape_keyword(b.shape), surface,
+                       part_of(pair.first), part_of(pair.second)});
     }
     if (total) *total = distinct;
     return out;

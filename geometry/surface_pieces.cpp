@@ -279,4 +279,25 @@ double area(const std::vector<Point2>& poly) {
     return 0.5 * std::abs(twice);
 }
 
+std::vector<Point2> cut_polygon(std::vector<Point2> shape, const Vec3& origin, const std::pair<Vec3, Vec3>& basis,
+                                std::vector<HalfSpace> cuts, const std::optional<Bounds>& box, double tolerance) {
+    const auto& [u, v] = basis;
+    if (box)
+        for (int k = 0; k < 3; ++k) {
+            Vec3 axis;
+            axis[k] = 1.0;
+            cuts.push_back({axis, box->upper[k]});
+            cuts.push_back({-axis, -box->lower[k]});
+        }
+    // Each cut in the plane: a*u + b*v <= c for p = origin + u*U + v*V.
+    for (const HalfSpace& cut : cuts) {
+        const double a = dot(cut.normal, u), b = dot(cut.normal, v);
+        const double c = cut.distance - dot(cut.normal, origin);
+        if (std::hypot(a, b) > 1e-9) shape = clip(shape, a, b, c);
+        else if (c < -tolerance) shape.clear();  // parallel, and the plane lies outside it
+    }
+    if (shape.size() < 3 || !(area(shape) > 0.0)) shape.clear();
+    return shape;
+}
+
 }  // namespace wardray::geometry

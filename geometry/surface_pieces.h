@@ -10,6 +10,7 @@
 
 #include "core/transform.h"
 #include "core/vec3.h"
+#include "geometry/csg_bounds.h"
 #include "geometry/shape.h"
 #include "scene/object.h"
 
@@ -70,5 +71,10 @@ std::vector<Point2> clip(const std::vector<Point2>& poly, double a, double b, do
 bool overlap(const std::vector<Point2>& a, const std::vector<Point2>& b, double tol);
 /// The area of a simple polygon.
 double area(const std::vector<Point2>& poly);
+/// What of a convex polygon lies in every half-space of `cuts` and within `box` (when given): the polygon drawn in
+/// (u, v) = `basis` of a plane through `origin`; a half-space parallel to the plane keeps all or, when it lies more
+/// than `tolerance` beyond it, nothing. Empty when nothing of positive area is left.
+std::vector<Point2> cut_polygon(std::vector<Point2> shape, const Vec3& origin, const std::pair<Vec3, Vec3>& basis,
+                                std::vector<HalfSpace> cuts, const std::optional<Bounds>& box, double tolerance);
 
 }  // namespace wardray::geometry

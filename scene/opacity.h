@@ -1,6 +1,7 @@
 // Opacity: whether a pigment, texture or object can let light through (filter or transmit), as shadow rays ask.
 #pragma once
 
+#include <algorithm>
 #include <variant>
 
 #include "scene/object.h"
@@ -49,6 +50,17 @@ inline bool object_opaque(const Object& o) {
         for (const Object& child : csg->children)
             if (!object_opaque(child)) return false;
     return true;
+}
+
+/// Whether anything behind or inside a surface of this texture may show through it: every layer lets some light
+/// through (an opaque layer hides those below it and the object's inside), or some entry of its texture_map does.
+inline bool texture_may_show_through(const Texture& t) {
+    if (!t.texture_map.empty())
+        return std::any_of(t.texture_map.begin(), t.texture_map.end(),
+                           [](const auto& e) { return texture_may_show_through(e.texture); });
+    if (pigment_opaque(t.pigment)) return false;
+    return std::all_of(t.layers.begin(), t.layers.end(),
+                       [](const Texture& layer) { return texture_may_show_through(layer); });
 }
 
 }  // namespace wardray::scene
