@@ -228,7 +228,7 @@ def converged_copy(files, work, stochastic=("radiosity",)):
         if "focal blur" in stochastic:
             new = converged_blur(new)
         if new != text:
-            (work / name).unlink(missing_ok=True)  # a link to the original: write a copy beside it
+            (work / name).unlink(missing_ok=True)  # never write through a link into the original
             (work / name).write_text(new)
             done.append(name)
     return done

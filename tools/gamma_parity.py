@@ -14,7 +14,6 @@ exit status: 0 when every scene has at least 99 % of its PNG pixels within one l
 """
 import argparse
 import pathlib
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -31,12 +30,7 @@ EXAMPLES = pathlib.Path("/usr/share/povray-3.7/scenes")
 def converged_folder(scene, stochastic, scratch):
     """A copy of the scene's folder in `scratch` (subfolders linked) with its randomness converged: the new scene
     path."""
-    for item in scene.parent.iterdir():
-        target = scratch / item.name
-        if item.is_dir():
-            target.symlink_to(item)
-        else:
-            shutil.copyfile(item, target)
+    census.scratch_copy(scene, scratch)
     census.converged_copy(census.scene_files(scene), scratch, stochastic)
     return scratch / scene.name
 
@@ -91,7 +85,7 @@ def main():
         with tempfile.TemporaryDirectory(prefix="gamma-parity-") as tmp:
             source, switches = scene, common
             if stochastic:
-                source = converged_folder(scene, stochastic, pathlib.Path(tmp))
+                source = converged_folder(scene, stochastic, pathlib.Path(tmp) / "scene")
                 switches = census.converged_options(common, stochastic)
                 name += " (converged)"
             for ext, fmt in (("png", "+FN"), ("hdr", "+FH")):
