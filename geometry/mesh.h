@@ -111,5 +111,7 @@ Vec3 bicubic_patch_uv(const scene::BicubicPatch& patch, const Vec3& params);
 
 /// POV-Ray's sub-polygons of a point list: each closes when its first point repeats; an unclosed rest is closed.
 std::vector<std::vector<Vec3>> polygon_loops(const std::vector<Vec3>& points);
+/// The plane normal of a polygon's loops (Newell's, not unit length; zero for a degenerate polygon).
+Vec3 polygon_normal(const std::vector<std::vector<Vec3>>& loops);
 
 }  // namespace wardray::geometry

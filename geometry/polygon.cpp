@@ -52,6 +52,13 @@ void mark_levels(Cdt& cdt) {
 
 }  // namespace
 
+Vec3 polygon_normal(const std::vector<std::vector<Vec3>>& loops) {
+    Vec3 normal;
+    for (const auto& loop : loops)
+        for (std::size_t i = 0; i < loop.size(); ++i) normal += cross(loop[i], loop[(i + 1) % loop.size()]);
+    return normal;
+}
+
 std::vector<std::vector<Vec3>> polygon_loops(const std::vector<Vec3>& points) {
     std::vector<std::vector<Vec3>> loops;
     std::vector<Vec3> current;
@@ -74,13 +81,7 @@ std::optional<MeshShape> MeshShape::create(const scene::Polygon& polygon) {
     const auto loops = polygon_loops(polygon.points);
     if (loops.empty()) return std::nullopt;
     // The plane of the polygon (Newell's normal of all loops), then 2-D coordinates in it.
-    Vec3 normal;
-    for (const auto& loop : loops)
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const Vec3& a = loop[i];
-            const Vec3& b = loop[(i + 1) % loop.size()];
-            normal += cross(a, b);
-        }
+    Vec3 normal = polygon_normal(loops);
     if (!(length(normal) > 0.0)) return std::nullopt;
     normal = normalize(normal);
     const Vec3 origin = loops.front().front();

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <variant>
 
+#include "geometry/mesh.h"
+
 namespace wardray::geometry {
 
 namespace {
@@ -63,12 +65,7 @@ std::vector<FlatPiece> flat_pieces(const scene::Shape& shape) {
     } else if (const auto* polygon = std::get_if<scene::Polygon>(&shape)) {
         const std::vector<Vec3>& points = polygon->points;
         if (points.size() < 3) return out;
-        Vec3 n;  // Newell's normal
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const Vec3& a = points[i];
-            const Vec3& b = points[(i + 1) % points.size()];
-            n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-        }
+        Vec3 n = polygon_normal(polygon_loops(points));  // the plane its mesh is built in
         const double len = length(n);
         if (!(len > 0.0)) return out;
         n = n / len;
