@@ -73,6 +73,19 @@ void expect_same_hit(const std::optional<Hit>& got, const std::optional<Hit>& wa
     EXPECT_TRUE(is_finite(got->position));
 }
 
+// A point to aim a ray at so that many rays graze silhouettes: near the object, or on an edge of a box nudged by up
+// to 1e-6 either way.
+Vec3 aim_at(Random& rng, const scene::Object& obj) {
+    Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
+    if (const auto* box = std::get_if<scene::Box>(&obj.shape)) {
+        for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
+        const int along = rng.integer(0, 2);
+        toward[along] = rng.uniform(box->corner1[along], box->corner2[along]);
+        toward += rng.vec(-1e-6, 1e-6);
+    }
+    return toward;
+}
+
 TEST(SceneGeometry, NearestHitMatchesBruteForce) {
     Random rng(42);
     const scene::Scene scene = random_scene(rng, 300, true, true);
@@ -107,17 +120,7 @@ TEST(SceneGeometry, DistantOriginsMatchBruteForce) {
     for (int i = 0; i < 20000; ++i) {
         Ray ray;
         ray.origin = rng.direction() * std::pow(10.0, rng.uniform(3.0, 7.0));
-        // Aim at points of object surfaces so that many rays graze silhouettes.
-        const auto& obj = scene.objects[rng.integer(0, 49)];
-        Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
-        if (const auto* box = std::get_if<scene::Box>(&obj.shape)) {
-            // A point on an edge of the box, nudged by up to 1e-6 either way.
-            for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
-            const int along = rng.integer(0, 2);
-            toward[along] = rng.uniform(box->corner1[along], box->corner2[along]);
-            toward += rng.vec(-1e-6, 1e-6);
-        }
-        ray.direction = normalize(toward - ray.origin);
+        ray.direction = normalize(aim_at(rng, scene.objects[rng.integer(0, 49)]) - ray.origin);
         const auto got = g.intersect(ray);
         expect_same_hit(got, brute_force(scene, ray), "distant ray");
         hits += got.has_value();
@@ -150,16 +153,7 @@ TEST(SceneGeometry, HugeObjectKeepsNearAndFarRaysExact) {
         Ray ray;
         const bool far = rng.chance(0.5);
         ray.origin = far ? rng.direction() * std::pow(10.0, rng.uniform(1.5, 5.4)) : rng.vec(-5.0, 5.0);
-        const auto& obj = scene.objects[rng.integer(0, 59)];
-        Vec3 toward = obj.transform.point(rng.vec(-1.5, 1.5));
-        if (const auto* box = std::get_if<scene::Box>(&obj.shape)) {
-            // A point on an edge of the box, nudged by up to 1e-6 either way.
-            for (int k = 0; k < 3; ++k) toward[k] = rng.chance(0.5) ? box->corner1[k] : box->corner2[k];
-            const int along = rng.integer(0, 2);
-            toward[along] = rng.uniform(box->corner1[along], box->corner2[along]);
-            toward += rng.vec(-1e-6, 1e-6);
-        }
-        ray.direction = normalize(toward - ray.origin);
+        ray.direction = normalize(aim_at(rng, scene.objects[rng.integer(0, 59)]) - ray.origin);
         ray.kind = static_cast<RayKind>(rng.integer(0, 3));
         const auto want = brute_force(scene, ray);
         expect_same_hit(g.intersect(ray), want, far ? "far ray" : "near ray");
