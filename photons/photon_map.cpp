@@ -120,24 +120,40 @@ namespace {
 /// A candidate photon: its (flattened) squared distance, then its address, which breaks ties the same on every run.
 using Candidate = std::pair<double, const Photon*>;
 
-/// Moves the heap's new top down to its place (a max-heap on Candidate's order).
-void sift_down(Candidate* heap, std::size_t size) {
-    std::size_t i = 0;
-    for (;;) {
-        const std::size_t left = 2 * i + 1;
-        if (left >= size) return;
-        std::size_t largest = left;
-        if (left + 1 < size && heap[largest] < heap[left + 1]) largest = left + 1;
-        if (!(heap[i] < heap[largest])) return;
-        std::swap(heap[i], heap[largest]);
-        i = largest;
+/// Keeps the nearest `limit` of more than `limit` candidates, and shrinks the reach to the farthest of them.
+void keep_nearest(std::vector<Candidate>& found, std::size_t limit, double& max_d2) {
+    std::nth_element(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(limit - 1), found.end());
+    max_d2 = found[limit - 1].first;
+    found.resize(limit);
+}
+
+// Below this many photons a subtree is read whole rather than pruned cell by cell.
+constexpr int kLeaf = 8;
+
+// Every photon of the subtree [begin, end) of the tree's array, in the order the pruned walk meets them: each node,
+// then the side of its split that `p` lies on, then the other.
+template <typename Consider>
+void scan(const std::vector<Photon>& photons, int begin, int end, const Vec3& p, Consider& consider) {
+    while (end > begin) {
+        const int mid = (begin + end - 1) / 2;
+        const Photon& ph = photons[static_cast<std::size_t>(mid)];
+        consider(ph);
+        const int axis = ph.axis;
+        const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
+        if (delta < 0.0) {
+            scan(photons, begin, mid, p, consider);
+            begin = mid + 1;
+        } else {
+            scan(photons, mid + 1, end, p, consider);
+            end = mid;
+        }
     }
 }
 
 }  // namespace
 
 void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
-                       std::vector<Candidate>& heap) const {
+                       std::vector<Candidate>& found) const {
     // Depth first, near side first, as a recursion would (the order decides which of two photons at exactly the
     // same distance is kept). A far side is visited only while its cell is within reach: the squared distance from
     // p to the cell, kept per axis as the walk goes down (Arya & Mount 1993, "Algorithms for fast vector
@@ -167,29 +183,29 @@ void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t
     Cell cell{0, static_cast<int>(m_photons.size()), 1, 0.0, {0.0, 0.0, 0.0}};
     tighten(cell);
     if (!(cell.d2 * (1.0 - 1e-12) < max_d2)) return;
+    const auto consider = [&](const Photon& ph) {
+        const Vec3 v = ph.point() - p;
+        double d2 = dot(v, v);
+        // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
+        if (n && d2 < max_d2) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
+        if (!(d2 < max_d2)) return;
+        // Candidates pile up to twice the limit; then the nearest `limit` are kept and the reach shrinks to the
+        // farthest of them (a found kept per photon costs more, as most photons in reach are replaced later).
+        found.push_back({d2, &ph});
+        if (found.size() >= 2 * limit) keep_nearest(found, limit, max_d2);
+    };
     for (;;) {
         while (cell.end - cell.begin >= 1) {
+            // A small subtree is read straight through, in the tree's order (each node before its two sides, the
+            // near side first), without the bookkeeping of its cells: fewer than kLeaf photons cost less to test
+            // than to prune.
+            if (cell.end - cell.begin <= kLeaf) {
+                scan(m_photons, cell.begin, cell.end, p, consider);
+                break;
+            }
             const int mid = (cell.begin + cell.end - 1) / 2;
             const Photon& ph = m_photons[mid];
-            const Vec3 v = ph.point() - p;
-            double d2 = dot(v, v);
-            // POV-Ray's flattened gather: a disc more than a sphere, d² · (1 + 16·|n·v|).
-            if (n && d2 < max_d2) d2 += std::fabs(dot(*n, v)) * d2 * 16.0;
-            if (d2 < max_d2) {
-                const Candidate c{d2, &ph};
-                if (heap.size() < limit) {
-                    heap.push_back(c);
-                    std::push_heap(heap.begin(), heap.end());
-                } else {
-                    // One more than the limit in reach: keep the nearest `limit` (the new photon replaces the
-                    // farthest when it is nearer), and from now on reach only as far as the farthest kept.
-                    if (c < heap.front()) {
-                        heap.front() = c;
-                        sift_down(heap.data(), heap.size());
-                    }
-                    max_d2 = heap.front().first;
-                }
-            }
+            consider(ph);
             const int axis = ph.axis;
             const double delta = (axis == 0 ? p.x : axis == 1 ? p.y : p.z) - ph.position[axis];
             Cell& far = pending[n_pending++];
@@ -216,7 +232,10 @@ void PhotonMap::search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t
         // another order than a photon's own, so it is shaded down by a trillionth: rounding can then only visit a
         // cell too many, never skip a photon at the cell's nearest corner.
         for (;;) {
-            if (n_pending == 0) return;
+            if (n_pending == 0) {
+                if (found.size() > limit) keep_nearest(found, limit, max_d2);
+                return;
+            }
             cell = pending[--n_pending];
             if (cell.d2 * (1.0 - 1e-12) < max_d2) break;
         }
@@ -229,16 +248,16 @@ void PhotonMap::gather(const Vec3& p, double size, const Vec3* n, Gathered& out)
     out.exponent_offset = m_exponent_offset;
     if (m_photons.empty() || m_gather_max <= 0) return;
     // One buffer per thread: a gather runs at every lit surface point.
-    thread_local std::vector<Candidate> heap;
-    heap.clear();
-    heap.reserve(static_cast<std::size_t>(m_gather_max));
+    thread_local std::vector<Candidate> found;
+    found.clear();
+    found.reserve(2 * static_cast<std::size_t>(m_gather_max));
     double max_d2 = size * size;
-    search(p, n, max_d2, static_cast<std::size_t>(m_gather_max), heap);
+    search(p, n, max_d2, static_cast<std::size_t>(m_gather_max), found);
     out.radius = std::sqrt(max_d2);
     // Nearest first, ties by storage order, so the sum's rounding is the same on every run.
-    std::sort(heap.begin(), heap.end());
-    out.photons.reserve(heap.size());
-    for (const auto& e : heap) out.photons.push_back(e.second);
+    std::sort(found.begin(), found.end());
+    out.photons.reserve(found.size());
+    for (const auto& e : found) out.photons.push_back(e.second);
 }
 
 void PhotonMap::gather_adaptive(const Vec3& p, const Vec3* n, Gathered& out) const {

@@ -70,10 +70,10 @@ public:
 private:
     /// Builds the subtree of [begin, end), node `id` (the root 1, a node's children 2·id and 2·id + 1).
     void build(int begin, int end, std::size_t id);
-    /// The k-nearest walk of gather: up to `limit` photons nearer than sqrt(max_d2) into the max-heap `heap`,
-    /// max_d2 shrinking to the farthest kept once it is full.
+    /// The k-nearest walk of gather: the nearest `limit` photons nearer than sqrt(max_d2) into `found` (in no
+    /// order), max_d2 shrinking to the farthest kept when more were in reach.
     void search(const Vec3& p, const Vec3* n, double& max_d2, std::size_t limit,
-                std::vector<std::pair<double, const Photon*>>& heap) const;
+                std::vector<std::pair<double, const Photon*>>& found) const;
     void estimate_radius(const scene::PhotonSettings& settings, bool media, std::uint64_t seed);
 
     std::vector<Photon> m_photons;
