@@ -315,7 +315,7 @@ Texture AppearanceReader::parse_texture_list(const Token& kw) {
     // POV-Ray compat: textures in a row are layers, the last listed on top (Link_Textures).
     if (!is_word(peek(), "texture")) fail(peek(), "expected a texture in '" + kw.text + "' but found " + describe_token(peek()));
     Texture base = parse_texture_body(next());
-    while (is_word(peek(), "texture")) base.layers.push_back(parse_texture_body(next()));
+    while (is_word(peek(), "texture")) add_layers(base, parse_texture_body(next()));
     return base;
 }
 

@@ -13,10 +13,7 @@ void link_texture(std::optional<Texture>& to, Texture tx) {
         to = std::move(tx);
         return;
     }
-    std::vector<Texture> over = std::move(tx.layers);
-    tx.layers.clear();
-    to->layers.push_back(std::move(tx));
-    for (Texture& layer : over) to->layers.push_back(std::move(layer));
+    add_layers(*to, std::move(tx));
 }
 
 /// Moves a texture and the layers it holds with the transform `tr`.

@@ -112,7 +112,7 @@ std::optional<Value> SceneReader::parse_item_value(const Token& t) {
              Texture tx = r.parse_texture_body(kw);
              // POV-Ray compat: further textures in one declaration are layers painted over the first.
              const ScopedSetting layers(r.m_directive_ends_value_at, r.m_brace_depth);
-             while (r.is_word(r.peek_expr(), "texture")) tx.layers.push_back(r.parse_texture_body(r.next()));
+             while (r.is_word(r.peek_expr(), "texture")) add_layers(tx, r.parse_texture_body(r.next()));
              return tx;
          }},
         // A declared colour map is kept as a pigment holding only that map; parse_color_map reads it back.

@@ -341,6 +341,15 @@ struct TextureMapEntry {
 /// as a list headed by the last one listed, the top, and modifies the head (Parse_Texture, Parse_Object_Mods).
 inline Texture& top_layer(Texture& t) { return t.layers.empty() ? t : t.layers.back(); }
 
+/// POV-Ray's Link_Textures: `over` and the layers it holds (a layered texture identifier) painted over `base`'s
+/// layers, in their order; the list stays flat, as the renderer reads it.
+inline void add_layers(Texture& base, Texture over) {
+    std::vector<Texture> above = std::move(over.layers);
+    over.layers.clear();
+    base.layers.push_back(std::move(over));
+    for (Texture& layer : above) base.layers.push_back(std::move(layer));
+}
+
 /// Moves a texture with the object it is on (POV-Ray's Transform_Textures): every pattern's transform is followed
 /// by `tr`. Map entries are evaluated in their parent's pattern space and are left alone.
 /// POV-Ray compat: a uv-mapped texture, pigment or normal lives in uv space and stays where it is.

@@ -35,6 +35,34 @@ TEST(Grammar, TextureTakesPigmentNormalAndFinishIdentifiers) {
     EXPECT_EQ(s.objects[1].texture->finish.ambient.r, 0.3);
 }
 
+TEST(Grammar, LayeredTextureIdentifierAsALaterLayerBringsAllItsLayers) {
+    // A user's `#declare T = texture { pigment { rgbt 1 } } texture { DMFWood6 rotate x*90 }`: DMFWood6 is two
+    // layers, and POV-Ray links both over the first, each moved by the transform (it drew the top layer's grain
+    // where wardray kept only DMFWood6's first layer). The same in a tiles list and on an object.
+    const Scene s = parse_ok(R"(
+        #declare W = texture { pigment { rgb <1, 0, 0> } } texture { pigment { rgbt <0, 1, 0, 0.5> } }
+        #declare T = texture { pigment { rgbt 1 } } texture { W translate x }
+        sphere { 0, 1 texture { T } }
+        sphere { 0, 1 texture { tiles { texture { pigment { rgbt 1 } } texture { W translate x } tile2 texture { W } } } }
+        sphere { 0, 1 texture { pigment { rgbt 1 } } texture { W translate x } }
+    )");
+    ASSERT_EQ(s.objects.size(), 3u);
+    const Texture& declared = s.objects[0].texture;
+    const Texture& tiles = s.objects[1].texture;
+    const Texture& listed = s.objects[2].texture;
+    ASSERT_EQ(tiles.texture_map.size(), 2u);
+    for (const Texture* t : {&declared, &tiles.texture_map[1].texture, &listed}) {
+        EXPECT_EQ(t->pigment.color.transmit, 1.0);
+        ASSERT_EQ(t->layers.size(), 2u);
+        EXPECT_EQ(t->layers[0].pigment.color.r, 1.0);
+        EXPECT_EQ(t->layers[1].pigment.color.g, 1.0);
+        for (const Texture& layer : t->layers) {
+            EXPECT_TRUE(layer.layers.empty());
+            EXPECT_EQ(layer.pigment.pattern.transform.point({0, 0, 0}), (Vec3{1, 0, 0}));
+        }
+    }
+}
+
 TEST(Grammar, FinishAfterALayeredTextureModifiesItsTopLayerInPlace) {
     // POV-Ray keeps a layered texture as a list headed by its last (top) layer; a pigment, normal or finish after
     // the identifier, in the texture or on the object, changes that layer only, and a finish block changes the
