@@ -54,15 +54,22 @@ nlohmann::json process_stats(const render::RenderResult& result) {
                          {"bytes_received", s.traffic.bytes_received},
                          {"exchanges", s.traffic.exchanges},
                          {"exchange_seconds", s.traffic.seconds},
-                         {"busy_cpu_seconds", s.busy_seconds}});
+                         {"busy_cpu_seconds", s.busy_seconds},
+                         {"merge_seconds", s.merge_seconds}});
     }
     nlohmann::json waves = nlohmann::json::array();
     double critical = 0.0, busy = 0.0;
     for (const render::WaveStatistics& w : result.waves) {
         critical += w.busy_max;
         busy += w.busy_sum;
+        // Each rank's wall time in the wave: its tiles, the exchange (waiting for the slowest rank) and the merge.
+        nlohmann::json by_rank = nlohmann::json::array();
+        for (const render::RankWaveTimes& t : w.ranks)
+            by_rank.push_back({{"busy_cpu_seconds", t.busy}, {"tiles_seconds", t.tiles},
+                               {"exchange_seconds", t.exchange}, {"merge_seconds", t.merge}});
         waves.push_back({{"tiles", w.tiles}, {"records", w.records}, {"bytes", w.bytes},
-                         {"busy_max_cpu_seconds", w.busy_max}, {"busy_sum_cpu_seconds", w.busy_sum}});
+                         {"busy_max_cpu_seconds", w.busy_max}, {"busy_sum_cpu_seconds", w.busy_sum},
+                         {"ranks", by_rank}});
     }
     return {{"count", result.ranks.size()},
             {"bytes_exchanged", bytes},

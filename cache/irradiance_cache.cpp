@@ -23,12 +23,11 @@ std::array<double, 2> lookup_filings(const scene::RadiositySettings& settings) {
 
 /// Neighbour clamping (Křivánek et al. 2006) of a new record against `tree`'s records and back: R_new ≤ R_i +
 /// |p_new − p_i| for the records closer than R_new, then R_i ≤ R_new + |p_i − p_new| for those whose sphere R_i
-/// holds the new point (reach ≥ 1 files them).
+/// holds the new point (only they can bind; each shrinks on its own, so the few more the scan finds change nothing).
 void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
     record.radius = tree.clamped_radius(record.position, record.radius);
-    std::vector<std::uint32_t> candidates;
-    tree.visit(record.position, [&](std::uint32_t i) { candidates.push_back(i); });
-    for (const std::uint32_t i : candidates) tree.shrink_radius(i, clamped_radius(tree.records()[i], record));
+    tree.visit_holding(record.position,
+                       [&](std::uint32_t i) { tree.shrink_radius(i, clamped_radius(tree.records()[i], record)); });
 }
 
 /// Adds the records of `tree` valid at p to `acc` in insertion order, so that the sum does not depend on how the

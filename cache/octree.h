@@ -77,6 +77,22 @@ public:
             }
         });
     }
+    /// Calls `visit(index)` for every record whose sphere of radius R_i holds q (|q − p_i| < R_i, what neighbour
+    /// clamping of a new record at q can shrink), and for a few more: the records that pass visit_near()'s float
+    /// scan, without its exact test (its float slack is far wider than a double's rounding), each at most once.
+    template <typename Visit>
+    void visit_holding(const Vec3& q, Visit&& visit) const {
+        const Filing* filing = &m_filings.front();
+        for (const Filing& f : m_filings)
+            if (f.reach >= 1.0 && f.reach < filing->reach) filing = &f;
+        std::uint32_t near[kScanBlocks * kBlock];
+        walk(*filing, q, [&](const Node& n, const Cube& cube) {
+            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
+                const std::size_t found = scan_near(n, cube, q, 1.0, begin, near);
+                for (std::size_t i = 0; i < found; ++i) visit(near[i]);
+            }
+        });
+    }
     /// The smallest R_i + |p_i − centre| over the records, or `bound` when none is smaller: the radius neighbour
     /// clamping (Křivánek et al. 2006) leaves to a new record at `centre` whose radius is `bound`. Only records
     /// closer than the bound found so far can lower it, so the walk skips every node farther away.

@@ -221,7 +221,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
             }, tile_done);
             const std::vector<int> mine = exchange.taken();
             exchange.end_wave(wave, mine, cached ? cache : nullptr);
-            if (cached) cache->merge_tiles(wave);
+            if (cached) exchange.merge_wave(wave, *cache);
             if (final_pass && exchange.distributed()) {
                 for (const int tile : mine) {
                     const int x0 = (tile % tiles_x) * settings.tile_size, y0 = (tile / tiles_x) * settings.tile_size;

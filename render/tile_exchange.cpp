@@ -22,6 +22,7 @@ using Clock = std::chrono::steady_clock;
 static_assert(std::is_trivially_copyable_v<cache::IrradianceRecord>);
 static_assert(std::is_trivially_copyable_v<lighting::RayCounters>);
 static_assert(std::is_trivially_copyable_v<RankStatistics>);
+static_assert(std::is_trivially_copyable_v<RankWaveTimes>);
 
 /// This process's processor time in seconds, every thread together.
 double cpu_seconds() {
@@ -29,6 +30,9 @@ double cpu_seconds() {
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
+
+/// Wall time in seconds from a steady clock.
+double wall_seconds() { return std::chrono::duration<double>(Clock::now().time_since_epoch()).count(); }
 
 }  // namespace
 
@@ -118,6 +122,7 @@ void TileExchange::start_wave(const std::vector<int>& wave) {
         return;
     }
     m_wave_start = cpu_seconds();
+    m_wave_wall_start = wall_seconds();
     if (m_counters) {
         // Drawn as processes become free, the costliest first when every cost is known: greedy list scheduling
         // in that order ends within the last tile's cost of the best split. The order is the same everywhere, as
@@ -171,6 +176,7 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
     m_mine.tiles += mine.size();
     if (!m_comm || wave.empty()) return;
     const double busy = cpu_seconds() - m_wave_start;
+    const double tiles_done = wall_seconds();
     m_mine.busy_seconds += busy;
     if (!cache) {
         m_unexchanged += busy;
@@ -193,6 +199,7 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
     }
     m_mine.records_made += made;
     const std::vector<Bytes> all = m_comm->allgather(out.bytes());
+    m_wave_times.push_back({busy, tiles_done - m_wave_wall_start, wall_seconds() - tiles_done, 0.0});
     WaveStatistics stats;
     stats.tiles = wave.size();
     stats.records = made;
@@ -223,6 +230,18 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
         }
     }
     m_wave_stats.push_back(stats);
+}
+
+void TileExchange::merge_wave(const std::vector<int>& wave, cache::IrradianceCache& cache) {
+    if (!m_comm) {
+        cache.merge_tiles(wave);
+        return;
+    }
+    const double start = wall_seconds();
+    cache.merge_tiles(wave);
+    const double seconds = wall_seconds() - start;
+    m_mine.merge_seconds += seconds;
+    if (!m_wave_times.empty()) m_wave_times.back().merge = seconds;
 }
 
 void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, Film* irradiance, Film* alpha,
@@ -280,16 +299,19 @@ void TileExchange::gather_image(const std::vector<TileRect>& mine, Film& film, F
         }
         if (final_wave.busy_sum > 0.0) m_wave_stats.push_back(final_wave);
     }
-    // Last, each process's share and traffic (this exchange's own bytes not included).
+    // Last, each process's share and traffic (this exchange's own bytes not included), and its times per wave.
     ByteWriter stats;
     RankStatistics s = m_mine;
     s.traffic = m_comm->traffic();
     stats.put(s);
+    for (const RankWaveTimes& t : m_wave_times) stats.put(t);
     const std::vector<Bytes> every = m_comm->gather(stats.bytes());
     m_ranks.clear();
     for (const Bytes& b : every) {
         ByteReader in(b);
         m_ranks.push_back(in.get<RankStatistics>());
+        for (std::size_t w = 0; w < m_wave_times.size() && w < m_wave_stats.size(); ++w)
+            m_wave_stats[w].ranks.push_back(in.get<RankWaveTimes>());
     }
 }
 

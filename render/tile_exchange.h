@@ -23,7 +23,17 @@ struct RankStatistics {
     std::uint64_t records_made = 0;      ///< cache records this process gathered
     std::uint64_t records_received = 0;  ///< cache records adopted from the other processes
     double busy_seconds = 0.0;           ///< processor time spent on its tiles (robust on a shared machine)
+    double merge_seconds = 0.0;          ///< wall time merging the waves' records (every process merges them all)
     Communicator::Traffic traffic;       ///< bytes sent and received, and time in exchanges
+};
+
+/// Where one process's wall time went in one wave: its share of the tiles, the exchange (mostly waiting for the
+/// slowest process) and the merge.
+struct RankWaveTimes {
+    double busy = 0.0;      ///< processor seconds on its tiles
+    double tiles = 0.0;     ///< wall seconds from the wave's start until its last tile was done
+    double exchange = 0.0;  ///< wall seconds in the exchange: waiting for the others, then the transfer
+    double merge = 0.0;     ///< wall seconds merging the wave's records
 };
 
 /// One wave of one pass across processes, for --stats and the scaling model (docs/mpi.md).
@@ -33,6 +43,7 @@ struct WaveStatistics {
     std::uint64_t bytes = 0;    ///< bytes every process sent in the wave's exchange, together
     double busy_max = 0.0;      ///< processor seconds of the busiest process: the wave's length on idle processors
     double busy_sum = 0.0;      ///< processor seconds over every process
+    std::vector<RankWaveTimes> ranks;  ///< each process's times, by rank (on process 0 after gather_image())
 };
 
 /// How the tiles of one render are shared among the processes of a Communicator, deterministically: every
@@ -69,6 +80,8 @@ public:
     /// the other processes' into their tiles' views, so that cache->merge_tiles(wave) then merges the same records
     /// everywhere. Without a cache (one wave, no records) it only keeps the time.
     void end_wave(const std::vector<int>& wave, const std::vector<int>& mine, cache::IrradianceCache* cache);
+    /// Then cache->merge_tiles(wave), timed when distributed.
+    void merge_wave(const std::vector<int>& wave, cache::IrradianceCache& cache);
     /// True when the tiles are drawn from shared counters (for --stats and tests).
     bool drawn() const { return m_counters != nullptr; }
 
@@ -101,6 +114,8 @@ private:
     mutable std::mutex m_taken_mutex;
     std::vector<int> m_taken;         ///< the current wave's tiles this process took
     double m_wave_start = 0.0;   ///< processor time when this process started its share of the wave
+    double m_wave_wall_start = 0.0;  ///< and the wall time
+    std::vector<RankWaveTimes> m_wave_times;  ///< this process's times in each exchanged wave
     double m_unexchanged = 0.0;  ///< busy time of waves without an exchange, sent with the image
     std::vector<double> m_cost;  ///< each tile's last exchanged cost (the same on every process); 0: not known
     std::vector<double> m_measured;  ///< this process's tiles' costs in the current wave

@@ -197,6 +197,40 @@ TEST(RecordOctree, ClampedRadiusMatchesBruteForce) {
     EXPECT_GT(clamped, 10);
 }
 
+// visit_holding() (what neighbour clamping shrinks) finds every record whose sphere R_i holds the point, once, even
+// after radii shrank below what was filed, and far fewer than visit()'s whole path.
+TEST(RecordOctree, HoldingVisitFindsEveryRecordWhoseSphereHoldsThePoint) {
+    for (const auto& [offset, scale] : {std::pair{Vec3{0, 0, 0}, 1.0}, std::pair{Vec3{1e4, -3e3, 7}, 50.0},
+                                        std::pair{Vec3{-0.3, 0.2, 0.1}, 1e-3}}) {
+        for (const double reach : {1.0, 1.8}) {
+            SplitMix64 rng(7);
+            RecordOctree tree(reach, {0.6, 0.3});
+            for (int i = 0; i < 2000; ++i) tree.insert(random_record(rng, offset, scale));
+            for (std::uint32_t i = 0; i < tree.size(); i += 3) tree.shrink_radius(i, 0.5 * tree.records()[i].radius);
+            std::size_t held = 0, holding_visits = 0, path_visits = 0;
+            for (int qi = 0; qi < 2000; ++qi) {
+                const IrradianceRecord& near = tree.records()[static_cast<std::size_t>(qi) % tree.size()];
+                const Vec3 q = qi % 2 == 0 ? near.position + random_direction(rng) * (uniform(rng, 0, 1.2) * near.radius)
+                                           : offset + Vec3{uniform(rng, -1, 1), uniform(rng, -1, 1),
+                                                           uniform(rng, -1, 1)} * scale;
+                std::vector<std::uint32_t> brute, found;
+                for (std::uint32_t i = 0; i < tree.size(); ++i)
+                    if (length(q - tree.records()[i].position) < tree.records()[i].radius) brute.push_back(i);
+                tree.visit_holding(q, [&](std::uint32_t i) { found.push_back(i); });
+                tree.visit(q, [&](std::uint32_t) { ++path_visits; });
+                std::sort(found.begin(), found.end());
+                EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "visited twice";
+                EXPECT_TRUE(std::includes(found.begin(), found.end(), brute.begin(), brute.end()))
+                    << "query " << qi << " scale " << scale << " reach " << reach;
+                held += brute.size();
+                holding_visits += found.size();
+            }
+            EXPECT_GT(held, 1000u);
+            EXPECT_LT(holding_visits, path_visits / 2);
+        }
+    }
+}
+
 TEST(RecordOctree, DegenerateRecordsAreKeptButNeverFound) {
     RecordOctree tree(1.8);
     IrradianceRecord bad;

@@ -156,6 +156,22 @@ TEST(Mpi, StatsCountRecordsMadeAndReceivedPerRank) {
     EXPECT_EQ(p["bytes_exchanged"], sent);
     // Rank 1 gets what rank 0 sent in every allgather; the image and statistics go to rank 0 only.
     EXPECT_GT(received, 0u);
+    // Every wave shows where each rank's time went: its tiles, the exchange and the merge of the records.
+    ASSERT_FALSE(p["waves"].empty());
+    double merged = 0.0;
+    for (const nlohmann::json& wave : p["waves"]) {
+        ASSERT_EQ(wave["ranks"].size(), 2u);
+        double busy = 0.0;
+        for (const nlohmann::json& rank : wave["ranks"]) {
+            for (const char* key : {"busy_cpu_seconds", "tiles_seconds", "exchange_seconds", "merge_seconds"})
+                EXPECT_GE(rank[key].get<double>(), 0.0) << key;
+            busy += rank["busy_cpu_seconds"].get<double>();
+            merged += rank["merge_seconds"].get<double>();
+        }
+        EXPECT_DOUBLE_EQ(busy, wave["busy_sum_cpu_seconds"].get<double>());
+    }
+    EXPECT_GT(merged, 0.0);
+    EXPECT_GT(p["ranks"][0]["merge_seconds"].get<double>(), 0.0);
 }
 
 }  // namespace
