@@ -487,10 +487,15 @@ def wardray_diagnostics(output):
     return error, features, warnings
 
 
+# wardray's warnings of a tie that rounding decides (POV-Ray's random speckle), and the caution each counts as.
+TIE_WARNINGS = (("coincident surfaces:", "coincident surfaces"), ("pattern wrap on a surface:", "pattern wrap"))
+
+
 def wardray_cautions(output):
     """What wardray warned may make its picture differ from POV-Ray's although it renders everything the scene
-    says: ["coincident surfaces"] when it found surfaces lying on one another (POV-Ray's random speckle)."""
-    return ["coincident surfaces"] if re.search(r"warning: coincident surfaces:", output) else []
+    says: "coincident surfaces" when it found surfaces lying on one another, "pattern wrap" when a texture jumps
+    exactly on a surface (both POV-Ray's random speckle), in that order."""
+    return [caution for text, caution in TIE_WARNINGS if re.search(r"warning: " + re.escape(text), output)]
 
 
 def read_time_file(path):
