@@ -76,7 +76,8 @@ double spread(int k, int axis) {
 
 class Finder {
 public:
-    explicit Finder(const scene::Scene& scene) : m_noise_generator(scene.global.noise_generator) {
+    explicit Finder(const scene::Scene& scene)
+        : m_noise_generator(scene.global.noise_generator), m_camera(scene.camera) {
         for (const scene::Object& o : scene.objects) collect(o, Transform{});
     }
 
@@ -94,10 +95,31 @@ private:
         if (!textured(texture) || m_looks >= kLookBudget) return;
         bool nested_uv = false;
         if (scene::texture_uses_uv(texture, nested_uv)) return;
-        for (const geometry::FlatPiece& piece : geometry::flat_pieces(o.shape))
-            test(o, texture, flat_samples(piece, world), "flat face");
+        for (const geometry::FlatPiece& piece : geometry::flat_pieces(o.shape)) {
+            const std::vector<Sample> samples = flat_samples(piece, world);
+            // A solid's face turned away from the camera is not seen (but for reflections): a box's bottom on a
+            // floor, say.
+            const bool solid_face = !piece.corners.empty() && !piece.two_sided && !samples.empty();
+            if (!(solid_face && turned_away(samples.front()))) test(o, texture, samples, "flat face");
+        }
         for (const geometry::RoundPiece& piece : geometry::round_pieces(o.shape))
             test(o, texture, round_samples(piece, world), piece.cylinder ? "cylinder side" : "sphere");
+    }
+
+    // Whether the camera sees the outer side of the plane through the sample from behind only: its eye is
+    // behind it, or, for an orthographic camera, every ray runs along its outward normal. Cameras whose rays do
+    // not start at one place (cylinder, mesh_camera) see everything.
+    bool turned_away(const Sample& s) const {
+        using Type = scene::Camera::Type;
+        switch (m_camera.type) {
+            case Type::Orthographic:
+                return dot(s.n, m_camera.direction) > 0.0;
+            case Type::Cylinder:
+            case Type::MeshCamera:
+                return false;
+            default:
+                return dot(s.n, m_camera.location - s.p) < 0.0;
+        }
     }
 
     static Sample placed(const Transform& world, const Vec3& p_object, const Vec3& n_object) {
@@ -275,6 +297,7 @@ private:
     }
 
     int m_noise_generator = 2;
+    const scene::Camera& m_camera;
     std::vector<Owner> m_owners;
     std::vector<PatternWrap> m_found;
     std::size_t m_looks = 0;

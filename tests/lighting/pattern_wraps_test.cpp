@@ -10,10 +10,14 @@
 namespace wardray::texture {
 namespace {
 
-// The surfaces of the scene text on which their texture jumps.
+// A camera above, in front and to the left: it sees the tops, fronts and left sides of boxes about the origin.
+const std::string kCamera = "camera { location <-3, 4, -5> look_at 0 }\n";
+
+// The surfaces of the scene text (seen by kCamera unless it has a camera) on which their texture jumps.
 std::vector<PatternWrap> wraps_in(const std::string& text, std::size_t* total = nullptr) {
     parser::ParseOptions options;
-    const parser::ParseResult r = parser::parse_string(text, "w.pov", options);
+    const std::string camera = text.find("camera") == std::string::npos ? kCamera : "";
+    const parser::ParseResult r = parser::parse_string(camera + text, "w.pov", options);
     EXPECT_TRUE(r.ok()) << text;
     if (!r.ok()) return {};
     return find_pattern_wraps(*r.scene, 10, total);
@@ -30,7 +34,7 @@ TEST(PatternWraps, AnOnionWrappingOnASphereIsFound) {
     EXPECT_EQ(found[0].part, "pigment");
     EXPECT_EQ(found[0].pattern, "onion");
     EXPECT_EQ(found[0].surface, "sphere");
-    EXPECT_EQ(found[0].object.line, 1u);
+    EXPECT_EQ(found[0].object.line, 2u);  // after the camera
     // Moved and turned with its texture, and at radius 2 (the next wrap), it still lies on a wrap.
     EXPECT_EQ(count_in("sphere { 0, 1 pigment { onion " + kOnionMap + " } rotate 30*y translate <2, 0, 2> }\n"), 1u);
     EXPECT_EQ(count_in("sphere { 0, 2 pigment { onion " + kOnionMap + " } }\n"), 1u);
@@ -59,6 +63,15 @@ TEST(PatternWraps, AGradientWrappingOnAFlatFaceIsFound) {
     // Scaled together with the object, the pattern's wraps stay on its faces.
     EXPECT_EQ(count_in("box { <0, 0.25, 0.25>, <1, 0.75, 0.75> pigment { gradient x " + map + " } scale <2.5, 1, 1> }\n"),
               1u);
+}
+
+TEST(PatternWraps, FacesTurnedAwayFromTheCameraAreNotFound) {
+    // A box on the floor whose gradient wraps on its bottom face: hidden from a camera above, seen from below.
+    const std::string box = "box { <0, 0, 0>, <1, 0.5, 1> pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n";
+    EXPECT_EQ(count_in(box), 0u);
+    EXPECT_EQ(count_in("camera { location <-3, -4, -5> look_at 0 }\n" + box), 1u);
+    EXPECT_EQ(count_in("camera { orthographic location <0, -4, 0> look_at 0 }\n" + box), 1u);
+    EXPECT_EQ(count_in("camera { orthographic location <0, 4, -1> look_at 0 }\n" + box), 0u);
 }
 
 TEST(PatternWraps, AMapEqualAcrossTheWrapShowsNothing) {
@@ -92,14 +105,14 @@ TEST(PatternWraps, NormalsAndTextureMapsAreLookedAt) {
 TEST(PatternWraps, TheWarningIsAtThePigmentAndNamesTheSurface) {
     parser::ParseOptions options;
     const parser::ParseResult r =
-        parser::parse_string("#declare T = texture {\n  pigment { onion " + kOnionMap + " }\n}\n"
+        parser::parse_string("camera { location <0, 0, -5> }\n#declare T = texture {\n  pigment { onion " + kOnionMap + " }\n}\n"
                              "sphere { 0, 1 texture { T } }\nsphere { 0, 2 texture { T } }\n",
                              "w.pov", options);
     ASSERT_TRUE(r.ok());
     const std::vector<Diagnostic> warnings = pattern_wrap_warnings(*r.scene, 1);
     ASSERT_EQ(warnings.size(), 2u);  // one surface, then the count of the rest
-    EXPECT_EQ(warnings[0].loc.line, 2u);
-    EXPECT_NE(warnings[0].message.find("sphere at w.pov:4:"), std::string::npos) << warnings[0].message;
+    EXPECT_EQ(warnings[0].loc.line, 3u);
+    EXPECT_NE(warnings[0].message.find("sphere at w.pov:5:"), std::string::npos) << warnings[0].message;
     EXPECT_NE(warnings[0].message.find("POV-Ray shows either side at random"), std::string::npos);
     EXPECT_NE(warnings[1].message.find("1 more surfaces"), std::string::npos) << warnings[1].message;
 }
