@@ -303,6 +303,14 @@ private:
     std::size_t m_looks = 0;
 };
 
+// Whether the pattern's value wraps from 1 back to 0 (a ramp through space) rather than jumping otherwise.
+bool wraps(const std::string& pattern) {
+    for (const char* p : {"gradient", "onion", "marble", "wood", "radial", "spiral1", "spiral2", "agate", "ripples",
+                          "waves", "spherical", "cylindrical", "planar", "boxed"})
+        if (pattern == p) return true;
+    return false;
+}
+
 std::string place(const SourceLoc& loc) {
     return loc.path + ':' + std::to_string(loc.line) + ':' + std::to_string(loc.column);
 }
@@ -335,13 +343,19 @@ std::vector<Diagnostic> pattern_wrap_warnings(const scene::Scene& scene, std::si
         d.loc = w.where;
         const std::string what = w.part == std::string("texture_map") ? "the texture_map of this " + w.object_kind
                                                                        : "this " + w.part;
-        const std::string pattern = w.pattern.empty() ? "a pattern inside it" : "its " + w.pattern + " pattern";
+        // Why it jumps: the pattern's value wraps (from 1 back to 0, the ramp's and the map's two ends), or
+        // quilted's normal flips at a face of its cells.
+        const std::string why = w.pattern.empty()     ? "a pattern inside it jumps there"
+                              : w.pattern == "quilted" && w.part == std::string("normal")
+                                  ? "its quilted normal flips there, at a face of its unit cells"
+                              : wraps(w.pattern) ? "its " + w.pattern + " pattern wraps there, from the end of its map to the start"
+                                                 : "its " + w.pattern + " pattern jumps there";
         const bool whole = w.surface == std::string("sphere") || w.object_kind == std::string("plane") ||
                            w.object_kind == std::string("disc") || w.object_kind == std::string("polygon");
         const std::string on = whole ? "the surface of the " + w.object_kind
                                      : "a " + w.surface + " of the " + w.object_kind;
         d.message = "pattern wrap on a surface: " + what + " changes abruptly exactly on " + on + " at " +
-                    place(w.object) + " (" + pattern + " jumps there, e.g. wrapping from 1 back to 0); POV-Ray "
+                    place(w.object) + " (" + why + "); POV-Ray "
                     "shows either side at random there (a speckle), so this picture may differ from POV-Ray's; "
                     "scale or translate the pattern or the object by a small amount";
         out.push_back(std::move(d));
