@@ -1375,8 +1375,9 @@ def write_report(path, records, missing, info, extra=()):
         "non-finite pixels.",
         f"- Categories: **match** rRMSE ≤ {pct(MATCH_RRMSE, 0)} and bad pixels ≤ {pct(MATCH_BAD, 1)}, no "
         "non-finite pixel; **differ-with-warning** not a match and wardray warned that a feature is not rendered "
-        "yet, or that its picture may differ from POV-Ray's (surfaces that lie on one another, where POV-Ray shows "
-        "either at random; the reason then still says what the measured difference comes from); "
+        "yet, or that its picture may differ from POV-Ray's (surfaces that lie on one another, or a texture that "
+        "jumps exactly on a surface, where POV-Ray shows either at random; the reason then still says what the "
+        "measured difference comes from); "
         f"**differ-silently** no such warning and rRMSE > {pct(SILENT_RRMSE, 0)} or non-finite pixels (the "
         f"worst outcome); **differ-small** no warning, not a match, rRMSE ≤ {pct(SILENT_RRMSE, 0)}; **blocked** "
         "wardray fails to parse or render (or times out); **povray-fails** POV-Ray fails or times out (no "
