@@ -99,16 +99,16 @@ private:
             const std::vector<Sample> samples = flat_samples(piece, world);
             // A solid's face turned away from the camera is not seen (but for reflections): a box's bottom on a
             // floor, say.
-            const bool solid_face = !piece.corners.empty() && !piece.two_sided && !samples.empty();
+            const bool solid_face = !piece.corners.empty() && !piece.two_sided && !o.inverse && !samples.empty();
             if (!(solid_face && turned_away(samples.front()))) test(o, texture, samples, "flat face");
         }
         for (const geometry::RoundPiece& piece : geometry::round_pieces(o.shape))
             test(o, texture, round_samples(piece, world), piece.cylinder ? "cylinder side" : "sphere");
     }
 
-    // Whether the camera sees the outer side of the plane through the sample from behind only: its eye is
-    // behind it, or, for an orthographic camera, every ray runs along its outward normal. Cameras whose rays do
-    // not start at one place (cylinder, mesh_camera) see everything.
+    // Whether the sample's outer side faces away from the camera: the eye is behind its plane or, for an
+    // orthographic camera, every ray runs along its outward normal. Cameras whose rays do not start at one place
+    // (cylinder, mesh_camera) see everything.
     bool turned_away(const Sample& s) const {
         using Type = scene::Camera::Type;
         switch (m_camera.type) {
