@@ -20,6 +20,7 @@
 #include "core/diagnostics.h"
 #include "geometry/coincident_surfaces.h"
 #include "geometry/scene_geometry.h"
+#include "texture/pattern_wraps.h"
 
 namespace wardray::app {
 
@@ -146,8 +147,11 @@ int render_one_frame(const Job& job, const Frame& frame, Clock::time_point start
     if (!group.agree(loaded.has_value(), "parse the scene")) return kExitScene;
     const scene::Scene& scene = loaded->scene;
     // Surfaces on one another, which POV-Ray draws as a random speckle: said before anything is rendered.
-    if (group.root())
+    if (group.root()) {
         for (const Diagnostic& w : geometry::coincident_surface_warnings(scene)) std::cerr << format_diagnostic(w);
+        // Likewise a texture that jumps exactly on a surface (a pattern wrapping there).
+        for (const Diagnostic& w : texture::pattern_wrap_warnings(scene)) std::cerr << format_diagnostic(w);
+    }
     if (job.options.check_only) {
         if (group.root()) describe_scene(scene, std::cout);
         return kExitOk;

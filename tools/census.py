@@ -487,10 +487,15 @@ def wardray_diagnostics(output):
     return error, features, warnings
 
 
+# wardray's warnings of a tie that rounding decides (POV-Ray's random speckle), and the caution each counts as.
+TIE_WARNINGS = (("coincident surfaces:", "coincident surfaces"), ("pattern wrap on a surface:", "pattern wrap"))
+
+
 def wardray_cautions(output):
     """What wardray warned may make its picture differ from POV-Ray's although it renders everything the scene
-    says: ["coincident surfaces"] when it found surfaces lying on one another (POV-Ray's random speckle)."""
-    return ["coincident surfaces"] if re.search(r"warning: coincident surfaces:", output) else []
+    says: "coincident surfaces" when it found surfaces lying on one another, "pattern wrap" when a texture jumps
+    exactly on a surface (both POV-Ray's random speckle), in that order."""
+    return [caution for text, caution in TIE_WARNINGS if re.search(r"warning: " + re.escape(text), output)]
 
 
 def read_time_file(path):
@@ -1370,8 +1375,9 @@ def write_report(path, records, missing, info, extra=()):
         "non-finite pixels.",
         f"- Categories: **match** rRMSE ≤ {pct(MATCH_RRMSE, 0)} and bad pixels ≤ {pct(MATCH_BAD, 1)}, no "
         "non-finite pixel; **differ-with-warning** not a match and wardray warned that a feature is not rendered "
-        "yet, or that its picture may differ from POV-Ray's (surfaces that lie on one another, where POV-Ray shows "
-        "either at random; the reason then still says what the measured difference comes from); "
+        "yet, or that its picture may differ from POV-Ray's (surfaces that lie on one another, or a texture that "
+        "jumps exactly on a surface, where POV-Ray shows either at random; the reason then still says what the "
+        "measured difference comes from); "
         f"**differ-silently** no such warning and rRMSE > {pct(SILENT_RRMSE, 0)} or non-finite pixels (the "
         f"worst outcome); **differ-small** no warning, not a match, rRMSE ≤ {pct(SILENT_RRMSE, 0)}; **blocked** "
         "wardray fails to parse or render (or times out); **povray-fails** POV-Ray fails or times out (no "

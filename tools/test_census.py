@@ -48,6 +48,18 @@ class ClassifyTest(unittest.TestCase):
                          ["coincident surfaces"])
         self.assertEqual(census.wardray_cautions("a.pov:1:1: warning: fog is not rendered yet"), [])
 
+    def test_a_pattern_wrap_warning_is_not_silent(self):
+        out = ("c.pov:25:3: warning: pattern wrap on a surface: this pigment changes abruptly exactly on the "
+               "surface of the sphere at c.pov:79:4 ...")
+        self.assertEqual(census.wardray_cautions(out), ["pattern wrap"])
+        both = "a.pov:1:1: warning: coincident surfaces: this box ...\n" + out
+        self.assertEqual(census.wardray_cautions(both), ["coincident surfaces", "pattern wrap"])
+        rec = record(rrmse=0.3)
+        rec["wardray"]["cautions"] = census.wardray_cautions(out)
+        category, reason = census.classify(rec)
+        self.assertEqual(category, "differ-with-warning")
+        self.assertTrue(reason.startswith("warned: pattern wrap; "))
+
     def test_match_needs_both_figures(self):
         self.assertEqual(self.cat(rrmse=0.01, bad=0.005), "match")
         self.assertEqual(self.cat(rrmse=0.0101, bad=0.0), "differ-small")

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <sstream>
 
 #include "process.h"
@@ -139,6 +140,30 @@ union { sphere { 0, 1 texture { T_Grain } } box { -2, -1.5 } }
     const auto r = wardray("grainy.pov --check", dir);
     ASSERT_EQ(r.exit_status, 0) << r.output;
     EXPECT_NE(r.output.find("randomness: area light jitter, crand"), std::string::npos) << r.output;
+}
+
+TEST(Cli, CheckWarnsOfAPatternWrappingOnASurfaceAtThePigment) {
+    // The melon of cantelop.pov: its rind, the sphere r = 1, is where the onion wraps from the rind's colour to the
+    // flesh's. Scaled by a small amount, the onion wraps elsewhere and nothing is said.
+    const fs::path dir = work_dir("check_wrap");
+    const std::string scene = R"(#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 2, -5> look_at 0 }
+sphere { 0, 1
+  pigment { onion color_map { [0 rgb <1, 0.5, 0>] [0.95 rgb <1, 0.5, 0>] [1 rgb <0.3, 0.6, 0>] } SCALE }
+}
+)";
+    write_file(dir / "melon.pov", std::regex_replace(scene, std::regex("SCALE"), ""));
+    write_file(dir / "fixed.pov", std::regex_replace(scene, std::regex("SCALE"), "scale 1.0001"));
+    const auto melon = wardray("melon.pov --check", dir);
+    ASSERT_EQ(melon.exit_status, 0) << melon.output;
+    EXPECT_NE(melon.output.find("melon.pov:5:3: warning: pattern wrap on a surface: this pigment"), std::string::npos)
+        << melon.output;
+    EXPECT_NE(melon.output.find("sphere at melon.pov:4:1 (its onion pattern wraps there"), std::string::npos)
+        << melon.output;
+    const auto fixed = wardray("fixed.pov --check", dir);
+    ASSERT_EQ(fixed.exit_status, 0) << fixed.output;
+    EXPECT_EQ(fixed.output.find("pattern wrap"), std::string::npos) << fixed.output;
 }
 
 TEST(Cli, CheckDescribesTheSceneAndDeclareReachesIt) {
