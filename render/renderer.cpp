@@ -160,7 +160,7 @@ std::vector<double> pretrace_sizes(const scene::RadiositySettings& rs, int width
 
 RenderResult render_image(const scene::Scene& scene, const lighting::Integrator& integrator,
                           const RenderSettings& settings, const ProgressFn& progress, cache::IrradianceCache* cache) {
-    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt, {}, {}};
+    RenderResult result{Film(settings.width, settings.height), {}, 0, 0, {}, std::nullopt, {}, {}, {}};
     if (settings.alpha) result.alpha.emplace(settings.width, settings.height);
     const camera::CameraModel camera(scene.camera, settings.width, settings.height, scene.global.noise_generator);
     // Focal blur only when the camera asks for it: a scene without it pays nothing.
