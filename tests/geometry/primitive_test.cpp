@@ -144,6 +144,48 @@ TEST(Primitives, PrismInsideFollowsTheOutline) {
     EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
 }
 
+TEST(Primitives, PrismLinearRayLevelWithTheCapMeetsTheWalls) {
+    // POV-Ray compat: interior/atten2.pov's prism, scaled by 12 and moved up by 30, whose top cap lies at y = 36, the
+    // height of the centres of pixel row 4 at 120x90 under its orthographic camera. POV-Ray's walls include both
+    // heights, so a level ray in the cap's plane crosses the walls (in and out); a hair above, it misses.
+    scene::Prism p;
+    p.height1 = -0.5;
+    p.height2 = 0.5;
+    p.points = {{-1, -0.3, 0}, {1, 0, 0}, {-1, 0.3, 0}, {-1, -0.3, 0}};
+    const Transform xf = Transform::scaling({12, 12, 12}).then(Transform::translation({-15, 30, 0}));
+    const auto inst = ShapeInstance::create(make_object(p, xf), 0);
+    ASSERT_TRUE(inst);
+    const SurfaceHits level = inst->intersect_all({-15, 36, -100}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_EQ(level.size(), 2u);
+    EXPECT_TRUE(level[0].entering);
+    EXPECT_FALSE(level[1].entering);
+    EXPECT_NEAR(level[0].t, 100 - 0.15 * 12, 1e-9);
+    EXPECT_NEAR(level[1].t, 100 + 0.15 * 12, 1e-9);
+    EXPECT_EQ(inst->intersect_all({-15, 24, -100}, {0, 0, 1}, 0.0, 1e30).size(), 2u);  // level with the base
+    EXPECT_TRUE(inst->intersect_all({-15, std::nextafter(36.0, 40.0), -100}, {0, 0, 1}, 0.0, 1e30).empty());
+    // POV-Ray compat (Prism::Inside): the base belongs to the inside, the top cap does not.
+    const auto unit = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(unit);
+    EXPECT_TRUE(unit->inside({0, -0.5, 0.05}));
+    EXPECT_TRUE(unit->inside({0, 0.25, 0.05}));
+    EXPECT_FALSE(unit->inside({0, 0.5, 0.05}));
+}
+
+TEST(Primitives, PrismLinearUnclosedOutlineIsClosed) {
+    // POV-Ray compat (Parse_Prism): a linear outline that does not end on its first point is closed.
+    scene::Prism p;
+    p.height1 = 0;
+    p.height2 = 1;
+    p.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    const SurfaceHits hits = inst->intersect_all({-1, 0.5, 1}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_NEAR(hits[0].t, 1.0, 1e-12);  // the closing wall at x = 0
+    EXPECT_NEAR(hits[0].normal.x, -1.0, 1e-12);
+    EXPECT_NEAR(hits[1].t, 3.0, 1e-12);
+}
+
 // A round outline through (±1, 0) and (0, ±1) in each spline type (control points as POV-Ray expects them).
 scene::Prism spline_prism(scene::Prism::Spline spline, bool conic) {
     using Spline = scene::Prism::Spline;
