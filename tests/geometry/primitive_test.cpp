@@ -25,6 +25,26 @@ TEST(Primitives, Cylinder) {
     }, true, 11);
 }
 
+TEST(Primitives, CylinderNormalInPovRaysArithmetic) {
+    // POV-Ray compat: language/trace.pov traces straight down onto cylinder { <-1, 0, -0.003>, <-1, 0, 0.11>, 0.5 }
+    // from <-1.499, 2, 0> and prints the normal with vstr(). POV-Ray turns its unit cylinder half round (the axis runs
+    // from the second point to the first, along -z) by a sine of pi that is not 0, so the normal's z is -7.74e-18
+    // (POV-Ray's #debug prints -0.000000000000000007741472787214), which prints as "-0.00" rather than "0.00".
+    const auto inst = ShapeInstance::create(make_object(scene::Cylinder{{-1, 0, -0.003}, {-1, 0, 0.11}, 0.5}), 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({-1.499, 2, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->normal.x, -0.998, 1e-12);
+    EXPECT_LT(hit->normal.z, 0.0);
+    EXPECT_NEAR(hit->normal.z, -7.741472787214e-18, 1e-27);
+    // Along +z the turn is none at all: the normal has no z part.
+    const auto up = ShapeInstance::create(make_object(scene::Cylinder{{-1, 0, 0.11}, {-1, 0, -0.003}, 0.5}), 0);
+    ASSERT_TRUE(up);
+    const auto hit_up = up->nearest({-1.499, 2, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit_up);
+    EXPECT_EQ(hit_up->normal.z, 0.0);
+}
+
 TEST(Primitives, Cone) {
     check_shape([](Random& r) {
         return scene::Cone{r.vec(-1, 1), r.uniform(0.0, 1.0), r.vec(-1, 1), r.uniform(0.1, 1.0), r.chance(0.3)};
