@@ -158,7 +158,8 @@ SurfaceHits LinearPrismShape::intersect_all(const LocalRay& ray, double t_min, d
             if (!(std::fabs(x0) > kPovEpsilon)) continue;
             const double w = -x1 / x0;
             if (!(w >= 0.0 && w <= 1.0)) continue;
-            const double k = std::fabs(D.x) > kPovEpsilon ? (w * s.cu + s.du - P.x) / D.x : (w * s.cv + s.dv - P.z) / D.z;
+            const double k =
+                std::fabs(D.x) > kPovEpsilon ? (w * s.cu + s.du - P.x) / D.x : (w * s.cv + s.dv - P.z) / D.z;
             // The crossing's height, both ends included.
             const double h = P.y + k * D.y;
             if (h >= m_h1 && h <= m_h2) push(k, {s.side * s.cv, 0.0, -s.side * s.cu});
