@@ -79,14 +79,16 @@ ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bo
         const Vec3 axis{base.x - cap.x, base.y - cap.y, base.z - cap.z};
         const double len = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
         const double inv = 1.0 / len;
-        m_unit_inverse = unit_cylinder_inverse(cap, {axis.x * inv, axis.y * inv, axis.z * inv}, r0, len);
+        const Vec3 unit_axis{axis.x * inv, axis.y * inv, axis.z * inv};
+        m_unit_inverse = std::make_shared<const Matrix4>(unit_cylinder_inverse(cap, unit_axis, r0, len));
     }
 }
 
 Vec3 ConeShape::cylinder_normal(const Vec3& p) const {
     // Cone::Normal: the point into unit space (MInvTransPoint), its z dropped, back as a normal (MTransNormal),
     // normalised by the reciprocal of its length (VNormalize).
-    const Matrix4& m = m_unit_inverse;
+    if (!m_unit_inverse) return Vec3{NAN, NAN, NAN};
+    const Matrix4& m = *m_unit_inverse;
     const double x = p.x * m[0][0] + p.y * m[1][0] + p.z * m[2][0] + m[3][0];
     const double y = p.x * m[0][1] + p.y * m[1][1] + p.z * m[2][1] + m[3][1];
     const double z = 0.0;
@@ -138,7 +140,7 @@ SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t
         const Vec3 p = o + t * d;
         const Vec3 pp = p - s * m_axis;
         Vec3 normal = pp - (k * (m_r0 + k * s)) * m_axis;
-        if (k == 0.0) {
+        if (m_unit_inverse) {
             // POV-Ray compat: a cylinder's normal in POV-Ray's arithmetic, at the point POV-Ray evaluates.
             const Vec3 at{ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
                           ray.origin.z + t * ray.direction.z};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 
 #include "geometry/shape.h"
@@ -27,7 +28,8 @@ public:
     double implicit(const Vec3& p) const;
 
     /// POV-Ray compat (Cone::Normal): a cylinder's side normal at object-space point `p`, as POV-Ray computes it
-    /// through its unit-cylinder transform (whose rounding leaves parts of order 1e-17 across the axis).
+    /// through its unit-cylinder transform (whose rounding leaves parts of order 1e-17 across the axis); NaN for a
+    /// cone whose radii differ.
     Vec3 cylinder_normal(const Vec3& p) const;
 
 private:
@@ -40,8 +42,9 @@ private:
     double m_r1 = 0.0;
     double m_slope = 0.0;  ///< (r1 - r0) / height
     bool m_open = false;
-    /// For a cylinder: the inverse of POV-Ray's transform of the unit cylinder (row vectors, POV-Ray's layout).
-    std::array<std::array<double, 4>, 4> m_unit_inverse{};
+    /// For a cylinder: the inverse of POV-Ray's transform of the unit cylinder (row vectors, POV-Ray's layout);
+    /// shared, to keep every shape alternative small.
+    std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_unit_inverse;
 };
 
 }  // namespace wardray::geometry
