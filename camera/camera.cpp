@@ -59,8 +59,20 @@ std::optional<geometry::Ray> CameraModel::ray(double px, double py, double lens_
     return finish(r);
 }
 
+namespace {
+
+// POV-Ray compat (VNormalize): scaled by the reciprocal of the length, not divided by it, which rounds differently.
+Vec3 pov_normalize(const Vec3& v) {
+    const double len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(len > 0.0)) return Vec3{};
+    const double inv = 1.0 / len;
+    return {v.x * inv, v.y * inv, v.z * inv};
+}
+
+}  // namespace
+
 std::optional<geometry::Ray> CameraModel::finish(ProjectedRay& r) const {
-    Vec3 direction = normalize(r.direction);
+    Vec3 direction = pov_normalize(r.direction);
     // POV-Ray compat: the camera normal tilts the direction as a surface normal at (x0, y0, 0), the projection's
     // own image coordinates.
     if (m_camera.normal)

@@ -8,12 +8,94 @@
 
 namespace wardray::geometry {
 
+namespace {
+
+using Matrix4 = std::array<std::array<double, 4>, 4>;
+
+Matrix4 identity4() { return {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
+
+// a × b, each entry summed in the order of its index (POV-Ray's MTimesB).
+Matrix4 product(const Matrix4& a, const Matrix4& b) {
+    Matrix4 r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+            r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j] + a[i][3] * b[3][j];
+    return r;
+}
+
+// POV-Ray compat (Compute_Cylinder_Data, Compute_Coordinate_Transform): the inverse of the transform that takes
+// the unit cylinder (radius 1, z from 0 to 1) to the one from `base` along the unit `axis` of length `len`: scale,
+// then a turn about an axis across z by acos(axis.z), then the move to `base`; each inverse composed as POV-Ray's
+// Compose_Transforms does (additional inverse times original inverse).
+Matrix4 unit_cylinder_inverse(const Vec3& base, Vec3 axis, double radius, double len) {
+    Matrix4 scale = identity4();
+    scale[0][0] = 1.0 / radius;
+    scale[1][1] = 1.0 / radius;
+    scale[2][2] = 1.0 / len;
+    Vec3 turn_axis;
+    if (std::fabs(axis.z) > 1.0 - kPovEpsilon) {
+        turn_axis = {1.0, 0.0, 0.0};
+        axis.z = axis.z < 0.0 ? -1.0 : 1.0;
+    } else {
+        turn_axis = {-axis.y, axis.x, 0.0};
+    }
+    // Compute_Axis_Rotation_Transform: its matrix about the normalised axis; the inverse is the transpose.
+    const double inv_len = 1.0 / std::sqrt(turn_axis.x * turn_axis.x + turn_axis.y * turn_axis.y +
+                                           turn_axis.z * turn_axis.z);
+    const Vec3 v{turn_axis.x * inv_len, turn_axis.y * inv_len, turn_axis.z * inv_len};
+    const double angle = std::acos(axis.z);
+    const double c = std::cos(angle), s = std::sin(angle);
+    Matrix4 m = identity4();
+    m[0][0] = v.x * v.x + c * (1.0 - v.x * v.x);
+    m[0][1] = v.x * v.y * (1.0 - c) + v.z * s;
+    m[0][2] = v.x * v.z * (1.0 - c) - v.y * s;
+    m[1][0] = v.x * v.y * (1.0 - c) - v.z * s;
+    m[1][1] = v.y * v.y + c * (1.0 - v.y * v.y);
+    m[1][2] = v.y * v.z * (1.0 - c) + v.x * s;
+    m[2][0] = v.x * v.z * (1.0 - c) + v.y * s;
+    m[2][1] = v.y * v.z * (1.0 - c) - v.x * s;
+    m[2][2] = v.z * v.z + c * (1.0 - v.z * v.z);
+    Matrix4 turn = identity4();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) turn[i][j] = m[j][i];
+    Matrix4 move = identity4();
+    move[3][0] = -base.x;
+    move[3][1] = -base.y;
+    move[3][2] = -base.z;
+    return product(move, product(turn, scale));
+}
+
+}  // namespace
+
 ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open)
     : m_base(base), m_r0(r0), m_r1(r1), m_open(open) {
     const Vec3 d = cap - base;
     m_height = length(d);
     m_axis = d / m_height;
     m_slope = (r1 - r0) / m_height;
+    if (r0 == r1) {
+        // POV-Ray compat: its apex is the first point (our base), its base the second (our cap); the unit
+        // cylinder's axis runs from the second to the first.
+        const Vec3 axis{base.x - cap.x, base.y - cap.y, base.z - cap.z};
+        const double len = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
+        const double inv = 1.0 / len;
+        const Vec3 unit_axis{axis.x * inv, axis.y * inv, axis.z * inv};
+        m_unit_inverse = std::make_shared<const Matrix4>(unit_cylinder_inverse(cap, unit_axis, r0, len));
+    }
+}
+
+Vec3 ConeShape::cylinder_normal(const Vec3& p) const {
+    // Cone::Normal: the point into unit space (MInvTransPoint), its z dropped, back as a normal (MTransNormal),
+    // normalised by the reciprocal of its length (VNormalize).
+    if (!m_unit_inverse) return Vec3{NAN, NAN, NAN};
+    const Matrix4& m = *m_unit_inverse;
+    const double x = p.x * m[0][0] + p.y * m[1][0] + p.z * m[2][0] + m[3][0];
+    const double y = p.x * m[0][1] + p.y * m[1][1] + p.z * m[2][1] + m[3][1];
+    const double z = 0.0;
+    const Vec3 n{x * m[0][0] + y * m[0][1] + z * m[0][2], x * m[1][0] + y * m[1][1] + z * m[1][2],
+                 x * m[2][0] + y * m[2][1] + z * m[2][2]};
+    const double inv = 1.0 / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    return {n.x * inv, n.y * inv, n.z * inv};
 }
 
 std::optional<ConeShape> ConeShape::create(const scene::Cone& c) {
@@ -57,7 +139,14 @@ SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t
         if (!(s > 0.0 && s < m_height) || !(t > t_min && t < t_max)) return;
         const Vec3 p = o + t * d;
         const Vec3 pp = p - s * m_axis;
-        const Vec3 normal = pp - (k * (m_r0 + k * s)) * m_axis;
+        Vec3 normal = pp - (k * (m_r0 + k * s)) * m_axis;
+        if (m_unit_inverse) {
+            // POV-Ray compat: a cylinder's normal in POV-Ray's arithmetic, at the point POV-Ray evaluates.
+            const Vec3 at{ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
+                          ray.origin.z + t * ray.direction.z};
+            const Vec3 pov = cylinder_normal(at);
+            if (is_finite(pov)) normal = pov;
+        }
         found[n++] = {t, normal, dot(normal, d) < 0.0};
     };
     if (a != 0.0) {

@@ -1,6 +1,8 @@
 // ConeShape: POV-Ray's `cone` and `cylinder` (a cone with equal radii), capped or `open`, in object space.
 #pragma once
 
+#include <array>
+#include <memory>
 #include <optional>
 
 #include "geometry/shape.h"
@@ -25,6 +27,11 @@ public:
     /// Zero on the surface, negative inside.
     double implicit(const Vec3& p) const;
 
+    /// POV-Ray compat (Cone::Normal): a cylinder's side normal at object-space point `p`, as POV-Ray computes it
+    /// through its unit-cylinder transform (whose rounding leaves parts of order 1e-17 across the axis); NaN for a
+    /// cone whose radii differ.
+    Vec3 cylinder_normal(const Vec3& p) const;
+
 private:
     ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open);
 
@@ -35,6 +42,9 @@ private:
     double m_r1 = 0.0;
     double m_slope = 0.0;  ///< (r1 - r0) / height
     bool m_open = false;
+    /// For a cylinder: the inverse of POV-Ray's transform of the unit cylinder (row vectors, POV-Ray's layout);
+    /// shared, to keep every shape alternative small.
+    std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_unit_inverse;
 };
 
 }  // namespace wardray::geometry

@@ -77,9 +77,11 @@ std::optional<AnyShape> make_geometry(const S& s) {
     return build_first(s, any);
 }
 
-// Prisms have two: spline outlines swept straight are solved exactly; linear outlines and conic sweeps are meshes.
+// Prisms have three: outlines swept straight are solved exactly (linear ones in POV-Ray's arithmetic, spline ones
+// by their cubic); conic sweeps are meshes.
 std::optional<AnyShape> make_geometry(const scene::Prism& s) {
-    if (s.spline != scene::Prism::Spline::Linear && !s.conic) return wrap<SplinePrismShape>(s);
+    if (s.spline == scene::Prism::Spline::Linear && !s.conic) return wrap<LinearPrismShape>(s);
+    if (!s.conic) return wrap<SplinePrismShape>(s);
     return wrap<MeshShape>(s);
 }
 

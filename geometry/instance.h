@@ -16,6 +16,7 @@
 #include "geometry/isosurface.h"
 #include "geometry/julia_fractal.h"
 #include "geometry/lathe.h"
+#include "geometry/linear_prism.h"
 #include "geometry/mesh.h"
 #include "geometry/ovus.h"
 #include "geometry/parametric.h"
@@ -37,8 +38,8 @@ namespace wardray::geometry {
 /// Any shape in object space (cylinders are cones, triangles and polygons are meshes).
 using AnyShape = std::variant<SphereShape, BoxShape, PlaneShape, ConeShape, DiscShape, TorusShape, BlobShape, MeshShape,
                               QuadricShape, PolyShape, SuperellipsoidShape, LatheShape, SorShape, SplinePrismShape,
-                              SphereSweepShape, TextShape, IsosurfaceShape, HeightFieldShape, JuliaFractalShape,
-                              CsgShape, OvusShape, ParametricShape>;
+                              LinearPrismShape, SphereSweepShape, TextShape, IsosurfaceShape, HeightFieldShape,
+                              JuliaFractalShape, CsgShape, OvusShape, ParametricShape>;
 
 /// The reason of the last ShapeInstance::create on this thread that returned nothing (cleared by the next top-level
 /// create that succeeds).

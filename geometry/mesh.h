@@ -29,7 +29,7 @@ public:
     static std::optional<MeshShape> create(const scene::Mesh& mesh);
     /// The polygon triangulated with POV-Ray's even-odd rule for holes (polygon.cpp).
     static std::optional<MeshShape> create(const scene::Polygon& polygon);
-    /// A linear-spline prism: side walls and triangulated caps, faces turned outward (prism.cpp).
+    /// A prism as side walls and triangulated caps, faces turned outward (prism.cpp; used for conic sweeps).
     static std::optional<MeshShape> create(const scene::Prism& prism);
     /// A bicubic patch tessellated as POV-Ray does, with its smooth normals (bicubic_patch.cpp).
     static std::optional<MeshShape> create(const scene::BicubicPatch& patch);

@@ -1,6 +1,6 @@
-// Prism meshes: POV-Ray's prism as side walls plus triangulated caps, for linear outlines (flat walls) and for
-// conic sweeps of spline outlines, which are sampled finely with the spline's own normals at every sample so
-// shading follows the curve rather than the facets (linear sweeps of splines are SplinePrismShape).
+// Prism meshes: POV-Ray's conic sweeps as side walls plus triangulated caps, of linear outlines (flat walls) and of
+// spline outlines, which are sampled finely with the spline's own normals at every sample so shading follows the
+// curve rather than the facets (linear sweeps are LinearPrismShape and SplinePrismShape).
 #include <algorithm>
 #include <cmath>
 

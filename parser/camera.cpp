@@ -7,6 +7,19 @@
 
 namespace wardray::parser {
 
+namespace {
+
+// POV-Ray compat (VNormalize): scaled by the reciprocal of the length, not divided by it, which rounds differently;
+// the camera's vectors then come out as POV-Ray's to the bit and so do its rays.
+Vec3 pov_normalize(const Vec3& v) {
+    const double len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+    if (!(len > 0.0)) return v;
+    const double inv = 1.0 / len;
+    return {v.x * inv, v.y * inv, v.z * inv};
+}
+
+}  // namespace
+
 Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& warning) {
     Camera cam;
     cam.type = spec.type;
@@ -43,10 +56,10 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
         } else if (planar && angle >= 180.0) {
             error = "Viewing angle has to be smaller than 180 degrees.";
         } else if (planar && angle > 0.0) {
-            // direction_length = 0.5 * right_length / tan(angle / 2)
-            const double half = angle * std::numbers::pi / 360.0;
-            direction_length = 0.5 * length(cam.right) / std::tan(half);
-            cam.direction = normalize(cam.direction) * direction_length;
+            // direction_length = 0.5 * right_length / tan(angle / 2), in POV-Ray's order (M_PI_360 is pi / 360).
+            const double half = angle * (std::numbers::pi / 360.0);
+            direction_length = length(cam.right) / std::tan(half) / 2.0;
+            cam.direction = pov_normalize(cam.direction) * direction_length;
         }
         if (!planar) cam.angle = angle;
     }
@@ -64,13 +77,13 @@ Camera resolve_camera(const CameraSpec& spec, std::string& error, std::string& w
         if (length(d) == 0.0) {
             error = "camera look_at must differ from its location";
         } else {
-            const Vec3 dir = normalize(d);
+            const Vec3 dir = pov_normalize(d);
             Vec3 right = cross(spec.sky, dir);
             if (length(right) < 1e-10 * length(spec.sky)) {
                 warning = "camera looks along its sky vector; keeping the given right vector";
                 right = cam.right;
             }
-            right = normalize(right);
+            right = pov_normalize(right);
             const Vec3 up = cross(dir, right);
             cam.direction = dir * direction_length;
             cam.right = right * (handedness > 0.0 ? right_length : -right_length);

@@ -25,6 +25,26 @@ TEST(Primitives, Cylinder) {
     }, true, 11);
 }
 
+TEST(Primitives, CylinderNormalInPovRaysArithmetic) {
+    // POV-Ray compat: language/trace.pov traces straight down onto cylinder { <-1, 0, -0.003>, <-1, 0, 0.11>, 0.5 }
+    // from <-1.499, 2, 0> and prints the normal with vstr(). POV-Ray turns its unit cylinder half round (the axis runs
+    // from the second point to the first, along -z) by a sine of pi that is not 0, so the normal's z is -7.74e-18
+    // (POV-Ray's #debug prints -0.000000000000000007741472787214), which prints as "-0.00" rather than "0.00".
+    const auto inst = ShapeInstance::create(make_object(scene::Cylinder{{-1, 0, -0.003}, {-1, 0, 0.11}, 0.5}), 0);
+    ASSERT_TRUE(inst);
+    const auto hit = inst->nearest({-1.499, 2, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit);
+    EXPECT_NEAR(hit->normal.x, -0.998, 1e-12);
+    EXPECT_LT(hit->normal.z, 0.0);
+    EXPECT_NEAR(hit->normal.z, -7.741472787214e-18, 1e-27);
+    // Along +z the turn is none at all: the normal has no z part.
+    const auto up = ShapeInstance::create(make_object(scene::Cylinder{{-1, 0, 0.11}, {-1, 0, -0.003}, 0.5}), 0);
+    ASSERT_TRUE(up);
+    const auto hit_up = up->nearest({-1.499, 2, 0}, {0, -1, 0}, 0.0, 1e30);
+    ASSERT_TRUE(hit_up);
+    EXPECT_EQ(hit_up->normal.z, 0.0);
+}
+
 TEST(Primitives, Cone) {
     check_shape([](Random& r) {
         return scene::Cone{r.vec(-1, 1), r.uniform(0.0, 1.0), r.vec(-1, 1), r.uniform(0.1, 1.0), r.chance(0.3)};
@@ -142,6 +162,48 @@ TEST(Primitives, PrismInsideFollowsTheOutline) {
     ASSERT_TRUE(h);
     EXPECT_NEAR(h->t, 4.0, 1e-12);
     EXPECT_NEAR(h->normal.y, 1.0, 1e-12);
+}
+
+TEST(Primitives, PrismLinearRayLevelWithTheCapMeetsTheWalls) {
+    // POV-Ray compat: interior/atten2.pov's prism, scaled by 12 and moved up by 30, whose top cap lies at y = 36, the
+    // height of the centres of pixel row 4 at 120x90 under its orthographic camera. POV-Ray's walls include both
+    // heights, so a level ray in the cap's plane crosses the walls (in and out); a hair above, it misses.
+    scene::Prism p;
+    p.height1 = -0.5;
+    p.height2 = 0.5;
+    p.points = {{-1, -0.3, 0}, {1, 0, 0}, {-1, 0.3, 0}, {-1, -0.3, 0}};
+    const Transform xf = Transform::scaling({12, 12, 12}).then(Transform::translation({-15, 30, 0}));
+    const auto inst = ShapeInstance::create(make_object(p, xf), 0);
+    ASSERT_TRUE(inst);
+    const SurfaceHits level = inst->intersect_all({-15, 36, -100}, {0, 0, 1}, 0.0, 1e30);
+    ASSERT_EQ(level.size(), 2u);
+    EXPECT_TRUE(level[0].entering);
+    EXPECT_FALSE(level[1].entering);
+    EXPECT_NEAR(level[0].t, 100 - 0.15 * 12, 1e-9);
+    EXPECT_NEAR(level[1].t, 100 + 0.15 * 12, 1e-9);
+    EXPECT_EQ(inst->intersect_all({-15, 24, -100}, {0, 0, 1}, 0.0, 1e30).size(), 2u);  // level with the base
+    EXPECT_TRUE(inst->intersect_all({-15, std::nextafter(36.0, 40.0), -100}, {0, 0, 1}, 0.0, 1e30).empty());
+    // POV-Ray compat (Prism::Inside): the base belongs to the inside, the top cap does not.
+    const auto unit = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(unit);
+    EXPECT_TRUE(unit->inside({0, -0.5, 0.05}));
+    EXPECT_TRUE(unit->inside({0, 0.25, 0.05}));
+    EXPECT_FALSE(unit->inside({0, 0.5, 0.05}));
+}
+
+TEST(Primitives, PrismLinearUnclosedOutlineIsClosed) {
+    // POV-Ray compat (Parse_Prism): a linear outline that does not end on its first point is closed.
+    scene::Prism p;
+    p.height1 = 0;
+    p.height2 = 1;
+    p.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+    const auto inst = ShapeInstance::create(make_object(p), 0);
+    ASSERT_TRUE(inst);
+    const SurfaceHits hits = inst->intersect_all({-1, 0.5, 1}, {1, 0, 0}, 0.0, 1e30);
+    ASSERT_EQ(hits.size(), 2u);
+    EXPECT_NEAR(hits[0].t, 1.0, 1e-12);  // the closing wall at x = 0
+    EXPECT_NEAR(hits[0].normal.x, -1.0, 1e-12);
+    EXPECT_NEAR(hits[1].t, 3.0, 1e-12);
 }
 
 // A round outline through (±1, 0) and (0, ±1) in each spline type (control points as POV-Ray expects them).

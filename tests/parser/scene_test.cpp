@@ -42,6 +42,14 @@ TEST(Camera, AngleThenLookAtHandComputed) {
     expect_vec(s.camera.up, {0, 1, 0});
 }
 
+TEST(Camera, LookAtNormalisesAsPovRayDoes) {
+    // POV-Ray compat (VNormalize): the look_at direction is scaled by the reciprocal of its length. For <3, 5, 7>
+    // that gives a z of 0.7683498199278325 where dividing by the length gives the next double down.
+    const Scene s = parse_ok("camera { location <0, 0, 0> direction z look_at <3, 5, 7> }");
+    EXPECT_EQ(s.camera.direction.z, 0.7683498199278325);
+    EXPECT_NE(s.camera.direction.z, 7.0 / std::sqrt(83.0));
+}
+
 TEST(Camera, LookAtFromAboveKeepsLengthsAndSky) {
     const Scene s = parse_ok("camera { location <0, 3, -4> direction 2*z up 0.75*y right x look_at 0 }");
     // d = (0, -3, 4) / 5; right = sky x d normalized = x; up = d x right.

@@ -80,6 +80,28 @@ TEST(Cameras, CylinderThreeMovesTheOriginUpTheAxis) {
     expect_near(right.direction, {std::sin(kPi / 4.0), 0.0, std::cos(kPi / 4.0)});
 }
 
+TEST(Cameras, PixelCentresAreAtPovRaysImageCoordinatesToTheBit) {
+    // POV-Ray compat (CreateCameraRay): y0 = ((height - 1) - (y - 0.5)) / height - 0.5 for pixel row y. For row 4 of
+    // 90 that is 0.44999999999999996, where 0.5 - 4.5 / 90 would give 0.45: interior/atten2.pov's orthographic rows
+    // lie in its prisms' cap planes, so such a bit decides a hit.
+    scene::Camera c = looking_along_z(scene::Camera::Type::Orthographic);
+    const CameraModel cam(c, 120, 90);
+    const auto ray = cam.ray(60.5, 4.5);
+    ASSERT_TRUE(ray);
+    EXPECT_EQ(ray->origin.y, 0.44999999999999996);
+    EXPECT_EQ(ray->origin.x, 0.004166666666666652);  // x0 = 60.5 / 120 - 0.5
+    // The direction scaled by the reciprocal of its length (VNormalize), not divided by it.
+    scene::Camera p = looking_along_z(scene::Camera::Type::Perspective);
+    const CameraModel persp(p, 120, 90);
+    const auto r = persp.ray(0.5, 0.5);
+    ASSERT_TRUE(r);
+    const double x0 = 0.5 / 120 - 0.5, y0 = (89 - (0.5 - 1.0)) / 90 - 0.5;
+    const double inv = 1.0 / std::sqrt(x0 * x0 + y0 * y0 + 1.0);
+    EXPECT_EQ(r->direction.x, x0 * inv);
+    EXPECT_EQ(r->direction.y, y0 * inv);
+    EXPECT_EQ(r->direction.z, 1.0 * inv);
+}
+
 TEST(Cameras, FocalBlurKeepsThePointInFocusFixed) {
     scene::Camera c = looking_along_z(scene::Camera::Type::Perspective);
     c.aperture = 2.0;
