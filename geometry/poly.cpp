@@ -1,4 +1,5 @@
-// PolyShape: the polynomial along the ray from products of powers of the linear coordinate polynomials.
+// PolyShape: the polynomial along the ray from products of powers of the linear coordinate polynomials; cubics
+// and quartics expanded and solved as POV-Ray does.
 #include "geometry/poly.h"
 
 #include <cmath>
@@ -20,6 +21,17 @@ double ipow(double v, int e) {
 constexpr int k_max_order = 35;
 // POV-Ray's INSIDE_TOLERANCE of poly.cpp (its quartic, torus and blob code tests against 0).
 constexpr double k_poly_inside_tolerance = 1e-4;
+// POV-Ray compat: poly.cpp's DEPTH_TOLERANCE (roots nearer the ray's origin are dropped) and ROOT_TOLERANCE (the
+// epsilon of Solve_Polynomial's dropping of a root near 0).
+constexpr double k_depth_tolerance = 1e-4;
+constexpr double k_root_tolerance = 1e-4;
+
+// The binomial coefficient n over k, exact for the orders allowed.
+double binomial(int n, int k) {
+    double b = 1.0;
+    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
+    return b;
+}
 
 // Coefficients (in s) of (o + s d)^e for e = 0..order, row e at out[e * (order + 1)].
 void linear_powers(double o, double d, int order, double* out) {
@@ -53,13 +65,20 @@ std::optional<PolyShape> PolyShape::from_coefficients(const double* coefficients
     return shape;
 }
 
-std::optional<PolyShape> PolyShape::create(const scene::Quartic& q) { return from_coefficients(q.coefficients.data(), 4); }
+std::optional<PolyShape> PolyShape::create(const scene::Quartic& q) {
+    auto shape = from_coefficients(q.coefficients.data(), 4);
+    if (shape) shape->m_sturm = q.sturm;
+    return shape;
+}
 
 std::optional<PolyShape> PolyShape::create(const scene::Poly& p) {
     const std::size_t terms = static_cast<std::size_t>((p.order + 1) * (p.order + 2) * (p.order + 3) / 6);
     if (p.order < 1 || p.order > k_max_order || p.coefficients.size() != terms) return std::nullopt;
     auto shape = from_coefficients(p.coefficients.data(), p.order);
-    if (shape) shape->m_inside_tolerance = k_poly_inside_tolerance;
+    if (shape) {
+        shape->m_inside_tolerance = k_poly_inside_tolerance;
+        shape->m_sturm = p.sturm;
+    }
     return shape;
 }
 
@@ -83,6 +102,68 @@ Vec3 PolyShape::gradient(const Vec3& p) const {
 }
 
 SurfaceHits PolyShape::intersect_all(const LocalRay& ray, double t_min, double t_max) const {
+    return m_order == 3 || m_order == 4 ? intersect_pov(ray, t_min, t_max) : intersect_centred(ray, t_min, t_max);
+}
+
+SurfaceHits PolyShape::intersect_pov(const LocalRay& ray, double t_min, double t_max) const {
+    SurfaceHits hits;
+    const double len = length(ray.direction);
+    if (!(len > 0.0) || !std::isfinite(len)) return hits;
+    const Vec3 d = ray.direction * (1.0 / len);
+    const int w = m_order + 1;
+    // Powers 0..order of the origin's and the unit direction's coordinates, by repeated multiplication.
+    std::vector<double> work(static_cast<std::size_t>(6 * w + 3 * w + w));
+    double* p_pow[3] = {work.data(), work.data() + w, work.data() + 2 * w};
+    double* d_pow[3] = {work.data() + 3 * w, work.data() + 4 * w, work.data() + 5 * w};
+    double* expanded[3] = {work.data() + 6 * w, work.data() + 7 * w, work.data() + 8 * w};
+    double* eqn = work.data() + 9 * w;  // eqn[h]: the coefficient of s^(order - h)
+    const double p[3] = {ray.origin.x, ray.origin.y, ray.origin.z}, u[3] = {d.x, d.y, d.z};
+    for (int a = 0; a < 3; ++a) {
+        p_pow[a][0] = d_pow[a][0] = 1.0;
+        for (int e = 1; e <= m_order; ++e) {
+            p_pow[a][e] = p[a] * (e > 1 ? p_pow[a][e - 1] : 1.0);
+            d_pow[a][e] = u[a] * (e > 1 ? d_pow[a][e - 1] : 1.0);
+        }
+    }
+    // POV-Ray compat (Poly::intersect): each monomial's factors (p + s u)^e expanded by the binomial theorem, index
+    // h the power of p, and their products summed term by term in POV-Ray's order.
+    for (const Term& t : m_terms) {
+        const int e[3] = {t.i, t.j, t.k};
+        for (int a = 0; a < 3; ++a)
+            for (int h = 0; h <= e[a]; ++h) expanded[a][h] = binomial(e[a], h) * d_pow[a][e[a] - h] * p_pow[a][h];
+        const int offset = m_order - (t.i + t.j + t.k);
+        for (int i1 = 0; i1 <= t.i; ++i1)
+            for (int j1 = 0; j1 <= t.j; ++j1)
+                for (int k1 = 0; k1 <= t.k; ++k1) {
+                    double v = t.a;
+                    v *= expanded[0][i1];
+                    v *= expanded[1][j1];
+                    v *= expanded[2][k1];
+                    eqn[offset + i1 + j1 + k1] += v;
+                }
+    }
+    // Leading coefficients exactly zero lower the order; below a quadratic POV-Ray finds nothing.
+    int lead = 0;
+    while (lead <= m_order && eqn[lead] == 0.0) ++lead;
+    const int order = m_order - lead;
+    if (order <= 1) return hits;
+    std::vector<double> depths(static_cast<std::size_t>(order));
+    const int n = solve_polynomial_pov(eqn + lead, order, depths.data(), m_sturm, k_root_tolerance);
+    for (int r = 0; r < n; ++r) {
+        if (!(depths[r] > k_depth_tolerance)) continue;
+        bool repeated = false;
+        for (int q = 0; q < r; ++q) repeated = repeated || depths[q] == depths[r];
+        const double t = depths[r] / len;
+        if (repeated || !(t > t_min && t < t_max)) continue;
+        const Vec3 normal = gradient(ray.origin + t * ray.direction);
+        if (!(length(normal) > 0.0)) continue;
+        hits.push({t, normal, dot(normal, ray.direction) < 0.0});
+    }
+    hits.sort_by_t();
+    return hits;
+}
+
+SurfaceHits PolyShape::intersect_centred(const LocalRay& ray, double t_min, double t_max) const {
     SurfaceHits hits;
     const auto line = centre_line(ray);
     if (!line) return hits;

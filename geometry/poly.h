@@ -10,9 +10,11 @@
 namespace wardray::geometry {
 
 /// The surface f(p) = 0 of a polynomial of degree at most 35 in x, y, z; inside where f is below POV-Ray's
-/// tolerance. Unbounded unless clipped or intersected. Along a ray f is a polynomial in the distance from the
-/// ray's point nearest the origin, solved by root isolation within Cauchy's root bound (with or without `sturm`:
-/// both of POV-Ray's solvers find the same real roots).
+/// tolerance. Unbounded unless clipped or intersected. Orders 3 and 4: POV-Ray compat, the polynomial in the
+/// distance along the unit direction from the ray's own origin, expanded and solved as POV-Ray 3.7 does (closed
+/// form unless `sturm`), so that where its closed forms invent roots (the thin stray lines of lemnisc2.pov) or lose
+/// them, this draws the same. Other orders: the polynomial in the distance from the ray's point nearest the
+/// origin, isolated within Cauchy's root bound (POV-Ray's Sturm sequences find the same roots, less precisely).
 class PolyShape {
 public:
     /// Returns nothing when a coefficient is not finite or all but the constant vanish.
@@ -39,10 +41,15 @@ private:
 
     PolyShape() = default;
     static std::optional<PolyShape> from_coefficients(const double* coefficients, int order);
+    /// Orders other than 3 and 4: the crossings by root isolation on the centred line.
+    SurfaceHits intersect_centred(const LocalRay& ray, double t_min, double t_max) const;
+    /// Orders 3 and 4: the crossings POV-Ray finds.
+    SurfaceHits intersect_pov(const LocalRay& ray, double t_min, double t_max) const;
 
     std::vector<Term> m_terms;
     int m_order = 4;
     double m_inside_tolerance = 0.0;
+    bool m_sturm = false;
 };
 
 }  // namespace wardray::geometry

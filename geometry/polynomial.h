@@ -1,4 +1,4 @@
-// Real roots of polynomials on an interval, isolated by the roots of the derivative.
+// Real roots of polynomials: on an interval, isolated by the roots of the derivative; or as POV-Ray 3.7 finds them.
 #pragma once
 
 namespace wardray::geometry {
@@ -9,5 +9,14 @@ namespace wardray::geometry {
 /// its evaluation, so no root is lost to cancellation as in closed-form quartic formulas; double roots without a
 /// sign change (grazing rays) may be missed. Quadratics are solved in closed form.
 int polynomial_roots(const double* c, int degree, double lo, double hi, double* roots);
+
+/// POV-Ray compat: the real roots of c[0] x^n + c[1] x^(n-1) + ... + c[n] (highest power first, n <= 35) as POV-Ray
+/// 3.7's Solve_Polynomial (polysolv.cpp) finds them, unsorted, into roots (room for n values); returns their count.
+/// Leading coefficients below 1e-10 in magnitude are dropped; quadratics, cubics and quartics are solved in closed
+/// form unless `sturm` is set (or a quartic's coefficients span more than 12 orders of magnitude), when the roots in
+/// [0, 1e7] are isolated by a Sturm sequence. With `epsilon` > 0, a cubic or quartic whose constant is below epsilon
+/// times its linear coefficient loses its root near 0. The closed forms lose roots and invent spurious ones where
+/// they are ill-conditioned; shapes that must draw what POV-Ray draws use this, not polynomial_roots.
+int solve_polynomial_pov(const double* c, int n, double* roots, bool sturm, double epsilon);
 
 }  // namespace wardray::geometry

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/constants.h"
+#include "geometry/polynomial.h"
 
 namespace wardray::geometry {
 
@@ -18,8 +19,6 @@ constexpr double inf = std::numeric_limits<double>::infinity();
 // POV-Ray compat: its EPSILON, and the DEPTH_TOLERANCE below which a closing disc is left out.
 constexpr double kEpsilon = kPovEpsilon;
 constexpr double kDiscTolerance = 1e-4;
-// POV-Ray compat: Solve_Polynomial's SMALL_ENOUGH, for leading coefficients and a quadratic's discriminant.
-constexpr double kSmallEnough = 1e-10;
 
 double cubic(const std::array<double, 4>& c, double y) { return y * (y * (y * c[3] + c[2]) + c[1]) + c[0]; }
 
@@ -63,75 +62,6 @@ bool cofactor_inverse(const double m[4][4], double inv[4][4]) {
             inv[i][j] = (i + j) % 2 == 0 ? v : -v;
         }
     return true;
-}
-
-// Real roots of x[0] y² + x[1] y + x[2] (POV-Ray compat: solve_quadratic, a near-zero discriminant of the monic
-// form taken as one double root).
-int quadratic_roots(const double* x, double* y) {
-    double a = x[0], b = -x[1], c = x[2];
-    if (a == 0.0) {
-        if (b == 0.0) return 0;
-        y[0] = c / b;
-        return 1;
-    }
-    b /= a;
-    c /= a;
-    const double d = b * b - 4.0 * c;
-    if (d > -kSmallEnough && d < kSmallEnough) {
-        y[0] = 0.5 * b;
-        return 1;
-    }
-    if (d < 0.0) return 0;
-    const double s = std::sqrt(d);
-    y[0] = (b + s) / 2.0;
-    y[1] = (b - s) / 2.0;
-    return 2;
-}
-
-// Real roots of x[0] y³ + x[1] y² + x[2] y + x[3] in closed form: three by the trigonometric method when the
-// discriminant allows, else one by Cardano's (POV-Ray compat: solve_cubic's arrangement and its lost precision).
-int cubic_roots(const double* x, double* y) {
-    if (x[0] == 0.0) return quadratic_roots(x + 1, y);
-    double a1 = x[1], a2 = x[2], a3 = x[3];
-    if (x[0] != 1.0) {
-        a1 = x[1] / x[0];
-        a2 = x[2] / x[0];
-        a3 = x[3] / x[0];
-    }
-    const double a1_sq = a1 * a1;
-    const double q = (a1_sq - 3.0 * a2) / 9.0;
-    const double r = (a1 * (a1_sq - 4.5 * a2) + 13.5 * a3) / 27.0;
-    const double q3 = q * q * q, r2 = r * r;
-    const double shift = a1 / 3.0;
-    if (q3 - r2 >= 0.0) {
-        const double theta = std::acos(r / std::sqrt(q3)) / 3.0;
-        const double scale = -2.0 * std::sqrt(q);
-        // 2π/3 and 4π/3 as POV-Ray spells them.
-        y[0] = scale * std::cos(theta) - shift;
-        y[1] = scale * std::cos(theta + 2.0943951023931954923084) - shift;
-        y[2] = scale * std::cos(theta + 4.1887902047863909846168) - shift;
-        return 3;
-    }
-    const double s = std::pow(std::sqrt(r2 - q3) + std::fabs(r), 1.0 / 3.0);
-    y[0] = (r < 0.0 ? s + q / s : -(s + q / s)) - shift;
-    return 1;
-}
-
-// Real roots of the polynomial x[0] y^order + ... + x[order] for order 2 or 3, highest power first (POV-Ray compat:
-// Solve_Polynomial without Sturm sequences, which first drops leading coefficients below 1e-10 in magnitude).
-int pov_roots(const double* x, int order, double* y) {
-    int lead = 0;
-    while (lead < order && std::fabs(x[lead]) < kSmallEnough) ++lead;
-    const double* c = x + lead;
-    switch (order - lead) {
-        case 1:
-            if (c[0] == 0.0) return 0;
-            y[0] = -c[1] / c[0];
-            return 1;
-        case 2: return quadratic_roots(c, y);
-        case 3: return cubic_roots(c, y);
-        default: return 0;
-    }
 }
 
 }  // namespace
@@ -179,7 +109,7 @@ std::optional<SorShape> SorShape::create(const scene::Sor& sor) {
         double x[4] = {P[i + 1].x, P[i + 2].x, P[i + 1].x, P[i + 2].x};
         const double slope[3] = {3.0 * c[3], 2.0 * c[2], c[1]};
         double roots[2];
-        for (int nr = pov_roots(slope, 2, roots); nr--;)
+        for (int nr = solve_polynomial_pov(slope, 2, roots, false, 0.0); nr--;)
             if (roots[nr] >= w1 && roots[nr] <= w2) x[nr] = std::sqrt(cubic(c, roots[nr]));
         const double r_in = first_min(first_min(x[0], x[1]), first_min(x[2], x[3]));
         const double r_out = first_max(first_max(x[0], x[1]), first_max(x[2], x[3]));
@@ -311,7 +241,7 @@ SurfaceHits SorShape::intersect_all(const LocalRay& ray, double t_min, double t_
                              D.y * (P.y * (3.0 * A * P.y + 2.0 * B) + C) - 2.0 * (P.x * D.x + P.z * D.z),
                              P.y * (P.y * (A * P.y + B) + C) + Dc - P.x * P.x - P.z * P.z};
         double roots[3];
-        for (int nr = pov_roots(x, 3, roots); nr--;) {
+        for (int nr = solve_polynomial_pov(x, 3, roots, false, 0.0); nr--;) {
             const double k = roots[nr];
             const double h = P.y + k * D.y;
             if (!(h >= piece.y_min && h <= piece.y_max)) continue;

@@ -131,7 +131,11 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
     // fade of the interiors it leaves.
     Vec3 filter{1.0, 1.0, 1.0};
     double t_origin = 0.0;
-    double t0 = m_geometry.self_intersection_offset(p);
+    // POV-Ray compat (TracePointLightShadowRay's SmallToleranceRayObjectCondition): a shadow ray sees no crossing
+    // within SMALL_TOLERANCE, ten times MIN_ISECT_DEPTH, of where it starts, so leaves of overlapping transparent
+    // spheres a hair apart do not shadow each other.
+    const double small_tolerance = 10.0 * m_geometry.min_isect_parameter(dir);
+    double t0 = std::fmax(m_geometry.self_intersection_offset(p), small_tolerance);
     const double t1 = distance - t0;
     for (int crossing = 0; crossing < 64 && t0 < t1; ++crossing) {
         ++ctx.rays.shadow;
@@ -173,9 +177,8 @@ Vec3 LightSampler::shadow_filter(const scene::Light& light, const Vec3& p, const
         if (interiors.size == 0 || !interiors.remove(object)) interiors.push(object);
         if (max_abs_component(filter) < kPovEpsilon) return {};
         t_origin = hit->t;
-        // POV-Ray compat: its shadow ray starts anew at the crossing, so the next crossing must be MIN_ISECT_DEPTH on.
-        t0 = hit->t + std::fmax(m_geometry.self_intersection_offset(hit->position),
-                                m_geometry.min_isect_parameter(dir));
+        // POV-Ray compat: its shadow ray starts anew at the crossing, so the next crossing must be SMALL_TOLERANCE on.
+        t0 = hit->t + std::fmax(m_geometry.self_intersection_offset(hit->position), small_tolerance);
     }
     return filter * fog_over(t_origin, distance);
 }

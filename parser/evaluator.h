@@ -60,6 +60,9 @@ protected:
     std::shared_ptr<const UserFunction> parse_user_function(const Token& kw);
     /// Reads the argument list of a call of `f` and evaluates it at parse time.
     Numeric call_user_function(const Token& name, const UserFunction& f);
+    /// The scene's global noise_generator as read so far (2 until global_settings names one): POV-Ray's parse-time
+    /// calls of pattern functions use it, as its renders do.
+    virtual int scene_noise_generator() { return 2; }
     friend class FunctionCompiler;
 
     /// Reads `{ [S] [type] T, value ... }` after the keyword `spline`.

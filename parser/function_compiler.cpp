@@ -526,7 +526,7 @@ Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) 
             else if (args.size() != program.arity())
                 fail(name, what + " takes " + std::to_string(program.arity()) + " argument(s) but " +
                                std::to_string(args.size()) + " were given");
-            return Numeric::scalar(program.evaluate(args));
+            return Numeric::scalar(program.evaluate(args, EvalContext{scene_noise_generator()}));
         }
         case UserFunction::Kind::Transform: {
             args.resize(3, 0.0);
@@ -538,7 +538,8 @@ Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) 
                 return Numeric::scalar(0.0);
             }
             args.resize(std::max<std::size_t>(args.size(), 3), 0.0);
-            return Numeric::scalar(m_options.pattern_value(f.pigment->pattern, {args[0], args[1], args[2]}, 2));
+            return Numeric::scalar(
+                m_options.pattern_value(f.pigment->pattern, {args[0], args[1], args[2]}, scene_noise_generator()));
         }
         case UserFunction::Kind::Pigment:
             if (!m_options.pigment_value) {
@@ -546,7 +547,8 @@ Numeric Evaluator::call_user_function(const Token& name, const UserFunction& f) 
                 return Numeric::color(Color{});
             }
             args.resize(std::max<std::size_t>(args.size(), 3), 0.0);
-            return Numeric::color(m_options.pigment_value(*f.pigment, {args[0], args[1], args[2]}, 2));
+            return Numeric::color(
+                m_options.pigment_value(*f.pigment, {args[0], args[1], args[2]}, scene_noise_generator()));
         case UserFunction::Kind::Spline:
             if (args.size() != 1) fail(name, what + " is a spline function: it takes 1 argument");
             return spline_value(*f.spline, f.spline->type, args[0]);

@@ -104,7 +104,7 @@ HeightField Parser::read_height_field(const Token& kw) {
                     h = grey16_height(encode16(m_options.pattern_value(f->pigment->pattern, p, noise_generator)));
                 } else {
                     const std::array<double, 3> args{p.x, p.y, p.z};
-                    h = grey16_height(encode16(f->program->evaluate(args)));
+                    h = grey16_height(encode16(f->program->evaluate(args, EvalContext{noise_generator})));
                 }
                 grid->heights[static_cast<std::size_t>(z) * width + i] = h;
             }

@@ -57,6 +57,8 @@ protected:
     static void read_material_modifier(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     static void read_interior_texture(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     static void read_double_illuminate(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
+    /// `sturm [bool]`: Sturm sequences instead of closed forms for a cubic or quartic (parser/shapes.cpp).
+    static void read_sturm(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     /// An object's `photons { }` block (parser/photons.cpp).
     static void read_object_photons(ObjectReader& r, ObjectValue& ov, const Token& kw, ModifierState& state);
     /// A light's `photons { refraction reflection area_light }` block.

@@ -411,7 +411,7 @@ void ObjectReader::parse_object_modifiers(ObjectValue& ov, bool compound) {
                      set_children_hollow(part.object, hollow);
                  }
              }},
-            {"sturm", [](ObjectReader&, ObjectValue&, const Token&, ModifierState&) {}},
+            {"sturm", &read_sturm},
             // POV-Ray compat: an acceleration hint of height fields, blobs and meshes; the picture is the same.
             {"hierarchy",
              [](ObjectReader& r, ObjectValue&, const Token&, ModifierState&) { r.parse_bool_optional(); }},

@@ -17,6 +17,7 @@ protected:
 
     /// Reads one top-level statement.
     void parse_statement();
+    int scene_noise_generator() final { return m_builder.global().noise_generator; }
     /// Places an object statement's parts and lights in the scene, with the default texture where none is given.
     void place_object(ObjectValue ov);
     /// Gives `o` (when `own_texture`: its texture was given on it) and its CSG children with textures of their own

@@ -460,4 +460,13 @@ std::vector<Object> Parser::parse_object_list(const Token& kw, const std::vector
     }
 }
 
+// Other shapes' roots are found alike with or without Sturm sequences; the flag reaches only polynomials.
+void ObjectReader::read_sturm(ObjectReader& r, ObjectValue& ov, const Token&, ModifierState&) {
+    const bool sturm = r.parse_bool_optional();
+    for (ObjectPart& part : ov.parts) {
+        if (auto* q = std::get_if<scene::Quartic>(&part.object.shape)) q->sturm = sturm;
+        if (auto* p = std::get_if<scene::Poly>(&part.object.shape)) p->sturm = sturm;
+    }
+}
+
 }  // namespace wardray::parser

@@ -173,6 +173,7 @@ struct Superellipsoid {
 /// POV-Ray's order (x⁴, x³y, x³z, x³, x²y², ..., z, 1: descending powers of x, then y, then z); inside where negative.
 struct Quartic {
     std::vector<double> coefficients = std::vector<double>(35);  ///< on the heap, as a bicubic patch's points
+    bool sturm = false;  ///< roots by Sturm sequences rather than POV-Ray's closed form
     bool operator==(const Quartic&) const = default;
 };
 
@@ -189,6 +190,7 @@ struct Poly {
     }
     int order = 2;
     std::vector<double> coefficients;  ///< (order + 1)(order + 2)(order + 3) / 6 of them
+    bool sturm = false;                ///< Sturm sequences for orders 3 and 4 (higher ones always)
     bool operator==(const Poly&) const = default;
 };
 

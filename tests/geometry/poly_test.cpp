@@ -1,5 +1,6 @@
 // Tests of PolyShape for cubic, poly and polynomial: random products of spheres and planes (whose surfaces are
-// known) against their factors, finite-difference normals, the inside tolerance, scales and the three readers.
+// known) against their factors, finite-difference normals, the inside tolerance, scales and the three readers;
+// POV-Ray's Solve_Polynomial (solve_polynomial_pov) and the closed-form quartic's stray roots.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include "geometry/instance.h"
+#include "geometry/polynomial.h"
 #include "parser/parse.h"
 #include "test_util.h"
 
@@ -114,7 +116,10 @@ TEST(Poly, ProductsOfSpheresAndPlanesCrossWhereTheirFactorsDo) {
     int checked = 0;
     for (int trial = 0; trial < 300; ++trial) {
         const Factors f = random_factors(rng);
-        const auto shape = PolyShape::create(product(f));
+        // Sturm sequences: POV-Ray's closed-form cubic and quartic lose digits (up to 1e-5 here).
+        scene::Poly p = product(f);
+        p.sturm = true;
+        const auto shape = PolyShape::create(p);
         ASSERT_TRUE(shape);
         const Vec3 o = rng.direction() * rng.uniform(3.0, 10.0);
         const Vec3 d = (rng.vec(-0.8, 0.8) - o) * rng.uniform(0.2, 5.0);
@@ -185,11 +190,87 @@ TEST(Poly, CubicPolyAndPolynomialReadTheSameSurface) {
     EXPECT_EQ(a.coefficients, c.coefficients);
     EXPECT_STREQ(a.keyword(), "cubic");
     EXPECT_STREQ(c.keyword(), "polynomial");
+    // Only the cubic says sturm.
+    EXPECT_TRUE(a.sturm);
+    EXPECT_FALSE(b.sturm);
     const auto shape = PolyShape::create(a);
     ASSERT_TRUE(shape);
     EXPECT_NEAR(shape->implicit({2, 3, 0.5}), 8 + 4.5 - 1, 1e-12);
     EXPECT_FALSE(parser::parse_string("poly { 36, <1> }", "bad.pov", options).ok());
     EXPECT_FALSE(parser::parse_string("polynomial { 2, xyz(2, 1, 0): 1 }", "bad.pov", options).ok());
+}
+
+// The roots solve_polynomial_pov finds, sorted.
+std::vector<double> pov_roots(std::vector<double> c, bool sturm, double epsilon) {
+    std::vector<double> r(c.size());
+    r.resize(static_cast<std::size_t>(solve_polynomial_pov(c.data(), static_cast<int>(c.size()) - 1, r.data(),
+                                                           sturm, epsilon)));
+    std::sort(r.begin(), r.end());
+    return r;
+}
+
+TEST(PovSolver, ClosedFormAndSturmFindWellSeparatedRoots) {
+    // (x - 1)(x - 2)(x - 3)(x - 4) and (x² - 1)(x² - 4), highest power first.
+    for (const bool sturm : {false, true}) {
+        const std::vector<double> r = pov_roots({1, -10, 35, -50, 24}, sturm, 0.0);
+        ASSERT_EQ(r.size(), 4u) << sturm;
+        for (int i = 0; i < 4; ++i) EXPECT_NEAR(r[i], i + 1.0, 1e-9) << sturm;
+    }
+    // The closed form returns every real root; Sturm sequences only those in [0, 1e7], as POV-Ray's do.
+    EXPECT_EQ(pov_roots({1, 0, -5, 0, 4}, false, 0.0).size(), 4u);
+    const std::vector<double> positive = pov_roots({1, 0, -5, 0, 4}, true, 0.0);
+    ASSERT_EQ(positive.size(), 2u);
+    EXPECT_NEAR(positive[0], 1.0, 1e-9);
+    EXPECT_NEAR(positive[1], 2.0, 1e-9);
+}
+
+TEST(PovSolver, PovRaysShortcutsChangeTheRootsFound) {
+    // 1e-6 x⁴ = 1e7: coefficients 13 orders of magnitude apart send the quartic to Sturm sequences, which see
+    // only the positive root.
+    const std::vector<double> difficult = pov_roots({1e-6, 0, 0, 0, -1e7}, false, 0.0);
+    ASSERT_EQ(difficult.size(), 1u);
+    EXPECT_NEAR(difficult[0], std::pow(1e13, 0.25), 1e-9 * std::pow(1e13, 0.25));
+    // x (x - 1)(x - 2)(x - 3) + 1e-9: a constant below epsilon times the linear term drops the root near 0.
+    EXPECT_EQ(pov_roots({1, -6, 11, -6, 1e-9}, false, 1e-4).size(), 3u);
+    EXPECT_EQ(pov_roots({1, -6, 11, -6, 1e-9}, false, 0.0).size(), 4u);
+    // A leading coefficient below 1e-10 lowers the order: (x - 1)(x - 2).
+    const std::vector<double> quadratic = pov_roots({1e-11, 1, -3, 2}, false, 0.0);
+    ASSERT_EQ(quadratic.size(), 2u);
+    EXPECT_NEAR(quadratic[0], 1.0, 1e-12);
+    EXPECT_NEAR(quadratic[1], 2.0, 1e-12);
+}
+
+TEST(Poly, ClosedFormQuarticFindsStrayRoots) {
+    // lemnisc2.pov's lemniscate of Gerono x⁴ - x² + y² + z² = 0 (POV-Ray's 35 quartic coefficients). Rays aimed
+    // at its x axis beyond the surface (|x| > 1) meet nothing, but where the direction is nearly perpendicular to
+    // the axis the quartic's leading coefficient nearly vanishes and POV-Ray's closed form returns roots anyway:
+    // the thin stray lines of its picture. Sturm sequences (POV-Ray's, as ill-conditioned there) find far fewer.
+    scene::Quartic q;
+    q.coefficients[0] = 1.0;    // x⁴
+    q.coefficients[9] = -1.0;   // x²
+    q.coefficients[25] = 1.0;   // y²
+    q.coefficients[32] = 1.0;   // z²
+    const auto closed = PolyShape::create(q);
+    q.sturm = true;
+    const auto sturm = PolyShape::create(q);
+    ASSERT_TRUE(closed && sturm);
+    Random rng(5);
+    int stray_closed = 0, stray_sturm = 0;
+    const auto stray = [](const PolyShape& shape, const LocalRay& ray) {
+        const SurfaceHits h = shape.intersect_all(ray, 0.0, 1e30);
+        for (std::size_t k = 0; k < h.size(); ++k)
+            if (std::fabs(shape.implicit(ray.origin + h[k].t * ray.direction)) > 1e-3) return 1;
+        return 0;
+    };
+    for (int n = 0; n < 8000; ++n) {
+        const Vec3 o = rng.direction() * rng.uniform(2.5, 5.0);
+        const double x = rng.uniform(1.05, 3.0) * (rng.uniform(0, 1) < 0.5 ? -1 : 1);
+        const Vec3 target{x, 1e-4 * rng.uniform(-1, 1), 1e-4 * rng.uniform(-1, 1)};
+        const LocalRay ray{o, target - o};
+        stray_closed += stray(*closed, ray);
+        stray_sturm += stray(*sturm, ray);
+    }
+    EXPECT_GT(stray_closed, 3 * stray_sturm) << stray_closed << " against " << stray_sturm;
 }
 
 }  // namespace

@@ -143,6 +143,26 @@ TEST(DirectLighting, ShadowsBlockAndNoShadowObjectsDoNot) {
     EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), 1.0, 1e-9);
 }
 
+TEST(DirectLighting, ShadowRaysThroughTransparencySeeNothingWithinSmallTolerance) {
+    // POV-Ray compat (TracePointLightShadowRay): a shadow ray ignores crossings within SMALL_TOLERANCE (1e-3) of
+    // where it starts (landscape.pov's overlapping leaf spheres a hair apart). A scene with something transparent
+    // (here a filtering sphere under the floor) walks its shadow rays through every crossing; an opaque speck whose
+    // two crossings lie within 1e-3 of the floor point does not shadow it, the same speck 1e-2 away does.
+    scene::Scene scene = floor_scene();
+    scene.lights.push_back(point_light({4, 4, 0}));
+    scene::Object glass;
+    glass.shape = scene::Sphere{{0, -10, 0}, 1.0};
+    glass.texture->pigment.color = {1, 1, 1, 0, 0.5};
+    scene.objects.push_back(glass);
+    scene::Object speck;
+    speck.shape = scene::Sphere{{4e-4, 4e-4, 0}, 2e-4};  // on the shadow ray of (0, 0, 0), off the camera ray
+    scene.objects.push_back(speck);
+    const double lit = 4.0 / std::sqrt(32.0);
+    EXPECT_NEAR(radiance_at(scene, 0.0, 0.0), lit, 1e-9);
+    scene.objects[2].shape = scene::Sphere{{1e-2, 1e-2, 0}, 2e-4};
+    EXPECT_EQ(radiance_at(scene, 0.0, 0.0), 0.0);
+}
+
 TEST(DirectLighting, ShadowlessLightsCauseNoHighlights) {
     scene::Scene scene = floor_scene();
     scene.objects[0].texture->finish.diffuse = 0.0;

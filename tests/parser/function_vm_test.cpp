@@ -199,6 +199,27 @@ TEST(UserFunctions, PatternFunctionWarnsWhenCalled) {
     EXPECT_TRUE(warned);
 }
 
+TEST(UserFunctions, ParseTimePatternCallsUseTheScenesNoiseGenerator) {
+    // POV-Ray evaluates a pattern function called at parse time with the scene's noise_generator as read so far,
+    // as its render does (func_gradient.pov places its arrows where agate's noise 1 changes): here the pattern's
+    // value is the generator it was handed, directly, through a float function, and before global_settings.
+    ParseOptions options = test::default_options();
+    options.pattern_value = [](const Pattern&, const Vec3&, int noise_generator) {
+        return static_cast<double>(noise_generator);
+    };
+    const Scene s = test::parse_ok("#declare P = function { pattern { agate } }\n"
+                                   "#declare G = function { P(x, y, z) + 10 }\n"
+                                   "#declare Before = P(1, 2, 3);\n"
+                                   "global_settings { noise_generator 1 }\n"
+                                   "sphere { 0, 1 translate <Before, P(1, 2, 3), G(1, 2, 3)> }\n",
+                                   options);
+    ASSERT_EQ(s.objects.size(), 1u);
+    const Vec3 c = s.objects[0].transform.point({0, 0, 0});
+    EXPECT_EQ(c.x, 2.0);
+    EXPECT_EQ(c.y, 1.0);
+    EXPECT_EQ(c.z, 11.0);
+}
+
 TEST(UserFunctions, WrongArgumentCountAndUnknownName) {
     ParseResult r = test::parse_fail("#declare F = function(a, b) { a + b }\n#declare A = F(1);\n");
     EXPECT_NE(test::all_diagnostics(r).find("'F' takes 2 argument(s) but 1 were given"), std::string::npos)
