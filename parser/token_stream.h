@@ -38,10 +38,11 @@ protected:
         Token where;
     };
 
-    /// The next token after running the directives before it.
-    const Token& peek();
+    /// The next token after running the directives before it. A copy: the chunk of the file it came from may be
+    /// released while the caller still holds it (TokenStore).
+    Token peek();
     /// As peek, inside a value: a directive at the value's own brace depth ends it instead of running.
-    const Token& peek_expr();
+    Token peek_expr();
     /// Consumes the next token, counting braces.
     Token next();
     /// Consumes the punctuation `punct` when it comes next.
