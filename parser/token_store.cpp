@@ -21,6 +21,7 @@ void TokenStore::reset(std::string_view text, LexStart start, std::size_t end, s
     m_eof = Token{};
     m_live.clear();
     m_pins.clear();
+    m_hot_count = 0;
 }
 
 void TokenStore::assign(std::vector<Token> tokens) {
@@ -42,6 +43,7 @@ void TokenStore::clear() {
     m_ended = false;
     m_live.clear();
     m_pins.clear();
+    m_hot_count = 0;
 }
 
 const Token* TokenStore::if_present(std::size_t pos) const {
@@ -59,14 +61,18 @@ const Token& TokenStore::last() const {
 }
 
 const Token& TokenStore::slow_at(std::size_t pos) const {
-    if (m_text == nullptr) return m_eof;  // cleared, or given whole and asked past its end
     const std::size_t c = pos >> k_chunk_shift;
-    // Lex forward to the chunk (or lex a released one again).
-    while (!m_ended && m_chunks.size() < c) lex_chunk(m_chunks.size());
-    if (c < m_chunks.size() ? m_chunks[c].empty() : !m_ended) lex_chunk(c);
+    if (m_text != nullptr) {
+        // Lex forward to the chunk (or lex a released one again).
+        while (!m_ended && m_chunks.size() < c) lex_chunk(m_chunks.size());
+        if (c < m_chunks.size() ? m_chunks[c].empty() : !m_ended) lex_chunk(c);
+    }
     const std::size_t i = pos & (k_chunk_tokens - 1);
-    if (c < m_chunks.size() && i < m_chunks[c].size()) return m_chunks[c][i];
-    return m_eof;  // past the end
+    if (c >= m_chunks.size() || i >= m_chunks[c].size()) return m_eof;  // past the end, or cleared
+    m_hot_first = c << k_chunk_shift;
+    m_hot = m_chunks[c].data();
+    m_hot_count = m_chunks[c].size();
+    return m_hot[i];
 }
 
 void TokenStore::lex_chunk(std::size_t c) const {
@@ -85,11 +91,12 @@ void TokenStore::lex_chunk(std::size_t c) const {
         m_starts.push_back(stop);
     }
     if (!pinned(c)) m_live.push_back(c);
-    // Of the live chunks, release the oldest beyond k_live_chunks, never this one or the one before it (the token
-    // being read when a look-ahead needed this chunk).
+    // Of the live chunks, release the oldest beyond k_live_chunks, never this one, the one before it or the one
+    // read last (where the reader is when a look-ahead needs this chunk).
+    const std::size_t hot = m_hot_count > 0 ? m_hot_first >> k_chunk_shift : c;
     for (std::size_t k = 0; m_live.size() > k_live_chunks && k < m_live.size();) {
         const std::size_t old = m_live[k];
-        if (old == c || old + 1 == c) {
+        if (old == c || old + 1 == c || old == hot) {
             ++k;
             continue;
         }
@@ -103,6 +110,11 @@ void TokenStore::lex_chunk(std::size_t c) const {
         m_reported_to = to;
         if (m_sink && !diagnostics.empty()) m_sink(diagnostics);
     }
+}
+
+std::size_t TokenStore::chunks_in_memory() const {
+    return static_cast<std::size_t>(
+        std::count_if(m_chunks.begin(), m_chunks.end(), [](const std::vector<Token>& c) { return !c.empty(); }));
 }
 
 bool TokenStore::pinned(std::size_t c) const {

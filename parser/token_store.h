@@ -43,12 +43,9 @@ public:
 
     /// The token at `pos`; past the end, the EndOfFile token. Lexes (or lexes again) its chunk when needed.
     const Token& operator[](std::size_t pos) const {
-        const std::size_t c = pos >> k_chunk_shift;
-        if (c < m_chunks.size()) {
-            const std::vector<Token>& chunk = m_chunks[c];
-            const std::size_t i = pos & (k_chunk_tokens - 1);
-            if (i < chunk.size()) return chunk[i];
-        }
+        // The parse reads on within one chunk far more often than it moves to another: that chunk is at hand.
+        const std::size_t i = pos - m_hot_first;
+        if (i < m_hot_count) return m_hot[i];
         return slow_at(pos);
     }
     /// The token at `pos` when its chunk is in memory, without lexing anything; null otherwise.
@@ -61,6 +58,9 @@ public:
     std::size_t pin(std::size_t begin);
     /// Narrows pin `index` to end at position `end` (inclusive).
     void pin_end(std::size_t index, std::size_t end);
+
+    /// Chunks whose tokens are in memory (what the store costs, for tests).
+    std::size_t chunks_in_memory() const;
 
 private:
     const Token& slow_at(std::size_t pos) const;
@@ -84,6 +84,10 @@ private:
     mutable bool m_ended = false;                      ///< the chunk with the EndOfFile is known
     mutable Token m_eof;                               ///< a copy of the EndOfFile, once known
     mutable std::vector<std::size_t> m_live;           ///< unpinned chunks in memory, in the order they were lexed
+    /// The chunk read last (never released while it is): its first position, tokens and count.
+    mutable std::size_t m_hot_first = 0;
+    mutable const Token* m_hot = nullptr;
+    mutable std::size_t m_hot_count = 0;
     std::vector<std::pair<std::size_t, std::size_t>> m_pins;  ///< position ranges kept in memory, inclusive
 };
 

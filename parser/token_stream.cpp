@@ -13,7 +13,7 @@ namespace wardray::parser {
 // ---------------------------------------------------------------------------------------------------------------
 // Token access
 
-Token TokenStream::peek() {
+Token TokenStream::peek_directives() {
     while (true) {
         const Token& t = raw();
         if (t.kind == TokenKind::Directive) {
@@ -28,7 +28,7 @@ Token TokenStream::peek() {
     }
 }
 
-Token TokenStream::peek_expr() {
+Token TokenStream::peek_expr_directives() {
     // A macro's closing #end is always read through (so `M(1) * 2` works). Other directives run too, except
     // between the operands of a declared value, which they end, so `#declare A = 1 #if (A)` sees A declared.
     while (true) {
