@@ -75,8 +75,7 @@ bool Evaluator::is_array_element_next() {
     if (t.kind != TokenKind::Identifier) return false;
     const Value* v = lookup(t.text);
     if (v == nullptr || !std::holds_alternative<std::shared_ptr<ArrayValue>>(*v)) return false;
-    const auto& tokens = m_files[m_file]->tokens;
-    return m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "[");
+    return is_punct(m_files[m_file]->tokens[m_pos + 1], "[");
 }
 
 std::optional<Value> Evaluator::take_array_element() {

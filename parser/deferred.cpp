@@ -51,7 +51,7 @@ bool Preprocessor::try_defer_declaration(const Token& id, bool local) {
     for (std::size_t c = m_frames.back().cond_depth; c < m_conds.size(); ++c)
         if (m_conds[c].kind == Cond::Kind::While || m_conds[c].kind == Cond::Kind::For) return false;
 
-    const std::vector<Token>& tokens = file.tokens;
+    const TokenStore& tokens = file.tokens;
     const std::size_t begin = m_pos;
     if (tokens[begin].kind != TokenKind::Identifier || !deferrable_item(tokens[begin].text)) return false;
     std::vector<std::string_view> reads;
@@ -126,8 +126,8 @@ void Preprocessor::evaluate_deferred(Value& slot) {
     auto stream = std::make_unique<SourceFile>();
     stream->path = source.path;
     stream->library = true;
-    std::vector<Diagnostic> lex_errors;  // reported when the file was first read
-    stream->tokens = lex(source.text, d.start, d.end, d.file, source.path, lex_errors, stream->decoded);
+    // Its lexical errors were reported when the file was first read.
+    stream->tokens.reset(source.text, d.start, d.end, d.file, stream->path, stream->decoded, {});
     const auto stream_index = static_cast<std::uint32_t>(m_files.size());
     m_files.push_back(std::move(stream));
 

@@ -56,16 +56,14 @@ void Preprocessor::process_directive() {
     const std::size_t frames = m_frames.size();
     const std::size_t conds = m_conds.size();
     const std::size_t braces = m_brace_depth;
-    const std::size_t operands_pos = m_pos;
+    // A declaration's identifier, kept now: by the time its value fails, its tokens may be gone.
+    const bool declaration = tok.text == "declare" || tok.text == "local";
+    const Token declared = declaration ? raw() : Token{};
     try {
         run_directive(tok);
     } catch (const StatementError&) {
-        if (tok.text == "declare" || tok.text == "local") {
-            // Its identifier stays undeclared: later uses of it are consequences, not new errors.
-            const auto& tokens = m_files[tok.file]->tokens;
-            if (operands_pos < tokens.size() && tokens[operands_pos].kind == TokenKind::Identifier)
-                m_failed_declarations.insert(tokens[operands_pos].text);
-        }
+        // Its identifier stays undeclared: later uses of it are consequences, not new errors.
+        if (declaration && declared.kind == TokenKind::Identifier) m_failed_declarations.insert(declared.text);
         skip_failed_directive(tok, frames, conds, braces);
         throw;
     }
@@ -533,9 +531,13 @@ void Preprocessor::directive_macro(const Token& tok) {
     macro.file = m_file;
     macro.body = m_pos;
     m_files[m_file]->has_macros = true;
+    // Every call reads the body again: its tokens stay in memory (from here to its #end, once that is found).
+    TokenStore& tokens = m_files[m_file]->tokens;
+    const std::size_t pin = tokens.pin(macro.body);
     const Token stop = skip_until(0, {"end"}, tok);
     if (stop.kind == TokenKind::EndOfFile) return;
     macro.end = m_pos - 1;
+    tokens.pin_end(pin, macro.end);
     m_macros[id.text] = std::move(macro);
 }
 

@@ -122,10 +122,9 @@ Value Evaluator::parse_rvalue() {
         }
         if (const Value* v = lookup(w); v != nullptr && !std::holds_alternative<Numeric>(*v)) {
             // A function or spline followed by '(' is a call, read as an expression.
-            const auto& tokens = m_files[m_file]->tokens;
             const bool callable = std::holds_alternative<std::shared_ptr<const UserFunction>>(*v) ||
                                   std::holds_alternative<Boxed<Spline>>(*v);
-            const bool call = callable && m_pos + 1 < tokens.size() && is_punct(tokens[m_pos + 1], "(");
+            const bool call = callable && is_punct(m_files[m_file]->tokens[m_pos + 1], "(");
             if (!call) {
                 next();
                 return *v;

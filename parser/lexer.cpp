@@ -103,13 +103,22 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
 
 std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_offset, std::uint32_t file,
                        const std::string& path, std::vector<Diagnostic>& errors, DecodedStrings& decoded) {
-    // The scan sees the text up to `end_offset` only; diagnostics quote lines of the whole text.
-    const std::string_view text = whole.substr(0, std::min(end_offset, whole.size()));
     std::vector<Token> tokens;
     // Scene files average about five bytes per token: reserving up front avoids re-copying the vector as it grows
     // (untouched reserved memory costs nothing).
-    tokens.reserve((text.size() - std::min(start.offset, text.size())) / 3 + 16);
+    tokens.reserve((std::min(end_offset, whole.size()) - std::min(start.offset, whole.size())) / 3 + 16);
+    LexStart stop;
+    lex_some(whole, start, end_offset, static_cast<std::size_t>(-1), file, path, errors, decoded, tokens, stop);
+    return tokens;
+}
+
+bool lex_some(std::string_view whole, LexStart start, std::size_t end_offset, std::size_t max_tokens,
+              std::uint32_t file, const std::string& path, std::vector<Diagnostic>& errors, DecodedStrings& decoded,
+              std::vector<Token>& tokens, LexStart& stop) {
+    // The scan sees the text up to `end_offset` only; diagnostics quote lines of the whole text.
+    const std::string_view text = whole.substr(0, std::min(end_offset, whole.size()));
     Cursor cur(text, start);
+    std::size_t taken = 0;
     auto error_at = [&](std::uint32_t line, std::uint32_t column, std::uint32_t span, std::string message) {
         Diagnostic d;
         d.severity = Severity::Error;
@@ -121,6 +130,11 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
     };
 
     while (true) {
+        // A full batch stops right after its last token, where the next batch starts.
+        if (taken == max_tokens) {
+            stop = LexStart{cur.pos(), cur.line(), cur.column()};
+            return false;
+        }
         // Whitespace and comments between tokens.
         const char c = cur.peek();
         if (cur.done()) break;
@@ -246,6 +260,7 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
         }
         cur.advance(consumed);
         tokens.push_back(std::move(tok));
+        ++taken;
     }
 
     Token eof;
@@ -255,7 +270,8 @@ std::vector<Token> lex(std::string_view whole, LexStart start, std::size_t end_o
     eof.column = cur.column();
     eof.text = std::string_view(text.data() + cur.pos(), 0);
     tokens.push_back(std::move(eof));
-    return tokens;
+    stop = LexStart{cur.pos(), cur.line(), cur.column()};
+    return true;
 }
 
 }  // namespace wardray::parser

@@ -87,4 +87,11 @@ std::vector<Token> lex(std::string_view text, std::uint32_t file, const std::str
 std::vector<Token> lex(std::string_view text, LexStart start, std::size_t end, std::uint32_t file,
                        const std::string& path, std::vector<Diagnostic>& errors, DecodedStrings& decoded);
 
+/// Appends to `tokens` at most `max_tokens` tokens of `text` from `start` up to byte `end` (to read a file a batch
+/// at a time). True when the text ended, after the EndOfFile token; false when the batch filled, with `stop`
+/// just past its last token, where the next batch starts.
+bool lex_some(std::string_view text, LexStart start, std::size_t end, std::size_t max_tokens, std::uint32_t file,
+              const std::string& path, std::vector<Diagnostic>& errors, DecodedStrings& decoded,
+              std::vector<Token>& tokens, LexStart& stop);
+
 }  // namespace wardray::parser

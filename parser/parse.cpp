@@ -96,13 +96,8 @@ ParseResult Parser::run_here(std::string text, const std::string& path) {
             file->text.clear();
         }
         normalize_source_text(file->text);
-        std::vector<Diagnostic> lex_errors;
-        file->tokens = lex(file->text, 0, path, lex_errors, file->decoded);
         m_files.push_back(std::move(file));
-        for (auto& d : lex_errors) {
-            m_files.back()->truncated = m_files.back()->truncated || d.message == "unterminated string";
-            report(std::move(d));
-        }
+        lex_file(0);
         try {
             while (true) {
                 try {
@@ -130,8 +125,10 @@ ParseResult Parser::run_here(std::string text, const std::string& path) {
         } catch (const FatalError&) {
         } catch (const std::bad_alloc&) {
             // A scene that builds more than memory holds (an endless loop of objects): blame where it stopped.
+            // The token is taken only if it is in memory: lexing now would allocate.
+            const Token* at = m_file < m_files.size() ? m_files[m_file]->tokens.if_present(m_pos) : nullptr;
             m_diagnostics.push_back(make_diagnostic(
-                Severity::Error, m_file < m_files.size() && m_pos < m_files[m_file]->tokens.size() ? raw() : Token{},
+                Severity::Error, at != nullptr ? *at : Token{},
                 "out of memory: the scene holds more than this machine can (an endless loop?)"));
             ++m_errors;
         }

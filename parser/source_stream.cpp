@@ -153,7 +153,7 @@ std::optional<std::uint32_t> SourceStream::load_file(const std::filesystem::path
                                                      std::string& error) {
     const std::string key = path.lexically_normal().string();
     if (const auto it = m_file_index.find(key); it != m_file_index.end()) {
-        if (m_files[it->second]->tokens.empty()) lex_file(it->second, false);  // released after its first reading
+        if (m_files[it->second]->tokens.cleared()) lex_file(it->second);  // released after its first reading
         return it->second;
     }
     auto file = std::make_unique<SourceFile>();
@@ -168,19 +168,22 @@ std::optional<std::uint32_t> SourceStream::load_file(const std::filesystem::path
     const auto index = static_cast<std::uint32_t>(m_files.size());
     m_files.push_back(std::move(file));
     m_file_index[key] = index;
-    lex_file(index, true);
+    lex_file(index);
     return index;
 }
 
-void SourceStream::lex_file(std::uint32_t index, bool first) {
+void SourceStream::lex_file(std::uint32_t index) {
     SourceFile& file = *m_files[index];
-    std::vector<Diagnostic> lex_errors;
-    file.tokens = lex(file.text, index, file.path, lex_errors, file.decoded);
-    if (!first) return;  // its errors were reported the first time
-    for (auto& d : lex_errors) {
-        file.truncated = file.truncated || d.message == "unterminated string";
-        report(std::move(d));
-    }
+    file.tokens.reset(file.text, LexStart{}, file.text.size(), index, file.path, file.decoded,
+                      [this, index](std::vector<Diagnostic>& lex_errors) {
+                          SourceFile& f = *m_files[index];
+                          for (auto& d : lex_errors) {
+                              f.truncated = f.truncated || d.message == "unterminated string";
+                              report(std::move(d));
+                          }
+                      });
+    // The first chunk now: a file of a few thousand tokens reports its lexical errors before it is read.
+    (void)file.tokens[0];
 }
 
 std::vector<SourceStream::SearchCandidate> SourceStream::search_candidates(const std::filesystem::path& requested,

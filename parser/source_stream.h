@@ -19,6 +19,7 @@
 #include "parser/lexer.h"
 #include "parser/parse.h"
 #include "parser/read_access.h"
+#include "parser/token_store.h"
 #include "parser/value.h"
 
 namespace wardray::parser {
@@ -54,11 +55,11 @@ using NameMap = std::unordered_map<std::string, T, NameHash, NameEqual>;
 inline HashedName hashed(std::string_view name) { return {name, NameHash{}(name)}; }
 
 
-/// One source file read by the parse, with its tokens (kept alive so macros and loops can re-read them).
+/// One source file read by the parse, with its tokens (lexed as they are read; macros and loops re-read them).
 struct SourceFile {
     std::string path;  ///< as shown in diagnostics
     std::string text;
-    std::vector<Token> tokens;
+    TokenStore tokens;
     DecodedStrings decoded;  ///< string literals with escapes, which tokens view
     bool truncated = false;  ///< the lexer gave up early (unterminated string): errors at its end are noise
     bool library = false;    ///< found through the library paths: its declarations may be deferred
@@ -121,8 +122,9 @@ protected:
     /// True when `t` is the identifier or keyword `w`.
     bool is_word(const Token& t, std::string_view w) const { return t.kind == TokenKind::Identifier && t.text == w; }
 
-    /// Lexes a file's text into its tokens; the first time, its lexical errors are reported.
-    void lex_file(std::uint32_t index, bool first);
+    /// Starts reading a file's tokens from its text (lexed as they are read); its lexical errors are reported the
+    /// first time their stretch of text is lexed.
+    void lex_file(std::uint32_t index);
     /// Reads and lexes a file once (a second #include of it reuses the tokens); `library` marks a file found
     /// through the library paths.
     std::optional<std::uint32_t> load_file(const std::filesystem::path& path, bool library, std::string& error);

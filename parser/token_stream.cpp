@@ -13,7 +13,7 @@ namespace wardray::parser {
 // ---------------------------------------------------------------------------------------------------------------
 // Token access
 
-const Token& TokenStream::peek() {
+Token TokenStream::peek_directives() {
     while (true) {
         const Token& t = raw();
         if (t.kind == TokenKind::Directive) {
@@ -28,7 +28,7 @@ const Token& TokenStream::peek() {
     }
 }
 
-const Token& TokenStream::peek_expr() {
+Token TokenStream::peek_expr_directives() {
     // A macro's closing #end is always read through (so `M(1) * 2` works). Other directives run too, except
     // between the operands of a declared value, which they end, so `#declare A = 1 #if (A)` sees A declared.
     while (true) {
@@ -225,7 +225,7 @@ void TokenStream::handle_end_of_file() {
     for (const Frame& f : m_frames) still_open = still_open || f.return_file == m_file;
     if (frame.kind == Frame::Kind::Include && finished.library && !still_open) {
         if (finished.has_macros) keep_macro_bodies(m_file);
-        std::vector<Token>().swap(finished.tokens);
+        finished.tokens.clear();
     }
     m_file = frame.return_file;
     m_pos = frame.return_pos;
@@ -254,14 +254,14 @@ void TokenStream::invoke_macro(const Token& name_tok, const Macro& macro) {
             // B, C and D above become C, D and D. POV-Ray decides what the lone identifier refers to after it has
             // read the next token, and an identifier there replaces it; a comma or parenthesis does not.
             bool shifted = false;
-            if (t.kind == TokenKind::Identifier && args.size() < macro.params.size() && m_pos + 1 < tokens.size() &&
+            if (t.kind == TokenKind::Identifier && args.size() < macro.params.size() &&
                 tokens[m_pos + 1].kind == TokenKind::Identifier && !m_macros.count(tokens[m_pos + 1].text)) {
                 const Value* first = lookup(t.text);
                 const Value* next_value = lookup(tokens[m_pos + 1].text);
                 shifted = first && std::holds_alternative<Numeric>(*first) && next_value;
             }
             const Token& named = shifted ? tokens[m_pos + 1] : t;
-            if (named.kind == TokenKind::Identifier && args.size() < macro.params.size() && m_pos + 1 < tokens.size() &&
+            if (named.kind == TokenKind::Identifier && args.size() < macro.params.size() &&
                 (shifted || is_punct(tokens[m_pos + 1], ",") || is_punct(tokens[m_pos + 1], ")"))) {
                 for (std::size_t s = m_scopes.size(); s > 0; --s) {
                     if (m_scopes[s - 1].count(named.text)) {
@@ -358,17 +358,18 @@ void TokenStream::keep_macro_bodies(std::uint32_t index) {
     bodies->library = file.library;
     bodies->has_macros = true;
     const auto bodies_index = static_cast<std::uint32_t>(m_files.size());
+    std::vector<Token> tokens;
     for (auto& [name, macro] : m_macros) {
         if (macro.file != index) continue;
         // The body and its closing #end; the tokens keep their file, lines and columns for diagnostics.
-        const std::size_t start = bodies->tokens.size();
-        bodies->tokens.insert(bodies->tokens.end(), file.tokens.begin() + static_cast<std::ptrdiff_t>(macro.body),
-                              file.tokens.begin() + static_cast<std::ptrdiff_t>(macro.end) + 1);
+        const std::size_t start = tokens.size();
+        for (std::size_t pos = macro.body; pos <= macro.end; ++pos) tokens.push_back(file.tokens[pos]);
         macro.file = bodies_index;
         macro.end = start + (macro.end - macro.body);
         macro.body = start;
     }
-    bodies->tokens.push_back(file.tokens.back());  // the file's EndOfFile
+    tokens.push_back(file.tokens.last());  // the file's EndOfFile
+    bodies->tokens.assign(std::move(tokens));
     m_files.push_back(std::move(bodies));
 }
 

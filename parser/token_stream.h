@@ -38,10 +38,24 @@ protected:
         Token where;
     };
 
-    /// The next token after running the directives before it.
-    const Token& peek();
+    /// The next token after running the directives before it. A copy: the chunk of the file it came from may be
+    /// released while the caller still holds it (TokenStore). Inline for the common token that is neither a
+    /// directive nor an end of file, so callers reading only its kind and text copy nothing.
+    Token peek() {
+        const Token& t = raw();
+        if (t.kind != TokenKind::Directive && t.kind != TokenKind::EndOfFile) return t;
+        return peek_directives();
+    }
     /// As peek, inside a value: a directive at the value's own brace depth ends it instead of running.
-    const Token& peek_expr();
+    Token peek_expr() {
+        const Token& t = raw();
+        if (t.kind != TokenKind::Directive) return t;
+        return peek_expr_directives();
+    }
+    /// peek() at a directive or an end of file.
+    Token peek_directives();
+    /// peek_expr() at a directive.
+    Token peek_expr_directives();
     /// Consumes the next token, counting braces.
     Token next();
     /// Consumes the punctuation `punct` when it comes next.
