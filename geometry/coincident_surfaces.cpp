@@ -16,6 +16,7 @@
 #include <utility>
 #include <variant>
 
+#include "core/diagnostic_list.h"
 #include "core/transform.h"
 #include "core/vec3.h"
 #include "geometry/surface_pieces.h"
@@ -538,10 +539,6 @@ private:
     std::uint32_t m_top = 0;  // the top-level object being collected
 };
 
-std::string place(const SourceLoc& loc) {
-    return loc.path + ':' + std::to_string(loc.line) + ':' + std::to_string(loc.column);
-}
-
 }  // namespace
 
 std::vector<CoincidentPair> find_coincident_surfaces(const scene::Scene& scene, std::size_t limit,
@@ -585,13 +582,7 @@ std::vector<Diagnostic> coincident_surface_warnings(const scene::Scene& scene, s
                     "picture may differ from POV-Ray's; move or resize one of them by a small amount";
         out.push_back(std::move(d));
     }
-    if (total > out.size() && !out.empty()) {
-        Diagnostic d;
-        d.severity = Severity::Warning;
-        d.loc = out.back().loc;
-        d.message = "coincident surfaces: " + std::to_string(total - out.size()) + " more pairs of objects";
-        out.push_back(std::move(d));
-    }
+    add_count_of_the_rest(out, total, "coincident surfaces", "pairs of objects");
     return out;
 }
 

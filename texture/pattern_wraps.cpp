@@ -11,6 +11,7 @@
 #include <tuple>
 #include <variant>
 
+#include "core/diagnostic_list.h"
 #include "core/transform.h"
 #include "core/vec3.h"
 #include "geometry/surface_pieces.h"
@@ -311,10 +312,6 @@ bool wraps(const std::string& pattern) {
     return false;
 }
 
-std::string place(const SourceLoc& loc) {
-    return loc.path + ':' + std::to_string(loc.line) + ':' + std::to_string(loc.column);
-}
-
 }  // namespace
 
 std::vector<PatternWrap> find_pattern_wraps(const scene::Scene& scene, std::size_t limit, std::size_t* total) {
@@ -360,13 +357,7 @@ std::vector<Diagnostic> pattern_wrap_warnings(const scene::Scene& scene, std::si
                     "scale or translate the pattern or the object by a small amount";
         out.push_back(std::move(d));
     }
-    if (total > out.size() && !out.empty()) {
-        Diagnostic d;
-        d.severity = Severity::Warning;
-        d.loc = out.back().loc;
-        d.message = "pattern wrap on a surface: " + std::to_string(total - out.size()) + " more surfaces";
-        out.push_back(std::move(d));
-    }
+    add_count_of_the_rest(out, total, "pattern wrap on a surface", "surfaces");
     return out;
 }
 
