@@ -121,6 +121,17 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
             options.photons_from_file
                 ? *options.photons_from_file
                 : photons::shoot_photon_sets(scene, geometry, *m_photon_stats, nullptr, options.seed);
+        // POV-Ray's photons' exponent byte wraps round past a flux of 2^5, and such photons come out nearly black.
+        // wardray's do the same at a fine spacing; at a coarse one (a power-of-two offset, which keeps the scene's
+        // picture at any scale) they keep their light, and the user is told.
+        const auto wraps = [&](const std::vector<photons::Photon>& set, int offset) {
+            return std::ranges::any_of(set, [&](const photons::Photon& p) { return photons::beyond_povray_flux(p, offset); });
+        };
+        if (wraps(shot.surface, shot.surface_offset) || wraps(shot.media, shot.media_offset))
+            m_limitations.push_back("photons: at this scene's coarse photon spacing some photons carry more light than "
+                                    "POV-Ray's photon format holds (a flux of 32 or more); POV-Ray's wrap round to "
+                                    "almost nothing there, wardray's keep their light, so the caustics may differ "
+                                    "from POV-Ray's; a spacing below 1/32 (or a larger count) keeps both alike");
         if (options.keep_shot_photons) m_shot_photons = std::make_unique<const photons::ShotPhotons>(shot);
         m_photons = photons::build_photon_maps(std::move(shot), *scene.global.photons, *m_photon_stats,
                                                &m_media_photons, options.seed);

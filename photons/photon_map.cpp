@@ -32,12 +32,13 @@ Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin,
     const int biased = e - exponent_offset + 250;
     if (!(std::ldexp(static_cast<double>(v), -exponent_offset) >= static_cast<double>(1e-32f)) || biased < 1) {
         ph.rgbe = {0, 0, 0, 0};
-    } else if (biased > 255) {
+    } else if (biased > 255 && exponent_offset > 0) {
         ph.rgbe = {255, 255, 255, 255};
     } else {
+        // POV-Ray compat: without an offset, a flux of 2^5 or more wraps round in the byte, as POV-Ray's does.
         const float scale = static_cast<float>(std::frexp(v, &e) * 256.0 / v);
         for (int i = 0; i < 3; ++i) ph.rgbe[i] = static_cast<std::uint8_t>(std::max(0.0f, c[i] * scale));
-        ph.rgbe[3] = static_cast<std::uint8_t>(biased);
+        ph.rgbe[3] = static_cast<std::uint8_t>(biased & 255);
     }
     // The direction towards the origin as two angles of 127 steps per π (POV-Ray's addSurfacePhoton).
     const Vec3 d = normalize(origin - position);
@@ -55,6 +56,14 @@ Vec3 photon_colour(const Photon& p, int exponent_offset) {
     if (p.rgbe[3] == 0) return {};
     const float f = static_cast<float>(std::ldexp(1.0, static_cast<int>(p.rgbe[3]) - (250 + 8) + exponent_offset));
     return {p.rgbe[0] * f, p.rgbe[1] * f, p.rgbe[2] * f};
+}
+
+bool beyond_povray_flux(const Photon& p, int exponent_offset) {
+    // Without an offset the byte wraps as POV-Ray's does; with one, make_photon clamps a flux beyond the byte even
+    // with its offset to all 255s.
+    if (exponent_offset <= 0) return false;
+    const bool clamped = p.rgbe[0] == 255 && p.rgbe[1] == 255 && p.rgbe[2] == 255 && p.rgbe[3] == 255;
+    return clamped || (p.rgbe[3] != 0 && static_cast<int>(p.rgbe[3]) + exponent_offset > 255);
 }
 
 Vec3 photon_direction(const Photon& p) {

@@ -33,6 +33,10 @@ Photon make_photon(const Vec3& position, const Vec3& colour, const Vec3& origin,
 Vec3 photon_colour(const Photon& p, int exponent_offset = 0);
 /// The unit direction from the photon towards where it came from, from its two bytes.
 Vec3 photon_direction(const Photon& p);
+/// Whether a photon of a map with a power-of-two offset has a flux beyond what POV-Ray's byte holds (2^5 and more,
+/// with its fixed bias of 250), where POV-Ray's exponent wraps round and its photon comes out nearly black while
+/// wardray's keeps its light. Without an offset wardray's byte wraps as POV-Ray's does: never beyond.
+bool beyond_povray_flux(const Photon& p, int exponent_offset);
 
 /// The photons found by a gather and the radius POV-Ray divides their sum by.
 struct Gathered {

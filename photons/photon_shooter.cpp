@@ -98,14 +98,20 @@ bool unit_shoots(const Unit& u) {
     return merged_on(u.light->photon_refraction, t.refraction) || merged_on(u.light->photon_reflection, t.reflection);
 }
 
-/// POV-Ray's computeAnglesAndDeltas for a unit; false when its target has no bounds.
+/// POV-Ray's bounding box of an object without bounds (an intersection of planes): the largest box it allows,
+/// half of BOUND_HUGE (2e10) to each side. Its photons aim at that box's sphere, so a light inside it shoots all
+/// round, and the few photons that reach the target make its map non-empty (which changes its shadows).
+constexpr double kUnboundedHalfSide = 1.0e10;
+
+/// POV-Ray's computeAnglesAndDeltas for a unit; false when its spacing leaves nothing to shoot.
 bool aim_unit(Unit& u, double spacing, const geometry::ObjectQuery& query) {
-    const auto box = query.extent(*u.target);
-    if (!box) return false;
+    const auto extent = query.extent(*u.target);
+    const Vec3 huge{kUnboundedHalfSide, kUnboundedHalfSide, kUnboundedHalfSide};
+    const std::pair<Vec3, Vec3> box = extent ? *extent : std::pair{-huge, huge};
     const scene::Light& light = *u.light;
     u.light_direction = normalize(light.point_at - light.position);
-    u.aim.centre = (box->first + box->second) * 0.5;
-    u.aim.radius = length(u.aim.centre - box->first);
+    u.aim.centre = (box.first + box.second) * 0.5;
+    u.aim.radius = length(u.aim.centre - box.first);
     u.aim.from(light.position, light, u.light_direction);
     u.spread = u.target->photons.spacing_multiplier * spacing;
     if (!is_parallel(light)) u.spread /= u.aim.distance;

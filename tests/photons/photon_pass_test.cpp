@@ -91,6 +91,45 @@ sphere { <0, 2, 0>, 1 pigment { rgbf 1 } interior { ior 1.5 } }
     EXPECT_EQ(stats.units, 0u);
 }
 
+// POV-Ray compat: a target without bounds (an intersection of planes at angles) is aimed at as POV-Ray's largest
+// box, 1e10 to each side, so the light inside its sphere shoots all round at the coarse spacing `count` gives. POV-Ray
+// 3.7 shoots 5 photons here and stores 2 (its statistics, jitter 0); their flux is far beyond its byte's 2^5.
+TEST(PhotonPass, TargetWithoutBoundsIsAimedAtPovRaysLargestBox) {
+    const scene::Scene scene = parser::test::parse_ok(R"(
+global_settings { photons { count 20000 autostop 0 jitter 0 } }
+light_source { <3, 5, -4> color rgb 1 }
+plane { y, -1.5 pigment { rgb 1 } }
+intersection {
+  plane { <1, 1, 1>, 0.8 } plane { <-1, -1, 1>, 0.8 } plane { <1, -1, -1>, 0.8 } plane { <-1, 1, -1>, 0.8 }
+  pigment { rgbt <0.8, 0.8, 0.8, 0.4> }
+  photons { target refraction on reflection on collect on }
+}
+)");
+    const geometry::SceneGeometry geometry(scene);
+    PhotonStats stats;
+    const ShotPhotons shot = shoot_photon_sets(scene, geometry, stats);
+    EXPECT_EQ(stats.units, 1u);
+    EXPECT_EQ(stats.shot, 5u);
+    ASSERT_EQ(shot.surface.size(), 2u);
+    for (const Photon& p : shot.surface) EXPECT_TRUE(beyond_povray_flux(p, shot.surface_offset));
+}
+
+TEST(PhotonPass, FluxWithinPovRaysByteIsNotBeyondIt) {
+    const scene::Scene scene = parser::test::parse_ok(kClearTarget);
+    const geometry::SceneGeometry geometry(scene);
+    PhotonStats stats;
+    const ShotPhotons shot = shoot_photon_sets(scene, geometry, stats);
+    ASSERT_FALSE(shot.surface.empty());
+    for (const Photon& p : shot.surface) EXPECT_FALSE(beyond_povray_flux(p, shot.surface_offset));
+    // POV-Ray's byte wraps round past 2^5: a flux of 100 (0.78 · 2^7) comes back as 0.78 · 2^-249, black.
+    const Photon wrapped = make_photon({}, {100.0, 20.0, 10.0}, {0, 1, 0});
+    EXPECT_FALSE(beyond_povray_flux(wrapped, 0));
+    EXPECT_EQ(wrapped.rgbe[3], 1);
+    EXPECT_EQ(photon_colour(wrapped).x, 0.0);
+    EXPECT_TRUE(beyond_povray_flux(make_photon({}, {40.0, 1.0, 1.0}, {0, 1, 0}, 3), 3));
+    EXPECT_FALSE(beyond_povray_flux(make_photon({}, {31.0, 1.0, 1.0}, {0, 1, 0}, 3), 3));
+}
+
 // A clear hollow box of scattering medium under the light (a photon target, so every photon crosses it). POV-Ray
 // compat: a photon kept at distance D from the light carries the flux of a stretch spaced for the distance D0 at
 // which its ray entered the medium, so the photons' fluence is the light's I times D / D0 (POV-Ray's lights do not
