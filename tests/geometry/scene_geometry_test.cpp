@@ -430,7 +430,9 @@ TEST(SceneGeometry, NothingBeyondBoundHuge) {
         for (const double scale : {0.5, 1.0, 4.0}) {
             const auto hit = geometry.intersect(Ray{{0, 0, 0}, {0, 0, scale}});
             EXPECT_EQ(hit.has_value(), centre - r < 2e10) << centre << " scale " << scale;
-            if (hit) EXPECT_NEAR(hit->t * scale, centre - r, 1e-6 * centre);
+            if (hit) {
+                EXPECT_NEAR(hit->t * scale, centre - r, 1e-6 * centre);
+            }
         }
     }
 }
