@@ -98,6 +98,103 @@ Vec3 ConeShape::cylinder_normal(const Vec3& p) const {
     return {n.x * inv, n.y * inv, n.z * inv};
 }
 
+Vec3 ConeShape::object_normal(double x, double y, double z) const {
+    // MTransNormal through the unit cylinder's inverse, then VNormalize.
+    const Matrix4& m = *m_unit_inverse;
+    const Vec3 n{x * m[0][0] + y * m[0][1] + z * m[0][2], x * m[1][0] + y * m[1][1] + z * m[1][2],
+                 x * m[2][0] + y * m[2][1] + z * m[2][2]};
+    const double inv = 1.0 / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    return {n.x * inv, n.y * inv, n.z * inv};
+}
+
+void ConeShape::place(const Transform& object_to_parent) {
+    if (!m_unit_inverse) return;
+    // The object's inverse in POV-Ray's layout (row vectors), composed before the unit cylinder's inverse as
+    // Compose_Transforms composes an additional transform's inverse (MTimesB).
+    const Transform::Matrix34& c = object_to_parent.inverse_matrix();
+    Matrix4 object_inverse = identity4();
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) object_inverse[i][j] = c[j][i];
+        object_inverse[3][i] = c[i][3];
+    }
+    m_placed = std::make_shared<const Matrix4>(product(object_inverse, *m_unit_inverse));
+}
+
+SurfaceHits ConeShape::intersect_parent(const Vec3& origin, const Vec3& direction, double t_min,
+                                        double t_max) const {
+    // POV-Ray compat (Cone::Intersect for a cylinder): the ray into unit space (MInvTransPoint,
+    // MInvTransDirection), its direction normalised, the side's quadratic and the caps solved there, each depth
+    // divided by the direction's length; Cone_Tolerance, MAX_DISTANCE and EPSILON as POV-Ray has them.
+    constexpr double k_cone_tolerance = 1e-9;
+    constexpr double k_max_distance = 1e7;
+    const Matrix4& m = *m_placed;
+    double p[3], d[3];
+    for (int i = 0; i < 3; ++i) {
+        p[i] = origin.x * m[0][i] + origin.y * m[1][i] + origin.z * m[2][i] + m[3][i];
+        d[i] = direction.x * m[0][i] + direction.y * m[1][i] + direction.z * m[2][i];
+    }
+    const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double inv_len = 1.0 / len;
+    for (double& v : d) v *= inv_len;
+    struct Found {
+        double t;
+        int kind;  // 0 side, 1 the cap at unit z = 1, 2 the one at z = 0
+    };
+    Found found[4];
+    int n = 0;
+    const double a = d[0] * d[0] + d[1] * d[1];
+    if (a > kPovEpsilon) {
+        const double b = p[0] * d[0] + p[1] * d[1];
+        const double c = p[0] * p[0] + p[1] * p[1] - 1.0;
+        double disc = b * b - a * c;
+        if (disc >= 0.0) {
+            disc = std::sqrt(disc);
+            for (const double t : {(-b + disc) / a, (-b - disc) / a}) {
+                const double z = p[2] + t * d[2];
+                if (t > k_cone_tolerance && t < k_max_distance && z >= 0.0 && z <= 1.0) found[n++] = {t / len, 0};
+            }
+        }
+    }
+    if (!m_open && std::fabs(d[2]) > kPovEpsilon) {
+        for (int e = 0; e < 2; ++e) {
+            const double t = ((e == 0 ? 1.0 : 0.0) - p[2]) / d[2];
+            const double x = p[0] + t * d[0], y = p[1] + t * d[1];
+            if (x * x + y * y <= 1.0 && t > k_cone_tolerance && t < k_max_distance) found[n++] = {t / len, 1 + e};
+        }
+    }
+    SurfaceHits hits;
+    for (int i = 1; i < n; ++i)
+        for (int j = i; j > 0 && found[j].t < found[j - 1].t; --j) std::swap(found[j], found[j - 1]);
+    for (int i = 0; i < n; ++i) {
+        const double t = found[i].t;
+        if (!(t > t_min && t < t_max)) continue;
+        if (found[i].kind != 0) {
+            // The cap at unit z = 1 is the first point's end (our base), its normal -axis; the other +axis.
+            const Vec3 normal = found[i].kind == 1 ? -m_axis : m_axis;
+            hits.push({t, normal, (found[i].kind == 1 ? d[2] : -d[2]) < 0.0});
+            continue;
+        }
+        // Cone::Normal: the hit point (VEvaluateRay in the parent's space) back into unit space, its z dropped.
+        const Vec3 at{origin.x + t * direction.x, origin.y + t * direction.y, origin.z + t * direction.z};
+        const double x = at.x * m[0][0] + at.y * m[1][0] + at.z * m[2][0] + m[3][0];
+        const double y = at.x * m[0][1] + at.y * m[1][1] + at.z * m[2][1] + m[3][1];
+        // Entering where the unit normal opposes the unit direction (a linear map keeps the sign of n·d).
+        hits.push({t, object_normal(x, y, 0.0), x * d[0] + y * d[1] < 0.0});
+    }
+    return hits;
+}
+
+bool ConeShape::inside_parent(const Vec3& q) const {
+    // POV-Ray compat (Cone::Inside): in unit space, EPSILON inward for a closed cylinder and outward for an open one.
+    const Matrix4& m = *m_placed;
+    const double x = q.x * m[0][0] + q.y * m[1][0] + q.z * m[2][0] + m[3][0];
+    const double y = q.x * m[0][1] + q.y * m[1][1] + q.z * m[2][1] + m[3][1];
+    const double z = q.x * m[0][2] + q.y * m[1][2] + q.z * m[2][2] + m[3][2];
+    const double offset = m_open ? kPovEpsilon : -kPovEpsilon;
+    const double w2 = x * x + y * y;
+    return !(w2 > 1.0 + offset || z < 0.0 - offset || z > 1.0 + offset);
+}
+
 std::optional<ConeShape> ConeShape::create(const scene::Cone& c) {
     if (!is_finite(c.base) || !is_finite(c.cap) || !std::isfinite(c.base_radius) || !std::isfinite(c.cap_radius))
         return std::nullopt;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/transform.h"
 #include "geometry/shape.h"
 #include "scene/scene.h"
 
@@ -32,8 +33,23 @@ public:
     /// cone whose radii differ.
     Vec3 cylinder_normal(const Vec3& p) const;
 
+    /// POV-Ray compat (Cone::Intersect, Cone::Inside): a cylinder under `object_to_parent` (its object's transform)
+    /// also keeps POV-Ray's single matrix from the parent's space to the unit cylinder, the object's transform
+    /// composed onto the unit cylinder's, so that its crossings and inside tests in the parent's space are computed
+    /// as POV-Ray computes them: a ray grazing a cylinder (qtvrpanorama.pov's camera rays along the plane that the
+    /// gazebo's bores touch) then hits or misses as in POV-Ray. Cones are left as they are.
+    void place(const Transform& object_to_parent);
+    /// True for a cylinder placed by place().
+    bool placed() const { return m_placed != nullptr; }
+    /// A placed cylinder's crossings with a ray in the parent's space (t the same parameter), object-space normals.
+    SurfaceHits intersect_parent(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
+    /// A placed cylinder's inside test at a point in the parent's space (POV-Ray's EPSILON margins).
+    bool inside_parent(const Vec3& p) const;
+
 private:
     ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bool open);
+    /// The object-space normal of the unit cylinder's normal (x, y, z) (MTransNormal through the unit transform).
+    Vec3 object_normal(double x, double y, double z) const;
 
     Vec3 m_base;
     Vec3 m_axis;  ///< unit, from base to cap
@@ -45,6 +61,8 @@ private:
     /// For a cylinder: the inverse of POV-Ray's transform of the unit cylinder (row vectors, POV-Ray's layout);
     /// shared, to keep every shape alternative small.
     std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_unit_inverse;
+    /// For a placed cylinder: POV-Ray's inverse from the parent's space to the unit cylinder (row vectors).
+    std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_placed;
 };
 
 }  // namespace wardray::geometry

@@ -172,6 +172,9 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     if (plane && inverted) shape = AnyShape(plane->inverted());
     ShapeInstance inst(std::move(*shape), object, index);
     inst.m_inverse = inverted && !csg && !plane;
+    // POV-Ray compat: a cylinder meets rays and answers inside tests through POV-Ray's one matrix to its unit
+    // cylinder (clipped ones keep the object-space path their clips need).
+    if (auto* cone = std::get_if<ConeShape>(&inst.m_shape); cone && object.clipped_by.empty()) cone->place(xf);
     std::optional<Bounds> local = std::visit([](const auto& s) { return s.bounds(); }, inst.m_shape);
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
     if (!object.clipped_by.empty()) {
@@ -236,6 +239,8 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
     if (m_bounds && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ConeShape>)
+                if (s.placed()) return s.intersect_parent(origin, direction, t_min, t_max);
             // POV-Ray compat (MIN_ISECT_DEPTH): POV-Ray discards crossings within 1e-4 of a ray's origin; shapes
             // whose crossings are found only to a tolerance (julia_fractal) would see their own surface there.
             if constexpr (requires { s.k_min_isect_depth; })
@@ -318,7 +323,9 @@ bool ShapeInstance::inside(const Vec3& p_world) const {
     if (m_clips)
         for (const ShapeInstance& c : *m_clips)
             if (!c.inside(p)) return false;
-    const bool in = std::visit([&](const auto& s) { return s.inside(p); }, m_shape);
+    const auto* cone = std::get_if<ConeShape>(&m_shape);
+    const bool in = cone && cone->placed() ? cone->inside_parent(p_world)
+                                           : std::visit([&](const auto& s) { return s.inside(p); }, m_shape);
     return in != m_inverse;
 }
 

@@ -23,6 +23,8 @@ namespace wardray::geometry {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+// POV-Ray's BOUND_HUGE: no intersection is nearer than this along a unit direction.
+constexpr double k_bound_huge = 2.0e10;
 
 // Nearest float not above x (Embree's ray and bounds are float; rounding must stay conservative).
 float float_down(double x) {
@@ -526,7 +528,9 @@ std::optional<Hit> SceneGeometry::intersect(const Ray& ray) const {
     q.origin = ray.origin;
     q.direction = ray.direction;
     q.t_min = first_t(*m_impl, ray);
-    q.t_best = ray.t_max;
+    // POV-Ray compat (Trace::FindIntersection): the nearest crossing must lie nearer than BOUND_HUGE, the depth an
+    // Intersection starts with; the closed-form quartic's invented roots far out along grazing rays are not seen.
+    q.t_best = std::fmin(ray.t_max, k_bound_huge / length(ray.direction));
     q.kind = ray.kind;
     if (!(q.t_min < q.t_best)) return std::nullopt;
     // Unbounded shapes first: their nearest hit shortens the BVH traversal.
