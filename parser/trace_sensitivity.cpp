@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -139,9 +140,9 @@ ParseResult parse_file_checking_trace(const std::filesystem::path& path, const P
     Recorder recorder;
     ParseOptions first_options = options;
     first_options.trace_observer = &recorder;
-    const auto start = Clock::now();
+    const std::clock_t start = std::clock();
     ParseResult first = parse_file(path, first_options);
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     found.trace_calls = recorder.calls.size();
     if (!first.ok() || recorder.calls.empty()) {
         if (report) *report = found;
@@ -150,8 +151,8 @@ ParseResult parse_file_checking_trace(const std::filesystem::path& path, const P
     if (seconds >= k_trace_check_parse_limit) {
         char text[200];
         std::snprintf(text, sizeof text,
-                      "trace() sensitivity not checked: the parse took %.1f s, and the second parse with trace()'s "
-                      "results nudged runs only under %.0f s", seconds, k_trace_check_parse_limit);
+                      "trace() sensitivity not checked: the parse took %.1f s of processor time, and the second "
+                      "parse with trace()'s results nudged runs only under %.0f s", seconds, k_trace_check_parse_limit);
         found.skipped = text;
         Diagnostic note = recorder.first.value_or(Diagnostic{});
         note.severity = Severity::Note;
