@@ -21,6 +21,7 @@
 #include "geometry/object_query.h"
 #include "parser/parse.h"
 #include "parser/read_access.h"
+#include "parser/trace_sensitivity.h"
 #include "render/film.h"
 #include "render/height_image.h"
 #include "render/image_header.h"
@@ -296,7 +297,8 @@ std::unique_ptr<tbb::global_control> prepare_process(const Options& options) {
 
 std::optional<LoadedScene> load_scene(const Options& options, const parser::ParseOptions::FrameClock& clock) {
     const auto start = Clock::now();
-    parser::ParseResult parse = parser::parse_file(options.scene, parse_options_for(options, clock));
+    // A scene that calls trace() is parsed twice, to warn when its objects hang on trace()'s rounding.
+    parser::ParseResult parse = parser::parse_file_checking_trace(options.scene, parse_options_for(options, clock));
     const double seconds = seconds_since(start);
     for (const Diagnostic& d : parse.diagnostics) std::cerr << format_diagnostic(d);
     if (!parse.ok()) return std::nullopt;

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "parser/parser.h"
+#include "parser/trace_sensitivity.h"
 
 namespace wardray::parser {
 
@@ -380,9 +381,19 @@ Numeric Evaluator::parse_geometry_query(const Token& name) {
                 best_distance = d;
             }
         }
+        // The sensitivity check's second parse: every hit moved a little along its ray.
+        if (best && m_options.trace_nudge != 0.0) {
+            const double scale = std::max({1.0, length(*origin), length(best->point)});
+            best->point = best->point + normalize(*direction) * (m_options.trace_nudge * scale);
+        }
         // POV-Ray compat: a miss returns <0,0,0> and sets the normal to <0,0,0>.
         if (normal_var) assign_existing_or_global(normal_var->text, Numeric::vector3(best ? best->normal : Vec3{}));
-        return Numeric::vector3(best ? best->point : Vec3{});
+        const Vec3 result = best ? best->point : Vec3{};
+        if (TraceObserver* observer = m_options.trace_observer) {
+            if (observer->seen(make_diagnostic(Severity::Note, name, "").loc, result))
+                observer->describe(make_diagnostic(Severity::Warning, name, ""));
+        }
+        return Numeric::vector3(result);
     }
     if (f == "inside") {
         bool in = false;

@@ -17,6 +17,8 @@
 
 namespace wardray::parser {
 
+class TraceObserver;
+
 /// How to parse: search paths, predefined values, file-access rules and guard-rail limits.
 struct ParseOptions {
     /// Folders searched by #include after the scene's own folder (POV-Ray's library path, then `+L` paths).
@@ -89,6 +91,11 @@ struct ParseOptions {
     /// The geometry layer, for trace(), inside(), min_extent() and max_extent() at parse time; when null those
     /// functions are an error. Not owned.
     const SceneQuery* query = nullptr;
+    /// Sees every trace() (parser/trace_sensitivity.h); null: none. Not owned.
+    TraceObserver* trace_observer = nullptr;
+    /// Moves every trace() hit along its ray by this fraction of the larger of 1 and the distances of the ray's
+    /// origin and of the hit from the origin (parser/trace_sensitivity.h); 0: trace() as it is.
+    double trace_nudge = 0.0;
     /// The lighting layer's vector turbulence (POV-Ray's DTurbulence) of point p with octaves, omega and lambda,
     /// for vturbulence(); when empty that function is an error.
     std::function<Vec3(const Vec3& p, int octaves, double omega, double lambda)> vector_turbulence;

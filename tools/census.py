@@ -71,6 +71,8 @@ import progress  # noqa: E402
 import renderers  # noqa: E402
 from povrewrite import RewriteError, find_blocks, mask_comments_and_strings, rewrite_radiosity  # noqa: E402
 
+import census_stability as stability  # noqa: E402
+
 EXAMPLES = pathlib.Path("/usr/share/povray-3.7/scenes")
 SIZE = (120, 90)
 TIMEOUT = 60  # seconds, each renderer
@@ -324,14 +326,29 @@ def classify(rec):
                                                                    else "")
     m, stochastic = rec["metrics"], rec.get("stochastic")
     conv, conv_note = rec.get("converged"), ""
-    if conv and conv.get("metrics"):
+    match_rrmse, match_bad, silent_rrmse = tolerance(stochastic)
+    if conv and conv.get("kind") == "unstable" and conv.get("metrics"):
+        # Unstable at one sample a pixel: supersampled against supersampled, within POV-Ray's own movement.
+        m, stochastic = conv["metrics"], None
+        match_rrmse, match_bad = stability.supersampled_tolerance(conv.get("floor"), MATCH_RRMSE, MATCH_BAD)
+        silent_rrmse = max(SILENT_RRMSE, match_rrmse)
+        conv_note = unstable_note(rec)
+    elif conv and conv.get("kind") == "unstable":
+        conv_note = unstable_note(rec)
+    elif conv and conv.get("metrics"):
         # Converged against converged: the deterministic tolerances apply.
         m, stochastic = conv["metrics"], None
         conv_note = (f"converged ({conv['settings']}): rRMSE {pct(m['rrmse'])}, bad {pct(m['bad'])}; at the "
                      f"scene's own settings {pct(rec['metrics']['rrmse'])}")
+        match_rrmse, match_bad, silent_rrmse = tolerance(stochastic)
     elif conv:
         conv_note = f"no converged comparison: {conv.get('error')}"
-    match_rrmse, match_bad, silent_rrmse = tolerance(stochastic)
+    elif rec.get("stability") and rec["stability"].get("error"):
+        conv_note = f"instability not measured: {rec['stability']['error']}"
+    elif rec.get("stability"):
+        moved = rec["stability"]["moved"]
+        conv_note = (f"stable at one sample a pixel: POV-Ray's own image moves by {pct(moved['rrmse'])} rRMSE "
+                     f"(bad {pct(moved['bad'])}) with its {stability.turn_label()}")
     finite = m["non_finite_wardray"] == 0 and m["non_finite"] == 0
     if finite and m["rrmse"] <= match_rrmse and (match_bad is None or m["bad"] <= match_bad):
         return "match", conv_note
@@ -350,6 +367,20 @@ def classify(rec):
     if not finite or m["rrmse"] > silent_rrmse:
         return "differ-silently", reason
     return "differ-small", reason
+
+
+def unstable_note(rec):
+    """What the reason says of a scene found unstable at one sample a pixel."""
+    conv, st = rec["converged"], rec["stability"]
+    head = (f"unstable at one sample a pixel: POV-Ray's own image moves by {pct(st['moved']['rrmse'])} rRMSE "
+            f"(bad {pct(st['moved']['bad'])}) with its {stability.turn_label()}")
+    if not conv.get("metrics"):
+        return f"{head}; no supersampled comparison: {conv.get('error')}"
+    m, floor = conv["metrics"], conv.get("floor")
+    text = (f"{head}; supersampled ({conv['settings']}): rRMSE {pct(m['rrmse'])}, bad {pct(m['bad'])}")
+    if floor:
+        text += f", POV-Ray's own supersampled movement {pct(floor['rrmse'])} (bad {pct(floor['bad'])})"
+    return text + f"; at one sample a pixel {pct(rec['metrics']['rrmse'])}"
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -488,13 +519,15 @@ def wardray_diagnostics(output):
 
 
 # wardray's warnings of a tie that rounding decides (POV-Ray's random speckle), and the caution each counts as.
-TIE_WARNINGS = (("coincident surfaces:", "coincident surfaces"), ("pattern wrap on a surface:", "pattern wrap"))
+TIE_WARNINGS = (("coincident surfaces:", "coincident surfaces"), ("pattern wrap on a surface:", "pattern wrap"),
+                ("the objects this scene builds from trace() change", "trace() rounding"))
 
 
 def wardray_cautions(output):
     """What wardray warned may make its picture differ from POV-Ray's although it renders everything the scene
     says: "coincident surfaces" when it found surfaces lying on one another, "pattern wrap" when a texture jumps
-    exactly on a surface (both POV-Ray's random speckle), in that order."""
+    exactly on a surface (both POV-Ray's random speckle), "trace() rounding" when the objects the scene builds from
+    parse-time trace() calls change with the last bits of their results, in that order."""
     return [caution for text, caution in TIE_WARNINGS if re.search(r"warning: " + re.escape(text), output)]
 
 
@@ -662,6 +695,7 @@ class Census:
         extra = {"memory_limit": self.memory_limit} if self.corpus else {}
         if self.converge:
             extra["converged"] = [CONVERGED_RADIOSITY, CONVERGED_AA, CONVERGED_TIMEOUT]
+            extra["stability"] = [stability.CAMERA_TURN, stability.SUPERSAMPLED_AA]
         rec = hashlib.sha256(json.dumps({**common, **extra, "povray_key": pov, "wardray": self.ward_digest},
                                         sort_keys=True).encode()).hexdigest()
         return pov, rec, files
@@ -693,18 +727,23 @@ class Census:
                              ).hexdigest()[:8]
         if "focal blur" in stochastic:
             tag += f"-blur{CONVERGED_BLUR_SAMPLES}"
-        meta = self.results / "povray" / f"{key}-converged-{tag}.json"
+        return self.povray_variant(scene, f"{key}-converged-{tag}", ini, fresh, converged=stochastic)
+
+    def povray_variant(self, scene, name, ini, fresh, **how):
+        """POV-Ray's render `name` of the scene, made by _povray_once(**how), cached like the others."""
+        meta = self.results / "povray" / f"{name}.json"
         image = meta.with_suffix(".hdr")
         if not fresh and meta.is_file():
             result = json.loads(meta.read_text())
             if result["status"] != "ok" or image.is_file():
                 return result, image
-        result = self._povray_once(scene, image, ini, converged=stochastic)
+        result = self._povray_once(scene, image, ini, **how)
         meta.write_text(json.dumps(result, indent=1))
         return result, image
 
-    def _povray_once(self, scene, image, ini, converged=()):
-        """`converged`: the scene's stochastic features, to render it converged (see CONVERGED_RADIOSITY)."""
+    def _povray_once(self, scene, image, ini, converged=(), perturbed=False, supersampled=False):
+        """`converged`: the scene's stochastic features, to render it converged (see CONVERGED_RADIOSITY);
+        `perturbed`: with its cameras turned (census_stability); `supersampled`: with SUPERSAMPLED_AA."""
         root, work = self.scratch(scene, ".povray")
         # In a corpus, the copy of the scene's folder: POV-Ray may not read the original.
         cmd = self.pov.command(scene.name, "census.hdr", self.size, work if self.corpus else scene.parent)
@@ -715,6 +754,10 @@ class Census:
         if converged:
             converged_copy(scene_files(scene), work, converged)
             cmd, timeout = converged_options(cmd, converged), CONVERGED_TIMEOUT
+        if perturbed:
+            stability.perturbed_copy(scene_files(scene), work)
+        if supersampled:
+            cmd, timeout = stability.supersampled_options(cmd), CONVERGED_TIMEOUT
         r = self.runner.run(self.timed_command(cmd, root), work, timeout)
         output = r["stdout"] + r["stderr"]
         # An animation frame is written as census<frame number>.hdr.
@@ -740,7 +783,7 @@ class Census:
         return [str(self.ward.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D",
                 f"+WT{renderers.THREADS}", *(f"Declare={d}" for d in declares)]
 
-    def wardray_render(self, scene, image, ini, converged=()):
+    def wardray_render(self, scene, image, ini, converged=(), supersampled=False):
         root, work = self.scratch(scene, ".wardray")
         cmd = self.wardray_command(scene.name, "census.hdr")
         if ini:
@@ -750,6 +793,8 @@ class Census:
         if converged:
             converged_copy(scene_files(scene), work, converged)
             cmd, timeout = converged_options(cmd, converged), CONVERGED_TIMEOUT
+        if supersampled:
+            cmd, timeout = stability.supersampled_options(cmd), CONVERGED_TIMEOUT
         # The scratch copy lies below /tmp, which Debian's povray.conf lets both programs read (wardray's default
         # read permissions are that file's): users' scenes include `../common.inc`.
         if self.timed:
@@ -822,8 +867,63 @@ class Census:
                 rec["stochastic_hidden"] = stochastic = self.parsed_randomness(scene, rec["ini"])
             if stochastic:
                 rec["converged"] = self.converged(scene, pov_key, rec["ini"], images, stochastic, fresh)
-                rec["category"], rec["reason"] = classify(rec)
+            else:
+                rec["stability"] = self.stability(scene, pov_key, rec["ini"], ref, fresh)
+                if rec["stability"].get("unstable"):
+                    rec["converged"] = self.supersampled(scene, pov_key, rec["ini"], images, fresh)
+            rec["category"], rec["reason"] = classify(rec)
         return rec
+
+    def stability(self, scene, pov_key, ini, ref, fresh):
+        """POV-Ray's image of a deterministic scene against its image with the cameras turned
+        (census_stability): {moved: metrics, unstable}, or {error} when the cameras cannot be turned."""
+        try:
+            stability.perturbed_texts(scene_files(scene))
+        except RewriteError as e:
+            return {"error": str(e)}
+        result, image = self.povray_variant(scene, f"{pov_key}-perturbed-{self.stability_tag()}", ini, fresh,
+                                            perturbed=True)
+        if result["status"] != "ok":
+            return {"error": f"POV-Ray with its camera turned: {result.get('error') or result['status']}"}
+        turned = gimetrics.read_linear_rgb(image)
+        if turned.shape != ref.shape:
+            return {"error": "POV-Ray's image with its camera turned differs in size"}
+        m = compare(turned, ref)
+        return {"moved": m, "unstable": stability.moved(m, MATCH_RRMSE, MATCH_BAD)}
+
+    @staticmethod
+    def stability_tag():
+        return hashlib.sha256(json.dumps([stability.CAMERA_TURN, stability.SUPERSAMPLED_AA, CONVERGED_TIMEOUT]
+                                         ).encode()).hexdigest()[:8]
+
+    def supersampled(self, scene, pov_key, ini, images, fresh):
+        """Both programs' supersampled renders of a scene unstable at one sample a pixel, compared, with POV-Ray's
+        own supersampled movement under the camera turn as the floor: {kind, settings, metrics, floor, ...}."""
+        out = {"kind": "unstable", "settings": " ".join(stability.SUPERSAMPLED_AA), "metrics": None, "floor": None}
+        tag = self.stability_tag()
+        out["povray"], pov_image = self.povray_variant(scene, f"{pov_key}-supersampled-{tag}", ini, fresh,
+                                                       supersampled=True)
+        out["wardray"] = self.wardray_render(scene, images / "wardray-supersampled.hdr", ini, supersampled=True)
+        for who in ("povray", "wardray"):
+            if out[who]["status"] != "ok":
+                out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
+                return out
+        ref = gimetrics.read_linear_rgb(pov_image)
+        img = gimetrics.read_linear_rgb(images / "wardray-supersampled.hdr")
+        if img.shape != ref.shape:
+            out["error"] = "supersampled images differ in size"
+            return out
+        out["metrics"] = compare(img, ref)
+        turned, turned_image = self.povray_variant(scene, f"{pov_key}-supersampled-perturbed-{tag}", ini, fresh,
+                                                   supersampled=True, perturbed=True)
+        if turned["status"] == "ok":
+            floor = gimetrics.read_linear_rgb(turned_image)
+            if floor.shape == ref.shape:
+                out["floor"] = compare(floor, ref)
+        write_png(images / "povray-supersampled.png", srgb8(ref))
+        write_png(images / "wardray-supersampled.png", srgb8(img))
+        write_png(images / "diff-supersampled.png", difference8(img, ref))
+        return out
 
     def parsed_randomness(self, scene, ini):
         """The randomness of the scene as wardray parses it (`--check`'s `randomness:` line), in
@@ -985,6 +1085,9 @@ def parse_status(rec):
 
 
 def stochastic_cell(rec):
+    st = rec.get("stability") or {}
+    if st.get("unstable"):
+        return f"unstable at one sample a pixel (POV-Ray moves {pct(st['moved']['rrmse'])}): judged supersampled"
     if rec.get("stochastic_hidden"):
         return f"{', '.join(rec['stochastic_hidden'])} (in the parsed scene: converged only)"
     if not rec.get("stochastic"):
@@ -1396,6 +1499,21 @@ def write_report(path, records, missing, info, extra=()):
         "has some, it is judged on a converged comparison alone, keeping the deterministic tolerance at its own "
         f"settings. Focal blur converges with `blur_samples {CONVERGED_BLUR_SAMPLES}, {CONVERGED_BLUR_SAMPLES}` "
         "written over the literal `blur_samples` of the scene's folder.",
+        "- **Unstable** scenes: a deterministic scene that does not match (or matches only with a caution) is "
+        "rendered by POV-Ray a second time with every camera block of the scene's folder turned by a tiny angle "
+        f"(`rotate <{', '.join(f'{a:g}' for a in stability.CAMERA_TURN)}>` degrees appended inside the block, a "
+        "declared camera and a `camera { Name }` alike: about 2e-6 radians, 2e-4 of a pixel, moving the camera "
+        "by about 2e-6 of its distance from the origin). If POV-Ray's own image moves by more than the match "
+        "tolerance, its picture at one sample a pixel hangs on rounding (pixel centres exactly on edges, textures "
+        "chaotic at the scale of a pixel), and the scene is judged instead on supersampled renders of both "
+        f"programs (`{' '.join(stability.SUPERSAMPLED_AA)}`, each bounded at {CONVERGED_TIMEOUT} s), a match "
+        "being within the match tolerance or within POV-Ray's own supersampled movement under the same turn, "
+        "whichever is larger (a renderer that differs from POV-Ray no more than POV-Ray differs from itself "
+        "cannot be told apart from it). The reason gives POV-Ray's own movement at one sample and supersampled. "
+        "Where the cameras cannot be turned (no camera block in the folder's own files: the default camera, or "
+        "one from an include file elsewhere or in a subfolder), the scene keeps its verdict and the reason says "
+        "so. A scene whose parse-time trace() calls build different objects when their results move by 1e-12 is "
+        "warned about by wardray and counts as a caution (\"trace() rounding\").",
         "- Times are single whole-process wall-clock runs with two scenes running at once on a shared 2-core "
         "machine: indicative, not a benchmark.",
         "- Reasons are what can be found automatically: the features wardray reports as not rendered yet; for "

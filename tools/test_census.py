@@ -104,6 +104,81 @@ class ClassifyTest(unittest.TestCase):
         self.assertIn("advanced/pawns.pov", census.known_reasons())
 
 
+    def test_a_trace_rounding_warning_is_not_silent(self):
+        out = ("tracevines.pov:24:12: warning: the objects this scene builds from trace() change when trace()'s "
+               "results move by 1e-12 of their distance (8246 objects against 10166): they hang on rounding")
+        self.assertEqual(census.wardray_cautions(out), ["trace() rounding"])
+        rec = record(rrmse=0.22)
+        rec["wardray"]["cautions"] = census.wardray_cautions(out)
+        self.assertEqual(census.classify(rec)[0], "differ-with-warning")
+
+
+class StabilityTest(unittest.TestCase):
+    """The instability test: cameras turned in the scratch copy, and unstable scenes judged supersampled."""
+
+    def test_every_camera_block_takes_the_turn(self):
+        text = ('#declare C = camera { location <0, 1, -3> look_at 0 } // camera { x }\n'
+                'camera { C }\nmesh_camera { 1 0 mesh { M } }\n#declare S = "camera { }";\n')
+        new, n = census.stability.perturb_cameras(text)
+        self.assertEqual(n, 2)
+        self.assertEqual(new.count("rotate <0.0001000, 0.0001300, 0.0000700>"), 2)
+        self.assertIn("look_at 0  rotate", new)
+        self.assertIn("camera { C  rotate", new)
+        self.assertIn("mesh_camera { 1 0 mesh { M } }", new)  # not a camera block
+        self.assertIn('"camera { }"', new)  # nor a string
+
+    def test_the_copy_turns_cameras_in_the_folder_and_says_when_it_cannot(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            d = pathlib.Path(tmp)
+            files = [("a.pov", "#include \"cam.inc\"\nsphere { 0, 1 }\n"), ("cam.inc", "camera { location -z }\n")]
+            self.assertEqual(census.stability.perturbed_copy(files, d), ["cam.inc"])
+            self.assertIn("rotate", (d / "cam.inc").read_text())
+            self.assertFalse((d / "a.pov").exists())
+        with self.assertRaisesRegex(census.RewriteError, "no camera block"):
+            census.stability.perturbed_texts([("a.pov", "#include \"elsewhere.inc\"\nsphere { 0, 1 }\n")])
+        with self.assertRaisesRegex(census.RewriteError, "sub/c.inc"):
+            census.stability.perturbed_texts([("a.pov", "sphere { 0, 1 }"), ("sub/c.inc", "camera { }")])
+        self.assertEqual(census.stability.supersampled_options(["w", "-A", "+FH"]), ["w", "+A0.0", "+R3", "-J", "+FH"])
+
+    def test_moved_is_beyond_the_match_tolerance(self):
+        m = {"rrmse": 0.005, "bad": 0.001, "non_finite": 0, "non_finite_wardray": 0}
+        self.assertFalse(census.stability.moved(m, census.MATCH_RRMSE, census.MATCH_BAD))
+        self.assertTrue(census.stability.moved({**m, "rrmse": 0.02}, census.MATCH_RRMSE, census.MATCH_BAD))
+        self.assertTrue(census.stability.moved({**m, "bad": 0.02}, census.MATCH_RRMSE, census.MATCH_BAD))
+
+    @staticmethod
+    def unstable(rec, rrmse, bad=0.0, floor=None, moved=0.2):
+        metrics = {"rrmse": moved, "bad": 0.05, "non_finite": 0, "non_finite_wardray": 0, "non_finite_povray": 0}
+        rec["stability"] = {"moved": metrics, "unstable": True}
+        rec["converged"] = {"kind": "unstable", "settings": "+A0.0 +R3 -J", "metrics":
+                            {**metrics, "rrmse": rrmse, "bad": bad}, "floor": floor and {**metrics, **floor}}
+        return census.classify(rec)
+
+    def test_an_unstable_scene_is_judged_supersampled_within_povrays_own_movement(self):
+        category, reason = self.unstable(record(rrmse=0.1), 0.008)
+        self.assertEqual(category, "match")
+        self.assertIn("unstable at one sample a pixel: POV-Ray's own image moves by 20.00 %", reason)
+        self.assertIn("supersampled (+A0.0 +R3 -J): rRMSE 0.80 %", reason)
+        self.assertIn("at one sample a pixel 10.00 %", reason)
+        # Beyond the match tolerance but within what POV-Ray's own supersampled image moves: a match.
+        self.assertEqual(self.unstable(record(rrmse=0.1), 0.03, floor={"rrmse": 0.04, "bad": 0.01})[0], "match")
+        # Beyond both: still a difference, silent or small by the supersampled figure.
+        self.assertEqual(self.unstable(record(rrmse=0.1), 0.05, floor={"rrmse": 0.04, "bad": 0.0})[0],
+                         "differ-silently")
+        self.assertEqual(self.unstable(record(rrmse=0.1), 0.015)[0], "differ-small")
+        self.assertEqual(self.unstable(record(rrmse=0.1), 0.005, bad=0.02, floor={"rrmse": 0.0, "bad": 0.01})[0],
+                         "differ-small")
+
+    def test_a_stable_scene_keeps_its_verdict_and_says_it_is_stable(self):
+        rec = record(rrmse=0.05)
+        rec["stability"] = {"moved": {"rrmse": 0.0001, "bad": 0.0}, "unstable": False}
+        category, reason = census.classify(rec)
+        self.assertEqual(category, "differ-silently")
+        self.assertIn("stable at one sample a pixel: POV-Ray's own image moves by 0.01 %", reason)
+        rec["stability"] = {"error": "no camera block in the scene's folder"}
+        self.assertIn("instability not measured: no camera block", census.classify(rec)[1])
+
+
 class ConvergedTest(unittest.TestCase):
     def converged(self, rec, rrmse, bad=0.0, error=None):
         rec["converged"] = {"settings": "s", "error": error, "metrics": None if error else
