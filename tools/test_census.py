@@ -138,7 +138,7 @@ class StabilityTest(unittest.TestCase):
             census.stability.perturbed_texts([("a.pov", "#include \"elsewhere.inc\"\nsphere { 0, 1 }\n")])
         with self.assertRaisesRegex(census.RewriteError, "sub/c.inc"):
             census.stability.perturbed_texts([("a.pov", "sphere { 0, 1 }"), ("sub/c.inc", "camera { }")])
-        self.assertEqual(census.stability.supersampled_options(["w", "-A", "+FH"]), ["w", "+A0.0", "+R3", "-J", "+FH"])
+        self.assertEqual(census.stability.supersampled_options(["w", "-A", "+FH"]), ["w", "+A0.0", "+R4", "-J", "+FH"])
 
     def test_moved_is_beyond_the_match_tolerance(self):
         m = {"rrmse": 0.005, "bad": 0.001, "non_finite": 0, "non_finite_wardray": 0}
