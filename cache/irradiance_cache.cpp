@@ -101,7 +101,9 @@ TileCache::Contribution TileCache::contribution() const {
 
 void TileCache::adopt(Contribution contribution) {
     m_order.clear();
-    for (RecordOctree& own : m_own) own = own.empty_like();
+    // An octree nothing was filed in is already empty: making a fresh one costs a dozen allocations.
+    for (RecordOctree& own : m_own)
+        if (own.size() > 0) own = own.empty_like();
     // As they stand: merge_tiles() takes them in this order and clamps them against the merged cache.
     m_adopted = std::move(contribution.records);
     std::erase_if(m_adopted, [&](const IrradianceRecord& record) {
@@ -158,7 +160,8 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
         // The tile starts afresh: what it made is now part of the frozen cache.
         t.m_order.clear();
         t.m_adopted.clear();
-        for (RecordOctree& own : t.m_own) own = own.empty_like();
+        for (RecordOctree& own : t.m_own)
+            if (own.size() > 0) own = own.empty_like();
         t.m_lookups = 0;
         t.m_hits = 0;
     }

@@ -102,9 +102,11 @@ void for_each_tile(const RenderSettings& settings, const Next& next, const Body&
     });
 }
 
-/// The tiles in waves of 1, 2, 4, 8, ... taken coarse to fine (every 2^k-th tile across and down first), so that
-/// the first waves spread over the whole image and later waves reuse what they cached.
-std::vector<std::vector<int>> tile_waves(int tiles_x, int tiles_y) {
+/// The tiles in waves of `first`, 2 × first, 4 × first, ... taken coarse to fine (every 2^k-th tile across and down
+/// first), so that the first waves spread over the whole image and later waves reuse what they cached. A remainder
+/// smaller than the wave before it joins that wave: a wave of the one or two tiles left over would keep all but one
+/// or two processes waiting, and those tiles gain little from the records of the wave before.
+std::vector<std::vector<int>> tile_waves(int tiles_x, int tiles_y, std::size_t first) {
     std::vector<int> order;
     std::vector<char> taken(static_cast<std::size_t>(tiles_x) * tiles_y, 0);
     int step = 1;
@@ -120,9 +122,13 @@ std::vector<std::vector<int>> tile_waves(int tiles_x, int tiles_y) {
         }
     }
     std::vector<std::vector<int>> waves;
-    std::size_t size = 1;
-    for (std::size_t i = 0; i < order.size(); i += size, size *= 2)
-        waves.emplace_back(order.begin() + i, order.begin() + std::min(order.size(), i + size));
+    std::size_t begin = 0;
+    for (std::size_t size = std::max<std::size_t>(first, 1); begin < order.size(); size *= 2) {
+        std::size_t end = std::min(order.size(), begin + size);
+        if (order.size() - end < size) end = order.size();
+        waves.emplace_back(order.begin() + begin, order.begin() + end);
+        begin = end;
+    }
     return waves;
 }
 
@@ -175,24 +181,34 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
 
     // Without a cache every tile is independent: one wave. With one, tiles go in waves and each wave's records are
     // merged (in a fixed order) before the next starts, so the image is the same for any thread count.
-    std::vector<std::vector<int>> waves;
-    if (cached) {
-        waves = tile_waves(tiles_x, tiles_y);
-    } else {
-        waves.emplace_back(tile_count);
-        for (int t = 0; t < tile_count; ++t) waves[0][t] = t;
-    }
-    if (settings.region) keep_region_tiles(waves, *settings.region, tiles_x, settings.tile_size);
-    std::size_t tiles_rendered = 0;
-    for (const std::vector<int>& wave : waves) tiles_rendered += wave.size();
     std::vector<double> sizes;
     if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
+    std::vector<std::vector<std::vector<int>>> pass_waves(sizes.size() + 1);
+    for (std::size_t pass = 0; pass < pass_waves.size(); ++pass) {
+        std::vector<std::vector<int>>& waves = pass_waves[pass];
+        if (cached) {
+            // The first pass starts from an empty cache (unless one was loaded), so its first tile goes alone: a second
+            // tile beside it would make most of the same records again. Later passes start from a filled cache,
+            // where two tiles at once make hardly more records than one after the other, and a one-tile wave
+            // leaves all processes but one waiting.
+            waves = tile_waves(tiles_x, tiles_y, pass == 0 ? 1 : 2);
+        } else {
+            waves.emplace_back(tile_count);
+            for (int t = 0; t < tile_count; ++t) waves[0][t] = t;
+        }
+        if (settings.region) keep_region_tiles(waves, *settings.region, tiles_x, settings.tile_size);
+    }
+    std::size_t tiles_rendered = 0, wave_count = 0;
+    for (const auto& waves : pass_waves) {
+        wave_count += waves.size();
+        for (const std::vector<int>& wave : waves) tiles_rendered += wave.size();
+    }
     // Shared among processes, each process renders its share of every wave and they exchange records between waves.
     TileExchange exchange(settings.communicator);
-    exchange.begin(tile_count, waves.size() * (sizes.size() + 1));
+    exchange.begin(tile_count, wave_count);
     std::vector<TileExchange::TileRect> final_tiles;  // this process's tiles of the final pass
     const int processes = settings.communicator ? std::max(settings.communicator->size(), 1) : 1;
-    const double total_work = static_cast<double>(tiles_rendered) * (sizes.size() + 1) / processes;
+    const double total_work = static_cast<double>(tiles_rendered) / processes;
     std::atomic<int> tiles_done{0};
     std::mutex progress_mutex;
     auto tile_done = [&]() {
@@ -206,7 +222,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     auto run_pass = [&](bool final_pass, const auto& body) {
         if (cached) cache->begin_pass(tile_count);
         const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
-        for (const std::vector<int>& wave : waves) {
+        for (const std::vector<int>& wave : pass_waves[static_cast<std::size_t>(pass_number - 1)]) {
             exchange.start_wave(wave);
             for_each_tile(settings, [&] { return exchange.next_tile(); }, [&](int tile, int x0, int y0, int x1, int y1) {
                 lighting::TraceContext& ctx = tile_counters[tile].trace;

@@ -72,7 +72,7 @@ void expect_same_across_ranks(const fs::path& dir, const std::string& args, cons
 }
 
 TEST(Mpi, RadiosityImageAndCacheFileAreTheOneProcessOnes) {
-    // 6 tiles of 16 pixels in waves of 1, 2, 3, over the pretrace passes and the final pass.
+    // 6 tiles of 16 pixels in waves of 1, 2, 3 in the first pretrace pass, then 2, 4 in the later passes.
     const fs::path dir = fresh_dir("radiosity");
     expect_same_across_ranks(dir,
                              shell_quote(kBoxScene.string()) +
@@ -134,7 +134,7 @@ TEST(Mpi, RankThatFailsToParseFailsTheRunWithNoImage) {
 TEST(Mpi, StatsCountRecordsMadeAndReceivedPerRank) {
     const fs::path dir = fresh_dir("stats");
     const ProcessResult r =
-        mpirun(2, shell_quote(kBoxScene.string()) + " +W64 +H48 +BS16 +WT1 Declare=Count=40 -F --stats s.json", dir);
+        mpirun(2, shell_quote(kBoxScene.string()) + " +W64 +H64 +BS16 +WT1 Declare=Count=40 -F --stats s.json", dir);
     ASSERT_EQ(r.exit_status, 0) << r.output;
     std::ifstream f(dir / "s.json");
     const nlohmann::json stats = nlohmann::json::parse(f);
@@ -152,6 +152,14 @@ TEST(Mpi, StatsCountRecordsMadeAndReceivedPerRank) {
         received += rank["bytes_received"].get<std::uint64_t>();
     }
     EXPECT_EQ(made, total);
+    // Each pass renders each of the 16 tiles once: a wave structure that folds its last tiles into the wave before
+    // must neither drop nor repeat one.
+    std::uint64_t tiles = 0, wave_tiles = 0;
+    for (const nlohmann::json& rank : p["ranks"]) tiles += rank["tiles"].get<std::uint64_t>();
+    for (const nlohmann::json& wave : p["waves"]) wave_tiles += wave["tiles"].get<std::uint64_t>();
+    ASSERT_GE(stats["passes"].size(), 2u);
+    EXPECT_EQ(tiles, 16u * stats["passes"].size());
+    EXPECT_EQ(wave_tiles, tiles);
     EXPECT_GT(sent, total * 200);  // a record is about 250 bytes
     EXPECT_EQ(p["bytes_exchanged"], sent);
     // Rank 1 gets what rank 0 sent in every allgather; the image and statistics go to rank 0 only.
