@@ -300,16 +300,20 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
     return hit;
 }
 
+Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
+    const Vec3 n = normalize(m_transform.normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    return m_inverse ? -n : n;
+}
+
 bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
-                                  double t_max, Hit& out) const {
+                                  double t_max, Hit& out, const Vec3* flat_normals) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
     const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
     MeshShape::FaceCrossing c;
     if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
-    Vec3 n = normalize(m_transform.normal(mesh->face_normal(face, c, local.direction)));
+    const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
     if (!is_finite(n)) return false;
-    if (m_inverse) n = -n;
     const auto params = mesh->params_at(face, c.u, c.v);
     out.t = c.t;
     out.position = origin + c.t * direction;

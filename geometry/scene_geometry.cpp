@@ -34,9 +34,15 @@ void bounds_callback(const RTCBoundsFunctionArguments* args) {
     out->upper_z = float_up(b.upper.z);
 }
 
-// One top-level mesh as a native Embree triangle geometry with world-space float vertices.
-void attach_mesh(GeometryData& impl, std::uint32_t mesh_index) {
+// At most this many faces' normals are kept (24 bytes each), over all meshes; the rest compute theirs per hit.
+constexpr std::size_t kFlatNormalBudget = std::size_t{1} << 21;
+
+// One top-level mesh as a native Embree triangle geometry with world-space float vertices; `normals_left` is what
+// remains of kFlatNormalBudget.
+void attach_mesh(GeometryData& impl, std::uint32_t mesh_index, std::size_t& normals_left) {
     const ShapeInstance& inst = impl.meshes[mesh_index];
+    MeshTrace& trace = impl.mesh_traces[mesh_index];
+    trace.inst = &inst;
     const auto& mesh = std::get<MeshShape>(inst.shape());
     RTCGeometry geom = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_TRIANGLE);
     impl.check("triangle geometry creation");
@@ -51,16 +57,21 @@ void attach_mesh(GeometryData& impl, std::uint32_t mesh_index) {
     }
     for (std::size_t i = 0; i < mesh.faces().size(); ++i)
         for (int k = 0; k < 3; ++k) indices[3 * i + k] = static_cast<unsigned>(mesh.faces()[i].v[k]);
-    rtcSetGeometryUserData(geom, &impl);
+    const auto& faces = mesh.faces();
+    if (faces.size() <= normals_left &&
+        std::all_of(faces.begin(), faces.end(), [](const MeshShape::Face& f) { return f.n[0] < 0; })) {
+        normals_left -= faces.size();
+        trace.flat_normals.resize(faces.size());
+        for (std::size_t i = 0; i < faces.size(); ++i) trace.flat_normals[i] = inst.face_world_normal(i, {});
+    }
+    rtcSetGeometryUserData(geom, &trace);
     rtcSetGeometryMask(geom, visibility_mask(inst));
     rtcSetGeometryIntersectFilterFunction(geom, triangle_intersect_filter);
     rtcSetGeometryOccludedFilterFunction(geom, triangle_occluded_filter);
     rtcCommitGeometry(geom);
-    const unsigned id = rtcAttachGeometry(impl.scene, geom);
+    rtcAttachGeometry(impl.scene, geom);
     rtcReleaseGeometry(geom);
     impl.check("triangle geometry setup");
-    if (impl.mesh_of_geometry.size() <= id) impl.mesh_of_geometry.resize(id + 1, 0);
-    impl.mesh_of_geometry[id] = mesh_index;
 }
 
 // The analytic shapes and CSG objects as one Embree user geometry (a primitive per object).
@@ -133,7 +144,9 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
     rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
 
-    for (std::uint32_t i = 0; i < impl.meshes.size(); ++i) attach_mesh(impl, i);
+    impl.mesh_traces.resize(impl.meshes.size());
+    std::size_t normals_left = kFlatNormalBudget;
+    for (std::uint32_t i = 0; i < impl.meshes.size(); ++i) attach_mesh(impl, i, normals_left);
     if (!impl.bounded.empty()) {
         if (std::isfinite(impl.near_magnitude)) {
             // The near boxes in the scene with the meshes, under masks shifted past the ray kinds' bits so that a far
@@ -209,7 +222,7 @@ std::vector<Diagnostic> SceneGeometry::shape_warnings() const {
 }
 
 double SceneGeometry::min_isect_parameter(const Vec3& direction) const {
-    return min_isect_depth_of(*m_impl, direction);
+    return min_isect_depth_of(*m_impl, length(direction));
 }
 
 double SceneGeometry::self_intersection_offset(const Vec3& p) const {

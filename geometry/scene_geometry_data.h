@@ -5,6 +5,8 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,17 +27,27 @@ inline float float_down(double x) {
     return f;
 }
 
+// std::nextafter(f, +infinity) for a float that is not NaN or +infinity, inline: float_up() needs it for about half
+// of all rays' tfar, and the library call was a measurable part of a trace.
+inline float next_float_up(float f) {
+    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+    const auto bits = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? bits + 1u : bits - 1u);
+}
+
 // Nearest float not below x.
 inline float float_up(double x) {
-    float f = static_cast<float>(x);
-    if (static_cast<double>(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? next_float_up(f) : f;
 }
+
+struct GeometryData;
 
 /// Per-query state handed to the callbacks through Embree's context (Embree's documented extension idiom:
 /// the RTCIntersectContext comes first). It lives on the querying thread's stack, so callbacks may write it.
 struct QueryContext {
     RTCIntersectContext base;
+    const GeometryData* impl = nullptr;
     Vec3 origin;          ///< the original double-precision world ray
     Vec3 direction;
     double t_min = 0.0;
@@ -44,7 +56,8 @@ struct QueryContext {
     double dir_length = 0.0;  ///< length(direction), for occlusion's float test (clearly_between)
     RayKind kind = RayKind::Camera;
     bool has_hit = false;
-    Hit hit;
+    /// Where the nearest hit so far is written (the caller's result, so no Hit is copied); none for shadow rays.
+    Hit* out = nullptr;
 };
 static_assert(std::is_standard_layout_v<QueryContext>);
 
@@ -55,6 +68,14 @@ struct UserGroup {
     const GeometryData* impl = nullptr;
     std::vector<std::uint32_t> prims;  ///< Embree primID -> index into GeometryData::bounded
     const std::vector<Bounds>* padded = nullptr;  ///< per bounded instance: the boxes this geometry's BVH holds
+};
+
+/// One top-level mesh as its Embree triangle geometry's callbacks read it.
+struct MeshTrace {
+    const ShapeInstance* inst = nullptr;
+    /// ShapeInstance::face_world_normal() of each face where every face is flat (its normal the same at every
+    /// crossing), made once so a hit copies it; empty for smooth meshes and past the memory budget.
+    std::vector<Vec3> flat_normals;
 };
 
 // Everything the Embree callbacks read; SceneGeometry::Impl is this type (callbacks cannot name a private type).
@@ -73,7 +94,7 @@ struct GeometryData {
     double near_magnitude = inf;
     std::vector<ShapeInstance> unbounded;  ///< planes: intersected directly, never in the BVH
     std::vector<ShapeInstance> meshes;     ///< native Embree triangle geometries
-    std::vector<std::uint32_t> mesh_of_geometry;  ///< Embree geomID -> index into meshes
+    std::vector<MeshTrace> mesh_traces;    ///< per mesh, its geometry's user data
     std::vector<std::uint32_t> skipped;
     std::vector<SkipReason> skip_reasons;  ///< per entry of skipped
     std::optional<Bounds> bounds;
@@ -94,14 +115,11 @@ struct GeometryData {
         if (!error.empty()) throw std::runtime_error(std::string("Embree error during ") + step + ": " + error);
     }
 
-    // The mesh that an Embree triangle geometry holds.
-    const ShapeInstance& mesh(unsigned geom_id) const { return meshes[mesh_of_geometry[geom_id]]; }
     // Runs the Embree traversal over the bounded instances, continuing from the state in q.
     void trace(QueryContext& q, bool shadow) const;
     // Brute-force fallback when the ray cannot be expressed in float (huge coordinates).
     void brute_force(QueryContext& q, bool shadow) const;
 };
-
 
 // The kinds of ray that see an instance, a bit per RayKind, as Embree's geometry mask: a ray then never meets (nor
 // calls back for) an object it cannot see, such as cornell's light patch (no_shadow) on every shadow ray.
@@ -128,8 +146,9 @@ void triangle_occluded_filter(const RTCFilterFunctionNArguments* args);
 // how its users' idiom of a second surface a hair (1e-8) inside another, such as a drink's surface against its
 // glass, renders: the second crossing is not seen. At scenes smaller than one unit the depth shrinks with the
 // scene (1e-4 of its magnitude), so that a scene scaled down draws what it draws at unit size.
-inline double min_isect_depth_of(const GeometryData& impl, const Vec3& direction) {
-    return 1e-4 * min_of(1.0, impl.magnitude) / length(direction);
+// `dir_length` is the length of the ray's direction.
+inline double min_isect_depth_of(const GeometryData& impl, double dir_length) {
+    return 1e-4 * min_of(1.0, impl.magnitude) / dir_length;
 }
 
 }  // namespace wardray::geometry::detail

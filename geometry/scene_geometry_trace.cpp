@@ -20,7 +20,7 @@ void intersect_callback(const RTCIntersectFunctionNArguments* args) {
     const auto hit = inst.nearest(q->origin, q->direction, q->t_min, q->t_best);
     if (!hit) return;
     q->t_best = hit->t;
-    q->hit = *hit;
+    *q->out = *hit;
     q->has_hit = true;
     auto* rh = reinterpret_cast<RTCRayHit*>(args->rayhit);
     rh->ray.tfar = float_up(hit->t - q->t_shift);
@@ -50,18 +50,15 @@ void occluded_callback(const RTCOccludedFunctionNArguments* args) {
 void triangle_intersect_filter(const RTCFilterFunctionNArguments* args) {
     if (args->N != 1 || args->valid[0] == 0) return;
     auto* q = reinterpret_cast<QueryContext*>(const_cast<RTCIntersectContext*>(args->context));
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->mesh(RTCHitN_geomID(args->hit, args->N, 0));
-    const auto hit = inst.visible_to(q->kind)
-                         ? inst.face_hit(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min,
-                                         q->t_best)
-                         : std::nullopt;
-    if (!hit) {
+    const auto& mesh = *static_cast<const MeshTrace*>(args->geometryUserPtr);
+    // Written straight into the caller's result: face_hit_into() leaves it as it was when it refuses the face.
+    if (!mesh.inst->visible_to(q->kind) ||
+        !mesh.inst->face_hit_into(q->origin, q->direction, RTCHitN_primID(args->hit, args->N, 0), q->t_min,
+                                  q->t_best, *q->out, mesh.flat_normals.empty() ? nullptr : mesh.flat_normals.data())) {
         args->valid[0] = 0;
         return;
     }
-    q->t_best = hit->t;
-    q->hit = *hit;
+    q->t_best = q->out->t;
     q->has_hit = true;
 }
 
@@ -84,8 +81,8 @@ bool clearly_between(const GeometryData& impl, const QueryContext& q, float t_fl
 void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
     if (args->N != 1 || args->valid[0] == 0) return;
     auto* q = reinterpret_cast<QueryContext*>(const_cast<RTCIntersectContext*>(args->context));
-    const auto* impl = static_cast<const GeometryData*>(args->geometryUserPtr);
-    const ShapeInstance& inst = impl->mesh(RTCHitN_geomID(args->hit, args->N, 0));
+    const auto& mesh = *static_cast<const MeshTrace*>(args->geometryUserPtr);
+    const ShapeInstance& inst = *mesh.inst;
     if (!inst.visible_to(RayKind::Shadow)) {
         args->valid[0] = 0;
         return;
@@ -94,15 +91,16 @@ void triangle_occluded_filter(const RTCFilterFunctionNArguments* args) {
     // needed (face_hit() keeps the crossing of the triangle's plane, so only its t can disagree).
     const Vec3 ng{RTCHitN_Ng_x(args->hit, args->N, 0), RTCHitN_Ng_y(args->hit, args->N, 0),
                   RTCHitN_Ng_z(args->hit, args->N, 0)};
-    if (clearly_between(*impl, *q, RTCRayN_tfar(args->ray, args->N, 0), ng)) {
+    if (clearly_between(*q->impl, *q, RTCRayN_tfar(args->ray, args->N, 0), ng)) {
         q->has_hit = true;
         return;
     }
     // Near the ends (a light in a surface: cornell's lights lie in its ceiling) the face's double t decides, most
-    // often against it; the full hit only for a crossing that counts (face_hit() also refuses a non-finite normal).
+    // often against it; the normal only for a crossing that counts (face_hit() also refuses a non-finite normal).
     const unsigned face = RTCHitN_primID(args->hit, args->N, 0);
     if (!inst.face_crossed(q->origin, q->direction, face, q->t_min, q->t_best) ||
-        !inst.face_hit(q->origin, q->direction, face, q->t_min, q->t_best)) {
+        !(mesh.flat_normals.empty() ? inst.face_hit(q->origin, q->direction, face, q->t_min, q->t_best).has_value()
+                                    : is_finite(mesh.flat_normals[face]))) {
         args->valid[0] = 0;
         return;
     }
@@ -117,7 +115,7 @@ void GeometryData::brute_force(QueryContext& q, bool shadow) const {
         if (!inst.visible_to(shadow ? RayKind::Shadow : q.kind)) continue;
         if (const auto hit = inst.nearest(q.origin, q.direction, q.t_min, q.t_best)) {
             q.t_best = hit->t;
-            q.hit = *hit;
+            if (q.out) *q.out = *hit;
             q.has_hit = true;
             if (shadow) return;
         }
@@ -132,20 +130,25 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
     const Vec3& hi = padded_scene_bounds->upper;
     const Vec3& o_world = q.origin;
     double t_start = q.t_min;
-    double t_exit = inf;
     if (q.t_min >= 0.0 && lo.x <= o_world.x && o_world.x <= hi.x && lo.y <= o_world.y && o_world.y <= hi.y &&
         lo.z <= o_world.z && o_world.z <= hi.z) {
-        // From inside the box (gather and shadow rays) the ray entered before t_min: only where it leaves is
-        // needed, the same quotients slab_interval() keeps for that side, in its order.
-        for (int k = 0; k < 3; ++k)
-            if (q.direction[k] != 0.0)
-                t_exit = min_of(t_exit, ((q.direction[k] > 0.0 ? hi[k] : lo[k]) - o_world[k]) / q.direction[k]);
+        // From inside the box (gather and shadow rays) the ray entered before t_min: the query is empty when it
+        // leaves before t_start, by the quotients slab_interval() keeps for that side. A quotient (a nonnegative
+        // distance over |direction|) is surely at least t_start when t_start |direction| is below a quarter of
+        // the distance, rounding included; only otherwise is it divided out and compared.
+        for (int k = 0; k < 3; ++k) {
+            const double d = q.direction[k];
+            if (d == 0.0) continue;
+            const double distance = (d > 0.0 ? hi[k] : lo[k]) - o_world[k];
+            if (!(t_start * std::fabs(d) < 0.25 * std::fabs(distance)) && !(t_start <= distance / d)) return;
+        }
     } else {
-        double t_enter = 0.0;
+        double t_enter = 0.0, t_exit = inf;
         if (!slab_interval(lo, hi, q.origin, q.direction, t_enter, t_exit)) return;
         t_start = max_of(q.t_min, t_enter);
+        if (!(t_start <= t_exit)) return;
     }
-    if (!(t_start <= min_of(t_exit, q.t_best))) return;
+    if (!(t_start <= q.t_best)) return;
     q.t_shift = t_start;
     const Vec3 o = q.origin + t_start * q.direction;
     const float tfar = float_up(q.t_best - t_start);
@@ -205,56 +208,64 @@ void GeometryData::trace(QueryContext& q, bool shadow) const {
 
 namespace {
 
-// A ray's t_min raised to MIN_ISECT_DEPTH; a query that reaches behind its origin (t_min < 0) asks for the whole
-// line and keeps its range.
-double first_t(const GeometryData& impl, const Ray& ray) {
-    return ray.t_min < 0.0 ? ray.t_min : max_of(ray.t_min, min_isect_depth_of(impl, ray.direction));
+// A ray's t_min raised to MIN_ISECT_DEPTH (`dir_length` is length(ray.direction)); a query that reaches behind its
+// origin (t_min < 0) asks for the whole line and keeps its range.
+double first_t(const GeometryData& impl, const Ray& ray, double dir_length) {
+    return ray.t_min < 0.0 ? ray.t_min : max_of(ray.t_min, min_isect_depth_of(impl, dir_length));
+}
+
+// Nothing to trace: a ray that is not finite, has no direction or an empty span.
+bool unusable(const Ray& ray) {
+    return !is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
+           std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max);
 }
 
 }  // namespace
 
 std::optional<Hit> SceneGeometry::intersect(const Ray& ray) const {
-    if (!is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
-        std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max))
-        return std::nullopt;
+    // The callbacks write the nearest hit straight into the result, which is returned without a copy.
+    std::optional<Hit> result;
+    if (unusable(ray)) return result;
     QueryContext q;
+    q.t_min = first_t(*m_impl, ray, length(ray.direction));
+    q.t_best = ray.t_max;
+    if (!(q.t_min < q.t_best)) return result;
     rtcInitIntersectContext(&q.base);
+    q.impl = m_impl.get();
     q.origin = ray.origin;
     q.direction = ray.direction;
-    q.t_min = first_t(*m_impl, ray);
-    q.t_best = ray.t_max;
     q.kind = ray.kind;
-    if (!(q.t_min < q.t_best)) return std::nullopt;
+    q.out = &result.emplace();
     // Unbounded shapes first: their nearest hit shortens the BVH traversal.
     for (const ShapeInstance& inst : m_impl->unbounded) {
         if (!inst.visible_to(ray.kind)) continue;
         if (const auto hit = inst.nearest(q.origin, q.direction, q.t_min, q.t_best)) {
             q.t_best = hit->t;
-            q.hit = *hit;
+            *q.out = *hit;
             q.has_hit = true;
         }
     }
     m_impl->trace(q, false);
-    if (!q.has_hit) return std::nullopt;
-    return q.hit;
+    if (!q.has_hit) result.reset();
+    return result;
 }
 
 bool SceneGeometry::occluded(const Ray& ray) const {
-    if (!is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
-        std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max))
-        return false;
-    const double t_min = first_t(*m_impl, ray);
+    if (unusable(ray)) return false;
+    const double dir_length = length(ray.direction);
+    const double t_min = first_t(*m_impl, ray, dir_length);
     if (!(t_min < ray.t_max)) return false;
     for (const ShapeInstance& inst : m_impl->unbounded)
         if (inst.visible_to(RayKind::Shadow) && inst.crosses(ray.origin, ray.direction, t_min, ray.t_max))
             return true;
     QueryContext q;
     rtcInitIntersectContext(&q.base);
+    q.impl = m_impl.get();
     q.origin = ray.origin;
     q.direction = ray.direction;
     q.t_min = t_min;
     q.t_best = ray.t_max;
-    q.dir_length = length(ray.direction);
+    q.dir_length = dir_length;
     q.kind = RayKind::Shadow;
     m_impl->trace(q, true);
     return q.has_hit;
