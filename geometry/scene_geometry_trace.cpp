@@ -67,13 +67,14 @@ namespace {
 // True when Embree's float hit (ray parameter t_float past the query's shift, geometric normal ng) lies so far inside
 // (t_min, t_best) that the double-precision crossing must too: the plane crossing's rounding is about 1e-7 of the
 // scene's size over the cosine, the margin 1e-4 of it at cosines of at least 0.05.
+// The span first: a hit near an end (a light in a surface) fails it, and the cosine's square root is not taken.
 bool clearly_between(const GeometryData& impl, const QueryContext& q, float t_float, const Vec3& ng) {
+    if (!std::isfinite(t_float)) return false;
     const double dir_len = q.dir_length;
-    const double ng_len = length(ng);
-    if (!(std::fabs(dot(ng, q.direction)) >= 0.05 * ng_len * dir_len) || !std::isfinite(t_float)) return false;
     const double t = q.t_shift + static_cast<double>(t_float);
     const double margin = 1e-4 * (impl.magnitude + max_abs_component(q.origin)) / dir_len + 1e-4 * std::fabs(t);
-    return t - margin > q.t_min && t + margin < q.t_best;
+    if (!(t - margin > q.t_min && t + margin < q.t_best)) return false;
+    return std::fabs(dot(ng, q.direction)) >= 0.05 * length(ng) * dir_len;
 }
 
 }  // namespace
@@ -214,10 +215,13 @@ double first_t(const GeometryData& impl, const Ray& ray, double dir_length) {
     return ray.t_min < 0.0 ? ray.t_min : max_of(ray.t_min, min_isect_depth_of(impl, dir_length));
 }
 
-// Nothing to trace: a ray that is not finite, has no direction or an empty span.
+// Nothing to trace: a ray that is not finite, has no direction or an empty span. A sum of the six coordinates
+// times zero is zero when all are finite (else NaN, or a finite sum too large: then each is tested).
 bool unusable(const Ray& ray) {
-    return !is_finite(ray.origin) || !is_finite(ray.direction) || dot(ray.direction, ray.direction) == 0.0 ||
-           std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max);
+    const Vec3& o = ray.origin;
+    const Vec3& d = ray.direction;
+    if (!(0.0 * (((o.x + o.y) + (o.z + d.x)) + (d.y + d.z)) == 0.0) && (!is_finite(o) || !is_finite(d))) return true;
+    return dot(d, d) == 0.0 || std::isnan(ray.t_min) || std::isnan(ray.t_max) || !(ray.t_min < ray.t_max);
 }
 
 }  // namespace
