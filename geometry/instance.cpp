@@ -300,21 +300,37 @@ bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std:
 
 std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direction, std::size_t face,
                                            double t_min, double t_max) const {
-    const auto* mesh = std::get_if<MeshShape>(&m_shape);
-    if (mesh == nullptr || face >= mesh->faces().size()) return std::nullopt;
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
-    double bary[2] = {0.0, 0.0};
-    const auto h = mesh->intersect_face(local, face, t_min, t_max, true, bary);
-    if (!h) return std::nullopt;
-    Vec3 n = normalize(m_transform.normal(h->normal));
-    if (!is_finite(n)) return std::nullopt;
-    if (m_inverse) n = -n;
-    Hit hit{h->t, origin + h->t * direction, n, m_index, m_object, mesh->faces()[face].source, bary[0], bary[1]};
-    if (const auto params = mesh->params_at(face, bary[0], bary[1])) {
-        hit.has_params = true;
-        hit.params = *params;
-    }
+    Hit hit;
+    if (!face_hit_into(origin, direction, face, t_min, t_max, hit)) return std::nullopt;
     return hit;
+}
+
+Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
+    const Vec3 n = normalize(m_transform.normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    return m_inverse ? -n : n;
+}
+
+bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
+                                  double t_max, Hit& out, const Vec3* flat_normals) const {
+    const auto* mesh = std::get_if<MeshShape>(&m_shape);
+    if (mesh == nullptr || face >= mesh->faces().size()) return false;
+    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    MeshShape::FaceCrossing c;
+    if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
+    const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
+    if (!is_finite(n)) return false;
+    const auto params = mesh->params_at(face, c.u, c.v);
+    out.t = c.t;
+    out.position = origin + c.t * direction;
+    out.normal = n;
+    out.object = m_index;
+    out.leaf = m_object;
+    out.face = mesh->faces()[face].source;
+    out.bary_u = c.u;
+    out.bary_v = c.v;
+    out.has_params = params.has_value();
+    out.params = params ? *params : Vec3{};
+    return true;
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {

@@ -70,6 +70,13 @@ public:
     /// For meshes: the crossing with one face that Embree found in float, recomputed in double, as a Hit.
     std::optional<Hit> face_hit(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,
                                 double t_max) const;
+    /// face_hit() written into `out` (every field), without a copy of the Hit; false, and `out` untouched, where
+    /// face_hit() returns nothing. `flat_normals`, when given, holds face_world_normal() of every face (all flat).
+    bool face_hit_into(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min, double t_max,
+                       Hit& out, const Vec3* flat_normals = nullptr) const;
+    /// For meshes: the unit world normal face_hit() gives at a crossing of a face (`inverse` applied), not finite
+    /// where it refuses the face for want of one; on a flat face the same at every crossing.
+    Vec3 face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const;
     /// For meshes: false when face_hit() finds no crossing for want of one in (t_min, t_max), true when it finds one
     /// or refuses it only for a normal that maps to no finite one; cheaper, without the normal.
     bool face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min, double t_max) const;

@@ -190,40 +190,32 @@ std::optional<Vec3> MeshShape::params_at(std::size_t face, double bary_u, double
 
 std::optional<SurfaceHit> MeshShape::intersect_face(const LocalRay& ray, std::size_t index, double t_min,
                                                     double t_max, bool known_hit, double* bary) const {
+    FaceCrossing c;
+    if (!face_crossing(ray, index, t_min, t_max, known_hit, c)) return std::nullopt;
+    if (bary) {
+        bary[0] = c.u;
+        bary[1] = c.v;
+    }
+    bool entering = true;
+    const Vec3 normal = face_normal(index, c, ray.direction, &entering);
+    return SurfaceHit{c.t, normal, entering};
+}
+
+Vec3 MeshShape::face_normal(std::size_t index, const FaceCrossing& c, const Vec3& direction, bool* entering) const {
     const Face& f = m_faces[index];
     const Vec3& a = m_vertices[f.v[0]];
     const Vec3 e1 = m_vertices[f.v[1]] - a;
     const Vec3 e2 = m_vertices[f.v[2]] - a;
-    const Vec3 pv = cross(ray.direction, e2);
-    const double det = dot(e1, pv);
-    if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
-    const Vec3 tv = ray.origin - a;
-    double u = dot(tv, pv) / det;
-    const Vec3 qv = cross(tv, e1);
-    double v = dot(ray.direction, qv) / det;
-    if (known_hit) {
-        u = std::clamp(u, 0.0, 1.0);
-        v = std::clamp(v, 0.0, 1.0 - u);
-    } else if (u < 0.0 || u > 1.0 || v < 0.0 || u + v > 1.0) {
-        return std::nullopt;
-    }
-    const double t = dot(e2, qv) / det;
-    if (!(t > t_min && t < t_max)) return std::nullopt;
-    if (bary) {
-        bary[0] = u;
-        bary[1] = v;
-    }
     // POV-Ray compat: a triangle's normal is (p3 - p1) x (p2 - p1), so the side a face's normal is on follows its
     // vertex order as in POV-Ray (trace() returns it, interior_texture shows on the other side, a closed mesh is
     // entered against it). Smooth triangles interpolate their vertex normals as given, whichever side they face.
     const Vec3 ng = cross(e2, e1);
-    Vec3 normal = ng;
-    if (f.n[0] >= 0) {
-        const Vec3 ns = (1.0 - u - v) * normalize(m_normals[f.n[0]]) + u * normalize(m_normals[f.n[1]]) +
-                        v * normalize(m_normals[f.n[2]]);
-        if (length(ns) > 0.0) normal = m_normals_outward && dot(ns, ng) < 0.0 ? -ns : ns;
-    }
-    return SurfaceHit{t, normal, dot(ng, ray.direction) < 0.0};
+    if (entering) *entering = dot(ng, direction) < 0.0;
+    if (f.n[0] < 0) return ng;
+    const Vec3 ns = (1.0 - c.u - c.v) * normalize(m_normals[f.n[0]]) + c.u * normalize(m_normals[f.n[1]]) +
+                    c.v * normalize(m_normals[f.n[2]]);
+    if (!(length(ns) > 0.0)) return ng;
+    return m_normals_outward && dot(ns, ng) < 0.0 ? -ns : ns;
 }
 
 void MeshShape::candidate_faces(const LocalRay& ray, double t_min, double t_max,

@@ -1,6 +1,7 @@
 // MeshShape: triangles (`triangle`, `smooth_triangle`, `mesh`, `mesh2`, triangulated `polygon`) in object space.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -40,9 +41,44 @@ public:
     /// in float) only the plane's t is recomputed and the barycentrics are clamped, so no edge crack opens.
     std::optional<SurfaceHit> intersect_face(const LocalRay& ray, std::size_t face, double t_min, double t_max,
                                              bool known_hit = false, double* bary = nullptr) const;
+    /// Where a ray crosses a face: its parameter and the barycentric weights of the second and third corners.
+    struct FaceCrossing {
+        double t = 0.0;
+        double u = 0.0;
+        double v = 0.0;
+    };
+    /// intersect_face() up to its crossing, without the normal (inline: Embree's triangle filters call it for every
+    /// candidate face); false where intersect_face() finds nothing. intersect_face() is this and face_normal().
+    bool face_crossing(const LocalRay& ray, std::size_t index, double t_min, double t_max, bool known_hit,
+                       FaceCrossing& out) const {
+        const Face& f = m_faces[index];
+        const Vec3& a = m_vertices[f.v[0]];
+        const Vec3 e1 = m_vertices[f.v[1]] - a;
+        const Vec3 e2 = m_vertices[f.v[2]] - a;
+        const Vec3 pv = cross(ray.direction, e2);
+        const double det = dot(e1, pv);
+        if (det == 0.0 || !std::isfinite(det)) return false;
+        const Vec3 tv = ray.origin - a;
+        double u = dot(tv, pv) / det;
+        const Vec3 qv = cross(tv, e1);
+        double v = dot(ray.direction, qv) / det;
+        if (known_hit) {
+            u = std::clamp(u, 0.0, 1.0);
+            v = std::clamp(v, 0.0, 1.0 - u);
+        } else if (u < 0.0 || u > 1.0 || v < 0.0 || u + v > 1.0) {
+            return false;
+        }
+        const double t = dot(e2, qv) / det;
+        if (!(t > t_min && t < t_max)) return false;
+        out = {t, u, v};
+        return true;
+    }
+    /// The object-space normal intersect_face() gives at a crossing of face `index` (flat: POV-Ray's side of the
+    /// face; smooth: the corners' normals interpolated), and whether `direction` enters against the face's side.
+    Vec3 face_normal(std::size_t index, const FaceCrossing& c, const Vec3& direction, bool* entering = nullptr) const;
     /// True when intersect_face() with `known_hit` finds a crossing: the same t, by the same operations in the same
     /// order, without the normal and barycentrics (a shadow ray's test of a face Embree found near its ends).
-    /// Change the two together.
+    /// Change it with face_crossing().
     bool face_crossed(const LocalRay& ray, std::size_t index, double t_min, double t_max) const {
         const Face& f = m_faces[index];
         const Vec3& a = m_vertices[f.v[0]];

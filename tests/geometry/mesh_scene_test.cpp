@@ -100,5 +100,42 @@ TEST(MeshScene, MeshesBesideAHugeObjectMatchBruteForce) {
     EXPECT_LE(mismatches, rays / 1000);
 }
 
+// The trace writes an accepted face's hit itself (flat meshes copy a normal made when the scene is built): every
+// field must be what ShapeInstance::face_hit gives for that face, bit for bit, on flat, smooth and inverse meshes.
+TEST(MeshScene, AcceptedFaceIsFaceHitBitForBit) {
+    Random rng(79);
+    scene::Scene scene;
+    for (int i = 0; i < 9; ++i) {
+        scene::Object o = make_object(test::random_soup(rng, 40, 0.6, i % 3 == 0 ? 0.5 : 0.0), rng.transform(10.0));
+        o.inverse = i % 4 == 1;
+        scene.objects.push_back(o);
+    }
+    const SceneGeometry geometry(scene);
+    int face_hits = 0;
+    for (int i = 0; i < 5000; ++i) {
+        Ray ray;
+        ray.origin = rng.vec(-25, 25);
+        ray.direction = normalize(rng.vec(-8, 8) - ray.origin) * rng.uniform(0.5, 2.0);
+        const auto got = geometry.intersect(ray);
+        if (!got || got->face < 0) continue;
+        const auto inst = ShapeInstance::create(scene.objects[got->object], got->object);
+        ASSERT_TRUE(inst.has_value());
+        const auto& faces = std::get<MeshShape>(inst->shape()).faces();
+        std::size_t f = 0;
+        while (f < faces.size() && faces[f].source != got->face) ++f;
+        ASSERT_LT(f, faces.size());
+        const auto want = inst->face_hit(ray.origin, ray.direction, f, -INFINITY, INFINITY);
+        ASSERT_TRUE(want.has_value());
+        ++face_hits;
+        EXPECT_EQ(got->t, want->t);
+        EXPECT_EQ(got->position, want->position);
+        EXPECT_EQ(got->normal, want->normal);
+        EXPECT_EQ(got->bary_u, want->bary_u);
+        EXPECT_EQ(got->bary_v, want->bary_v);
+        EXPECT_EQ(got->leaf, want->leaf);
+    }
+    EXPECT_GT(face_hits, 500);
+}
+
 }  // namespace
 }  // namespace wardray::geometry

@@ -1,8 +1,9 @@
 // ray_bench: traces one scene's gather and shadow rays through wardray's SceneGeometry and through bare Embree on
 // the same geometry, and prints rays per second for each and their ratio (issue 18's ray-throughput target).
 //   ray_bench [--size W H] [--gather N] [--rounds R] [--threads T] [--only wardray|embree1|embree16] [--check-only]
-//             FILE
-// --only runs one variant (for a profiler); --check-only one round of each (the smoke test).
+//             [--dump OUT] FILE
+// --only runs one variant (for a profiler); --check-only one round of each (the smoke test); --dump writes wardray's
+// every answer, each field exact, to OUT and times nothing (two builds' dumps must be the same file).
 // The rays are those a radiosity render traces: from the surface seen through each pixel, N cosine-distributed
 // gather rays and a shadow ray to each light the surface faces; from each gather ray's hit, a shadow ray to one
 // light (the render's one light per gather-path hit). The variants run interleaved, R rounds; the median counts.
@@ -347,10 +348,36 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+// Every field of wardray's answer to each ray, doubles as exact hex floats, one line a ray: two builds that answer
+// alike write the same file.
+bool dump_answers(const geometry::SceneGeometry& geometry, const RaySet& rays, const char* path) {
+    std::FILE* out = std::fopen(path, "w");
+    if (!out) return false;
+    for (const Ray& ray : rays.gather) {
+        const auto hit = geometry.intersect(ray);
+        if (!hit) {
+            std::fprintf(out, "-\n");
+            continue;
+        }
+        const auto v = [&](const Vec3& p) { std::fprintf(out, " %a %a %a", p.x, p.y, p.z); };
+        std::fprintf(out, "%a", hit->t);
+        v(hit->position);
+        v(hit->normal);
+        std::fprintf(out, " %u %u:%u %d %a %a %d", hit->object, hit->leaf ? hit->leaf->loc.line : 0u,
+                     hit->leaf ? hit->leaf->loc.column : 0u, hit->face, hit->bary_u, hit->bary_v,
+                     hit->has_params ? 1 : 0);
+        v(hit->params);
+        std::fprintf(out, "\n");
+    }
+    for (const Ray& ray : rays.shadow) std::fprintf(out, "%d\n", geometry.occluded(ray) ? 1 : 0);
+    return std::fclose(out) == 0;
+}
+
 int main(int argc, char** argv) {
     int width = 128, height = 128, gather_per_hit = 16, rounds = 5, threads = 1;
     bool check_only = false;
     const char* file = nullptr;
+    const char* dump = nullptr;
     std::string only;
     for (int i = 1; i < argc; ++i) {
         const std::string_view a = argv[i];
@@ -367,6 +394,8 @@ int main(int argc, char** argv) {
             only = argv[++i];
         } else if (a == "--check-only") {
             check_only = true;
+        } else if (a == "--dump" && i + 1 < argc) {
+            dump = argv[++i];
         } else if (!a.empty() && a[0] != '-') {
             file = argv[i];
         } else {
@@ -376,7 +405,7 @@ int main(int argc, char** argv) {
     }
     if (!file || width < 1 || height < 1 || gather_per_hit < 1 || rounds < 1 || threads < 1) {
         std::fprintf(stderr, "usage: ray_bench [--size W H] [--gather N] [--rounds R] [--threads T] "
-                             "[--only wardray|embree1|embree16] [--check-only] FILE\n");
+                             "[--only wardray|embree1|embree16] [--check-only] [--dump OUT] FILE\n");
         return 2;
     }
     parser::ParseOptions options;
@@ -393,6 +422,11 @@ int main(int argc, char** argv) {
     const scene::Scene& scene = *parsed.scene;
     const geometry::SceneGeometry geometry(scene);
     const RaySet rays = record_rays(scene, geometry, width, height, gather_per_hit);
+    if (dump) {
+        if (dump_answers(geometry, rays, dump)) return 0;
+        std::fprintf(stderr, "ray_bench: cannot write %s\n", dump);
+        return 1;
+    }
     BareScene bare;
     build_bare(scene, bare);
     const std::size_t ng = rays.gather.size(), ns = rays.shadow.size();
