@@ -783,7 +783,7 @@ class Census:
         return [str(self.ward.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D",
                 f"+WT{renderers.THREADS}", *(f"Declare={d}" for d in declares)]
 
-    def wardray_render(self, scene, image, ini, converged=(), supersampled=False):
+    def wardray_render(self, scene, image, ini, converged=(), supersampled=False, perturbed=False):
         root, work = self.scratch(scene, ".wardray")
         cmd = self.wardray_command(scene.name, "census.hdr")
         if ini:
@@ -793,6 +793,8 @@ class Census:
         if converged:
             converged_copy(scene_files(scene), work, converged)
             cmd, timeout = converged_options(cmd, converged), CONVERGED_TIMEOUT
+        if perturbed:
+            stability.perturbed_copy(scene_files(scene), work)
         if supersampled:
             cmd, timeout = stability.supersampled_options(cmd), CONVERGED_TIMEOUT
         # The scratch copy lies below /tmp, which Debian's povray.conf lets both programs read (wardray's default
@@ -897,13 +899,17 @@ class Census:
                                          ).encode()).hexdigest()[:8]
 
     def supersampled(self, scene, pov_key, ini, images, fresh):
-        """Both programs' supersampled renders of a scene unstable at one sample a pixel, compared, with POV-Ray's
-        own supersampled movement under the camera turn as the floor: {kind, settings, metrics, floor, ...}."""
-        out = {"kind": "unstable", "settings": " ".join(stability.SUPERSAMPLED_AA), "metrics": None, "floor": None}
+        """Both programs' supersampled renders of a scene unstable at one sample a pixel, each with the cameras
+        turned (so that no sample sits exactly on a tie, where the two programs' last bits decide), compared, with
+        POV-Ray's own supersampled movement under the turn (turned against not) as the floor:
+        {kind, settings, metrics, floor, ...}."""
+        out = {"kind": "unstable", "settings": " ".join(stability.SUPERSAMPLED_AA) + ", cameras turned",
+               "metrics": None, "floor": None}
         tag = self.stability_tag()
-        out["povray"], pov_image = self.povray_variant(scene, f"{pov_key}-supersampled-{tag}", ini, fresh,
-                                                       supersampled=True)
-        out["wardray"] = self.wardray_render(scene, images / "wardray-supersampled.hdr", ini, supersampled=True)
+        out["povray"], pov_image = self.povray_variant(scene, f"{pov_key}-supersampled-perturbed-{tag}", ini, fresh,
+                                                       supersampled=True, perturbed=True)
+        out["wardray"] = self.wardray_render(scene, images / "wardray-supersampled.hdr", ini, supersampled=True,
+                                             perturbed=True)
         for who in ("povray", "wardray"):
             if out[who]["status"] != "ok":
                 out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
@@ -914,10 +920,10 @@ class Census:
             out["error"] = "supersampled images differ in size"
             return out
         out["metrics"] = compare(img, ref)
-        turned, turned_image = self.povray_variant(scene, f"{pov_key}-supersampled-perturbed-{tag}", ini, fresh,
-                                                   supersampled=True, perturbed=True)
-        if turned["status"] == "ok":
-            floor = gimetrics.read_linear_rgb(turned_image)
+        plain, plain_image = self.povray_variant(scene, f"{pov_key}-supersampled-{tag}", ini, fresh,
+                                                 supersampled=True)
+        if plain["status"] == "ok":
+            floor = gimetrics.read_linear_rgb(plain_image)
             if floor.shape == ref.shape:
                 out["floor"] = compare(floor, ref)
         write_png(images / "povray-supersampled.png", srgb8(ref))
@@ -1506,7 +1512,8 @@ def write_report(path, records, missing, info, extra=()):
         "by about 2e-6 of its distance from the origin). If POV-Ray's own image moves by more than the match "
         "tolerance, its picture at one sample a pixel hangs on rounding (pixel centres exactly on edges, textures "
         "chaotic at the scale of a pixel), and the scene is judged instead on supersampled renders of both "
-        f"programs (`{' '.join(stability.SUPERSAMPLED_AA)}`, each bounded at {CONVERGED_TIMEOUT} s), a match "
+        f"programs (`{' '.join(stability.SUPERSAMPLED_AA)}`, each bounded at {CONVERGED_TIMEOUT} s), both with the "
+        "cameras turned (so that no sample sits exactly on a tie, where each program's last bits decide), a match "
         "being within the match tolerance or within POV-Ray's own supersampled movement under the same turn, "
         "whichever is larger (a renderer that differs from POV-Ray no more than POV-Ray differs from itself "
         "cannot be told apart from it). The reason gives POV-Ray's own movement at one sample and supersampled. "

@@ -7,7 +7,8 @@ rounding, not rendering. The census turns every camera of the scene's folder by 
 (CAMERA_TURN, degrees about each axis; about 2e-6 radians, 2e-4 of a pixel at 120x90, moving the camera by about
 2e-6 of its distance from the origin) and renders POV-Ray again; a scene whose POV-Ray image moves by more than
 the match tolerance is unstable at one sample a pixel and is judged on supersampled renders (SUPERSAMPLED_AA) of
-both programs instead, with POV-Ray's own supersampled movement under the same turn as its noise floor.
+both programs instead, each with the cameras turned (so that no sample sits exactly on a tie, where each
+program's last bits decide), with POV-Ray's own supersampled movement under the turn as its noise floor.
 """
 import re
 
