@@ -910,25 +910,15 @@ class Census:
                                                        supersampled=True, perturbed=True)
         out["wardray"] = self.wardray_render(scene, images / "wardray-supersampled.hdr", ini, supersampled=True,
                                              perturbed=True)
-        for who in ("povray", "wardray"):
-            if out[who]["status"] != "ok":
-                out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
-                return out
-        ref = gimetrics.read_linear_rgb(pov_image)
-        img = gimetrics.read_linear_rgb(images / "wardray-supersampled.hdr")
-        if img.shape != ref.shape:
-            out["error"] = "supersampled images differ in size"
+        ref = compare_pair(out, pov_image, images, "supersampled")
+        if ref is None:
             return out
-        out["metrics"] = compare(img, ref)
         plain, plain_image = self.povray_variant(scene, f"{pov_key}-supersampled-{tag}", ini, fresh,
                                                  supersampled=True)
         if plain["status"] == "ok":
             floor = gimetrics.read_linear_rgb(plain_image)
             if floor.shape == ref.shape:
                 out["floor"] = compare(floor, ref)
-        write_png(images / "povray-supersampled.png", srgb8(ref))
-        write_png(images / "wardray-supersampled.png", srgb8(img))
-        write_png(images / "diff-supersampled.png", difference8(img, ref))
         return out
 
     def parsed_randomness(self, scene, ini):
@@ -949,19 +939,7 @@ class Census:
             return out
         out["povray"], pov_image = self.povray_converged(scene, pov_key, ini, stochastic, fresh)
         out["wardray"] = self.wardray_render(scene, images / "wardray-converged.hdr", ini, converged=stochastic)
-        for who in ("povray", "wardray"):
-            if out[who]["status"] != "ok":
-                out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
-                return out
-        ref = gimetrics.read_linear_rgb(pov_image)
-        img = gimetrics.read_linear_rgb(images / "wardray-converged.hdr")
-        if img.shape != ref.shape:
-            out["error"] = "converged images differ in size"
-            return out
-        out["metrics"] = compare(img, ref)
-        write_png(images / "povray-converged.png", srgb8(ref))
-        write_png(images / "wardray-converged.png", srgb8(img))
-        write_png(images / "diff-converged.png", difference8(img, ref))
+        compare_pair(out, pov_image, images, "converged")
         return out
 
 
@@ -978,6 +956,26 @@ def compare(img, ref):
 
 # ---------------------------------------------------------------------------------------------------------------
 # Thumbnails.
+
+
+def compare_pair(out, pov_image, images, label):
+    """A second comparison of a scene (`label`: converged, supersampled), both renders in `out` ("povray",
+    "wardray", the latter's image `images/wardray-<label>.hdr`): fills out["metrics"], writes the three PNGs of the
+    contact sheet and returns POV-Ray's image; or sets out["error"] and returns None."""
+    for who in ("povray", "wardray"):
+        if out[who]["status"] != "ok":
+            out["error"] = f"{who}: {out[who].get('error') or out[who]['status']}"
+            return None
+    ref = gimetrics.read_linear_rgb(pov_image)
+    img = gimetrics.read_linear_rgb(images / f"wardray-{label}.hdr")
+    if img.shape != ref.shape:
+        out["error"] = f"{label} images differ in size"
+        return None
+    out["metrics"] = compare(img, ref)
+    write_png(images / f"povray-{label}.png", srgb8(ref))
+    write_png(images / f"wardray-{label}.png", srgb8(img))
+    write_png(images / f"diff-{label}.png", difference8(img, ref))
+    return ref
 
 
 def srgb8(rgb):
