@@ -12,6 +12,22 @@ namespace {
 
 using Matrix4 = std::array<std::array<double, 4>, 4>;
 
+/// The first three columns of a matrix whose last column is (0, 0, 0, 1), and back.
+std::array<std::array<double, 3>, 4> rows3(const Matrix4& m) {
+    std::array<std::array<double, 3>, 4> r{};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j) r[i][j] = m[i][j];
+    return r;
+}
+Matrix4 full4(const std::array<std::array<double, 3>, 4>& r) {
+    Matrix4 m{};
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 3; ++j) m[i][j] = r[i][j];
+        m[i][3] = i == 3 ? 1.0 : 0.0;
+    }
+    return m;
+}
+
 Matrix4 identity4() { return {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
 
 // a × b, each entry summed in the order of its index (POV-Ray's MTimesB).
@@ -80,15 +96,17 @@ ConeShape::ConeShape(const Vec3& base, const Vec3& cap, double r0, double r1, bo
         const double len = std::sqrt(axis.x * axis.x + axis.y * axis.y + axis.z * axis.z);
         const double inv = 1.0 / len;
         const Vec3 unit_axis{axis.x * inv, axis.y * inv, axis.z * inv};
-        m_unit_inverse = std::make_shared<const Matrix4>(unit_cylinder_inverse(cap, unit_axis, r0, len));
+        auto matrices = std::make_shared<CylinderMatrices>();
+        matrices->unit_inverse = rows3(unit_cylinder_inverse(cap, unit_axis, r0, len));
+        m_matrices = std::move(matrices);
     }
 }
 
 Vec3 ConeShape::cylinder_normal(const Vec3& p) const {
     // Cone::Normal: the point into unit space (MInvTransPoint), its z dropped, back as a normal (MTransNormal),
     // normalised by the reciprocal of its length (VNormalize).
-    if (!m_unit_inverse) return Vec3{NAN, NAN, NAN};
-    const Matrix4& m = *m_unit_inverse;
+    if (!m_matrices) return Vec3{NAN, NAN, NAN};
+    const Rows& m = m_matrices->unit_inverse;
     const double x = p.x * m[0][0] + p.y * m[1][0] + p.z * m[2][0] + m[3][0];
     const double y = p.x * m[0][1] + p.y * m[1][1] + p.z * m[2][1] + m[3][1];
     const double z = 0.0;
@@ -100,7 +118,7 @@ Vec3 ConeShape::cylinder_normal(const Vec3& p) const {
 
 Vec3 ConeShape::object_normal(double x, double y, double z) const {
     // MTransNormal through the unit cylinder's inverse, then VNormalize.
-    const Matrix4& m = *m_unit_inverse;
+    const Rows& m = m_matrices->unit_inverse;
     const Vec3 n{x * m[0][0] + y * m[0][1] + z * m[0][2], x * m[1][0] + y * m[1][1] + z * m[1][2],
                  x * m[2][0] + y * m[2][1] + z * m[2][2]};
     const double inv = 1.0 / std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
@@ -108,7 +126,7 @@ Vec3 ConeShape::object_normal(double x, double y, double z) const {
 }
 
 void ConeShape::place(const Transform& object_to_parent) {
-    if (!m_unit_inverse) return;
+    if (!m_matrices) return;
     // The object's inverse in POV-Ray's layout (row vectors), composed before the unit cylinder's inverse as
     // Compose_Transforms composes an additional transform's inverse (MTimesB).
     const Transform::Matrix34& c = object_to_parent.inverse_matrix();
@@ -117,7 +135,10 @@ void ConeShape::place(const Transform& object_to_parent) {
         for (int j = 0; j < 3; ++j) object_inverse[i][j] = c[j][i];
         object_inverse[3][i] = c[i][3];
     }
-    m_placed = std::make_shared<const Matrix4>(product(object_inverse, *m_unit_inverse));
+    auto matrices = std::make_shared<CylinderMatrices>(*m_matrices);
+    matrices->placed = rows3(product(object_inverse, full4(m_matrices->unit_inverse)));
+    matrices->is_placed = true;
+    m_matrices = std::move(matrices);
 }
 
 SurfaceHits ConeShape::intersect_parent(const Vec3& origin, const Vec3& direction, double t_min,
@@ -127,7 +148,7 @@ SurfaceHits ConeShape::intersect_parent(const Vec3& origin, const Vec3& directio
     // divided by the direction's length; Cone_Tolerance, MAX_DISTANCE and EPSILON as POV-Ray has them.
     constexpr double k_cone_tolerance = 1e-9;
     constexpr double k_max_distance = 1e7;
-    const Matrix4& m = *m_placed;
+    const Rows& m = m_matrices->placed;
     double p[3], d[3];
     for (int i = 0; i < 3; ++i) {
         p[i] = origin.x * m[0][i] + origin.y * m[1][i] + origin.z * m[2][i] + m[3][i];
@@ -186,7 +207,7 @@ SurfaceHits ConeShape::intersect_parent(const Vec3& origin, const Vec3& directio
 
 bool ConeShape::inside_parent(const Vec3& q) const {
     // POV-Ray compat (Cone::Inside): in unit space, EPSILON inward for a closed cylinder and outward for an open one.
-    const Matrix4& m = *m_placed;
+    const Rows& m = m_matrices->placed;
     const double x = q.x * m[0][0] + q.y * m[1][0] + q.z * m[2][0] + m[3][0];
     const double y = q.x * m[0][1] + q.y * m[1][1] + q.z * m[2][1] + m[3][1];
     const double z = q.x * m[0][2] + q.y * m[1][2] + q.z * m[2][2] + m[3][2];
@@ -237,7 +258,7 @@ SurfaceHits ConeShape::intersect_all(const LocalRay& ray, double t_min, double t
         const Vec3 p = o + t * d;
         const Vec3 pp = p - s * m_axis;
         Vec3 normal = pp - (k * (m_r0 + k * s)) * m_axis;
-        if (m_unit_inverse) {
+        if (m_matrices) {
             // POV-Ray compat: a cylinder's normal in POV-Ray's arithmetic, at the point POV-Ray evaluates.
             const Vec3 at{ray.origin.x + t * ray.direction.x, ray.origin.y + t * ray.direction.y,
                           ray.origin.z + t * ray.direction.z};

@@ -40,7 +40,7 @@ public:
     /// gazebo's bores touch) then hits or misses as in POV-Ray. Cones are left as they are.
     void place(const Transform& object_to_parent);
     /// True for a cylinder placed by place().
-    bool placed() const { return m_placed != nullptr; }
+    bool placed() const { return m_matrices && m_matrices->is_placed; }
     /// A placed cylinder's crossings with a ray in the parent's space (t the same parameter), object-space normals.
     SurfaceHits intersect_parent(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const;
     /// A placed cylinder's inside test at a point in the parent's space (POV-Ray's EPSILON margins).
@@ -58,11 +58,16 @@ private:
     double m_r1 = 0.0;
     double m_slope = 0.0;  ///< (r1 - r0) / height
     bool m_open = false;
-    /// For a cylinder: the inverse of POV-Ray's transform of the unit cylinder (row vectors, POV-Ray's layout);
-    /// shared, to keep every shape alternative small.
-    std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_unit_inverse;
-    /// For a placed cylinder: POV-Ray's inverse from the parent's space to the unit cylinder (row vectors).
-    std::shared_ptr<const std::array<std::array<double, 4>, 4>> m_placed;
+    /// POV-Ray's row-vector matrices without their constant last column (0, 0, 0, 1): four rows of three.
+    using Rows = std::array<std::array<double, 3>, 4>;
+    struct CylinderMatrices {
+        Rows unit_inverse;  ///< the inverse of POV-Ray's transform of the unit cylinder
+        Rows placed;        ///< for a placed cylinder: POV-Ray's inverse from the parent's space to the unit cylinder
+        bool is_placed = false;
+    };
+    /// For a cylinder, one allocation shared by the shape's copies (every shape alternative stays small, and a scene
+    /// of 84,000 cylinders pays one block each).
+    std::shared_ptr<const CylinderMatrices> m_matrices;
 };
 
 }  // namespace wardray::geometry
