@@ -93,6 +93,10 @@ struct ParseOptions {
     const SceneQuery* query = nullptr;
     /// Sees every trace() (parser/trace_sensitivity.h); null: none. Not owned.
     TraceObserver* trace_observer = nullptr;
+    /// Receives each object as it is placed at the top level, instead of the scene keeping it, so that a parse
+    /// that needs only a summary of its objects (the trace() check's second parse) holds one at a time; empty: the
+    /// scene keeps them. The scene's light sources are kept either way.
+    std::function<void(const Object&)> object_sink;
     /// Moves every trace() hit along its ray by this fraction of the larger of 1 and the distances of the ray's
     /// origin and of the hit from the origin (parser/trace_sensitivity.h); 0: trace() as it is.
     double trace_nudge = 0.0;

@@ -259,7 +259,7 @@ void SceneReader::place_object(ObjectValue ov) {
     // One texture for every part that has none of its own: the union's, or the #default one (shared with the
     // other objects placed since the #default last changed), so untextured parts cost a pointer each.
     const scene::Cow<Texture> inherited = ov.texture ? scene::Cow<Texture>(*ov.texture) : shared_default_texture();
-    m_builder.reserve_objects(ov.parts.size());
+    if (!m_options.object_sink) m_builder.reserve_objects(ov.parts.size());
     for (ObjectPart& part : ov.parts) {
         // POV-Ray compat (Link_To_Frame, remove_bounds on): a top-level object that is cheap to intersect loses
         // its bounds; CSG, polynomials, text and quadrics keep them.
@@ -279,7 +279,10 @@ void SceneReader::place_object(ObjectValue ov) {
         }
         inherit_interiors(part.object);
         promote_photons(part.object);
-        m_builder.add_object(std::move(part.object));
+        if (m_options.object_sink)
+            m_options.object_sink(part.object);
+        else
+            m_builder.add_object(std::move(part.object));
     }
     for (Light& l : ov.lights) m_builder.add_light(std::move(l));
 }

@@ -84,11 +84,17 @@ private:
     std::size_t m_index = 0;
 };
 
-/// How the objects of two parses differ, or nothing when they agree within a millionth of the scene's size.
-std::optional<std::string> build_difference(const Scene& a, const Scene& b, const SceneQuery* query) {
+/// What the second parse keeps of each object it places: its bounding box (none when unbounded or without a
+/// geometry layer), so that the second parse never holds the objects themselves.
+using Extent = std::optional<std::pair<Vec3, Vec3>>;
+
+/// How the objects of the first parse (`a`) differ from the second's (`b`, whose objects are `b_extents`), or
+/// nothing when they agree within a millionth of the scene's size.
+std::optional<std::string> build_difference(const Scene& a, const Scene& b, const std::vector<Extent>& b_extents,
+                                            const SceneQuery* query) {
     char text[200];
-    if (a.objects.size() != b.objects.size()) {
-        std::snprintf(text, sizeof text, "%zu objects against %zu", a.objects.size(), b.objects.size());
+    if (a.objects.size() != b_extents.size()) {
+        std::snprintf(text, sizeof text, "%zu objects against %zu", a.objects.size(), b_extents.size());
         return std::string(text);
     }
     if (a.lights.size() != b.lights.size()) {
@@ -96,7 +102,7 @@ std::optional<std::string> build_difference(const Scene& a, const Scene& b, cons
         return std::string(text);
     }
     if (query == nullptr) return std::nullopt;
-    std::vector<std::optional<std::pair<Vec3, Vec3>>> boxes;
+    std::vector<Extent> boxes;
     boxes.reserve(a.objects.size());
     double size = 1.0;
     auto grow = [&size](const Vec3& p) {
@@ -118,7 +124,7 @@ std::optional<std::string> build_difference(const Scene& a, const Scene& b, cons
     };
     if (apart(a.camera.location, b.camera.location)) return std::string("the camera moves");
     for (std::size_t i = 0; i < a.objects.size(); ++i) {
-        const auto other = query->extent(b.objects[i]);
+        const Extent& other = b_extents[i];
         if (boxes[i].has_value() != other.has_value() ||
             (other && (apart(boxes[i]->first, other->first) || apart(boxes[i]->second, other->second)))) {
             const SourceLoc& at = a.objects[i].loc;
@@ -168,6 +174,12 @@ ParseResult parse_file_checking_trace(const std::filesystem::path& path, const P
     second_options.trace_nudge = k_trace_nudge;
     second_options.debug_output = nullptr;
     second_options.file_writes = ParseOptions::FileWrites::Discard;
+    // Only each object's box is kept: the two parses' objects are never held at once (a scene placing thousands
+    // of textured objects would otherwise take twice its memory).
+    std::vector<Extent> second_extents;
+    second_options.object_sink = [&second_extents, query = options.query](const Object& o) {
+        second_extents.push_back(query ? query->extent(o) : Extent{});
+    };
     const auto second_start = Clock::now();
     const ParseResult second = parse_file(path, second_options);
     found.second_parse_seconds = std::chrono::duration<double>(Clock::now() - second_start).count();
@@ -176,7 +188,7 @@ ParseResult parse_file_checking_trace(const std::filesystem::path& path, const P
     if (!second.ok())
         difference = "the parse fails";
     else
-        difference = build_difference(*first.scene, *second.scene, options.query);
+        difference = build_difference(*first.scene, *second.scene, second_extents, options.query);
     if (difference) {
         found.diverged = true;
         Diagnostic d = comparer.first_diverged ? std::move(*comparer.first_diverged)

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <unistd.h>
 
+#include <vector>
+
 #include "tests/parser/test_util.h"
 
 namespace wardray::parser {
@@ -116,6 +118,32 @@ TEST(TraceSensitivity, ASceneWithoutTraceIsParsedOnce) {
     ASSERT_TRUE(r.ok()) << test::all_diagnostics(r);
     EXPECT_EQ(report.trace_calls, 0u);
     EXPECT_FALSE(report.checked);
+}
+
+TEST(TraceSensitivity, AnObjectSinkReceivesEveryObjectAndTheSceneKeepsNone) {
+    // The check's second parse keeps only each object's box: the sink sees the objects the scene would hold, in
+    // order, and the scene holds none of them (its lights it keeps).
+    const std::string text = "#for (I, 1, 3) sphere { <I, 0, 0>, I / 10 } #end\n"
+                             "union { sphere { 0, 0.5 } box { -1, 1 } }\n"
+                             "light_source { <0, 5, 0>, 1 }\n";
+    auto radius = [](const Object& o) {
+        const auto* s = std::get_if<Sphere>(&o.shape);
+        return s ? s->radius : -1.0;
+    };
+    const ParseResult kept = parse_string(text, "sink.pov", test::default_options());
+    ASSERT_TRUE(kept.ok()) << test::all_diagnostics(kept);
+    ParseOptions options = test::default_options();
+    std::vector<double> radii;
+    options.object_sink = [&](const Object& o) { radii.push_back(radius(o)); };
+    const ParseResult sunk = parse_string(text, "sink.pov", options);
+    ASSERT_TRUE(sunk.ok()) << test::all_diagnostics(sunk);
+    EXPECT_TRUE(sunk.scene->objects.empty());
+    EXPECT_EQ(sunk.scene->lights.size(), 1u);
+    ASSERT_EQ(radii.size(), kept.scene->objects.size());
+    ASSERT_GE(radii.size(), 4u);
+    for (std::size_t i = 0; i < radii.size(); ++i) EXPECT_EQ(radii[i], radius(kept.scene->objects[i])) << i;
+    EXPECT_DOUBLE_EQ(radii[0], 0.1);
+    EXPECT_DOUBLE_EQ(radii[2], 0.3);
 }
 
 }  // namespace
