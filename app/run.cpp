@@ -23,6 +23,7 @@
 #include "parser/read_access.h"
 #include "parser/trace_sensitivity.h"
 #include "render/film.h"
+#include "render/gif_reader.h"
 #include "render/height_image.h"
 #include "render/image_header.h"
 #include "render/output_gamma.h"
@@ -58,6 +59,32 @@ std::optional<fs::path> find_default_scene(const std::string& argv0) {
 
 // --max-memory's default, in MB.
 constexpr std::uint64_t kDefaultMaxMemoryMb = 1024;
+
+// POV-Ray compat: a GIF is a colour-mapped image to POV-Ray 3.7, its graphic control extension's transparent entry
+// of alpha 0 (an image map's transmit 1 there) and every other entry opaque, each texel keeping its entry's colour.
+// Read here for a GIF whose one image covers its screen; `image` is what read_image gave (its colours, transparent
+// texels black as OpenImageIO gives them) and becomes indexed, with the palette's alpha when it names a transparent
+// entry. Other files, and GIFs placed on a larger screen, are left as they are.
+void add_gif_palette(const fs::path& file, scene::ImageData& image) {
+    std::string error;
+    const std::optional<render::GifIndices> gif = render::read_gif_indices(file, error);
+    if (!gif || gif->left != 0 || gif->top != 0 || gif->width != image.width || gif->height != image.height ||
+        gif->screen_width != image.width || gif->screen_height != image.height || gif->palette.size() < 3)
+        return;
+    const int entries = static_cast<int>(gif->palette.size() / 3);
+    image.index = gif->index;
+    image.palette_size = entries;
+    image.alpha.clear();
+    image.palette_alpha.clear();
+    image.has_alpha = gif->transparent >= 0 && gif->transparent < entries;
+    if (!image.has_alpha) return;
+    image.palette_alpha.assign(static_cast<std::size_t>(entries), 1.0f);
+    image.palette_alpha[static_cast<std::size_t>(gif->transparent)] = 0.0f;
+    const auto t = static_cast<std::size_t>(gif->transparent);
+    for (std::size_t at = 0; at < image.index.size(); ++at)
+        if (image.index[at] == gif->transparent)
+            for (std::size_t c = 0; c < 3; ++c) image.rgb[at * 3 + c] = static_cast<float>(gif->palette[t * 3 + c]) / 255.0f;
+}
 
 // What the parser is told: include folders, declares, file access, guard rails, and the hooks it calls back.
 parser::ParseOptions parse_options_for(const Options& options, const parser::ParseOptions::FrameClock& clock) {
@@ -113,6 +140,8 @@ parser::ParseOptions parse_options_for(const Options& options, const parser::Par
                 image->palette_alpha = std::move(entry_alpha);
             }
             image->index = std::move(index);
+        } else if (image->has_alpha && image->alpha.empty() && encoded) {
+            add_gif_palette(file, *image);
         }
         return image;
     };
