@@ -255,10 +255,10 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
     if (trans > bailout && m_quality.refraction) {
         const double w = std::max(std::fabs(filter.x), std::max(std::fabs(filter.y), std::fabs(filter.z)));
         const Vec3 through = refract(s, top_normal, state.weight * w, texture.finish, state, total_internal, ctx);
-        // POV-Ray's interior fade over the distance travelled inside.
-        Vec3 fade{1.0, 1.0, 1.0};
+        // POV-Ray's interior fade over the distance travelled inside, and its 3.1 `refraction` amount.
+        Vec3 fade{interior.refraction, interior.refraction, interior.refraction};
         if (state.interiors.contains(owner) && std::fabs(interior.fade_distance) > kPovEpsilon)
-            fade = media::interior_fade(interior, s.depth);
+            fade = fade * media::interior_fade(interior, s.depth);
         colour += total_internal ? fade * through : fade * through * filter;
         // POV-Ray compat (ComputeLightedTexture): the background's transmit seen through the surface, scaled by the
         // grey of the interior fade and by the layers' transparency; none after total internal reflection.

@@ -151,12 +151,12 @@ void AppearanceReader::parse_finish_item(Finish& f, const Token& item) {
              r.warn(kw, "Caustics value should be specified in 'interior{...}' statement.");
          }},
         {"refraction",
-         [](AppearanceReader& r, Finish&, const Token& kw) {
-             const double amount = r.parse_float();
+         [](AppearanceReader& r, Finish& f, const Token& kw) {
+             // POV-Ray scales the refracted light by this value (its interior's Old_Refract, set when the object
+             // is placed); 1 changes nothing.
+             f.legacy_refraction = r.parse_float();
              r.warn(kw, "Refraction value unnecessary to turn on refraction. To attenuate, the fade_power and "
                         "fade_distance keywords should be specified in 'interior{...}' statement.");
-             // POV-Ray scales the refracted light by this value (Old_Refract); 1 changes nothing.
-             if (amount != 1.0) r.warn_unsupported(kw, "refraction other than 1");
          }},
         {"subsurface",
          [](AppearanceReader& r, Finish&, const Token& kw) {
@@ -430,10 +430,10 @@ Interior AppearanceReader::parse_interior_body(const Token& /*kw*/, const Interi
             in.dispersion_samples = static_cast<int>(std::min(n, kMaxSamples));
         } else if (t.text == "refraction") {
             // POV-Ray compat: still read, with POV-Ray's warning; it scales the refracted light (1 changes nothing).
-            const double amount = parse_float();
+            // (A plain texture's finish overrides it when the object is placed, as in POV-Ray.)
+            in.refraction = parse_float();
             warn(t, "Refraction value unnecessary to turn on refraction. To attenuate, the fade_power and "
                     "fade_distance keywords should be specified in 'interior{...}' statement.");
-            if (amount != 1.0) warn_unsupported(t, "refraction other than 1");
         } else if (t.text == "media") {
             in.media.push_back(parse_media_body(t));
         } else {

@@ -158,12 +158,13 @@ void inherit_textures(Object& o) {
 
 // POV-Ray compat (Post_Process), down the tree once the textures are inherited: a child without an interior of its
 // own shares its CSG parent's (keeping its own `hollow`), and an `ior` or `caustics` given in a plain texture's
-// finish (3.1 syntax) becomes the object's interior's.
+// finish (3.1 syntax) becomes the object's interior's, as does its `refraction` (1 unless given).
 void inherit_interiors(Object& o) {
     const Texture& tx = o.texture;
     const bool plain = tx.map_pattern.type == Pattern::Type::None && tx.texture_map.empty();
     if (plain && tx.finish.legacy_ior >= 0.0) o.interior.ior = tx.finish.legacy_ior;
     if (plain && tx.finish.legacy_caustics >= 0.0) o.interior.caustics = tx.finish.legacy_caustics;
+    if (plain) o.interior.refraction = tx.finish.legacy_refraction;
     auto* csg = std::get_if<Csg>(&o.shape);
     if (csg == nullptr) return;
     for (Object& child : csg->children) {

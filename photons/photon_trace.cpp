@@ -158,7 +158,8 @@ void PhotonTracer::surface(const scene::Texture& tx, const Vec3& p, const std::v
     const scene::Interior& interior = leaf.interior;
     const bool inside_this = find_interior(ray.interiors, leaf) >= 0;
     if (m_media) through_media(hit, ray, colour, path);
-    // POV-Ray's interior fade over the stretch travelled inside.
+    // POV-Ray's 3.1 `refraction` amount of the surface's interior, and its fade over the stretch travelled inside.
+    if (interior.refraction != 1.0) colour = colour * interior.refraction;
     if (inside_this && interior.fade_power > 0.0 && std::fabs(interior.fade_distance) > kPovEpsilon)
         colour = colour * media::interior_fade(interior, hit.t);
     path.depth += hit.t;

@@ -27,6 +27,10 @@ struct Interior {
     double dispersion = 1.0;
     /// `dispersion_samples N` (at least 2): the spectral bands a ray splits into at a dispersive surface.
     int dispersion_samples = 7;
+    /// POV-Ray 3.1's `refraction R` (POV-Ray's Old_Refract): the light refracted through the surface, and the photons
+    /// landing on it, are scaled by R. Set from a plain texture's finish when the object is placed (1 unless that
+    /// finish says otherwise), as POV-Ray's Post_Process does.
+    double refraction = 1.0;
     /// `media { }` blocks inside the object, in their order (all of them act together).
     std::vector<Media> media;
     bool operator==(const Interior&) const = default;

@@ -308,6 +308,9 @@ struct Finish {
     /// POV-Ray 3.1's `finish { caustics }`, negative when not given: promoted to the interior as `legacy_ior` is
     /// (unscaled, as POV-Ray's Post_Process copies it).
     double legacy_caustics = -1.0;
+    /// POV-Ray 3.1's `finish { refraction R }` (POV-Ray's Temp_Refract, 1 when not given): the object's interior
+    /// takes it when the object is placed with a plain texture, overriding an interior's own `refraction`.
+    double legacy_refraction = 1.0;
     SourceLoc loc;
     bool operator==(const Finish&) const = default;
 };

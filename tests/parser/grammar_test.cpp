@@ -158,10 +158,21 @@ TEST(Grammar, FinishIorMovesIntoTheInterior) {
     EXPECT_TRUE(has_warning(s, "Refraction value unnecessary to turn on refraction."));
 }
 
-TEST(Grammar, FinishCausticsAndPartialRefractionWarn) {
-    const Scene s = parse_ok("sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 refraction 0.5 } }");
+TEST(Grammar, FinishCausticsWarnsAndPartialRefractionMovesIntoTheInterior) {
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 pigment { rgbf 1 } finish { caustics 1 refraction 0.5 } }
+        sphere { 0, 1 pigment { rgbf 1 } interior { refraction 0.5 } }
+        union { sphere { 0, 1 } sphere { x, 1 } texture { pigment { rgbf 1 } finish { refraction 0.25 } } }
+    )");
     EXPECT_TRUE(has_warning(s, "Caustics value should be specified in 'interior{...}' statement."));
-    EXPECT_TRUE(has_warning(s, "refraction other than 1 is not rendered yet"));
+    EXPECT_FALSE(has_warning(s, "not rendered"));
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_EQ(s.objects[0].interior.refraction, 0.5);
+    // POV-Ray compat (Post_Process, checked with povray 3.7): a plain texture's finish (refraction 1 unless given)
+    // overrides the interior's own `refraction`.
+    EXPECT_EQ(s.objects[1].interior.refraction, 1.0);
+    EXPECT_EQ(s.objects[2].interior.refraction, 0.25);
+    EXPECT_EQ(s.objects[3].interior.refraction, 0.25);
 }
 
 TEST(Grammar, MacroGivingAPigmentIsAnEntryOfAListPattern) {
