@@ -21,13 +21,19 @@ std::array<double, 2> lookup_filings(const scene::RadiositySettings& settings) {
     return {settings.error_bound / largest, settings.error_bound * settings.low_error_factor / largest};
 }
 
-/// Neighbour clamping (Křivánek et al. 2006) of a new record against `tree`'s records and back: R_new ≤ R_i +
-/// |p_new − p_i| for the records closer than R_new, then R_i ≤ R_new + |p_i − p_new| for those whose sphere R_i
-/// holds the new point (only they can bind; each shrinks on its own, so the few more the scan finds change nothing).
-void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
-    record.radius = tree.clamped_radius(record.position, record.radius);
+/// Neighbour clamping (Křivánek et al. 2006) of `tree`'s records by a new one: R_i ≤ R_new + |p_i − p_new| for those
+/// whose sphere R_i holds the new point (only they can bind; each shrinks on its own, so the few more the scan finds
+/// change nothing).
+void shrink_holding(RecordOctree& tree, const IrradianceRecord& record) {
     tree.visit_holding(record.position,
                        [&](std::uint32_t i) { tree.shrink_radius(i, clamped_radius(tree.records()[i], record)); });
+}
+
+/// Neighbour clamping both ways: R_new ≤ R_i + |p_new − p_i| for the records closer than R_new, then
+/// shrink_holding().
+void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
+    record.radius = tree.clamped_radius(record.position, record.radius);
+    shrink_holding(tree, record);
 }
 
 /// Adds the records of `tree` valid at p to `acc` in insertion order, so that the sum does not depend on how the
@@ -58,6 +64,49 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
     for (const Valid& v : valid) acc.add_weighted(records[v.index], v.weight);
 }
 
+/// The records one merge_tiles() call has filed so far at one depth, positions side by side for the scan: a record
+/// made against the cache as the call found it was clamped against every older record when it was made
+/// (TileCache::add), so only these can still lower its radius (Křivánek et al. 2006, R_new ≤ R_i + |p_new − p_i|).
+/// An older record shrunk by one of these in the meantime binds no tighter than that one does (triangle inequality).
+class MergedRecords {
+public:
+    /// Beyond this many, the octree's own scan (which prunes by the bound found so far) is cheaper.
+    static constexpr std::size_t kMaxScan = 4096;
+
+    std::size_t size() const { return m_position.size(); }
+    /// Keeps record `index` of `tree` when the octree filed it (as a home, so its own clamping sees it too).
+    void add(const RecordOctree& tree, std::uint32_t index) {
+        const IrradianceRecord& r = tree.records()[index];
+        const double s = tree.reach() * r.radius;
+        if (!is_finite(r.position) || !(s > 0.0) || !std::isfinite(s)) return;
+        m_position.push_back(r.position);
+        m_index.push_back(index);
+    }
+    /// `bound` lowered to R_i + |p_i − centre| for each kept record i closer than it, with its radius as it stands
+    /// in `tree`: the same value RecordOctree::clamped_radius() finds among these records.
+    double clamped_radius(const RecordOctree& tree, const Vec3& centre, double bound) const {
+        if (!is_finite(centre) || !(bound >= 0.0)) return bound;
+        const auto& records = tree.records();
+        // Squared distances screen the candidates, with a margin over rounding; the test itself is the octree's.
+        double screen = bound * bound * (1.0 + 0x1p-40);
+        for (std::size_t k = 0; k < m_position.size(); ++k) {
+            const Vec3 offset = m_position[k] - centre;
+            const double d2 = dot(offset, offset);
+            if (!(d2 < screen)) continue;
+            const double d = std::sqrt(d2);
+            if (d < bound) {
+                bound = std::min(bound, records[m_index[k]].radius + d);
+                screen = bound * bound * (1.0 + 0x1p-40);
+            }
+        }
+        return bound;
+    }
+
+private:
+    std::vector<Vec3> m_position;
+    std::vector<std::uint32_t> m_index;
+};
+
 }  // namespace
 
 TileCache::TileCache(const IrradianceCache& cache, int pass) : m_cache(&cache), m_pass(pass) {
@@ -82,6 +131,7 @@ Interpolation TileCache::lookup(const Vec3& p, const Vec3& n, int depth, const L
 void TileCache::add(IrradianceRecord record) {
     if (record.depth < 0 || record.depth >= m_cache->depth_count()) return;
     record.pass = m_pass;
+    if (m_order.empty() && m_adopted.empty()) m_clamped_against = m_cache->sizes();
     m_cache->clamp_new_record(record);
     // Then against this tile's own records, both ways.
     RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
@@ -109,6 +159,8 @@ void TileCache::adopt(Contribution contribution) {
     std::erase_if(m_adopted, [&](const IrradianceRecord& record) {
         return record.depth < 0 || record.depth >= static_cast<int>(m_own.size());
     });
+    // Made against the cache as it stands now, in the process that rendered the tile.
+    m_clamped_against = m_cache->sizes();
     m_lookups = contribution.lookups;
     m_hits = contribution.hits;
 }
@@ -144,13 +196,24 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
     // Every pass gets its row of statistics, even one that made no records.
     const auto rows = static_cast<std::size_t>(m_pass) + 1;
     if (m_records_per_pass.size() < rows) m_records_per_pass.resize(rows, std::vector<std::uint64_t>(m_octrees.size()));
+    // A tile's records made against the cache as this call finds it need clamping only against what it files.
+    const std::vector<std::size_t> found = sizes();
+    std::vector<MergedRecords> merged(m_octrees.size());
     // The order given, never thread-completion order: the merged cache is the same for any thread count.
     for (const int i : tiles) {
         if (i < 0 || i >= static_cast<int>(m_tiles.size())) continue;
         TileCache& t = *m_tiles[static_cast<std::size_t>(i)];
+        const bool made_against_found = t.m_clamped_against == found;
         auto merge = [&](IrradianceRecord record) {
-            clamp_mutual(record);
-            m_octrees[static_cast<std::size_t>(record.depth)].insert(record);
+            const auto depth = static_cast<std::size_t>(record.depth);
+            RecordOctree& tree = m_octrees[depth];
+            if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
+                record.radius = merged[depth].clamped_radius(tree, record.position, record.radius);
+                shrink_holding(tree, record);
+            } else {
+                clamp_both_ways(tree, record);
+            }
+            merged[depth].add(tree, tree.insert(record));
             count_record(record);
         };
         for (const auto& [depth, index] : t.m_order) merge(t.m_own[static_cast<std::size_t>(depth)].records()[index]);
@@ -160,6 +223,7 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
         // The tile starts afresh: what it made is now part of the frozen cache.
         t.m_order.clear();
         t.m_adopted.clear();
+        t.m_clamped_against.clear();
         for (RecordOctree& own : t.m_own)
             if (own.size() > 0) own = own.empty_like();
         t.m_lookups = 0;
@@ -220,6 +284,13 @@ void IrradianceCache::count_record(const IrradianceRecord& record) {
     std::vector<std::uint64_t>& per_depth = m_records_per_pass[pass];
     if (per_depth.size() < m_octrees.size()) per_depth.resize(m_octrees.size());
     ++per_depth[static_cast<std::size_t>(record.depth)];
+}
+
+std::vector<std::size_t> IrradianceCache::sizes() const {
+    std::vector<std::size_t> out;
+    out.reserve(m_octrees.size());
+    for (const RecordOctree& tree : m_octrees) out.push_back(tree.size());
+    return out;
 }
 
 const std::vector<IrradianceRecord>& IrradianceCache::records(int depth) const {

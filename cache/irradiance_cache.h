@@ -75,6 +75,9 @@ private:
     std::vector<std::pair<int, std::uint32_t>> m_order;
     /// Records adopted from another process, in the order it made them (merged instead of m_order's).
     std::vector<IrradianceRecord> m_adopted;
+    /// The cache's record count per depth when this tile's unmerged records were clamped against it (empty: none
+    /// yet): the merge then clamps them only against the records filed since.
+    std::vector<std::size_t> m_clamped_against;
     std::uint64_t m_lookups = 0;
     std::uint64_t m_hits = 0;
 };
@@ -140,6 +143,8 @@ private:
     /// As clamp_new_record(), then shrinks the frozen records' radii against `record` too.
     void clamp_mutual(IrradianceRecord& record);
     void count_record(const IrradianceRecord& record);
+    /// The record count of each depth's octree.
+    std::vector<std::size_t> sizes() const;
     LookupParams clamp_params(int depth, const LookupParams& params) const;
 
     std::vector<RecordOctree> m_octrees;
