@@ -217,8 +217,21 @@ Texture AppearanceReader::parse_texture_body(const Token& kw) {
     return tx;
 }
 
+namespace {
+
+// POV-Ray compat (Post_Textures): a texture's `no_bump_scale` reaches its normal, its texture_map's pattern (the
+// normal's way into the entries' space) and every entry of that map.
+void mark_no_bump_scale(Texture& t) {
+    t.normal.pattern.no_bump_scale = true;
+    t.map_pattern.no_bump_scale = true;
+    for (TextureMapEntry& e : t.texture_map) mark_no_bump_scale(e.texture);
+}
+
+}  // namespace
+
 void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const char* close) {
     const std::size_t depth = m_brace_depth;
+    bool no_bump_scale = false;
     expand_macros();
     if (is_array_element_next()) {
         const Token at = peek();
@@ -248,6 +261,7 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         }
         if (is_punct(t, close)) {
             next();
+            if (no_bump_scale) mark_no_bump_scale(top_layer(tx));
             return;
         }
         if (t.kind != TokenKind::Identifier) fail(t, "expected a texture item but found '" + t.text + "'");
@@ -277,8 +291,8 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         } else if (t.text == "material_map") {
             parse_material_map(t, tx);
         } else if (t.text == "no_bump_scale") {
-            // POV-Ray's DONT_SCALE_BUMPS flag: the bumps would grow with the texture's scale; wardray keeps their size.
-            warn_unsupported(t, "no_bump_scale");
+            // POV-Ray's DONT_SCALE_BUMPS flag, given to the texture's normal and map once the texture is read.
+            no_bump_scale = true;
         } else if (t.text == "pigment") {
             top_layer(tx).pigment = parse_pigment_body(t, &top_layer(tx).pigment);
         } else if (t.text == "finish") {

@@ -253,6 +253,7 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         pat.crackle_solid = true;
     } else if (w == "no_bump_scale") {
         next();
+        pat.no_bump_scale = true;
     } else if (parse_pattern_extra(t, pat)) {
         return true;
     } else {

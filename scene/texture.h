@@ -199,6 +199,10 @@ struct Pattern {
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
     std::vector<Warp> warps;
+    /// `no_bump_scale` (POV-Ray's DONT_SCALE_BUMPS_FLAG), on a normal's pattern or a texture's map pattern: the
+    /// normal goes into and out of this pattern's space unnormalized, so a scaled pattern's bumps keep their depth
+    /// relative to the scale (a normal_map's entries inherit it).
+    bool no_bump_scale = false;
     bool operator==(const Pattern&) const = default;
 };
 

@@ -87,13 +87,19 @@ double slope_map_value(const std::vector<scene::SlopeMapEntry>& map, double valu
 
 }  // namespace
 
-Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator,
-                    const SurfacePoint* surface) {
+namespace {
+
+// Perturb_Normal with `keep` true when the normal goes into and out of pattern space unnormalized (no_bump_scale on
+// this normal, or inherited from the normal_map holding it, as POV-Ray's Post_Tnormal passes it down).
+Vec3 perturb(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator,
+             const SurfacePoint* surface, bool keep) {
     const scene::Pattern& pat = normal.pattern;
+    keep = keep || pat.no_bump_scale;
     if (normal.bump_map) {
         // POV-Ray's bump_map: the image's normal in pattern space, carried back out.
-        const Vec3 local = bump_map_normal(*normal.bump_map, normal.amount, warp_point(pat, p), warp_normal(pat, n));
-        return unwarp_normal(pat, local);
+        const Vec3 local =
+            bump_map_normal(*normal.bump_map, normal.amount, warp_point(pat, p), warp_normal(pat, n, keep));
+        return unwarp_normal(pat, local, keep);
     }
     if (pat.type == Type::None) return n;
     const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
@@ -101,29 +107,31 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
     if (pat.type == Type::Average && !normal.normal_map.empty()) {
         // POV-Ray's Do_Average_Normals: each entry perturbs the pattern-space normal; the results are weighted by
         // their map values (summed in single precision).
-        const Vec3 local = warp_normal(pat, n);
+        const Vec3 local = warp_normal(pat, n, keep);
         Vec3 sum;
         float total = 0.0f;
         for (const scene::NormalMapEntry& e : normal.normal_map) {
-            sum += perturb_normal(e.normal, local, tp, noise_generator, surface) * e.value;
+            sum += perturb(e.normal, local, tp, noise_generator, surface, keep) * e.value;
             total += static_cast<float>(e.value);
         }
-        return unwarp_normal(pat, sum / static_cast<double>(total));
+        return unwarp_normal(pat, sum / static_cast<double>(total), keep);
     }
     if (!normal.normal_map.empty()) {
         // normal_map: the entries perturb the normal in this pattern's space and the results are blended.
         const double value = pattern_value(pat, tp, noise_generator, surface);
         const auto& map = normal.normal_map;
         const MapLookup m = search_map(value, static_cast<int>(map.size()), [&](int i) { return map[i].value; });
-        const Vec3 local = warp_normal(pat, n);
-        Vec3 result = perturb_normal(map[m.cur].normal, local, tp, noise_generator, surface);
+        const Vec3 local = warp_normal(pat, n, keep);
+        Vec3 result = perturb(map[m.cur].normal, local, tp, noise_generator, surface, keep);
         if (m.prev != m.cur) {
-            const Vec3 other = perturb_normal(map[m.prev].normal, local, tp, noise_generator, surface);
+            const Vec3 other = perturb(map[m.prev].normal, local, tp, noise_generator, surface, keep);
             result = other * (1.0 - m.fraction) + result * m.fraction;
         }
-        return unwarp_normal(pat, result);
+        // POV-Ray normalizes a normal_map's result whatever its flags.
+        const Vec3 out = unwarp_normal(pat, result, keep);
+        return keep ? normalize(out) : out;
     }
-    Vec3 local = warp_normal(pat, n);
+    Vec3 local = warp_normal(pat, n, keep);
     if (pat.type == Type::Facets) {
         local = facets_normal(pat, tp, local);
     } else if (is_normal_only(pat.type)) {
@@ -137,7 +145,16 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
             local += dir * (v * amount);
         }
     }
-    return unwarp_normal(pat, local);
+    return unwarp_normal(pat, local, keep);
+}
+
+}  // namespace
+
+Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, int noise_generator,
+                    const SurfacePoint* surface) {
+    // POV-Ray compat: a normal kept unnormalized through pattern space is normalized once perturbed.
+    const Vec3 r = perturb(normal, n, p, noise_generator, surface, false);
+    return normal.pattern.no_bump_scale ? normalize(r) : r;
 }
 
 }  // namespace wardray::texture

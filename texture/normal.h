@@ -17,5 +17,9 @@ Vec3 perturb_normal(const scene::Normal& normal, const Vec3& n, const Vec3& p, i
 Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n);
 /// A unit normal carried back out of a pattern's space (POV-Ray's UnWarp_Normal).
 Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n);
+/// As above, normalized before and after unless `keep` (no_bump_scale, the pattern's own or inherited); the
+/// two-argument forms take the pattern's own flag.
+Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n, bool keep);
+Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n, bool keep);
 
 }  // namespace wardray::texture

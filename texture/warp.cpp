@@ -171,19 +171,30 @@ Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p) {
     return q;
 }
 
+// POV-Ray compat (Warp_Normal, UnWarp_Normal): normalized before and after unless `no_bump_scale`.
 Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n) {
-    Vec3 t = into_pattern(pattern.transform, normalize(n));
-    for (const scene::Warp& w : pattern.warps)
-        if (w.type == WType::Transform) t = into_pattern(w.transform, t);
-    return normalize(t);
+    return warp_normal(pattern, n, pattern.no_bump_scale);
 }
 
 Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n) {
-    Vec3 t = normalize(n);
+    return unwarp_normal(pattern, n, pattern.no_bump_scale);
+}
+
+Vec3 warp_normal(const scene::Pattern& pattern, const Vec3& n, bool keep) {
+    const bool unit = !keep;
+    Vec3 t = into_pattern(pattern.transform, unit ? normalize(n) : n);
+    for (const scene::Warp& w : pattern.warps)
+        if (w.type == WType::Transform) t = into_pattern(w.transform, t);
+    return unit ? normalize(t) : t;
+}
+
+Vec3 unwarp_normal(const scene::Pattern& pattern, const Vec3& n, bool keep) {
+    const bool unit = !keep;
+    Vec3 t = unit ? normalize(n) : n;
     for (auto it = pattern.warps.rbegin(); it != pattern.warps.rend(); ++it)
         if (it->type == WType::Transform) t = it->transform.normal(t);
     if (!pattern.transform.is_identity()) t = pattern.transform.normal(t);
-    return normalize(t);
+    return unit ? normalize(t) : t;
 }
 
 }  // namespace wardray::texture

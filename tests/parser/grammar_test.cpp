@@ -137,9 +137,22 @@ TEST(Grammar, NormalMapEntryTakesANormalIdentifier) {
     EXPECT_EQ(n.normal_map[1].normal.pattern.type, Pattern::Type::Dents);
 }
 
-TEST(Grammar, NoBumpScaleInATextureIsReadWithAWarning) {
-    const Scene s = parse_ok("sphere { 0, 1 texture { pigment { rgb 1 } normal { bumps } scale 8 no_bump_scale } }");
-    EXPECT_TRUE(has_warning(s, "no_bump_scale is not rendered yet"));
+TEST(Grammar, NoBumpScaleMarksTheNormalAndTheTextureMap) {
+    const Scene s = parse_ok(R"(
+        sphere { 0, 1 texture { no_bump_scale pigment { rgb 1 } normal { bumps } scale 8 } }
+        sphere { 0, 1 normal { dents 0.5 no_bump_scale scale 3 } }
+        sphere { 0, 1 texture { gradient x texture_map { [0 normal { bumps }] [1 pigment { rgb 1 }] } no_bump_scale } }
+        sphere { 0, 1 normal { bumps scale 2 } }
+    )");
+    EXPECT_FALSE(has_warning(s, "not rendered"));
+    ASSERT_EQ(s.objects.size(), 4u);
+    EXPECT_TRUE(s.objects[0].texture->normal.pattern.no_bump_scale);  // the normal read after the flag too
+    EXPECT_TRUE(s.objects[1].texture->normal.pattern.no_bump_scale);
+    const Texture& mapped = s.objects[2].texture.get();
+    EXPECT_TRUE(mapped.map_pattern.no_bump_scale);
+    ASSERT_EQ(mapped.texture_map.size(), 2u);
+    EXPECT_TRUE(mapped.texture_map[0].texture.normal.pattern.no_bump_scale);
+    EXPECT_FALSE(s.objects[3].texture->normal.pattern.no_bump_scale);
 }
 
 TEST(Grammar, FinishIorMovesIntoTheInterior) {
