@@ -109,14 +109,16 @@ def interpolate(curve, x, key):
 
 def report(rows_file):
     rows = [json.loads(line) for line in open(rows_file)]
+    labels = [p["label"] for p in json.loads((HERE / "ladder.json").read_text())["full"]]
     by = collections.defaultdict(list)
-    for r in rows:
+    for r in sorted(rows, key=lambda r: labels.index(r["point"]) if r["point"] in labels else len(labels)):
         by[(r["scene"], r["config"])].append(r)
     order = list(dict.fromkeys(r["scene"] for r in rows))
     print("| scene | point | limits | records | gather rays | rRMSE | bad pixels | time / default's | "
           "error / default's at equal records | at equal gather rays |")
     print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|")
     summary = collections.defaultdict(list)
+    per_scene = collections.defaultdict(list)
     for scene in order:
         base = by[(scene, "both on")]
         for config in CONFIGS:
@@ -130,14 +132,22 @@ def report(rows_file):
                     ratio = r["corr"] / e if e > 0 else float("inf")
                     if not outside:
                         summary[(config, key)].append(ratio)
+                        per_scene[(scene, config, key)].append(ratio)
                     cells.append(f"{ratio:.2f}" + (" (outside)" if outside else ""))
                 print(f"| {scene} {r['size']} | {r['point']} | {config} | {r['records']:,} | {r['gather']:,} | "
                       f"{100 * r['corr']:.2f} % | {100 * r['bad']:.2f} % | {r['ratio']:.2f} | {cells[0]} | {cells[1]} |")
     print()
+    def mean(v):
+        return math.exp(sum(math.log(x) for x in v) / len(v)) if v else float("nan")
+    print("| scene | clamp off: records | gather rays | cap off: records | gather rays | both off: records | gather rays |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for scene in order:
+        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in list(CONFIGS)[1:] for k in ("records", "gather")]
+        print(f"| {scene} | " + " | ".join(cells) + " |")
+    print()
     for (config, key), v in summary.items():
-        mean = math.exp(sum(math.log(x) for x in v) / len(v))
         print(f"- {config}, at equal {'records' if key == 'records' else 'gather rays'}: error over the default's "
-              f"{mean:.2f} (geometric mean of {len(v)} points); {sum(x < 0.95 for x in v)} points more than 5 % "
+              f"{mean(v):.2f} (geometric mean of {len(v)} points); {sum(x < 0.95 for x in v)} point(s) more than 5 % "
               f"lower, {sum(x > 1.05 for x in v)} more than 5 % higher")
 
 
