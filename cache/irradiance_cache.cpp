@@ -207,7 +207,9 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
         auto merge = [&](IrradianceRecord record) {
             const auto depth = static_cast<std::size_t>(record.depth);
             RecordOctree& tree = m_octrees[depth];
-            if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
+            if (!m_neighbour_clamp) {
+                // --gi-neighbour-clamp=off: the radius stays as make_record() gave it.
+            } else if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
                 record.radius = merged[depth].clamped_radius(tree, record.position, record.radius);
                 shrink_holding(tree, record);
             } else {
