@@ -191,6 +191,12 @@ Why set_gi_gradients(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_on_off(const OptionUse& use, bool& value) {
+    if (use.value != "on" && use.value != "off") return "must be on or off";
+    value = use.value == "on";
+    return std::nullopt;
+}
+
 Why set_gi_carry(const OptionUse& use, Options& o) {
     if (use.value == "all") o.gi_carry = CarryMode::All;
     else if (use.value == "still") o.gi_carry = CarryMode::Still;
@@ -277,6 +283,14 @@ constexpr OptionSpec kOptions[] = {
      .set = [](U u, Options& o) { return set_seed(u.value, o.seed); }},
     {.long_name = "--gi-gradients", .kind = K::Value, .usage = "--gi-gradients=on|off",
      .help = "cache mode: irradiance gradients (default on; off is POV-Ray 3.7's cache)", .set = set_gi_gradients},
+    {.long_name = "--gi-gradient-cap", .kind = K::Value, .usage = "--gi-gradient-cap=on|off",
+     .help = "cache mode, with gradients: a record's radius at most E/|grad E|\n"
+             "(Krivanek et al. 2006; default on; POV-Ray 3.7 has no such cap)",
+     .set = [](U u, Options& o) { return set_on_off(u, o.gi_gradient_cap); }},
+    {.long_name = "--gi-neighbour-clamp", .kind = K::Value, .usage = "--gi-neighbour-clamp=on|off",
+     .help = "cache mode: radii clamped by neighbours' R_j + |p - p_j| (Krivanek et al.\n"
+             "2006; default on; POV-Ray 3.7 has no such clamp)",
+     .set = [](U u, Options& o) { return set_on_off(u, o.gi_neighbour_clamp); }},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"
              "(all) or those no changed object covers 1 % of the hemisphere of (still)",

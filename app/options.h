@@ -64,6 +64,8 @@ struct Options {
     int gi_light_picks = 1;                         ///< --gi-light-picks: shadow-tested lights per gather hit
     std::uint64_t seed = 0;                         ///< --seed: 0 draws the samples the renders without it draw
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
+    bool gi_gradient_cap = true;                    ///< --gi-gradient-cap=off: no radius cap E/|∇t E|
+    bool gi_neighbour_clamp = true;                 ///< --gi-neighbour-clamp=off: no neighbour clamping
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
     bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file

@@ -357,6 +357,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gather_light_picks = options.gi_light_picks;
     settings.seed = options.seed;
     settings.gradients = options.gi_gradients;
+    settings.gradient_cap = options.gi_gradient_cap;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
     // Up to +Q5 surfaces show their pigments' quick_color (the integrator); the sky's pigments keep theirs.
@@ -389,6 +390,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     illumination.cache_file = options.radiosity_file.value_or(options.scene.stem().string() + ".rca");
     if (illumination.integrator->uses_cache()) {
         illumination.cache = std::make_unique<cache::IrradianceCache>(*scene.global.radiosity);
+        illumination.cache->set_neighbour_clamp(options.gi_neighbour_clamp);
         if (options.radiosity_load) load_cache_file(*illumination.cache, illumination.cache_file);
     }
     return illumination;

@@ -135,7 +135,7 @@ void TileCache::add(IrradianceRecord record) {
     m_cache->clamp_new_record(record);
     // Then against this tile's own records, both ways.
     RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
-    clamp_both_ways(own, record);
+    if (m_cache->m_neighbour_clamp) clamp_both_ways(own, record);
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
@@ -207,7 +207,9 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
         auto merge = [&](IrradianceRecord record) {
             const auto depth = static_cast<std::size_t>(record.depth);
             RecordOctree& tree = m_octrees[depth];
-            if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
+            if (!m_neighbour_clamp) {
+                // --gi-neighbour-clamp=off: the radius stays as make_record() gave it.
+            } else if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
                 record.radius = merged[depth].clamped_radius(tree, record.position, record.radius);
                 shrink_holding(tree, record);
             } else {
@@ -261,12 +263,13 @@ Interpolation IrradianceCache::lookup(const Vec3& p, const Vec3& n, int depth, c
 
 void IrradianceCache::clamp_new_record(IrradianceRecord& record) const {
     // Křivánek et al. 2006, neighbour clamping R_new ≤ R_i + |p_new − p_i|: only records closer than R_new can bind.
+    if (!m_neighbour_clamp) return;
     const RecordOctree& tree = m_octrees[static_cast<std::size_t>(record.depth)];
     record.radius = tree.clamped_radius(record.position, record.radius);
 }
 
 void IrradianceCache::clamp_mutual(IrradianceRecord& record) {
-    clamp_both_ways(m_octrees[static_cast<std::size_t>(record.depth)], record);
+    if (m_neighbour_clamp) clamp_both_ways(m_octrees[static_cast<std::size_t>(record.depth)], record);
 }
 
 void IrradianceCache::add(const IrradianceRecord& record) {

@@ -113,6 +113,9 @@ public:
     /// Merges the tiles' records in tile order (neighbour clamping against all earlier records) and closes the pass.
     void end_pass();
     bool in_pass() const { return m_in_pass; }
+    /// Neighbour clamping (Křivánek et al. 2006) of every record added from now on (default on; off keeps each
+    /// record's radius as make_record() gave it, as POV-Ray 3.7 does).
+    void set_neighbour_clamp(bool on) { m_neighbour_clamp = on; }
 
     /// Interpolates from the frozen cache (no statistics; thread-safe while no pass is merging).
     Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const;
@@ -150,6 +153,7 @@ private:
     std::vector<RecordOctree> m_octrees;
     std::vector<std::unique_ptr<TileCache>> m_tiles;
     bool m_in_pass = false;
+    bool m_neighbour_clamp = true;
     int m_pass = 0;
     std::vector<std::vector<std::uint64_t>> m_records_per_pass;
     std::uint64_t m_lookups = 0;

@@ -38,8 +38,10 @@ double gather_weight(double base, int exponent) {
 /// Cache mode: interpolate from the tile's cache view, or gather a new record when too few are valid.
 class CachedIrradiance final : public IndirectLight {
 public:
-    CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint)
-        : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_footprint(footprint) {}
+    CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint,
+                     bool gradient_cap)
+        : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_gradient_cap(gradient_cap),
+          m_footprint(footprint) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                     TraceContext& ctx) const override {
@@ -72,7 +74,7 @@ public:
                 cache::radius_limits(rs, depth, camera_distance, m_footprint * camera_distance);
             cache::RecordOptions options;
             options.gradients = m_gradients;
-            options.gradient_radius_cap = m_gradients;
+            options.gradient_radius_cap = m_gradients && m_gradient_cap;
             ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
         }
         // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
@@ -85,6 +87,7 @@ private:
     const scene::Scene& m_scene;
     const GatherTracer& m_tracer;
     bool m_gradients = true;
+    bool m_gradient_cap = true;
     double m_footprint = 0.0;
 };
 
@@ -125,8 +128,8 @@ private:
 }  // namespace
 
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
-                                                            bool gradients, double footprint) {
-    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint);
+                                                            bool gradients, double footprint, bool gradient_cap) {
+    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap);
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,

@@ -47,6 +47,7 @@ struct IntegratorOptions {
     /// rainbows, photons); 0 draws those of a render without it (core/render_seed.h).
     std::uint64_t seed = 0;
     bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
+    bool gradient_cap = true;  ///< --gi-gradient-cap: with gradients, a record's radius ≤ E/|∇t E|
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
     double footprint = 0.0;

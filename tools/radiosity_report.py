@@ -180,7 +180,22 @@ def write_report(rows, args, out):
     if notes:
         lines += ["## Where wardray is not ahead", ""] + notes + [""]
     out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text("\n".join(lines))
+    out.write_text("\n".join(lines) + kept_sections(out, lines))
+
+
+def kept_sections(out, lines):
+    """The sections of an existing report that this script does not write (dated measurements appended by hand),
+    so that a new run keeps them after its own."""
+    if not out.is_file():
+        return ""
+    own = {line for line in lines if line.startswith("## ")}
+    kept, keep = [], False
+    for line in out.read_text().splitlines():
+        if line.startswith("## "):
+            keep = line not in own and line != "## Where wardray is not ahead"
+        if keep:
+            kept.append(line)
+    return "\n" + "\n".join(kept) + "\n" if kept else ""
 
 
 def main():

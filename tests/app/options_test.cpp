@@ -136,6 +136,20 @@ TEST(Options, RadiositySwitches) {
     EXPECT_NE(parse_error({"--gi-gradients=maybe"}).find("--gi-gradients"), std::string::npos);
 }
 
+TEST(Options, RecordRadiusLimitSwitches) {
+    const Options defaults = parse_ok({});
+    EXPECT_TRUE(defaults.gi_gradient_cap);
+    EXPECT_TRUE(defaults.gi_neighbour_clamp);
+    const Options off = parse_ok({"--gi-gradient-cap=off", "--gi-neighbour-clamp=off"});
+    EXPECT_FALSE(off.gi_gradient_cap);
+    EXPECT_FALSE(off.gi_neighbour_clamp);
+    const Options on = parse_ok({"--gi-gradient-cap=off", "--gi-gradient-cap=on", "--gi-neighbour-clamp=on"});
+    EXPECT_TRUE(on.gi_gradient_cap);
+    EXPECT_TRUE(on.gi_neighbour_clamp);
+    EXPECT_NE(parse_error({"--gi-gradient-cap=no"}).find("--gi-gradient-cap"), std::string::npos);
+    EXPECT_NE(parse_error({"--gi-neighbour-clamp=1"}).find("--gi-neighbour-clamp"), std::string::npos);
+}
+
 TEST(Options, SeedTakesAny64BitNumber) {
     EXPECT_EQ(parse_ok({}).seed, 0u);
     EXPECT_EQ(parse_ok({"--seed", "7"}).seed, 7u);

@@ -139,6 +139,22 @@ TEST(IrradianceCache, NeighbourClampingAtInsertion) {
     EXPECT_DOUBLE_EQ(cache.records(0)[0].radius, 0.6);
 }
 
+TEST(IrradianceCache, NeighbourClampingOffKeepsEachRadius) {
+    IrradianceCache cache(1, 1.8);
+    cache.set_neighbour_clamp(false);
+    cache.add(record_at({0, 0, 0}, 4.0));
+    cache.add(record_at({1, 0, 0}, 0.25));
+    cache.add(record_at({1.5, 0, 0}, 3.0));
+    // Neither at insertion nor in a tile nor at the merge does a radius change.
+    cache.begin_pass(1);
+    cache.tile(0).add(record_at({0, 0, -0.5}, 0.1));
+    cache.tile(0).add(record_at({0, 0, -0.25}, 2.0));
+    cache.end_pass();
+    const std::vector<double> expected{4.0, 0.25, 3.0, 0.1, 2.0};
+    ASSERT_EQ(cache.records(0).size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(cache.records(0)[i].radius, expected[i]) << i;
+}
+
 std::string saved(const IrradianceCache& cache) {
     std::ostringstream out(std::ios::binary);
     cache.save(out);

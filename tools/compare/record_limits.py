@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off.
+
+For one scene: a brute-force reference (`--gi=reference --gi-rays N`, seeds 1 and 2, their mean), then the ladder
+points of tools/compare/ladder.json with the four configurations (both limits on, neighbour clamping off, the
+E/|grad E| cap off, both off) rendered in turn, A B C D, 2 threads, linear HDR, `-A`. Each render's records, gather
+and shadow rays (from --stats), rRMSE and bad-pixel fraction against the reference (docs/metrics.md), the rRMSE with
+the reference's own noise taken out in quadrature, and its time over the default's at the same point are
+appended to a JSON-lines file; `--report` turns that file into the Markdown table of docs/reports/radiosity.md,
+with each configuration's error over the default's at the same record count and at the same gather rays
+(log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
+
+  tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
+  tools/compare/record_limits.py --report build/record-limits/rows.jsonl
+"""
+import argparse
+import collections
+import json
+import math
+import pathlib
+import subprocess
+import sys
+import time
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from gimetrics import image_error, read_linear_rgb  # noqa: E402
+from povrewrite import rewrite_radiosity  # noqa: E402
+
+CONFIGS = {
+    "both on": [],
+    "clamp off": ["--gi-neighbour-clamp=off"],
+    "cap off": ["--gi-gradient-cap=off"],
+    "both off": ["--gi-neighbour-clamp=off", "--gi-gradient-cap=off"],
+}
+
+
+def render(exe, scene, output, size, scene_dir, extra, cwd, stats=None):
+    """Renders `scene` in `cwd`; returns the whole-process wall-clock seconds."""
+    w, h = size
+    cmd = [str(exe), f"+I{scene}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "+WT2", f"+L{scene_dir}", *extra]
+    if stats:
+        cmd += ["--stats", str(stats)]
+    start = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if proc.returncode:
+        raise RuntimeError(f"{' '.join(cmd)}\n{proc.stdout[-800:]}")
+    return time.perf_counter() - start
+
+
+def measure(args):
+    ladder = json.loads((HERE / "ladder.json").read_text())
+    size = tuple(int(x) for x in args.size.split("x"))
+    path = pathlib.Path(args.scene).resolve()
+    text = path.read_text(errors="replace")
+    work = pathlib.Path(args.out) / f"{path.stem}-{args.size}"
+    work.mkdir(parents=True, exist_ok=True)
+    # The reference: brute force on the scene at POV-Ray's converged settings (recursion_limit etc. as the scene's).
+    (work / "ref.pov").write_text(rewrite_radiosity(text, ladder["povray_reference"])[0])
+    refs = []
+    for seed in (1, 2):
+        image = work / f"ref{args.rays}_s{seed}.hdr"
+        if not image.exists():
+            render(args.wardray, "ref.pov", image.name, size, path.parent,
+                   ["--gi=reference", "--gi-rays", str(args.rays), "--seed", str(seed)], work)
+        refs.append(read_linear_rgb(image))
+    # The two seeds differ by sqrt(2) times one's noise; their mean has half the difference's.
+    noise = image_error(refs[1], refs[0])["rrmse"] / 2
+    reference = (refs[0] + refs[1]) / 2
+    print(f"# {path.stem} {args.size}: reference {args.rays} paths x 2 seeds, noise of their mean {100 * noise:.2f} %")
+    points = [p for p in ladder["full"] if p["label"] in args.points.split(",")]
+    rows = []
+    for p in points:
+        (work / "scene.pov").write_text(rewrite_radiosity(text, p["radiosity"])[0])
+        for config, extra in CONFIGS.items():  # in turn, so that their times are comparable
+            seconds = render(args.wardray, "scene.pov", "image.hdr", size, path.parent, extra, work, work / "stats.json")
+            stats = json.loads((work / "stats.json").read_text())
+            err = image_error(read_linear_rgb(work / "image.hdr"), reference)
+            rows.append({"scene": path.stem, "size": args.size, "point": p["label"], "config": config,
+                         "time": seconds, "records": stats["cache"]["records"], "gather": stats["rays"]["gather"],
+                         "shadow": stats["rays"]["shadow"], "rrmse": err["rrmse"], "bad": err["bad_fraction"],
+                         "corr": math.sqrt(max(err["rrmse"] ** 2 - noise ** 2, 0.0)), "noise": noise})
+        base = rows[-len(CONFIGS)]["time"]
+        for r in rows[-len(CONFIGS):]:
+            r["ratio"] = r["time"] / base
+            print(f"{r['scene']}\t{r['point']}\t{r['config']}\t{r['records']}\t{r['gather']}\t"
+                  f"{100 * r['corr']:.2f} %\t{r['ratio']:.2f}", flush=True)
+    with open(pathlib.Path(args.out) / "rows.jsonl", "a") as f:
+        for r in rows:
+            f.write(json.dumps(r) + "\n")
+
+
+def interpolate(curve, x, key):
+    """The default's error at cost `x` (log-log, straight lines between ladder points); and whether x lies
+    outside the curve's range (then the nearest segment is extended)."""
+    pts = sorted((c[key], c["corr"]) for c in curve)
+    outside = x < pts[0][0] * 0.98 or x > pts[-1][0] * 1.02
+    if x <= pts[0][0]:
+        a, b = pts[0], pts[1]
+    elif x >= pts[-1][0]:
+        a, b = pts[-2], pts[-1]
+    else:
+        a, b = next((p, q) for p, q in zip(pts, pts[1:]) if p[0] <= x <= q[0])
+    if a[0] == b[0] or a[1] <= 0 or b[1] <= 0:
+        return a[1], outside
+    slope = math.log(b[1] / a[1]) / math.log(b[0] / a[0])
+    return a[1] * (x / a[0]) ** slope, outside
+
+
+def report(rows_file):
+    rows = [json.loads(line) for line in open(rows_file)]
+    labels = [p["label"] for p in json.loads((HERE / "ladder.json").read_text())["full"]]
+    by = collections.defaultdict(list)
+    for r in sorted(rows, key=lambda r: labels.index(r["point"]) if r["point"] in labels else len(labels)):
+        by[(r["scene"], r["config"])].append(r)
+    order = list(dict.fromkeys(r["scene"] for r in rows))
+    print("| scene | point | limits | records | gather rays | rRMSE | bad pixels | time / default's | "
+          "error / default's at equal records | at equal gather rays |")
+    print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|")
+    summary = collections.defaultdict(list)
+    per_scene = collections.defaultdict(list)
+    for scene in order:
+        base = by[(scene, "both on")]
+        for config in CONFIGS:
+            for r in by[(scene, config)]:
+                cells = []
+                for key in ("records", "gather"):
+                    if config == "both on":
+                        cells.append("1")
+                        continue
+                    e, outside = interpolate(base, r[key], key)
+                    ratio = r["corr"] / e if e > 0 else float("inf")
+                    if not outside:
+                        summary[(config, key)].append(ratio)
+                        per_scene[(scene, config, key)].append(ratio)
+                    cells.append(f"{ratio:.2f}" + (" (outside)" if outside else ""))
+                print(f"| {scene} {r['size']} | {r['point']} | {config} | {r['records']:,} | {r['gather']:,} | "
+                      f"{100 * r['corr']:.2f} % | {100 * r['bad']:.2f} % | {r['ratio']:.2f} | {cells[0]} | {cells[1]} |")
+    print()
+    def mean(v):
+        return math.exp(sum(math.log(x) for x in v) / len(v)) if v else float("nan")
+    print("| scene | clamp off: records | gather rays | cap off: records | gather rays | both off: records | gather rays |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
+    for scene in order:
+        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in list(CONFIGS)[1:] for k in ("records", "gather")]
+        print(f"| {scene} | " + " | ".join(cells) + " |")
+    print()
+    for (config, key), v in summary.items():
+        print(f"- {config}, at equal {'records' if key == 'records' else 'gather rays'}: error over the default's "
+              f"{mean(v):.2f} (geometric mean of {len(v)} points); {sum(x < 0.95 for x in v)} point(s) more than 5 % "
+              f"lower, {sum(x > 1.05 for x in v)} more than 5 % higher")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("scene", nargs="?")
+    ap.add_argument("--size", default="160x120")
+    ap.add_argument("--rays", type=int, default=512, help="reference paths per pixel, per seed")
+    ap.add_argument("--points", default="c40/e0.7,c80/e0.5,c150/e0.35", help="labels of ladder.json's 'full'")
+    ap.add_argument("--wardray", default=str(HERE.parent.parent / "build" / "wardray"))
+    ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
+    ap.add_argument("--report", metavar="ROWS", help="print the table of a rows.jsonl and stop")
+    args = ap.parse_args()
+    if args.report:
+        report(args.report)
+    elif args.scene:
+        measure(args)
+    else:
+        ap.error("a scene or --report ROWS")
+
+
+if __name__ == "__main__":
+    main()
