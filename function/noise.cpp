@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -67,8 +68,19 @@ struct PovLcg {
     }
 };
 
+// DNoise's coefficients regrouped by hash value h: c[j] = {R[h+j], R[h+4+j], R[h+8+j], 0}, the x, y and z blocks
+// side by side, c[0] already halved (0.5·R is exact, and every use halves it).
+using Lanes = double __attribute__((vector_size(32)));
+
+struct BlockCoefficients {
+    Lanes c[4];
+};
+
 struct Tables {
     std::array<unsigned short, 8192> hash{};
+    std::array<BlockCoefficients, 256> blocks{};
+    // Noise's coefficient row of hash value h: {R[h]/2, R[h+1], R[h+2], R[h+3]}.
+    std::array<Lanes, 256> rows{};
     std::array<double, 32768> rands{};
     // Perlin solid noise (generator 3): permutation and unit gradients.
     static constexpr int kEntries = 2048;
@@ -111,6 +123,15 @@ struct Tables {
             perm[kEntries + i] = perm[i];
             grad[kEntries + i] = grad[i];
         }
+
+        for (std::size_t h = 0; h < blocks.size(); ++h) {
+            for (std::size_t j = 0; j < 4; ++j) {
+                const double scale = j == 0 ? 0.5 : 1.0;
+                blocks[h].c[j] =
+                    Lanes{scale * kRTable[h + j], scale * kRTable[h + 4 + j], scale * kRTable[h + 8 + j], 0.0};
+            }
+            rows[h] = Lanes{0.5 * kRTable[h], kRTable[h + 1], kRTable[h + 2], kRTable[h + 3]};
+        }
     }
 };
 
@@ -122,7 +143,8 @@ const Tables& tables() {
 constexpr double kEpsilon = kPovEpsilon;  // POV-Ray's EPSILON
 constexpr int kNoiseMin = -10000;     // POV-Ray's NOISE_MINX/Y/Z
 
-double s_curve(double t) { return t * t * (3.0 - 2.0 * t); }
+template <typename T>
+T s_curve(T t) { return t * t * (3.0 - 2.0 * t); }
 
 // One lattice axis: the wrapped 12-bit cell index and the offset inside the cell.
 // POV-Ray compat: negative coordinates round with (int)(x - (1 - EPSILON)), not floor.
@@ -145,41 +167,259 @@ void lattice(double x, int& cell, double& frac) {
     frac = x - tmp;
 }
 
-// POV-Ray's noise sums over the eight corners of the lattice cell around `p`, for `Blocks` coefficient blocks
-// (1 for Noise; 3 for the x, y, z of DNoise, blocks 0, 4, 8). Each corner adds
-// weight · (R[h]/2 + R[h+1]·dx + R[h+2]·dy + R[h+3]·dz), in POV-Ray's corner order; one pass over the corners
-// serves every block, each sum adding the same terms in the same order as a pass per block would.
-template <int Blocks>
-inline void corner_sums(const Vec3& p, double (&sum)[Blocks]) {
-    const Tables& t = tables();
-    int ix, iy, iz;
-    double fx, fy, fz;
+// The lattice cell around a point as POV-Ray's Noise and DNoise set it up: its z cell, the offsets and s-curve
+// weights, and the hashes, weights and offsets of the four corners of a face (index xy: x + 2y).
+struct Cell {
+    int iz;
+    double fz, sz, tz;
+    int hxy[4];
+    double wxy[4], ox[4], oy[4];
+};
+
+inline Cell lattice_cell(const Tables& t, const Vec3& p) {
+    Cell c;
+    int ix, iy;
+    double fx, fy;
     lattice(p.x, ix, fx);
     lattice(p.y, iy, fy);
-    lattice(p.z, iz, fz);
-    const double sx = s_curve(fx), sy = s_curve(fy), sz = s_curve(fz);
-    const double tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
+    lattice(p.z, c.iz, c.fz);
+    const double sx = s_curve(fx), sy = s_curve(fy);
+    c.sz = s_curve(c.fz);
+    const double tx = 1.0 - sx, ty = 1.0 - sy;
+    c.tz = 1.0 - c.sz;
     auto hash2 = [&](int a, int b) { return static_cast<int>(t.hash[t.hash[a] ^ b]); };
     const int hxy[4] = {hash2(ix, iy), hash2(ix + 1, iy), hash2(ix, iy + 1), hash2(ix + 1, iy + 1)};
     const double wxy[4] = {tx * ty, sx * ty, tx * sy, sx * sy};
     const double ox[4] = {fx, fx - 1.0, fx, fx - 1.0};
     const double oy[4] = {fy, fy, fy - 1.0, fy - 1.0};
-    for (int b = 0; b < Blocks; ++b) sum[b] = 0.0;
-    // Unrolled: inlined into dturbulence GCC otherwise keeps a loop whose corner tables live on the stack (11 % of
-    // dturbulence's time; the sums, and so every bit of the result, are the same).
+    for (int i = 0; i < 4; ++i) {
+        c.hxy[i] = hxy[i];
+        c.wxy[i] = wxy[i];
+        c.ox[i] = ox[i];
+        c.oy[i] = oy[i];
+    }
+    return c;
+}
+
+// POV-Ray's noise sums over the eight corners of the lattice cell around `p` (corner k: face k / 4, xy k mod 4,
+// POV-Ray's order), each corner adding weight · (R[h]/2 + R[h+1]·dx + R[h+2]·dy + R[h+3]·dz).
+inline double corner_sum(const Vec3& p) {
+    const Tables& t = tables();
+    const Cell cell = lattice_cell(t, p);
+    double sum = 0.0;
 #pragma GCC unroll 8
     for (int k = 0; k < 8; ++k) {
         const int xy = k & 3;
         const bool upper = k >= 4;
-        const int h = t.hash[hxy[xy] ^ (upper ? iz + 1 : iz)] & 0xFF;
-        const double weight = wxy[xy] * (upper ? sz : tz);
-        const double dx = ox[xy], dy = oy[xy], dz = upper ? fz - 1.0 : fz;
-#pragma GCC unroll 3
-        for (int b = 0; b < Blocks; ++b) {
-            const double* r = &kRTable[static_cast<std::size_t>(h + 4 * b)];
-            sum[b] += weight * (0.5 * r[0] + r[1] * dx + r[2] * dy + r[3] * dz);
+        const int h = t.hash[cell.hxy[xy] ^ (upper ? cell.iz + 1 : cell.iz)] & 0xFF;
+        const double weight = cell.wxy[xy] * (upper ? cell.sz : cell.tz);
+        const double dz = upper ? cell.fz - 1.0 : cell.fz;
+        const Lanes& r = t.rows[static_cast<std::size_t>(h)];
+        sum += weight * (r[0] + r[1] * cell.ox[xy] + r[2] * cell.oy[xy] + r[3] * dz);
+    }
+    return sum;
+}
+
+// Two doubles side by side (GCC's vector extension, one SSE2 register): lane i belongs to point i of a pair.
+using Pair = double __attribute__((vector_size(16)));
+using PairIndex = long long __attribute__((vector_size(16)));
+
+inline Pair load_pair(const double* p) {
+    Pair v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+// corner_sum of two points at once: each lane does exactly corner_sum's operations in its order, so both sums are
+// the same to the bit; the pair only shares the instructions (noise is bound by its instruction count, not by the
+// latency of one evaluation).
+inline Pair corner_sum_pair(const Vec3& p0, const Vec3& p1) {
+    const Tables& t = tables();
+    int ix[2], iy[2], iz[2];
+    double fx[2], fy[2], fz[2];
+    for (int i = 0; i < 2; ++i) {
+        const Vec3& p = i ? p1 : p0;
+        lattice(p.x, ix[i], fx[i]);
+        lattice(p.y, iy[i], fy[i]);
+        lattice(p.z, iz[i], fz[i]);
+    }
+    const Pair px = {fx[0], fx[1]}, py = {fy[0], fy[1]}, pz = {fz[0], fz[1]};
+    const Pair sx = s_curve(px), sy = s_curve(py), sz = s_curve(pz);
+    const Pair tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
+    auto hash2 = [&](int a, int b) { return static_cast<int>(t.hash[t.hash[a] ^ b]); };
+    int hxy[2][4];
+    for (int i = 0; i < 2; ++i) {
+        hxy[i][0] = hash2(ix[i], iy[i]);
+        hxy[i][1] = hash2(ix[i] + 1, iy[i]);
+        hxy[i][2] = hash2(ix[i], iy[i] + 1);
+        hxy[i][3] = hash2(ix[i] + 1, iy[i] + 1);
+    }
+    const Pair wxy[4] = {tx * ty, sx * ty, tx * sy, sx * sy};
+    const Pair ox[4] = {px, px - 1.0, px, px - 1.0};
+    const Pair oy[4] = {py, py, py - 1.0, py - 1.0};
+    Pair sum = {0.0, 0.0};
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+        const int xy = k & 3;
+        const bool upper = k >= 4;
+        const int h0 = t.hash[hxy[0][xy] ^ (upper ? iz[0] + 1 : iz[0])] & 0xFF;
+        const int h1 = t.hash[hxy[1][xy] ^ (upper ? iz[1] + 1 : iz[1])] & 0xFF;
+        // The two points' coefficient rows, turned into columns {R0 of point 0, R0 of point 1}, ...
+        const double* r0 = reinterpret_cast<const double*>(&t.rows[static_cast<std::size_t>(h0)]);
+        const double* r1 = reinterpret_cast<const double*>(&t.rows[static_cast<std::size_t>(h1)]);
+        const Pair a01 = load_pair(r0), a23 = load_pair(r0 + 2), b01 = load_pair(r1), b23 = load_pair(r1 + 2);
+        const Pair c0 = __builtin_shuffle(a01, b01, PairIndex{0, 2});
+        const Pair c1 = __builtin_shuffle(a01, b01, PairIndex{1, 3});
+        const Pair c2 = __builtin_shuffle(a23, b23, PairIndex{0, 2});
+        const Pair c3 = __builtin_shuffle(a23, b23, PairIndex{1, 3});
+        const Pair weight = wxy[xy] * (upper ? sz : tz);
+        sum += weight * (c0 + c1 * ox[xy] + c2 * oy[xy] + c3 * (upper ? pz - 1.0 : pz));
+    }
+    return sum;
+}
+
+// DNoise's three corner sums side by side: lane b adds, corner by corner in POV-Ray's order, exactly the terms
+// weight · (R[h+4b]/2 + R[h+4b+1]·dx + R[h+4b+2]·dy + R[h+4b+3]·dz) that POV-Ray adds to its component b, so each
+// component is POV-Ray's to the bit, with a third of the loads and arithmetic of one block at a time.
+// Four lanes (x, y, z, unused) in one AVX register; the default build pairs x and y and adds z alone.
+
+[[gnu::target("avx2"), gnu::always_inline]] inline Lanes dnoise_avx2(const Vec3& p) {
+    const Tables& t = tables();
+    const Cell cell = lattice_cell(t, p);
+    Lanes sum = {0.0, 0.0, 0.0, 0.0};
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+        const int xy = k & 3;
+        const bool upper = k >= 4;
+        const int h = t.hash[cell.hxy[xy] ^ (upper ? cell.iz + 1 : cell.iz)] & 0xFF;
+        const double weight = cell.wxy[xy] * (upper ? cell.sz : cell.tz);
+        const double dz = upper ? cell.fz - 1.0 : cell.fz;
+        const Lanes* c = t.blocks[static_cast<std::size_t>(h)].c;
+        sum += weight * (c[0] + c[1] * cell.ox[xy] + c[2] * cell.oy[xy] + c[3] * dz);
+    }
+    return sum;
+}
+
+[[gnu::always_inline]] inline Vec3 dnoise_sse2(const Vec3& p) {
+    const Tables& t = tables();
+    const Cell cell = lattice_cell(t, p);
+    Pair sum_xy = {0.0, 0.0};
+    double sum_z = 0.0;
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+        const int xy = k & 3;
+        const bool upper = k >= 4;
+        const int h = t.hash[cell.hxy[xy] ^ (upper ? cell.iz + 1 : cell.iz)] & 0xFF;
+        const double weight = cell.wxy[xy] * (upper ? cell.sz : cell.tz);
+        const double dx = cell.ox[xy], dy = cell.oy[xy], dz = upper ? cell.fz - 1.0 : cell.fz;
+        const Lanes* c = t.blocks[static_cast<std::size_t>(h)].c;
+        auto low = [&](int j) { return load_pair(reinterpret_cast<const double*>(&c[j])); };
+        sum_xy += weight * (low(0) + low(1) * dx + low(2) * dy + low(3) * dz);
+        sum_z += weight * (c[0][2] + c[1][2] * dx + c[2][2] * dy + c[3][2] * dz);
+    }
+    return {sum_xy[0], sum_xy[1], sum_z};
+}
+
+using LaneIndex = long long __attribute__((vector_size(32)));
+
+// Rows a, b, c, d of four doubles each, as four columns (col[i] = {a[i], b[i], c[i], d[i]}).
+[[gnu::target("avx2"), gnu::always_inline]] inline void transpose(Lanes a, Lanes b, Lanes c, Lanes d, Lanes (&col)[4]) {
+    const Lanes ab_even = __builtin_shuffle(a, b, LaneIndex{0, 4, 2, 6});
+    const Lanes ab_odd = __builtin_shuffle(a, b, LaneIndex{1, 5, 3, 7});
+    const Lanes cd_even = __builtin_shuffle(c, d, LaneIndex{0, 4, 2, 6});
+    const Lanes cd_odd = __builtin_shuffle(c, d, LaneIndex{1, 5, 3, 7});
+    col[0] = __builtin_shuffle(ab_even, cd_even, LaneIndex{0, 1, 4, 5});
+    col[1] = __builtin_shuffle(ab_odd, cd_odd, LaneIndex{0, 1, 4, 5});
+    col[2] = __builtin_shuffle(ab_even, cd_even, LaneIndex{2, 3, 6, 7});
+    col[3] = __builtin_shuffle(ab_odd, cd_odd, LaneIndex{2, 3, 6, 7});
+}
+
+// Noise's corner sums of four points at once, lane i for p[i]: each lane does exactly corner_sums' operations
+// in its order (the rows' first coefficients come halved, as corner_sums halves them), so each sum is the same
+// to the bit.
+[[gnu::target("avx2"), gnu::always_inline]] inline Lanes noise_sums_avx2(const Vec3* p) {
+    const Tables& t = tables();
+    int ix[4], iy[4], iz[4];
+    double fx[4], fy[4], fz[4];
+    for (int i = 0; i < 4; ++i) {
+        lattice(p[i].x, ix[i], fx[i]);
+        lattice(p[i].y, iy[i], fy[i]);
+        lattice(p[i].z, iz[i], fz[i]);
+    }
+    const Lanes px = {fx[0], fx[1], fx[2], fx[3]}, py = {fy[0], fy[1], fy[2], fy[3]};
+    const Lanes pz = {fz[0], fz[1], fz[2], fz[3]};
+    // s_curve, written out: a template instantiated for Lanes would be compiled without AVX.
+    const Lanes sx = px * px * (3.0 - 2.0 * px), sy = py * py * (3.0 - 2.0 * py), sz = pz * pz * (3.0 - 2.0 * pz);
+    const Lanes tx = 1.0 - sx, ty = 1.0 - sy, tz = 1.0 - sz;
+    auto hash2 = [&](int a, int b) { return static_cast<int>(t.hash[t.hash[a] ^ b]); };
+    int hxy[4][4];
+    for (int i = 0; i < 4; ++i) {
+        hxy[i][0] = hash2(ix[i], iy[i]);
+        hxy[i][1] = hash2(ix[i] + 1, iy[i]);
+        hxy[i][2] = hash2(ix[i], iy[i] + 1);
+        hxy[i][3] = hash2(ix[i] + 1, iy[i] + 1);
+    }
+    const Lanes wxy[4] = {tx * ty, sx * ty, tx * sy, sx * sy};
+    const Lanes ox[4] = {px, px - 1.0, px, px - 1.0};
+    const Lanes oy[4] = {py, py, py - 1.0, py - 1.0};
+    Lanes sum = {0.0, 0.0, 0.0, 0.0};
+#pragma GCC unroll 8
+    for (int k = 0; k < 8; ++k) {
+        const int xy = k & 3;
+        const bool upper = k >= 4;
+        Lanes r[4];
+        for (int i = 0; i < 4; ++i) {
+            const int h = t.hash[hxy[i][xy] ^ (upper ? iz[i] + 1 : iz[i])] & 0xFF;
+            r[i] = t.rows[static_cast<std::size_t>(h)];
+        }
+        Lanes c[4];
+        transpose(r[0], r[1], r[2], r[3], c);
+        const Lanes weight = wxy[xy] * (upper ? sz : tz);
+        const Lanes dz = upper ? pz - 1.0 : pz;
+        sum += weight * (c[0] + c[1] * ox[xy] + c[2] * oy[xy] + c[3] * dz);
+    }
+    return sum;
+}
+
+// Whether the processor has AVX2, and whether the noise functions use their AVX2 builds (by default where it has).
+bool probe_avx2() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
+}
+bool g_avx2 = probe_avx2();
+
+[[gnu::target("avx2")]] Vec3 dnoise_avx2_vec(const Vec3& p) {
+    const Lanes d = dnoise_avx2(p);
+    return {d[0], d[1], d[2]};
+}
+
+[[gnu::target("avx2")]] Vec3 dturbulence_avx2(const Vec3& p, const TurbulenceParams& t) {
+    // The octaves are independent until they are added, so the processor overlaps their evaluations.
+    Lanes result = dnoise_avx2(p);
+    double l = t.lambda;
+    double o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        result += o * dnoise_avx2(p * l);
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
         }
     }
+    return {result[0], result[1], result[2]};
+}
+
+Vec3 dturbulence_sse2(const Vec3& p, const TurbulenceParams& t) {
+    Vec3 result = dnoise_sse2(p);
+    double l = t.lambda;
+    double o = t.omega;
+    for (int i = 2; i <= t.octaves; ++i) {
+        result += o * dnoise_sse2(p * l);
+        if (i < t.octaves) {
+            l *= t.lambda;
+            o *= t.omega;
+        }
+    }
+    return result;
 }
 
 // Perlin's gradient noise (Perlin 1989, "Hypertexture"), POV-Ray's SolidNoise, about -1..1.
@@ -214,16 +454,12 @@ double solid_noise(const Vec3& p) {
 
 }  // namespace
 
-double noise(const Vec3& p, int generator) {
-    if (generator == 3) {
-        // POV-Ray compat: 1.59 and 0.985 re-centre Perlin's noise on [0, 1].
-        return std::clamp(0.5 * (1.59 * solid_noise(p) + 0.985), 0.0, 1.0);
-    }
-    double sums[1];
-    corner_sums(p, sums);
-    double sum = sums[0];
+namespace {
+
+// POV-Ray's Noise from its corner sum: generator 2 stretches the measured range -1.05242..0.988997 onto [0, 1]
+// (POV-Ray compat), the others add 0.5; both clamp.
+double noise_from_sum(double sum, int generator) {
     if (generator == 2) {
-        // POV-Ray compat: the measured range -1.05242..0.988997 stretched onto [0, 1].
         sum = (sum + 1.05242) * 0.48985582;
     } else {
         sum += 0.5;
@@ -231,41 +467,93 @@ double noise(const Vec3& p, int generator) {
     return std::clamp(sum, 0.0, 1.0);
 }
 
-Vec3 dnoise(const Vec3& p) {
-    double sums[3];
-    corner_sums(p, sums);
-    return {sums[0], sums[1], sums[2]};
+// fBm's octaves, a few at a time: calls points(first, count, q) for the octave points q of octaves first ..
+// first + count - 1 (1-based), then octave(k, i) for each octave k in order with its index i into q's results.
+constexpr int kOctaveChunk = 8;
+
+template <typename Points, typename Octave>
+void for_octaves(int octaves, Points points, Octave octave) {
+    for (int first = 1; first <= octaves; first += kOctaveChunk) {
+        const int count = std::min(kOctaveChunk, octaves - first + 1);
+        points(first, count);
+        for (int j = 0; j < count; ++j) octave(first + j, j);
+    }
 }
+
+}  // namespace
+
+double noise(const Vec3& p, int generator) {
+    if (generator == 3) {
+        // POV-Ray compat: 1.59 and 0.985 re-centre Perlin's noise on [0, 1].
+        return std::clamp(0.5 * (1.59 * solid_noise(p) + 0.985), 0.0, 1.0);
+    }
+    return noise_from_sum(corner_sum(p), generator);
+}
+
+namespace {
+
+// noise_batch four points at a time, for processors with AVX2 (the rest as noise_batch does it).
+[[gnu::target("avx2")]] std::size_t noise_batch_avx2(const Vec3* p, std::size_t count, int generator, double* out) {
+    std::size_t i = 0;
+    for (; i + 3 < count; i += 4) {
+        const Lanes sums = noise_sums_avx2(p + i);
+        for (std::size_t j = 0; j < 4; ++j) out[i + j] = noise_from_sum(sums[j], generator);
+    }
+    return i;
+}
+
+}  // namespace
+
+void noise_batch(const Vec3* p, std::size_t count, int generator, double* out) {
+    std::size_t i = 0;
+    if (generator != 3) {
+        if (g_avx2) i = noise_batch_avx2(p, count, generator, out);
+        for (; i + 1 < count; i += 2) {
+            const Pair sums = corner_sum_pair(p[i], p[i + 1]);
+            out[i] = noise_from_sum(sums[0], generator);
+            out[i + 1] = noise_from_sum(sums[1], generator);
+        }
+    }
+    for (; i < count; ++i) out[i] = noise(p[i], generator);
+}
+
+Vec3 dnoise(const Vec3& p) { return g_avx2 ? dnoise_avx2_vec(p) : dnoise_sse2(p); }
 
 double turbulence(const Vec3& p, const TurbulenceParams& t, int generator) {
     // fBm: Σ omega^i · noise(lambda^i · p); generators 2 and 3 remap each octave by 2n − 0.5 (the first clamped).
-    double value = generator > 1 ? std::clamp(2.0 * noise(p, generator) - 0.5, 0.0, 1.0) : noise(p, generator);
+    // The octaves' noises are evaluated a few at a time, then added in order with the same lambda and omega
+    // products as one octave at a time.
+    const int octaves = std::max(t.octaves, 1);
+    Vec3 q[kOctaveChunk];
+    double n[kOctaveChunk];
+    double value = 0.0;
     double l = t.lambda;
     double o = t.omega;
-    for (int i = 2; i <= t.octaves; ++i) {
-        const double n = noise(p * l, generator);
-        value += o * (generator > 1 ? 2.0 * n - 0.5 : n);
-        if (i < t.octaves) {
-            l *= t.lambda;
-            o *= t.omega;
+    auto points = [&](int first, int count) {
+        for (int j = 0; j < count; ++j) {
+            const int k = first + j;
+            q[j] = k == 1 ? p : p * l;
+            if (k > 1 && k < octaves) l *= t.lambda;
         }
-    }
+        noise_batch(q, static_cast<std::size_t>(count), generator, n);
+    };
+    auto octave = [&](int k, int j) {
+        if (k == 1) {
+            value = generator > 1 ? std::clamp(2.0 * n[j] - 0.5, 0.0, 1.0) : n[j];
+            return;
+        }
+        value += o * (generator > 1 ? 2.0 * n[j] - 0.5 : n[j]);
+        if (k < octaves) o *= t.omega;
+    };
+    for_octaves(octaves, points, octave);
     return value;
 }
 
 Vec3 dturbulence(const Vec3& p, const TurbulenceParams& t) {
-    Vec3 result = dnoise(p);
-    double l = t.lambda;
-    double o = t.omega;
-    for (int i = 2; i <= t.octaves; ++i) {
-        result += o * dnoise(p * l);
-        if (i < t.octaves) {
-            l *= t.lambda;
-            o *= t.omega;
-        }
-    }
-    return result;
+    return g_avx2 ? dturbulence_avx2(p, t) : dturbulence_sse2(p, t);
 }
+
+void use_avx2_noise(bool on) { g_avx2 = on && probe_avx2(); }
 
 int hash3d(int a, int b, int c) {
     const auto& h = tables().hash;

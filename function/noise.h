@@ -20,6 +20,10 @@ struct TurbulenceParams {
 /// default) or 3 (Perlin's solid noise).
 double noise(const Vec3& p, int generator);
 
+/// noise(p[i], generator) into out[i] for each i < count: the same values to the bit, several points sharing
+/// the instructions (patterns that sum octaves of noise call this once instead of noise per octave).
+void noise_batch(const Vec3* p, std::size_t count, int generator, double* out);
+
 /// POV-Ray's vector `DNoise(p)`: each component a lattice noise without offset or clamping (about -1..1).
 Vec3 dnoise(const Vec3& p);
 
@@ -28,6 +32,10 @@ double turbulence(const Vec3& p, const TurbulenceParams& t, int generator);
 
 /// POV-Ray's `DTurbulence`: the vector fBm used to displace points.
 Vec3 dturbulence(const Vec3& p, const TurbulenceParams& t);
+
+/// Whether noise_batch, dnoise, turbulence and dturbulence use their AVX2 builds (the default on a processor that
+/// has AVX2) or their SSE2 builds; both give the same bits, which a test checks by switching. Not thread-safe.
+void use_avx2_noise(bool on);
 
 /// POV-Ray's `Hash3d`: the 12-bit hash of an integer lattice cell.
 int hash3d(int a, int b, int c);

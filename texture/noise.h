@@ -9,6 +9,7 @@ using function::dnoise;
 using function::dturbulence;
 using function::hash3d;
 using function::noise;
+using function::noise_batch;
 using function::pattern_rand;
 using function::set_number_of_waves;
 using function::turbulence;

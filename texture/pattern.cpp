@@ -209,32 +209,34 @@ double waves_sum(const scene::Pattern& pat, const Vec3& p, bool ripples) {
 }
 
 double wrinkles(const Vec3& p, int generator) {
-    // Nine extra octaves of noise with lambda 2 and omega 0.5, each clipped for generators 2 and 3.
-    auto octave = [&](const Vec3& q) {
-        const double n = noise(q, generator);
-        return generator > 1 ? std::clamp(n * 2.0 - 0.5, 0.0, 1.0) : n;
-    };
-    double value = octave(p);
-    double lambda = 2.0, omega = 0.5;
-    for (int i = 1; i < 10; ++i) {
-        value += omega * octave(p * lambda);
-        lambda *= 2.0;
-        omega *= 0.5;
-    }
+    // Nine extra octaves of noise with lambda 2 and omega 0.5, each clipped for generators 2 and 3; the ten noises
+    // are evaluated together, then added in order.
+    constexpr int kOctaves = 10;
+    Vec3 q[kOctaves];
+    double lambda = 1.0;
+    for (int i = 0; i < kOctaves; ++i, lambda *= 2.0) q[i] = i == 0 ? p : p * lambda;
+    double n[kOctaves];
+    noise_batch(q, kOctaves, generator, n);
+    auto octave = [&](double v) { return generator > 1 ? std::clamp(v * 2.0 - 0.5, 0.0, 1.0) : v; };
+    double value = octave(n[0]);
+    double omega = 0.5;
+    for (int i = 1; i < kOctaves; ++i, omega *= 0.5) value += omega * octave(n[i]);
     return value / 2.0;
 }
 
 double granite(const Vec3& p, int generator) {
     // Six octaves of |1 − 2n| (capped at 0.5) at 4·p, each halved.
+    constexpr int kOctaves = 6;
     const Vec3 base = p * 4.0;
-    double value = 0.0, freq = 1.0;
-    for (int i = 0; i < 6; ++i, freq *= 2.0) {
-        double t = 0.0;
-        if (generator == 1) {
-            t = std::fabs(0.5 - noise(base * freq, generator));
-        } else {
-            t = std::min(std::fabs(1.0 - 2.0 * noise(base * freq, generator)), 0.5);
-        }
+    Vec3 q[kOctaves];
+    double freq = 1.0;
+    for (int i = 0; i < kOctaves; ++i, freq *= 2.0) q[i] = base * freq;
+    double n[kOctaves];
+    noise_batch(q, kOctaves, generator, n);
+    double value = 0.0;
+    freq = 1.0;
+    for (int i = 0; i < kOctaves; ++i, freq *= 2.0) {
+        const double t = generator == 1 ? std::fabs(0.5 - n[i]) : std::min(std::fabs(1.0 - 2.0 * n[i]), 0.5);
         value += t / freq;
     }
     return value;

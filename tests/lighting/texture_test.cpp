@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
 
 #include "geometry/scene_geometry.h"
 #include "lighting/integrator.h"
@@ -210,6 +214,70 @@ TEST(Noise, CoordinatesBeyondIntRangeAreFiniteAsInPovRay) {
         for (const Vec3& p : {Vec3{-3e9, 2.2e9, 1e18}, Vec3{2147483647.5, -2147483648.5, 0}})
             EXPECT_TRUE(std::isfinite(texture::noise(p, generator))) << generator << " " << p.x;
     }
+}
+
+
+// A double's bits, so that a comparison tells 0.0 from -0.0 and catches a difference in the last bit.
+std::uint64_t bits(double v) {
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+}
+
+TEST(Noise, BatchesAndBothBuildsGiveTheSameBits) {
+    // noise_batch evaluates several points side by side, and the noise functions have an AVX2 and an SSE2 build:
+    // each must give exactly the bits of noise() one point at a time, and dturbulence those of its dnoise sum,
+    // or an image would change with the batch size or the processor.
+    std::mt19937 rng(14);
+    std::uniform_real_distribution<double> coord(-400.0, 400.0);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 3000; ++i) points.push_back({coord(rng), coord(rng), coord(rng)});
+    points.push_back({0.0, -0.0, 0.5});
+    points.push_back({-1e10, 3e9, 0.25});
+    points.push_back({2147483647.5, -2147483648.5, 1e-300});
+    const texture::TurbulenceParams params[] = {{6, 0.5, 2.0}, {1, 0.5, 2.0}, {3, 0.7, 2.3}, {10, 0.45, 1.9}};
+    int mismatches = 0;
+    auto evaluate = [&] {
+        std::vector<std::uint64_t> out;
+        for (int generator = 1; generator <= 3; ++generator) {
+            for (std::size_t count = 1; count <= 9; ++count) {
+                for (std::size_t i = 0; i + count <= points.size(); i += count * 7) {
+                    double n[9];
+                    texture::noise_batch(&points[i], count, generator, n);
+                    for (std::size_t j = 0; j < count; ++j) {
+                        mismatches += bits(n[j]) != bits(texture::noise(points[i + j], generator));
+                        out.push_back(bits(n[j]));
+                    }
+                }
+            }
+            for (const Vec3& p : points) {
+                for (const texture::TurbulenceParams& t : params)
+                    out.push_back(bits(texture::turbulence(p, t, generator)));
+            }
+        }
+        for (const Vec3& p : points) {
+            for (const texture::TurbulenceParams& t : params) {
+                Vec3 sum = texture::dnoise(p);
+                double l = t.lambda, o = t.omega;
+                for (int i = 2; i <= t.octaves; ++i, l *= t.lambda, o *= t.omega) sum += o * texture::dnoise(p * l);
+                const Vec3 d = texture::dturbulence(p, t);
+                for (int c = 0; c < 3; ++c) {
+                    mismatches += bits(d[c]) != bits(sum[c]);
+                    out.push_back(bits(d[c]));
+                }
+            }
+        }
+        return out;
+    };
+    function::use_avx2_noise(false);
+    const std::vector<std::uint64_t> portable = evaluate();
+    function::use_avx2_noise(true);
+    const std::vector<std::uint64_t> fast = evaluate();
+    EXPECT_EQ(mismatches, 0);
+    ASSERT_EQ(portable.size(), fast.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < fast.size(); ++i) differ += portable[i] != fast[i];
+    EXPECT_EQ(differ, 0u) << "of " << fast.size() << " values";
 }
 
 }  // namespace
