@@ -447,6 +447,8 @@ std::shared_ptr<const UserFunction> Evaluator::parse_user_function(const Token& 
         params = {"x", "y", "z"};
     }
     expect("{");
+    // POV-Ray compat: a macro may stand for the whole body, `function { M() }` with M giving `pigment { ... }`.
+    expand_macros();
     const Token first = peek();
     if (is_word(first, "internal")) {
         // POV-Ray compat: the built-in functions of functions.inc; accepted, evaluated only when implemented.

@@ -40,6 +40,10 @@ void ObjectReader::read_projected_through(Light& light, const Token& kw) {
 void ObjectReader::transform_light(Light& light, const Transform& tr) {
     light.position = tr.point(light.position);
     light.point_at = tr.point(light.point_at);
+    // An area light's square turns and scales with its light wherever the transform comes from (its own block,
+    // an object { } around a declared light, or a CSG containing it), as POV-Ray's LightSource::Transform does.
+    light.area_axis1 = tr.vector(light.area_axis1);
+    light.area_axis2 = tr.vector(light.area_axis2);
     for (Object& through : light.projected_through) through.transform = through.transform.then(tr);
 }
 

@@ -520,8 +520,6 @@ Light ObjectReader::parse_light_body(const Token& kw, ObjectValue* looks) {
         Transform tr;
         if (parse_transform_item(t, tr)) {
             transform_light(light, tr);
-            light.area_axis1 = tr.vector(light.area_axis1);
-            light.area_axis2 = tr.vector(light.area_axis2);
             if (looks != nullptr) apply_transform(*looks, tr);
             continue;
         }

@@ -425,5 +425,22 @@ TEST(Grammar, APigmentFunctionGivesItsHeightFieldItem) {
     EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[1].shape).radius, (0.5 + 0.75 / 255.0) * 0.996093);
 }
 
+TEST(Grammar, AMacroMayStandForAFunctionsWholeBody) {
+    // A macro giving `pigment { ... }` is a pigment function's body; one giving an expression stays a float body.
+    ParseOptions o = test::default_options();
+    o.pigment_value = [](const Pigment& pg, const Vec3&, int) { return pg.color; };
+    const Scene s = parse_ok(R"(
+        #macro Pig(C) pigment { rgb C } #end
+        #macro Half() x / 2 #end
+        #declare P = function { Pig(<0.25, 0.5, 0.75>) }
+        #declare F = function { Half() }
+        sphere { 0, P(0, 0, 0).green }
+        sphere { 0, F(3, 0, 0) }
+    )", o);
+    ASSERT_EQ(s.objects.size(), 2u);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[0].shape).radius, 0.5);
+    EXPECT_DOUBLE_EQ(std::get<Sphere>(s.objects[1].shape).radius, 1.5);
+}
+
 }  // namespace
 }  // namespace wardray::parser

@@ -157,6 +157,21 @@ TEST(Light, AreaLightKeepsItsGridAndOptions) {
     EXPECT_EQ(parse_ok("light_source { 0, 1 }").lights[0].adaptive, 100);  // full grid unless told
 }
 
+TEST(Light, AreaLightAxesFollowTheTransformsAroundIt) {
+    // A declared area light used in an object { } and inside a union: each transform around it turns and scales
+    // its square too, not only its position.
+    const Scene s = parse_ok(R"(
+        #declare L = light_source { 0, 1 area_light <1, 0, 0>, <0, 1, 0>, 2, 2 }
+        object { L scale 2 }
+        union { object { L } sphere { 0, 1 } rotate y*90 scale 3 }
+    )");
+    ASSERT_EQ(s.lights.size(), 2u);
+    expect_vec(s.lights[0].area_axis1, {2, 0, 0});
+    expect_vec(s.lights[0].area_axis2, {0, 2, 0});
+    expect_vec(s.lights[1].area_axis1, {0, 0, -3});
+    expect_vec(s.lights[1].area_axis2, {0, 3, 0});
+}
+
 TEST(Light, AreaLightSizeBelowOneIsAnError) {
     const ParseResult r = test::parse_fail("light_source { 0, 1 area_light x, z, 0, 4 }");
     ASSERT_FALSE(r.diagnostics.empty());
