@@ -261,6 +261,8 @@ void AppearanceReader::parse_texture_items(Texture& tx, const Token& kw, const c
         }
         if (is_punct(t, close)) {
             next();
+            // (After a texture_map's pattern the flag is read as that pattern's modifier: it marks the map too.)
+            if (tx.map_pattern.no_bump_scale) mark_no_bump_scale(tx);
             if (no_bump_scale) mark_no_bump_scale(top_layer(tx));
             return;
         }
