@@ -335,7 +335,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     const Scene s = parse_ok(R"(
         sphere { 0, 1 finish { subsurface { translucency 0.5 } } }
         sphere { 0, 2 finish { subsurface { translucency 0.5 } } }
-        #declare Thing = sphere { 0, 1 texture { pigment { rgb 1 } no_bump_scale } }
+        #declare Thing = sphere { 0, 1 texture { uv_mapping pigment { checker } } }
         object { Thing }
         object { Thing }
         box { 0, 1 }
@@ -344,7 +344,7 @@ TEST(Unsupported, OneWarningPerFeatureAndTheRestRenders) {
     std::vector<std::string> messages;
     for (const auto& w : s.warnings) messages.push_back(w.message);
     const std::vector<std::string> expected = {"subsurface is not rendered yet",
-                                               "no_bump_scale is not rendered yet"};
+                                               "uv_mapping on sphere is not rendered yet"};
     EXPECT_EQ(messages, expected);
     EXPECT_EQ(s.warnings[0].loc.line, 3u);
     EXPECT_EQ(s.warnings[0].loc.column, 32u);
