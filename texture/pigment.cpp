@@ -8,19 +8,21 @@ namespace wardray::texture {
 
 namespace {
 
-// POV-Ray's Do_Average_Pigments: the entries' colours weighted by their map values (summed in single precision).
+// POV-Ray's Do_Average_Pigments (PigmentBlendMap::ComputeAverage): the entries' colours weighted by their map values,
+// in single precision as POV-Ray's colours are. The last bit matters: six weights of 1/6 averaging white give 1
+// there, where double sums give 1 + 1e-7, which a function pattern reading the colour wraps to 0.
 Color average_pigments(const std::vector<scene::PigmentMapEntry>& map, const Vec3& tp, int noise_generator,
                        const SurfacePoint* surface) {
-    Color sum{0.0, 0.0, 0.0, 0.0, 0.0};
+    float sum[5] = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
     float total = 0.0f;
     for (const scene::PigmentMapEntry& e : map) {
         const Color c = evaluate_pigment(e.pigment, tp, noise_generator, surface);
-        sum = {sum.r + c.r * e.value, sum.g + c.g * e.value, sum.b + c.b * e.value,
-               sum.filter + c.filter * e.value, sum.transmit + c.transmit * e.value};
-        total += static_cast<float>(e.value);
+        const float w = static_cast<float>(e.value);
+        const double channels[5] = {c.r, c.g, c.b, c.filter, c.transmit};
+        for (int i = 0; i < 5; ++i) sum[i] += w * static_cast<float>(channels[i]);
+        total += w;
     }
-    const double t = total;
-    return {sum.r / t, sum.g / t, sum.b / t, sum.filter / t, sum.transmit / t};
+    return {sum[0] / total, sum[1] / total, sum[2] / total, sum[3] / total, sum[4] / total};
 }
 
 }  // namespace

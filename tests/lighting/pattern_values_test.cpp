@@ -93,5 +93,21 @@ TEST(PatternValues, FractalsQuiltedSpiralsAverageAndWarpsMatchPovRay) {
     }
 }
 
+TEST(PatternValues, AnAverageOfEqualColoursIsThatColourToTheLastBitAsInSinglePrecision) {
+    // POV-Ray averages in single precision: six entries of white weighted 1/6 (or 0.3) give exactly 1, which a
+    // function pattern reading the colour keeps at 1 where 1 + 1e-7 would wrap it to 0.
+    for (const char* weight : {"1/6", "0.3", "1/3"}) {
+        std::string map;
+        for (int i = 0; i < 6; ++i) map += std::string("[") + weight + " rgb 1]";
+        const parser::ParseResult r = parser::parse_string(
+            "global_settings { assumed_gamma 1 }\nsphere { 0, 1 pigment { average pigment_map { " + map + " } } }\n",
+            "test.pov", parser::ParseOptions{});
+        ASSERT_TRUE(r.ok() && r.scene && r.scene->objects.size() == 1u);
+        const Color got = evaluate_pigment(r.scene->objects[0].texture->pigment, kPoints[0], 2);
+        EXPECT_EQ(got.r, 1.0) << weight;
+        EXPECT_EQ(got.b, 1.0) << weight;
+    }
+}
+
 }  // namespace
 }  // namespace wardray::texture
