@@ -61,13 +61,16 @@ std::optional<BlobShape> BlobShape::create(const scene::Blob& blob) {
     shape.m_threshold = blob.threshold;
     if (!std::isfinite(blob.threshold)) return std::nullopt;
     std::optional<Bounds> positive, all;
-    for (const scene::Blob::Component& comp : blob.components) {
+    shape.m_components = blob.components.size();
+    for (std::size_t index = 0; index < blob.components.size(); ++index) {
+        const scene::Blob::Component& comp = blob.components[index];
         const double r2 = comp.radius * comp.radius, s = comp.strength;
         if (!std::isfinite(r2) || !std::isfinite(s) || !is_finite(comp.a) || !is_finite(comp.b)) return std::nullopt;
         if (!comp.transform.is_invertible()) return std::nullopt;
         // A zero radius or strength adds nothing (POV-Ray would divide by zero).
         if (r2 < k_epsilon || s == 0.0) continue;
         Element e;
+        e.component = index;
         e.rad2 = r2;
         e.c[0] = s / (r2 * r2);
         e.c[1] = -2.0 * s / r2;
@@ -129,6 +132,11 @@ double BlobShape::density(const Vec3& p) const {
     double sum = 0.0;
     for (const Element& e : m_elements) sum += element_density(e, p);
     return sum;
+}
+
+void BlobShape::component_densities(const Vec3& p, std::vector<double>& out) const {
+    out.assign(m_components, 0.0);
+    for (const Element& e : m_elements) out[e.component] += std::fabs(element_density(e, p));
 }
 
 Vec3 BlobShape::normal(const Vec3& p) const {

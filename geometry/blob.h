@@ -33,6 +33,9 @@ public:
     double density(const Vec3& p) const;
     /// The outward normal at p (minus half the density's gradient), not unit length.
     Vec3 normal(const Vec3& p) const;
+    /// POV-Ray's Blob::Determine_Textures weights: each component's absolute density at p (a cylinder's three
+    /// elements summed), indexed as scene::Blob::components; `out` is resized to their number.
+    void component_densities(const Vec3& p, std::vector<double>& out) const;
 
 private:
     enum class Kind { Sphere, Cylinder, BaseCap, ApexCap };
@@ -42,6 +45,7 @@ private:
         double rad2 = 1.0;  ///< squared radius of the support
         double len = 0.0;   ///< cylinder length
         double c[3] = {0.0, 0.0, 0.0};
+        std::size_t component = 0;  ///< the scene::Blob component it comes from
     };
     /// The element-space point whose distance from the origin (in x and y only for cylinders) gives the density.
     static Vec3 centred(const Element& e, const Vec3& local);
@@ -51,6 +55,7 @@ private:
     static bool support_interval(const Element& e, const Vec3& o, const Vec3& d, double& s0, double& s1);
 
     std::vector<Element> m_elements;
+    std::size_t m_components = 0;
     double m_threshold = 1.0;
     std::optional<Bounds> m_bounds;
 };

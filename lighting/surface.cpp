@@ -16,6 +16,7 @@
 #include "media/transmittance.h"
 #include "texture/image_map.h"
 #include "lighting/mesh_texture.h"
+#include "lighting/blob_texture.h"
 #include "texture/normal.h"
 #include "texture/pattern.h"
 #include "texture/pigment.h"
@@ -64,7 +65,22 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
         if (const auto* patch = std::get_if<scene::BicubicPatch>(&object.shape); patch && hit.has_params)
             s.p_uv = geometry::bicubic_patch_uv(*patch, hit.params);
         if (object.uv_mapping) s.p_texture = s.p_uv;
-        return shade_texture(texture, s, warps, state, ctx);
+        const auto* blob = std::get_if<scene::Blob>(&object.shape);
+        if (blob == nullptr || blob->textures.empty()) return shade_texture(texture, s, warps, state, ctx);
+        // POV-Ray compat: a blob with component textures blends their lit colours by the components' densities
+        // (and shows no interior texture).
+        std::vector<WeightedTexture> weighted;
+        blob_textures(*blob, *object.texture, hit.position, weighted);
+        if (weighted.empty()) return shade_texture(*object.texture, s, warps, state, ctx);
+        if (weighted.size() == 1) return shade_texture(*weighted[0].first, s, warps, state, ctx);
+        Vec3 colour;
+        double transmit = 0.0;
+        for (const auto& [tx, w] : weighted) {
+            colour += shade_texture(*tx, s, warps, state, ctx) * w;
+            transmit += ctx.transmit * w;
+        }
+        ctx.transmit = transmit;
+        return colour;
     }
     s.p_uv = mesh_uv(*mesh, hit);
     if (object.uv_mapping) s.p_texture = s.p_uv;

@@ -28,6 +28,7 @@ void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
     if (own_texture) mover.move(o.texture);
     for (Texture& inside : o.interior_texture) mover.move(inside);
     if (auto* mesh = std::get_if<Mesh>(&o.shape); mesh && !mesh->textures.empty()) mover.move(mesh->textures);
+    if (auto* blob = std::get_if<Blob>(&o.shape); blob && !blob->textures.empty()) mover.move(blob->textures);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) transform_textures(child, child.has_texture, mover);
 }
@@ -37,6 +38,7 @@ void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
 void place_patches(Object& o, const Transform& tr) {
     if (auto* patch = std::get_if<BicubicPatch>(&o.shape)) patch->placement = patch->placement.then(tr);
     if (auto* hf = std::get_if<HeightField>(&o.shape)) hf->placement = hf->placement.then(tr);
+    if (auto* blob = std::get_if<Blob>(&o.shape)) blob->placement = blob->placement.then(tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) place_patches(child, tr);
 }

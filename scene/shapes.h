@@ -92,10 +92,17 @@ struct Blob {
         double radius = 1.0;
         double strength = 1.0;
         Transform transform;  ///< the component's own transforms, in the blob's space
+        int texture = -1;     ///< its own texture, an index into `textures`; -1: the blob's
         bool operator==(const Component&) const = default;
     };
     double threshold = 1.0;
     std::vector<Component> components;  ///< in the order POV-Ray keeps them: the last written first
+    /// The components' own textures (POV-Ray blends the textures at a point by each component's density there),
+    /// moved with the blob as its texture is.
+    SharedVector<Texture> textures;
+    /// Every transform applied to the blob since it was read (its own and its CSG parents'): blob space to world,
+    /// where the component densities that weight their textures are found.
+    Transform placement;
     bool operator==(const Blob&) const = default;
 };
 
