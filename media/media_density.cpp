@@ -14,7 +14,7 @@ namespace {
 // or a pigment map.
 bool cheap_density(const scene::Pigment& d) {
     using T = scene::Pattern::Type;
-    if (d.image_map || d.pattern.turbulence || !d.pattern.warps.empty() || !d.pigment_map.empty()) return false;
+    if (d.image_map || d.pattern.params->turbulence || !d.pattern.warps.empty() || !d.pigment_map.empty()) return false;
     switch (d.pattern.type) {
         case T::None: case T::Gradient: case T::Radial: case T::Onion: case T::Boxed: case T::Spherical:
         case T::Planar: case T::Cylindrical: return true;

@@ -341,7 +341,7 @@ Texture AppearanceReader::parse_tiles(const Token& kw) {
     expect("{");
     Texture tx;
     tx.map_pattern.type = Pattern::Type::Checker;
-    tx.map_pattern.frequency = 0.0;
+    tx.map_pattern.params->frequency = 0.0;
     Texture first = parse_texture_list(kw);
     const Token second = peek();
     if (!is_word(second, "tile2")) fail(second, "expected 'tile2' in tiles but found " + describe_token(second));

@@ -177,7 +177,7 @@ Rainbow AppearanceReader::parse_rainbow(const Token& kw) {
         } else if (is_word(t, "color_map") || is_word(t, "colour_map")) {
             Pigment p;
             p.pattern.type = Pattern::Type::Gradient;
-            p.pattern.gradient = {1.0, 0.0, 0.0};
+            p.pattern.params->gradient = {1.0, 0.0, 0.0};
             p.color_map = parse_color_map(t);
             bow.pigment = std::move(p);
         } else if (is_word(t, "falloff_angle") || is_word(t, "arc_angle")) {

@@ -261,8 +261,8 @@ void Parser::parse_image_pattern(const Token& kw, Pattern& pat) {
     // POV-Ray compat: with an alpha channel use_alpha takes it (a reader that does not return it is warned of).
     if (alpha && map.image->has_alpha && map.image->palette_alpha.empty() && map.image->alpha.empty())
         warn_unsupported(alpha_at, "image_pattern use_alpha of an image with an alpha channel");
-    pat.image = std::make_shared<const ImageMap>(std::move(map));
-    pat.frequency = 0.0;
+    pat.params->image = std::make_shared<const ImageMap>(std::move(map));
+    pat.params->frequency = 0.0;
 }
 
 void Parser::parse_material_map(const Token& kw, Texture& tx) {

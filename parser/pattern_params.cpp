@@ -31,36 +31,36 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
         case PType::Mandel:
         case PType::Julia:
         case PType::Magnet:
-            pat.interior_type = 0;
-            pat.exterior_type = 1;
-            pat.interior_factor = pat.exterior_factor = 1.0;
-            pat.fractal_exponent = 2;
+            pat.params->interior_type = 0;
+            pat.params->exterior_type = 1;
+            pat.params->interior_factor = pat.params->exterior_factor = 1.0;
+            pat.params->fractal_exponent = 2;
             if (pat.type == PType::Magnet) {
                 const int kind = static_cast<int>(parse_float());
                 if (kind != 1 && kind != 2) fail(t, "magnet type must be 1 or 2");
-                pat.magnet_type = kind;
+                pat.params->magnet_type = kind;
                 const Token form = next();
-                if (is_word(form, "julia")) pat.magnet_julia = true;
-                else if (is_word(form, "mandel")) pat.magnet_julia = false;
+                if (is_word(form, "julia")) pat.params->magnet_julia = true;
+                else if (is_word(form, "mandel")) pat.params->magnet_julia = false;
                 else fail(form, "expected 'mandel' or 'julia' after 'magnet " + std::to_string(kind) + "'");
             }
-            if (pat.type == PType::Julia || (pat.type == PType::Magnet && pat.magnet_julia)) {
+            if (pat.type == PType::Julia || (pat.type == PType::Magnet && pat.params->magnet_julia)) {
                 const Numeric c = parse_numeric();
-                pat.julia_re = c.v[0];
-                pat.julia_im = c.n > 1 ? c.v[1] : c.v[0];
+                pat.params->julia_re = c.v[0];
+                pat.params->julia_im = c.n > 1 ? c.v[1] : c.v[0];
                 accept(",");
             }
-            pat.fractal_iterations = static_cast<int>(parse_float());
+            pat.params->fractal_iterations = static_cast<int>(parse_float());
             return 0;
         case PType::PigmentPattern:
-            pat.pigment.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
+            pat.params->pigment.pigment = std::make_shared<const Pigment>(parse_pigment_body(t));
             return 0;
         case PType::DensityFile: {
             const Token df3 = next();
             if (!is_word(df3, "df3")) fail(df3, "expected 'df3' after density_file but found " + describe_token(df3));
             const Token at = peek();
-            pat.density_file = read_density_file(at, parse_string());
-            pat.density_interpolation = 0;
+            pat.params->density_file = read_density_file(at, parse_string());
+            pat.params->density_interpolation = 0;
             return 0;
         }
         case PType::Slope:
@@ -70,21 +70,21 @@ int Parser::parse_pattern_parameters(const Token& t, Pattern& pat) {
             parse_image_pattern(t, pat);
             return 0;
         case PType::Quilted:
-            pat.control0 = pat.control1 = 1.0;
-            pat.frequency = 0.0;
+            pat.params->control0 = pat.params->control1 = 1.0;
+            pat.params->frequency = 0.0;
             return 0;
         case PType::Spiral1:
         case PType::Spiral2:
             // POV-Ray compat: the arm count is a short, and spirals default to the triangle wave.
-            pat.arms = static_cast<short>(parse_float());
-            pat.wave = WaveType::Triangle;
+            pat.params->arms = static_cast<short>(parse_float());
+            pat.params->wave = WaveType::Triangle;
             return 0;
         case PType::Tiling: {
             // POV-Ray compat: the tiling number is kept as an unsigned char (so 261 is tiling 5), then checked.
             const Token at = peek();
             const double n = parse_float();
-            pat.tiling_type = static_cast<int>(static_cast<unsigned char>(static_cast<int>(n)));
-            if (pat.tiling_type < 1 || pat.tiling_type > 27) fail(at, "Tiling number must be between 1 and 27.");
+            pat.params->tiling_type = static_cast<int>(static_cast<unsigned char>(static_cast<int>(n)));
+            if (pat.params->tiling_type < 1 || pat.params->tiling_type > 27) fail(at, "Tiling number must be between 1 and 27.");
             return 0;
         }
         default:
@@ -102,14 +102,14 @@ bool Parser::parse_pattern_extra(const Token& t, Pattern& pat) {
     if (w == "interpolate") {
         if (pat.type != PType::DensityFile) fail(t, "Cannot use interpolate with non-density_file.");
         next();
-        pat.density_interpolation = static_cast<int>(parse_float());
-        if (pat.density_interpolation % 10 == 2) warn_unsupported(t, "density_file interpolate 2 (tricubic)");
+        pat.params->density_interpolation = static_cast<int>(parse_float());
+        if (pat.params->density_interpolation % 10 == 2) warn_unsupported(t, "density_file interpolate 2 (tricubic)");
         return true;
     }
     if (w == "control0" || w == "control1") {
         if (pat.type != PType::Quilted) return false;
         next();
-        (w == "control0" ? pat.control0 : pat.control1) = single(parse_float());
+        (w == "control0" ? pat.params->control0 : pat.params->control1) = single(parse_float());
         return true;
     }
     if (w != "exponent" && w != "exterior" && w != "interior") return false;
@@ -117,11 +117,11 @@ bool Parser::parse_pattern_extra(const Token& t, Pattern& pat) {
     next();
     const int v = static_cast<int>(parse_float());
     if (w == "exponent") {
-        pat.fractal_exponent = v;
+        pat.params->fractal_exponent = v;
         if (v < 2 || v > 33) {
             warn(t, "invalid " + std::string(pat.type == PType::Mandel ? "mandel" : "julia") +
                         " pattern exponent; supported exponents are 2 to 33, using 2");
-            pat.fractal_exponent = 2;
+            pat.params->fractal_exponent = 2;
         }
         return true;
     }
@@ -129,12 +129,12 @@ bool Parser::parse_pattern_extra(const Token& t, Pattern& pat) {
     const double factor = parse_float();
     if (w == "exterior") {
         if (v < 0 || v > 8) fail(t, "invalid fractal pattern exterior type; valid types are 0 to 8");
-        pat.exterior_type = v;
-        pat.exterior_factor = factor;
+        pat.params->exterior_type = v;
+        pat.params->exterior_factor = factor;
     } else {
         if (v < 0 || v > 6) fail(t, "invalid fractal pattern interior type; valid types are 0 to 6");
-        pat.interior_type = v;
-        pat.interior_factor = factor;
+        pat.params->interior_type = v;
+        pat.params->interior_factor = factor;
     }
     return true;
 }

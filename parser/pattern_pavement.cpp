@@ -15,7 +15,7 @@ bool Parser::parse_pavement_modifier(const Token& t, Pattern& pat) {
         if (own) fail(t, "Keyword '" + w + "' can only be used in a pavement pattern.");
         return false;
     }
-    PavementParams& pv = pat.pavement;
+    PavementParams& pv = pat.params->pavement;
     int* field = w == "number_of_sides"   ? &pv.sides
                  : w == "number_of_tiles" ? &pv.tiles
                  : w == "pattern"         ? &pv.number
@@ -32,7 +32,7 @@ bool Parser::parse_pavement_modifier(const Token& t, Pattern& pat) {
 
 void Parser::check_pavement(const Token& kw, Pattern& pat) {
     if (pat.type != Pattern::Type::Pavement) return;
-    PavementParams& pv = pat.pavement;
+    PavementParams& pv = pat.params->pavement;
     // POV-Ray compat: interior and exterior wrap modulo 3, form modulo 4 for squares and 3 otherwise; the pavings
     // each tile count has (POV-Ray's tables) bound `pattern`.
     pv.interior %= 3;

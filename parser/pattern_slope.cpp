@@ -54,7 +54,7 @@ void Parser::parse_slope_parameters(const Token& kw, Pattern& pat) {
         s.slope_len = slope_len / total;
         s.altitude_len = 1.0 - s.slope_len;
     }
-    pat.slope = s;
+    pat.params->slope = s;
 }
 
 }  // namespace wardray::parser

@@ -91,62 +91,62 @@ int Parser::parse_pattern_keyword(const Token& t, Pattern& pat) {
     pat.type = *found;
     switch (pat.type) {
         case PType::Gradient:
-            pat.gradient = normalize(parse_vector());
+            pat.params->gradient = normalize(parse_vector());
             break;
         case PType::Function: {
             const std::shared_ptr<const UserFunction> f = parse_user_function(t);
             if (f->kind != UserFunction::Kind::Float || !f->program) fail(t, "a function pattern needs a float function");
             if (!f->program->unsupported().empty()) warn(t, "pattern function is not rendered yet: " + f->program->unsupported());
-            pat.function = f->program;
+            pat.params->function = f->program;
             break;
         }
         case PType::Marble:
         case PType::Wood:
-            pat.wave = WaveType::Triangle;
+            pat.params->wave = WaveType::Triangle;
             break;
         case PType::Agate:
             // POV-Ray compat: agate always carries turbulence parameters (its amount stays 0 unless given).
-            if (!pat.turbulence) pat.turbulence = Turbulence{};
-            pat.agate_turb = 1.0;
+            if (!pat.params->turbulence) pat.params->turbulence = Turbulence{};
+            pat.params->agate_turb = 1.0;
             break;
         case PType::Crackle:
-            pat.crackle_form = {-1.0, 1.0, 0.0};
-            pat.crackle_metric = 2.0;
-            pat.crackle_offset = 0.0;
-            pat.crackle_solid = false;
+            pat.params->crackle_form = {-1.0, 1.0, 0.0};
+            pat.params->crackle_metric = 2.0;
+            pat.params->crackle_offset = 0.0;
+            pat.params->crackle_solid = false;
             break;
         case PType::Facets:
-            pat.facets_size = 0.1;
-            pat.facets_coords = 0.0;
-            pat.crackle_metric = 2.0;
+            pat.params->facets_size = 0.1;
+            pat.params->facets_coords = 0.0;
+            pat.params->crackle_metric = 2.0;
             break;
         case PType::Checker:
-            pat.frequency = 0.0;
+            pat.params->frequency = 0.0;
             return 2;
         case PType::Object:
             // `object { OBJECT a, b }`: the list of the two comes inside the braces, which the
             // caller closes after it (take_pattern_list_open).
             expect("{");
-            pat.object = std::make_shared<const Object>(parse_pattern_object(t));
-            pat.frequency = 0.0;
+            pat.params->object = std::make_shared<const Object>(parse_pattern_object(t));
+            pat.params->frequency = 0.0;
             m_pattern_list_open = true;
             return 2;
         case PType::Hexagon:
-            pat.frequency = 0.0;
+            pat.params->frequency = 0.0;
             return 3;
         case PType::Square:
-            pat.frequency = 0.0;
+            pat.params->frequency = 0.0;
             return 4;
         case PType::Triangular:
         case PType::Cubic:
-            pat.frequency = 0.0;
+            pat.params->frequency = 0.0;
             return 6;
         case PType::Brick:
             if (previous != PType::Brick) {
-                pat.brick_size = {8.0, 3.0, 4.5};
-                pat.mortar = 0.5;
+                pat.params->brick_size = {8.0, 3.0, 4.5};
+                pat.params->mortar = 0.5;
             }
-            pat.frequency = 0.0;
+            pat.params->frequency = 0.0;
             return 2;
         default:
             return parse_pattern_parameters(t, pat);
@@ -185,8 +185,8 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
     if (parse_pavement_modifier(t, pat)) return true;
     const std::string w = t.text;
     auto turb = [&]() -> Turbulence& {
-        if (!pat.turbulence) pat.turbulence = Turbulence{};
-        return *pat.turbulence;
+        if (!pat.params->turbulence) pat.params->turbulence = Turbulence{};
+        return *pat.params->turbulence;
     };
     static const std::pair<const char*, WaveType> waves[] = {
         {"ramp_wave", WaveType::Ramp},       {"triangle_wave", WaveType::Triangle}, {"sine_wave", WaveType::Sine},
@@ -194,8 +194,8 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
     for (const auto& [name, wave] : waves) {
         if (w != name) continue;
         next();
-        pat.wave = wave;
-        if (wave == WaveType::Poly && starts_value(peek())) pat.exponent = map_value(parse_float());
+        pat.params->wave = wave;
+        if (wave == WaveType::Poly && starts_value(peek())) pat.params->exponent = map_value(parse_float());
         return true;
     }
     if (w == "turbulence") {
@@ -213,44 +213,44 @@ bool Parser::parse_pattern_modifier(const Token& t, Pattern& pat) {
         turb().lambda = static_cast<float>(parse_float());
     } else if (w == "frequency") {
         next();
-        pat.frequency = map_value(parse_float());  // POV-Ray compat: frequency and phase are single precision
+        pat.params->frequency = map_value(parse_float());  // POV-Ray compat: frequency and phase are single precision
     } else if (w == "phase") {
         next();
-        pat.phase = map_value(parse_float());
+        pat.params->phase = map_value(parse_float());
     } else if (w == "noise_generator") {
         next();
         const int g = static_cast<int>(parse_float());
         if (g < 0 || g > 3) fail(t, "noise_generator must be 0, 1, 2 or 3");
-        pat.noise_generator = g;
+        pat.params->noise_generator = g;
     } else if (w == "agate_turb") {
         next();
-        pat.agate_turb = parse_float();
+        pat.params->agate_turb = parse_float();
         turb();
     } else if (w == "brick_size") {
         next();
-        pat.brick_size = parse_vector();
+        pat.params->brick_size = parse_vector();
     } else if (w == "mortar") {
         next();
-        pat.mortar = parse_float();
+        pat.params->mortar = parse_float();
     } else if (w == "form") {
         next();
-        pat.crackle_form = parse_vector();
+        pat.params->crackle_form = parse_vector();
     } else if (w == "metric") {
         next();
         // POV-Ray compat: the metric is the first component of a vector.
-        pat.crackle_metric = parse_vector().x;
+        pat.params->crackle_metric = parse_vector().x;
     } else if (w == "size" && pat.type == PType::Facets) {
         next();
-        pat.facets_size = parse_float();
+        pat.params->facets_size = parse_float();
     } else if (w == "coords" && pat.type == PType::Facets) {
         next();
-        pat.facets_coords = parse_float();
+        pat.params->facets_coords = parse_float();
     } else if (w == "offset") {
         next();
-        pat.crackle_offset = parse_float();
+        pat.params->crackle_offset = parse_float();
     } else if (w == "solid") {
         next();
-        pat.crackle_solid = true;
+        pat.params->crackle_solid = true;
     } else if (w == "no_bump_scale") {
         next();
         pat.no_bump_scale = true;
@@ -455,7 +455,7 @@ void Parser::parse_pigment_items(Pigment& p, const Token& kw, const char* close)
     if (!p.is_solid() && !p.image_map && p.color_map.empty() && p.pigment_map.empty()) {
         // POV-Ray compat: a mandel with an exponent above 2 is another pattern type there (MANDEL3/4/X_PATTERN),
         // which takes the grey ramp, not mandel's own map.
-        const bool other_mandel = p.pattern.type == PType::Mandel && p.pattern.fractal_exponent != 2;
+        const bool other_mandel = p.pattern.type == PType::Mandel && p.pattern.params->fractal_exponent != 2;
         p.color_map = default_color_map(other_mandel ? PType::None : p.pattern.type);
     }
 }

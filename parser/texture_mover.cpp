@@ -11,7 +11,7 @@ namespace {
 bool has_function(const scene::Pigment& p);
 
 bool has_function(const scene::Pattern& p) {
-    return static_cast<bool>(p.function) || (p.pigment.pigment && has_function(*p.pigment.pigment));
+    return static_cast<bool>(p.params->function) || (p.params->pigment.pigment && has_function(*p.params->pigment.pigment));
 }
 
 bool has_function(const scene::Pigment& p) {

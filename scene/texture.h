@@ -12,6 +12,7 @@
 #include "core/vec3.h"
 #include "scene/image_map.h"
 #include "function/function_vm.h"
+#include "scene/cow.h"
 #include "scene/kind_list.h"
 
 namespace wardray::scene {
@@ -150,14 +151,9 @@ struct PigmentRef {
     bool operator==(const PigmentRef& other) const;
 };
 
-/// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
-/// texture maps).
-struct Pattern {
-#define WARDRAY_PATTERN_ENUMERATOR(keyword, Enumerator) Enumerator,
-    /// None (a plain colour, no pattern), then the patterns of WARDRAY_PATTERNS in its order.
-    enum class Type { None, WARDRAY_PATTERNS(WARDRAY_PATTERN_ENUMERATOR) };
-#undef WARDRAY_PATTERN_ENUMERATOR
-    Type type = Type::None;
+/// A pattern's parameters other than its placement: the wave, turbulence and each pattern type's own values. Patterns
+/// share them (copy on write) as textures are copied and moved, since only the transform differs between copies.
+struct PatternParams {
     WaveType wave = WaveType::Ramp;
     double exponent = 1.0;  ///< poly_wave
     double frequency = 1.0;
@@ -196,6 +192,20 @@ struct Pattern {
     std::shared_ptr<const Object> object;             ///< object { OBJECT a, b }: the object (compared by identity)
     std::shared_ptr<const ImageMap> image;            ///< image_pattern { png "file" ... } (compared by identity)
     int density_interpolation = 0;                    ///< density_file: 0 none, 1 trilinear, 2 tricubic
+    bool operator==(const PatternParams&) const = default;
+};
+
+/// A pattern: a value at each point of pattern space, with POV-Ray's modifiers (shared by pigment, normal and
+/// texture maps).
+struct Pattern {
+#define WARDRAY_PATTERN_ENUMERATOR(keyword, Enumerator) Enumerator,
+    /// None (a plain colour, no pattern), then the patterns of WARDRAY_PATTERNS in its order.
+    enum class Type { None, WARDRAY_PATTERNS(WARDRAY_PATTERN_ENUMERATOR) };
+#undef WARDRAY_PATTERN_ENUMERATOR
+    Type type = Type::None;
+    /// Everything but the type and the placement, shared between copies until one changes it: read through a
+    /// const Pattern (or params.get()), since a non-const `params->` gives this copy a value of its own.
+    Cow<PatternParams> params;
     Transform transform;  ///< pattern space to the enclosing space (world for a pigment on an object)
     /// Warps applied after `transform` (world to pattern space, in this order), before the classic turbulence.
     std::vector<Warp> warps;
@@ -225,7 +235,7 @@ struct Pigment {
     Color color;  // POV-Ray compat: the default pigment is black.
     Pattern pattern;
     std::vector<ColorMapEntry> color_map;
-    std::vector<PigmentMapEntry> pigment_map;
+    SharedVector<PigmentMapEntry> pigment_map;  ///< shared between copies of the pigment until one changes it
     std::optional<ImageMap> image_map;  ///< an image_map pigment (its transform and warps in `pattern`)
     /// `uv_mapping`: evaluated at the surface's (u, v, 0) instead of the point, and not moved by the object.
     bool uv_mapping = false;
@@ -265,7 +275,7 @@ struct Normal {
     Pattern pattern;        ///< None: the normal is not perturbed
     double amount = 0.5;    ///< bump_size, or the float after the pattern name
     double delta = 0.02;    ///< POV-Ray's sampling distance for the slope (accuracy)
-    std::vector<NormalMapEntry> normal_map;
+    SharedVector<NormalMapEntry> normal_map;  ///< shared between copies until one changes it
     std::vector<SlopeMapEntry> slope_map;  ///< reshapes the pattern's value before its slope is taken
     /// `bump_map { png "file" bump_size B use_index ... }`: the normal from an image (its transform and warps
     /// in `pattern`, whose type is then None).
@@ -328,7 +338,7 @@ struct Texture {
     Finish finish;
     Normal normal;
     Pattern map_pattern;  ///< texture_map's pattern (None: a plain texture)
-    std::vector<TextureMapEntry> texture_map;
+    SharedVector<TextureMapEntry> texture_map;  ///< shared between copies until one changes it
     /// `material_map { png "file" texture { } ... }`: the image picks one of texture_map's entries by index
     /// (entry values 0, 1, ...); its transform and warps are map_pattern's.
     std::optional<ImageMap> material_map;

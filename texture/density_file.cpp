@@ -7,8 +7,8 @@
 namespace wardray::texture {
 
 double density_file_pattern(const scene::Pattern& pat, const Vec3& p, int) {
-    if (!pat.density_file) return 0.0;
-    const scene::DensityFile& d = *pat.density_file;
+    if (!pat.params->density_file) return 0.0;
+    const scene::DensityFile& d = *pat.params->density_file;
     if (d.nx == 0 || d.ny == 0 || d.nz == 0) return 0.0;
     if (!(p.x >= 0.0 && p.x < 1.0 && p.y >= 0.0 && p.y < 1.0 && p.z >= 0.0 && p.z < 1.0)) return 0.0;
     const std::size_t sx = static_cast<std::size_t>(d.nx), sy = static_cast<std::size_t>(d.ny),
@@ -18,7 +18,7 @@ double density_file_pattern(const scene::Pattern& pat, const Vec3& p, int) {
                       z1 = static_cast<std::size_t>(zz);
     // POV-Ray compat: the interpolation type counts modulo 10; tricubic (2) is read as trilinear (the parser
     // warns).
-    if (pat.density_interpolation % 10 == 0) {
+    if (pat.params->density_interpolation % 10 == 0) {
         if (x1 >= sx || y1 >= sy || z1 >= sz) return 0.0;
         return d.at(x1, y1, z1);
     }

@@ -24,9 +24,9 @@ Vec3 pick_in_cube(const Vec3& v) {
 
 Vec3 facets_normal(const scene::Pattern& pat, const Vec3& p, const Vec3& n) {
     const Vec3 normal = normalize(n);
-    const double scale = pat.facets_size < 1e-6 ? 1e6 : 1.0 / pat.facets_size;
-    const Vec3 tv = (pat.facets_coords != 0.0 ? p : normal) * scale;
-    const double metric = pat.crackle_metric;
+    const double scale = pat.params->facets_size < 1e-6 ? 1e6 : 1.0 / pat.params->facets_size;
+    const Vec3 tv = (pat.params->facets_coords != 0.0 ? p : normal) * scale;
+    const double metric = pat.params->crackle_metric;
     // POV-Ray compat: metric 1 sums the signed differences, as POV-Ray does.
     auto distance = [&](const Vec3& d) {
         if (metric == 2.0) return dot(d, d);
@@ -52,11 +52,11 @@ Vec3 facets_normal(const scene::Pattern& pat, const Vec3& p, const Vec3& n) {
             }
         }
     }
-    if (pat.facets_coords == 0.0) return nearest;
+    if (pat.params->facets_coords == 0.0) return nearest;
     // With coords, the noise's gradient at the point, less its part along the normal, tilts the normal.
     Vec3 pert = dnoise(nearest);
     pert -= normal * dot(pert, normal);
-    return normal + pert * pat.facets_coords;
+    return normal + pert * pat.params->facets_coords;
 }
 
 double facets_pattern(const scene::Pattern&, const Vec3&, int) { return 0.0; }

@@ -36,12 +36,12 @@ const Binomials& binomials() {
 }
 
 double exterior(const scene::Pattern& pat, int iters, double a, double b) {
-    const double f = pat.exterior_factor;
-    switch (pat.exterior_type) {
+    const double f = pat.params->exterior_factor;
+    switch (pat.params->exterior_type) {
         case 0:
             return f;
         case 1:
-            return static_cast<double>(iters) / static_cast<double>(pat.fractal_iterations);
+            return static_cast<double>(iters) / static_cast<double>(pat.params->fractal_iterations);
         case 2:
             return a * f;
         case 3:
@@ -62,8 +62,8 @@ double exterior(const scene::Pattern& pat, int iters, double a, double b) {
 }
 
 double interior(const scene::Pattern& pat, double a, double b, double mindist2) {
-    const double f = pat.interior_factor;
-    switch (pat.interior_type) {
+    const double f = pat.params->interior_factor;
+    switch (pat.params->interior_type) {
         case 0:
             return f;
         case 1:
@@ -102,7 +102,7 @@ template <int N>
 double escape(const scene::Pattern& pat, double a, double b, double cr, double ci) {
     double a2 = a * a, b2 = b * b;
     double mindist2 = a2 + b2;
-    const int it_max = pat.fractal_iterations;
+    const int it_max = pat.params->fractal_iterations;
     for (int col = 0; col < it_max; ++col) {
         power_step<N>(a, b, a2, b2, cr, ci);
         a2 = a * a;
@@ -115,10 +115,10 @@ double escape(const scene::Pattern& pat, double a, double b, double cr, double c
 }
 
 double escape_x(const scene::Pattern& pat, double a, double b, double cr, double ci) {
-    const int n = pat.fractal_exponent;
+    const int n = pat.params->fractal_exponent;
     const int* coeff = binomials().row(n);
     double mindist2 = a * a + b * b;
-    const int it_max = pat.fractal_iterations;
+    const int it_max = pat.params->fractal_iterations;
     for (int col = 0; col < it_max; ++col) {
         double new_a = std::pow(a, n);
         for (int k = 2; k <= n; k += 2) new_a += coeff[k] * std::pow(a, n - k) * std::pow(b, k);
@@ -134,7 +134,7 @@ double escape_x(const scene::Pattern& pat, double a, double b, double cr, double
 }
 
 double power_fractal(const scene::Pattern& pat, double a, double b, double cr, double ci) {
-    switch (pat.fractal_exponent) {
+    switch (pat.params->fractal_exponent) {
         case 2:
             return escape<2>(pat, a, b, cr, ci);
         case 3:
@@ -151,10 +151,10 @@ double magnet(const scene::Pattern& pat, double a, double b, double cr, double c
     double a2 = a * a, b2 = b * b;
     const double c1r = cr - 1.0, c2r = cr - 2.0;
     const double c1c2r = c1r * c2r - ci * ci, c1c2i = (c1r + c2r) * ci;
-    const int it_max = pat.fractal_iterations;
+    const int it_max = pat.params->fractal_iterations;
     for (int col = 0; col < it_max; ++col) {
         double t1r, t1i, t2r, t2i;
-        if (pat.magnet_type == 1) {
+        if (pat.params->magnet_type == 1) {
             t1r = a2 - b2 + cr - 1;
             t1i = 2 * a * b + ci;
             t2r = 2 * a + cr - 2;
@@ -188,11 +188,11 @@ double mandel_pattern(const scene::Pattern& pat, const Vec3& p, int) {
 }
 
 double julia_pattern(const scene::Pattern& pat, const Vec3& p, int) {
-    return power_fractal(pat, p.x, p.y, pat.julia_re, pat.julia_im);
+    return power_fractal(pat, p.x, p.y, pat.params->julia_re, pat.params->julia_im);
 }
 
 double magnet_pattern(const scene::Pattern& pat, const Vec3& p, int) {
-    if (pat.magnet_julia) return magnet(pat, p.x, p.y, pat.julia_re, pat.julia_im, p.x * p.x + p.y * p.y);
+    if (pat.params->magnet_julia) return magnet(pat, p.x, p.y, pat.params->julia_re, pat.params->julia_im, p.x * p.x + p.y * p.y);
     return magnet(pat, 0.0, 0.0, p.x, p.y, 10000.0);
 }
 

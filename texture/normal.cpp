@@ -58,9 +58,9 @@ Vec3 normal_only_offset(const scene::Normal& normal, const Vec3& p, int generato
                 if (len == 0.0) len = 1.0;
                 double scalar = 0.0;
                 if (pat.type == Type::Ripples) {
-                    scalar = cycloidal(len * pat.frequency + pat.phase) * normal.amount;
+                    scalar = cycloidal(len * pat.params->frequency + pat.params->phase) * normal.amount;
                 } else {
-                    scalar = cycloidal(len * pat.frequency * s.frequency + pat.phase) * normal.amount / s.frequency;
+                    scalar = cycloidal(len * pat.params->frequency * s.frequency + pat.params->phase) * normal.amount / s.frequency;
                 }
                 sum += d * (scalar / (len * count));
             }
@@ -102,7 +102,7 @@ Vec3 perturb(const scene::Normal& normal, const Vec3& n, const Vec3& p, int nois
         return unwarp_normal(pat, local, keep);
     }
     if (pat.type == Type::None) return n;
-    const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
+    const int generator = pat.params->noise_generator != 0 ? pat.params->noise_generator : noise_generator;
     const Vec3 tp = warp_point(pat, p);
     if (pat.type == Type::Average && !normal.normal_map.empty()) {
         // POV-Ray's Do_Average_Normals: each entry perturbs the pattern-space normal; the results are weighted by

@@ -30,8 +30,8 @@ const std::optional<geometry::ShapeInstance>& placed(const std::shared_ptr<const
 }  // namespace
 
 double object_pattern(const scene::Pattern& pat, const Vec3& p, int) {
-    if (!pat.object) return 0.0;
-    const std::optional<geometry::ShapeInstance>& instance = placed(pat.object);
+    if (!pat.params->object) return 0.0;
+    const std::optional<geometry::ShapeInstance>& instance = placed(pat.params->object);
     return instance && instance->inside(p) ? 1.0 : 0.0;
 }
 

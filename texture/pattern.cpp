@@ -57,10 +57,10 @@ double cell_fraction(double x) {
 double brick(const scene::Pattern& pat, const Vec3& p) {
     // POV-Ray compat: the mortar is stored 2·EPSILON thinner, in single precision (so 0.5 stays 0.5), and the
     // point is shifted by EPSILON + mortar.
-    const double mortar = static_cast<float>(pat.mortar - 2.0 * kEpsilon);
+    const double mortar = static_cast<float>(pat.params->mortar - 2.0 * kEpsilon);
     const double fudge = kEpsilon + mortar;
     const double x = p.x + fudge, y = p.y + fudge, z = p.z + fudge;
-    const Vec3& size = pat.brick_size;
+    const Vec3& size = pat.params->brick_size;
     // Horizontal mortar layers.
     if (cell_fraction(y / size.y) <= mortar / size.y) return 0.0;
     // Odd and even courses are offset by half a brick along x and z.
@@ -142,7 +142,7 @@ double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
     const int fy = static_cast<int>(std::floor(p.y - kEpsilon));
     const int fz = static_cast<int>(std::floor(p.z - kEpsilon));
     const CrackleCube& cube = crackle_cube(fx, fy, fz);
-    const double metric = pat.crackle_metric;
+    const double metric = pat.params->crackle_metric;
     // The three smallest distances, kept in registers (an array here stayed in memory through the loop), one loop
     // per metric.
     double d0 = INFINITY, d1 = INFINITY, d2 = INFINITY;
@@ -173,17 +173,17 @@ double crackle(const scene::Pattern& pat, const Vec3& p, int generator) {
         });
     }
     double d[3] = {d0, d1, d2};
-    if (pat.crackle_offset != 0.0) {
-        const double o = metric == 2.0 ? pat.crackle_offset * pat.crackle_offset
-                         : metric == 1.0 ? pat.crackle_offset
-                                         : std::pow(pat.crackle_offset, metric);
+    if (pat.params->crackle_offset != 0.0) {
+        const double o = metric == 2.0 ? pat.params->crackle_offset * pat.params->crackle_offset
+                         : metric == 1.0 ? pat.params->crackle_offset
+                                         : std::pow(pat.params->crackle_offset, metric);
         for (double& v : d) v += o;
     }
     double value = 0.0;
-    if (pat.crackle_solid) {
+    if (pat.params->crackle_solid) {
         value = noise(nearest ? *nearest : Vec3{}, generator);
     } else {
-        const Vec3& form = pat.crackle_form;
+        const Vec3& form = pat.params->crackle_form;
         for (int i = 0; i < 3; ++i) {
             const double r = metric == 2.0 ? std::sqrt(d[i]) : metric == 1.0 ? d[i] : std::pow(d[i], 1.0 / metric);
             value += form[i] * r;
@@ -199,9 +199,9 @@ double waves_sum(const scene::Pattern& pat, const Vec3& p, bool ripples) {
         double len = length(p - s.center);
         if (len == 0.0) len = 1.0;
         if (ripples) {
-            sum += cycloidal(len * pat.frequency + pat.phase);
+            sum += cycloidal(len * pat.params->frequency + pat.params->phase);
         } else {
-            sum += cycloidal(len * pat.frequency * s.frequency + pat.phase) / s.frequency;
+            sum += cycloidal(len * pat.params->frequency * s.frequency + pat.params->phase) / s.frequency;
         }
     }
     const double n = static_cast<double>(sources.size());
@@ -251,7 +251,7 @@ double checker_pattern(const scene::Pattern& pat, const Vec3& p, int generator) 
 }
 
 double gradient_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
-    const double v = dot(p, pat.gradient);
+    const double v = dot(p, pat.params->gradient);
     return v > 1.0 ? std::fmod(v, 1.0) : v;
 }
 
@@ -274,14 +274,14 @@ double granite_pattern(const scene::Pattern& pat, const Vec3& p, int generator) 
 
 double marble_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
     double turb = 0.0;
-    if (pat.turbulence) turb = pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator);
+    if (pat.params->turbulence) turb = pat.params->turbulence->amount.x * turbulence(p, turb_params(*pat.params->turbulence), generator);
     return p.x + turb;
 }
 
 double wood_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
     Vec3 q{p.x, p.y, 0.0};
-    if (pat.turbulence) {
-        const scene::Turbulence& t = *pat.turbulence;
+    if (pat.params->turbulence) {
+        const scene::Turbulence& t = *pat.params->turbulence;
         const Vec3 w = dturbulence(p, turb_params(t));
         q.x += cycloidal((p.x + w.x) * t.amount.x);
         q.y += cycloidal((p.y + w.y) * t.amount.y);
@@ -290,8 +290,8 @@ double wood_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
 }
 
 double agate_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
-    const scene::Turbulence t = pat.turbulence.value_or(scene::Turbulence{});
-    const double turb = pat.agate_turb * turbulence(p, turb_params(t), generator);
+    const scene::Turbulence t = pat.params->turbulence.value_or(scene::Turbulence{});
+    const double turb = pat.params->agate_turb * turbulence(p, turb_params(t), generator);
     const double v = 0.5 * (cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
     return v < 0.0 ? 0.0 : std::pow(std::min(1.0, v), 0.77);
 }
@@ -348,12 +348,12 @@ double quilted_pattern(const scene::Pattern& pat, const Vec3& p, int generator) 
 // POV-Ray's spiral angle in the x-y plane, 0..2π, through asin as it computes it.
 double spiral_value(const scene::Pattern& pat, const Vec3& p, int generator) {
     const double turb =
-        pat.turbulence ? pat.turbulence->amount.x * turbulence(p, turb_params(*pat.turbulence), generator) : 0.0;
+        pat.params->turbulence ? pat.params->turbulence->amount.x * turbulence(p, turb_params(*pat.params->turbulence), generator) : 0.0;
     const double rad = std::sqrt(p.x * p.x + p.y * p.y);
     double phi = 0.0;
     if (rad != 0.0)
         phi = p.x < 0.0 ? 3.0 * std::numbers::pi / 2 - std::asin(p.y / rad) : std::numbers::pi / 2 + std::asin(p.y / rad);
-    return p.z + rad + static_cast<double>(pat.arms) * phi / kTwoPi + turb;
+    return p.z + rad + static_cast<double>(pat.params->arms) * phi / kTwoPi + turb;
 }
 
 double spiral1_pattern(const scene::Pattern& pat, const Vec3& p, int generator) {
@@ -373,7 +373,7 @@ Vec3 quilted_offset(const scene::Pattern& pat, const Vec3& p) {
     // POV-Ray's quilt_cubic: a Bezier-like cubic through the controls, scaled by 1/sqrt(3/4).
     const double it = 1.0 - t;
     const double it2 = it * it, t2 = t * t;
-    const double c = (t * t2 + 3.0 * t * it2 * pat.control0 + 3.0 * t2 * it * pat.control1) * 1.154700538;
+    const double c = (t * t2 + 3.0 * t * it2 * pat.params->control0 + 3.0 * t2 * it * pat.params->control1) * 1.154700538;
     return v * c;
 }
 
@@ -416,12 +416,12 @@ double raw_pattern_value(const scene::Pattern& pat, const Vec3& p, int generator
 }
 
 double pattern_value(const scene::Pattern& pat, const Vec3& p, int noise_generator, const SurfacePoint* surface) {
-    const int generator = pat.noise_generator != 0 ? pat.noise_generator : noise_generator;
+    const int generator = pat.params->noise_generator != 0 ? pat.params->noise_generator : noise_generator;
     double value = raw_pattern_value(pat, p, generator, surface);
     // POV-Ray compat: frequency and phase wrap with fmod(…, 1.00001); negative results fold into [0, 1).
-    if (pat.frequency != 0.0) value = std::fmod(value * pat.frequency + pat.phase, 1.00001);
+    if (pat.params->frequency != 0.0) value = std::fmod(value * pat.params->frequency + pat.params->phase, 1.00001);
     if (value < 0.0) value -= std::floor(value);
-    switch (pat.wave) {
+    switch (pat.params->wave) {
         case scene::WaveType::Ramp:
             break;
         case scene::WaveType::Sine:
@@ -437,7 +437,7 @@ double pattern_value(const scene::Pattern& pat, const Vec3& p, int noise_generat
             value = value * value * (3.0 - 2.0 * value);
             break;
         case scene::WaveType::Poly:
-            value = std::pow(value, pat.exponent);
+            value = std::pow(value, pat.params->exponent);
             break;
     }
     return value;

@@ -55,8 +55,8 @@ double cubic_pattern(const scene::Pattern&, const Vec3& p, int) {
 }
 
 double pigment_pattern_pattern(const scene::Pattern& pat, const Vec3& p, int generator, const SurfacePoint* surface) {
-    if (!pat.pigment.pigment) return 0.0;
-    const Color c = evaluate_pigment(*pat.pigment.pigment, p, generator, surface);
+    if (!pat.params->pigment.pigment) return 0.0;
+    const Color c = evaluate_pigment(*pat.params->pigment.pigment, p, generator, surface);
     return grey(c.rgb());
 }
 

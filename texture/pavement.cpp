@@ -277,7 +277,7 @@ double triangle_value(const scene::PavementParams& pv, const Paving& paving, con
 
 double pavement_pattern(const scene::Pattern& pat, const Vec3& p, int /*generator*/) {
     // POV-Ray compat: the parser wraps these (a texture_map's pattern is not checked there, so here too).
-    scene::PavementParams pv = pat.pavement;
+    scene::PavementParams pv = pat.params->pavement;
     pv.exterior %= 3;
     pv.interior %= 3;
     pv.form %= pv.sides == 4 ? 4 : 3;

@@ -22,7 +22,7 @@ double wrap_unit(double v) {
 
 double slope_pattern(const scene::Pattern& pat, const Vec3& p, int, const SurfacePoint* surface) {
     if (surface == nullptr) return 0.0;
-    const scene::SlopeParams& s = pat.slope;
+    const scene::SlopeParams& s = pat.params->slope;
     // The cosine of the angle between the normal and the slope vector (or the direction to the point_at point).
     const double cos_n = s.point_at ? dot(surface->normal, normalize(s.slope_vector - surface->point))
                                     : dot(surface->normal, s.slope_vector);

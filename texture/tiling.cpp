@@ -340,6 +340,6 @@ double tiling_value(int type, double x, double z) {
     }
 }
 
-double tiling_pattern(const scene::Pattern& pat, const Vec3& p, int) { return tiling_value(pat.tiling_type, p.x, p.z); }
+double tiling_pattern(const scene::Pattern& pat, const Vec3& p, int) { return tiling_value(pat.params->tiling_type, p.x, p.z); }
 
 }  // namespace wardray::texture

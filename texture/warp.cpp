@@ -164,8 +164,8 @@ Vec3 warp_point(const scene::Pattern& pattern, const Vec3& p) {
         for (int i = 0; i < 3; ++i) q[i] = std::fmin(std::fmax(q[i], -kCoordinateLimit), kCoordinateLimit);
     }
     // The classic turbulence is the last warp; marble and wood apply it themselves.
-    if (pattern.turbulence && pattern.type != Type::Marble && pattern.type != Type::Wood) {
-        const scene::Turbulence& t = *pattern.turbulence;
+    if (pattern.params->turbulence && pattern.type != Type::Marble && pattern.type != Type::Wood) {
+        const scene::Turbulence& t = *pattern.params->turbulence;
         if (!(t.amount == Vec3{})) q = turbulate(q, t);
     }
     return q;

@@ -141,7 +141,7 @@ TEST(ImageMap, SphericalMapsLatitudeUp) {
 TEST(ImagePattern, IsTheGreyLevelOfTheStoredTexel) {
     const scene::Pattern pat = image_pigment("", "image_pattern").pattern;
     ASSERT_EQ(pat.type, scene::Pattern::Type::ImagePattern);
-    EXPECT_EQ(pat.frequency, 0.0);
+    EXPECT_EQ(pat.params->frequency, 0.0);
     // POV-Ray's greyscale 0.297 r + 0.589 g + 0.114 b of the values as stored (no gamma decoding), clipped to 1.
     EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0.75, 0}, 2), 0.297 * 0.5, 1e-7);
     EXPECT_NEAR(texture::pattern_value(pat, {0.75, 0.75, 0}, 2), 0.589, 1e-7);

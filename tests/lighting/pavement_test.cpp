@@ -57,10 +57,10 @@ TEST(Pavement, ParsesItsModifiersAsPovRayKeepsThem) {
     const scene::Pattern& pat = r.scene->objects[0].texture->pigment.pattern;
     ASSERT_EQ(pat.type, scene::Pattern::Type::Pavement);
     // POV-Ray compat: integers; exterior and interior modulo 3, form modulo 4 for squares.
-    EXPECT_EQ(pat.pavement, (scene::PavementParams{4, 6, 35, 1, 2, 2}));
+    EXPECT_EQ(pat.params->pavement, (scene::PavementParams{4, 6, 35, 1, 2, 2}));
     const parser::ParseResult defaults = parse("sphere { 0, 1 normal { pavement } }\n");
     ASSERT_TRUE(defaults.ok() && defaults.scene);
-    EXPECT_EQ(defaults.scene->objects[0].texture->normal.pattern.pavement, scene::PavementParams{});
+    EXPECT_EQ(defaults.scene->objects[0].texture->normal.pattern.params->pavement, scene::PavementParams{});
 }
 
 TEST(Pavement, RefusesWhatPovRayRefuses) {

@@ -63,7 +63,7 @@ TEST(Slope, RangeAndAltitudeAreWeightedByTheVectorsLengths) {
 
 TEST(Slope, PointAtMeasuresTheSlopeTowardsAPoint) {
     const scene::Pattern pat = pattern_of("slope { point_at <0, 5, 0> }");
-    EXPECT_TRUE(pat.slope.point_at);
+    EXPECT_TRUE(pat.params->slope.point_at);
     EXPECT_DOUBLE_EQ(value_at(pat, {0, 0, 0}, {1, 0, 0}), 0.5);
     EXPECT_DOUBLE_EQ(value_at(pat, {5, 0, 0}, {1, 0, 0}), 0.25);
 }
@@ -73,7 +73,7 @@ TEST(Slope, ParserWarnsAndFailsAsPovRay) {
     ASSERT_TRUE(zero.ok());
     ASSERT_EQ(zero.diagnostics.size(), 1u);
     EXPECT_NE(zero.diagnostics[0].message.find("Zero slope range"), std::string::npos);
-    EXPECT_EQ(zero.scene->objects[0].texture->pigment.pattern.slope.slope_range, 0.0);
+    EXPECT_EQ(zero.scene->objects[0].texture->pigment.pattern.params->slope.slope_range, 0.0);
     const parser::ParseResult point_at =
         parse_text("sphere { 0, 1 pigment { slope { point_at y altitude x } } }");
     EXPECT_FALSE(point_at.ok());

@@ -92,8 +92,8 @@ TEST(Patterns, MatchPovRaysEvalPigment) {
     for (const Row& row : rows) {
         scene::Pigment pig = grey_ramp(row.type);
         if (row.type == T::Marble) {
-            pig.pattern.wave = scene::WaveType::Triangle;
-            pig.pattern.turbulence = scene::Turbulence{{0.7, 0.7, 0.7}};
+            pig.pattern.params->wave = scene::WaveType::Triangle;
+            pig.pattern.params->turbulence = scene::Turbulence{{0.7, 0.7, 0.7}};
         }
         for (int i = 0; i < 4; ++i)
             EXPECT_NEAR(texture::evaluate_pigment(pig, points[i], 2).r, row.expected[i], 2e-6)
@@ -116,17 +116,17 @@ TEST(Patterns, MapLookupFollowsPovRaysRules) {
 TEST(Patterns, WaveTypesShapeTheValue) {
     scene::Pattern pat;
     pat.type = scene::Pattern::Type::Gradient;
-    pat.wave = scene::WaveType::Triangle;
+    pat.params->wave = scene::WaveType::Triangle;
     EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0, 0}, 2), 0.5, 1e-12);
     EXPECT_NEAR(texture::pattern_value(pat, {0.75, 0, 0}, 2), 0.5, 1e-12);
-    pat.wave = scene::WaveType::Sine;
+    pat.params->wave = scene::WaveType::Sine;
     EXPECT_NEAR(texture::pattern_value(pat, {0.25, 0, 0}, 2), 1.0, 1e-12);
-    pat.wave = scene::WaveType::Poly;
-    pat.exponent = 2.0;
+    pat.params->wave = scene::WaveType::Poly;
+    pat.params->exponent = 2.0;
     EXPECT_NEAR(texture::pattern_value(pat, {0.5, 0, 0}, 2), 0.25, 1e-12);
-    pat.wave = scene::WaveType::Ramp;
-    pat.frequency = 2.0;
-    pat.phase = 0.1;
+    pat.params->wave = scene::WaveType::Ramp;
+    pat.params->frequency = 2.0;
+    pat.params->phase = 0.1;
     EXPECT_NEAR(texture::pattern_value(pat, {0.3, 0, 0}, 2), std::fmod(0.7, 1.00001), 1e-12);
 }
 
@@ -154,9 +154,9 @@ TEST(Textures, ParsesMapsOldColorMapFormAndPigmentMaps) {
     const scene::Pigment& bozo = scene.objects[1].texture->pigment;
     ASSERT_EQ(bozo.pigment_map.size(), 2u);
     EXPECT_EQ(bozo.pigment_map[1].pigment.pattern.type, scene::Pattern::Type::Checker);
-    ASSERT_TRUE(bozo.pattern.turbulence.has_value());
+    ASSERT_TRUE(bozo.pattern.params->turbulence.has_value());
     const scene::Texture& t = scene.objects[2].texture;
-    EXPECT_EQ(t.pigment.pattern.wave, scene::WaveType::Triangle);
+    EXPECT_EQ(t.pigment.pattern.params->wave, scene::WaveType::Triangle);
     EXPECT_EQ(t.pigment.color_map.size(), 3u);  // marble's default map
     EXPECT_EQ(t.normal.pattern.type, scene::Pattern::Type::Bumps);
     EXPECT_DOUBLE_EQ(t.normal.amount, static_cast<double>(0.4f));  // POV-Ray keeps bump sizes in single precision

@@ -63,8 +63,8 @@ TEST(Tiling, OnlyXAndZCountAndEachTilingRepeats) {
 
 TEST(Tiling, NumberIsAnUnsignedCharFromOneTo27) {
     // POV-Ray compat: the number is cut to an unsigned char, then checked.
-    EXPECT_EQ(tiling_pigment("tiling 261").pattern.tiling_type, 5);
-    EXPECT_EQ(tiling_pigment("tiling 27.9").pattern.tiling_type, 27);
+    EXPECT_EQ(tiling_pigment("tiling 261").pattern.params->tiling_type, 5);
+    EXPECT_EQ(tiling_pigment("tiling 27.9").pattern.params->tiling_type, 27);
     for (const char* bad : {"tiling 0", "tiling 28", "tiling -1"}) {
         SCOPED_TRACE(bad);
         parser::ParseOptions options;

@@ -67,7 +67,7 @@ TEST(Sky, TransformsTurnTheDirectionAsAPoint) {
     scene::SkySphere sky;
     scene::Pigment g;
     g.pattern.type = scene::Pattern::Type::Gradient;
-    g.pattern.gradient = {0.0, 1.0, 0.0};
+    g.pattern.params->gradient = {0.0, 1.0, 0.0};
     g.color_map = {{0.0, {0.0, 0.0, 0.0}}, {1.0, {1.0, 1.0, 1.0}}};
     sky.pigments.push_back(g);
     sky.transform = Transform::rotation({0.0, 0.0, 90.0});  // y turns toward −x

@@ -100,9 +100,9 @@ TEST(Grammar, PigmentAndNormalAfterATextureIdentifierModifyItsOwn) {
     ASSERT_EQ(s.objects.size(), 3u);
     const Texture& a = s.objects[0].texture;
     EXPECT_EQ(a.pigment.pattern.type, Pattern::Type::Granite);
-    ASSERT_TRUE(a.pigment.pattern.turbulence.has_value());
-    EXPECT_EQ(a.pigment.pattern.turbulence->octaves, 3);
-    EXPECT_EQ(a.pigment.pattern.turbulence->amount.x, 0.5);
+    ASSERT_TRUE(a.pigment.pattern.params->turbulence.has_value());
+    EXPECT_EQ(a.pigment.pattern.params->turbulence->octaves, 3);
+    EXPECT_EQ(a.pigment.pattern.params->turbulence->amount.x, 0.5);
     EXPECT_EQ(a.pigment.color_map.size(), 2u);
     EXPECT_EQ(a.normal.pattern.type, Pattern::Type::Bumps);
     EXPECT_EQ(a.normal.amount, static_cast<double>(0.3f));  // POV-Ray stores bump_size in single precision
