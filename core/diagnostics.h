@@ -5,11 +5,13 @@
 #include <string>
 #include <vector>
 
+#include "core/shared_string.h"
+
 namespace wardray {
 
 /// A place in a source file; line and column count from 1 (0 means "no location").
 struct SourceLoc {
-    std::string path;  ///< the file as the user or the #include named it
+    SharedString path;  ///< the file as the user or the #include named it (shared by copies)
     std::uint32_t line = 0;
     std::uint32_t column = 0;
 

@@ -33,7 +33,7 @@ void blob_textures(const scene::Blob& blob, const scene::Texture& own, const Vec
     const geometry::BlobShape* shape = shape_of(blob);
     if (shape == nullptr) return;
     thread_local std::vector<double> density;
-    shape->component_densities(blob.placement.inverse_point(p_world), density);
+    shape->component_densities(blob.placement->inverse_point(p_world), density);
     double sum = 0.0;
     for (std::size_t i = 0; i < density.size(); ++i) {
         if (!(density[i] > 0.0)) continue;

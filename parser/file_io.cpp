@@ -81,11 +81,11 @@ void Preprocessor::assign_existing_or_global(const std::string& name, Value v) {
 }
 
 fs::path Preprocessor::scene_relative(const fs::path& requested) const {
-    return requested.is_absolute() ? requested : fs::path(m_files.front()->path).parent_path() / requested;
+    return requested.is_absolute() ? requested : fs::path(m_files.front()->path.str()).parent_path() / requested;
 }
 
 void Preprocessor::require_writable(const Token& at, const fs::path& target) {
-    const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
+    const fs::path scene_folder = fs::path(m_files.front()->path.str()).parent_path();
     bool allowed = is_within(target, scene_folder.empty() ? "." : scene_folder);
     for (const auto& p : m_options.write_paths) allowed = allowed || is_within(target, p);
     if (!allowed)
@@ -96,7 +96,7 @@ void Preprocessor::require_writable(const Token& at, const fs::path& target) {
 
 void Preprocessor::directive_file_io(const Token& tok) {
     const TokenText& name = tok.text;
-    const fs::path scene_folder = fs::path(m_files.front()->path).parent_path();
+    const fs::path scene_folder = fs::path(m_files.front()->path.str()).parent_path();
     if (name == "fopen") {
         const Token id = expect_identifier();
         const Token name_tok = peek();

@@ -166,7 +166,7 @@ Numeric Evaluator::parse_function(const Token& name) {
         if (f == "asc") return Numeric::scalar(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]));
         if (f == "val") return Numeric::scalar(std::atof(s.c_str()));
         std::error_code ec;
-        bool found = std::filesystem::exists(std::filesystem::path(m_files[m_file]->path).parent_path() / s, ec);
+        bool found = std::filesystem::exists(std::filesystem::path(m_files[m_file]->path.str()).parent_path() / s, ec);
         for (const auto& dir : m_options.library_paths) found = found || std::filesystem::exists(dir / s, ec);
         return Numeric::scalar(found ? 1.0 : 0.0);
     }

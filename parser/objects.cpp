@@ -36,9 +36,9 @@ void transform_textures(Object& o, bool own_texture, TextureMover& mover) {
 // POV-Ray compat: a bicubic patch is re-tessellated after every transform, also its CSG parents', and a smooth
 // height field's normals are interpolated in world space; both keep the transforms.
 void place_patches(Object& o, const Transform& tr) {
-    if (auto* patch = std::get_if<BicubicPatch>(&o.shape)) patch->placement = patch->placement.then(tr);
-    if (auto* hf = std::get_if<HeightField>(&o.shape)) hf->placement = hf->placement.then(tr);
-    if (auto* blob = std::get_if<Blob>(&o.shape)) blob->placement = blob->placement.then(tr);
+    if (auto* patch = std::get_if<BicubicPatch>(&o.shape)) patch->placement = patch->placement.get().then(tr);
+    if (auto* hf = std::get_if<HeightField>(&o.shape)) hf->placement = hf->placement.get().then(tr);
+    if (auto* blob = std::get_if<Blob>(&o.shape)) blob->placement = blob->placement.get().then(tr);
     if (auto* csg = std::get_if<Csg>(&o.shape))
         for (Object& child : csg->children) place_patches(child, tr);
 }

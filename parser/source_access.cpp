@@ -6,7 +6,7 @@
 namespace wardray::parser {
 
 void SourceStream::require_readable(const Token& at, const std::filesystem::path& file, std::string_view what) {
-    if (m_read_roots.empty()) m_read_roots = readable_roots(m_options, m_files.front()->path);
+    if (m_read_roots.empty()) m_read_roots = readable_roots(m_options, m_files.front()->path.str());
     if (!is_readable(file, m_read_roots)) fail(at, read_refusal(file, what));
 }
 

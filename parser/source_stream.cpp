@@ -72,7 +72,7 @@ Diagnostic SourceStream::make_diagnostic(Severity s, const Token& at, std::strin
         }
         const Token& site = it->call_site;
         const std::string where =
-            (site.file < m_files.size() ? m_files[site.file]->path : std::string("?")) + ":" + std::to_string(site.line);
+            (site.file < m_files.size() ? m_files[site.file]->path.str() : std::string("?")) + ":" + std::to_string(site.line);
         if (it->kind == Frame::Kind::Include)
             d.notes.push_back("included from " + where);
         else
@@ -205,10 +205,10 @@ std::vector<SourceStream::SearchCandidate> SourceStream::search_candidates(const
             candidates.push_back({folder.empty() ? requested : folder / requested, library, beyond});
         };
         add(fs::path(), false, false);
-        add(fs::path(m_files.front()->path).parent_path(), false, false);
+        add(fs::path(m_files.front()->path.str()).parent_path(), false, false);
         for (const auto& dir : m_options.library_paths) add(dir, true, false);
         const SourceFile& reading = *m_files[m_file];
-        add(fs::path(reading.path).parent_path(), reading.library, !reading.library);
+        add(fs::path(reading.path.str()).parent_path(), reading.library, !reading.library);
     }
     if (!requested.has_extension()) {
         // POV-Ray compat: a name without extension is also tried with the usual one.

@@ -57,7 +57,7 @@ inline HashedName hashed(std::string_view name) { return {name, NameHash{}(name)
 
 /// One source file read by the parse, with its tokens (lexed as they are read; macros and loops re-read them).
 struct SourceFile {
-    std::string path;  ///< as shown in diagnostics
+    SharedString path;  ///< as shown in diagnostics (every location in the file shares it)
     std::string text;
     TokenStore tokens;
     DecodedStrings decoded;  ///< string literals with escapes, which tokens view

@@ -102,7 +102,7 @@ struct Blob {
     SharedVector<Texture> textures;
     /// Every transform applied to the blob since it was read (its own and its CSG parents'): blob space to world,
     /// where the component densities that weight their textures are found.
-    Transform placement;
+    Cow<Transform> placement;
     bool operator==(const Blob&) const = default;
 };
 
@@ -122,7 +122,7 @@ struct BicubicPatch {
     std::vector<Vec3> uv_vectors{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}};
     /// Every transform applied to the patch since it was read (its own and its CSG parents'), in order: POV-Ray
     /// tessellates the transformed control points, so flatness is measured after it.
-    Transform placement;
+    Cow<Transform> placement;
     bool operator==(const BicubicPatch&) const = default;
 };
 
@@ -350,7 +350,7 @@ struct HeightField {
     double water_level = 0.0;  ///< a fraction of the full height
     /// Every transform applied to the field since it was read (its own and its CSG parents'), in order: POV-Ray
     /// interpolates the smooth vertex normals after taking them to world space.
-    Transform placement;
+    Cow<Transform> placement;
     bool operator==(const HeightField&) const = default;
 };
 
