@@ -28,7 +28,7 @@ const geometry::BlobShape* shape_of(const scene::Blob& blob) {
 }  // namespace
 
 void blob_textures(const scene::Blob& blob, const scene::Texture& own, const Vec3& p_world,
-                   std::vector<WeightedTexture>& out) {
+                   WeightedTextures& out) {
     out.clear();
     const geometry::BlobShape* shape = shape_of(blob);
     if (shape == nullptr) return;

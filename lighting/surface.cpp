@@ -69,7 +69,7 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
         if (blob == nullptr || blob->textures.empty()) return shade_texture(texture, s, warps, state, ctx);
         // POV-Ray compat: a blob with component textures blends their lit colours by the components' densities
         // (and shows no interior texture).
-        std::vector<WeightedTexture> weighted;
+        WeightedTextures weighted;
         blob_textures(*blob, *object.texture, hit.position, weighted);
         if (weighted.empty()) return shade_texture(*object.texture, s, warps, state, ctx);
         if (weighted.size() == 1) return shade_texture(*weighted[0].first, s, warps, state, ctx);

@@ -23,7 +23,7 @@ TEST(BlobTexture, ComponentsWeighTheirTexturesByDensity) {
     ASSERT_EQ(s.objects.size(), 1u);
     const auto& blob = std::get<scene::Blob>(s.objects[0].shape);
     ASSERT_EQ(blob.textures.size(), 1u);
-    std::vector<WeightedTexture> w;
+    WeightedTextures w;
     // Half way between the centres the two densities are equal.
     blob_textures(blob, *s.objects[0].texture, {10.0, 0.0, 0.0}, w);
     ASSERT_EQ(w.size(), 2u);
