@@ -26,6 +26,7 @@ struct CacheStatistics {
     std::uint64_t hits = 0;     ///< of those, lookups that found enough records (Interpolation::sufficient)
     std::uint64_t total_records = 0;
     double mean_radius = 0.0;  ///< over all records, world units
+    std::uint64_t memory_bytes = 0;  ///< what the octrees and the open pass's tile views have allocated
 
     double hit_rate() const { return lookups > 0 ? static_cast<double>(hits) / static_cast<double>(lookups) : 0.0; }
 };

@@ -246,4 +246,14 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
     return bound;
 }
 
+std::size_t RecordOctree::memory_bytes() const {
+    std::size_t bytes = m_records.capacity() * sizeof(IrradianceRecord) + m_geometry.capacity() * sizeof(RecordGeometry);
+    for (const Filing& f : m_filings) {
+        bytes += f.nodes.size() * sizeof(Node);
+        for (const Node& n : f.nodes) bytes += n.blocks.capacity() * sizeof(Node::Block);
+        for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(Node::Home);
+    }
+    return bytes;
+}
+
 }  // namespace wardray::cache

@@ -41,6 +41,9 @@ public:
         if (radius < m_records[index].radius) m_records[index].radius = m_geometry[index].radius = radius;
     }
     std::size_t size() const { return m_records.size(); }
+    /// The bytes this octree has allocated (records, packed geometry, nodes, entries and homes, by capacity; not the
+    /// allocator's own overhead): what --stats reports as the cache's memory.
+    std::size_t memory_bytes() const;
     double reach() const { return m_filings.front().reach; }
 
     /// Calls `visit(index)` for each record whose filed sphere may contain `q` (a superset of the records valid at q
