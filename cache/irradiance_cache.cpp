@@ -296,7 +296,7 @@ std::vector<std::size_t> IrradianceCache::sizes() const {
     return out;
 }
 
-const std::vector<IrradianceRecord>& IrradianceCache::records(int depth) const {
+const RecordArray& IrradianceCache::records(int depth) const {
     return m_octrees.at(static_cast<std::size_t>(depth)).records();
 }
 

@@ -123,7 +123,7 @@ public:
     /// Inserts one record outside a pass, with neighbour clamping (std::logic_error inside a pass).
     void add(const IrradianceRecord& record);
     /// The records of `depth` in insertion order.
-    const std::vector<IrradianceRecord>& records(int depth) const;
+    const RecordArray& records(int depth) const;
     /// Keeps only the records `keep` accepts, each depth's in its order, refiled as they are (no neighbour
     /// clamping): a cache carried to the next frame of an animation without the records that frame invalidates.
     /// Returns how many were dropped. Outside a pass (std::logic_error inside one).

@@ -247,7 +247,7 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
 }
 
 std::size_t RecordOctree::memory_bytes() const {
-    std::size_t bytes = m_records.capacity() * sizeof(IrradianceRecord) + m_geometry.capacity() * sizeof(RecordGeometry);
+    std::size_t bytes = m_records.memory_bytes() + m_geometry.memory_bytes();
     for (const Filing& f : m_filings) {
         bytes += f.nodes.size() * sizeof(Node);
         for (const Node& n : f.nodes) bytes += n.blocks.capacity() * sizeof(Node::Block);

@@ -6,10 +6,14 @@
 #include <deque>
 #include <vector>
 
+#include "cache/chunked_array.h"
 #include "cache/irradiance_record.h"
 #include "core/vec3.h"
 
 namespace wardray::cache {
+
+/// Records in insertion order, in chunks: growing never copies them all or doubles their memory.
+using RecordArray = ChunkedArray<IrradianceRecord>;
 
 /// Records of one bounce depth, each filed by the sphere of radius reach × R_i around its position
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
@@ -32,7 +36,7 @@ public:
     /// non-finite position or radius is kept but never found.
     std::uint32_t insert(const IrradianceRecord& record);
     /// Every record in insertion order.
-    const std::vector<IrradianceRecord>& records() const { return m_records; }
+    const RecordArray& records() const { return m_records; }
     /// The position, normal and radius of record `index`, packed (what lookups test before reading the record).
     const RecordGeometry& geometry(std::uint32_t index) const { return m_geometry[index]; }
     /// Neighbour clamping: record `index`'s radius becomes `radius` when that is smaller (the filing stays
@@ -198,8 +202,8 @@ private:
                      const Cube& cube, const Vec3& lo, const Vec3& hi, double target_size);
     void clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const;
 
-    std::vector<IrradianceRecord> m_records;
-    std::vector<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
+    RecordArray m_records;
+    ChunkedArray<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
     std::array<double, 2> m_inner{0.5, 0.25};
     std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };

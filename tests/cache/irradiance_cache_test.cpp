@@ -60,7 +60,7 @@ IrradianceCache render(int threads) {
     return cache;
 }
 
-bool bitwise_equal(const std::vector<IrradianceRecord>& a, const std::vector<IrradianceRecord>& b) {
+bool bitwise_equal(const RecordArray& a, const RecordArray& b) {
     if (a.size() != b.size()) return false;
     for (std::size_t i = 0; i < a.size(); ++i) {
         const IrradianceRecord& x = a[i];
