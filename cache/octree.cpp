@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace wardray::cache {
 namespace {
@@ -15,6 +18,16 @@ constexpr int kMaxLevels = 30;
 /// Cubes are widened by this fraction of their size in the overlap tests, so that rounding can only add a record
 /// to a node, never leave it out.
 constexpr double kSlack = 1e-9;
+
+/// Block positions: steps of 1 / kPositionScale node sizes from -1 (0) to 2 (65535).
+constexpr double kPositionScale = 65535.0 / 3.0;
+/// Block radii: steps of 1 / kRadiusScale node sizes, in (0, 1].
+constexpr double kRadiusScale = 65535.0;
+
+/// A coordinate in node sizes, in [-1, 2], to the nearest step.
+std::uint16_t quantized_position(double local) {
+    return static_cast<std::uint16_t>(std::clamp(std::nearbyint((local + 1.0) * kPositionScale), 0.0, 65535.0));
+}
 
 bool box_overlaps_cube(const Vec3& lo, const Vec3& hi, const Vec3& cube_min, double size) {
     const double slack = kSlack * size;
@@ -140,13 +153,16 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
         // underflow nor overflow at any scene scale.
         const double unit = 1.0 / cube.size;
         const Vec3 local = (record.position - cube.min) * unit;
-        float radius = static_cast<float>(record.radius * unit);
-        if (static_cast<double>(radius) < record.radius * unit) radius = std::nextafter(radius, HUGE_VALF);
+        // The filed sphere's radius, rounded up (at least one step, at most a node size: it is filed here).
+        const auto radius = static_cast<std::uint16_t>(
+            std::clamp(std::ceil(f.reach * record.radius * unit * kRadiusScale), 1.0, kRadiusScale));
         if (n.blocks.empty() || n.blocks.back().index[kBlock - 1] != kNoRecord) {
+            // Position 0 is a node size outside the cube, where no query is, and radius 0 reaches no farther than
+            // the scan's slack.
             Node::Block unused;
             for (std::size_t k = 0; k < kBlock; ++k) {
-                unused.x[k] = unused.y[k] = unused.z[k] = HUGE_VALF;
-                unused.radius[k] = 0.0f;
+                unused.x[k] = unused.y[k] = unused.z[k] = 0;
+                unused.radius[k] = 0;
                 unused.index[k] = kNoRecord;
             }
             n.blocks.push_back(unused);
@@ -154,9 +170,9 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
         Node::Block& b = n.blocks.back();
         std::size_t lane = 0;
         while (b.index[lane] != kNoRecord) ++lane;
-        b.x[lane] = static_cast<float>(local.x);
-        b.y[lane] = static_cast<float>(local.y);
-        b.z[lane] = static_cast<float>(local.z);
+        b.x[lane] = quantized_position(local.x);
+        b.y[lane] = quantized_position(local.y);
+        b.z[lane] = quantized_position(local.z);
         b.radius[lane] = radius;
         b.index[lane] = index;
         bool home = homes;
@@ -179,30 +195,43 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
     }
 }
 
-std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound, double reach,
                                    std::size_t begin, std::uint32_t* near) {
     // Four lanes at a time (GCC/Clang vector extensions: SSE on x86-64, NEON on ARM).
     using Floats = float __attribute__((vector_size(16)));
+    // Four 16-bit steps to floats. On x86-64 widened by an unpack with zero and converted as a vector (GCC makes
+    // four scalar conversions of the generic form).
+    const auto widen = [](const std::uint16_t* p) {
+#ifdef __SSE2__
+        const __m128i steps = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p));
+        const __m128 floats = _mm_cvtepi32_ps(_mm_unpacklo_epi16(steps, _mm_setzero_si128()));
+        Floats out;
+        std::memcpy(&out, &floats, sizeof out);
+        return out;
+#else
+        using Steps = std::uint16_t __attribute__((vector_size(8)));
+        Steps steps;
+        std::memcpy(&steps, p, sizeof steps);
+        return __builtin_convertvector(steps, Floats);
+#endif
+    };
     const std::size_t end = std::min(n.blocks.size(), begin + kScanBlocks);
-    // In node sizes, as filed. A filed sphere overlaps the node and is at most as wide as it (error_bound ≤ the
-    // filing's reach), so its centre lies within two sizes of `min`, q within one, and every term below is under a
-    // few: float rounding (2^-24 of each) moves the distance and the reach by far less than this slack.
+    // In position steps, as filed: q lies in the cube, so within [kPositionScale, 2 kPositionScale). A filed
+    // position is off by at most half a step an axis (under a step in distance), its radius only rounded up, and
+    // every float term is under 2^17 (rounding moves it by under 2^-6): the slack of 4 steps covers both.
     const Vec3 local = (q - cube.min) * (1.0 / cube.size);
-    const float slack = 0x1p-16f;
-    const Floats qx = Floats{} + static_cast<float>(local.x), qy = Floats{} + static_cast<float>(local.y),
-                 qz = Floats{} + static_cast<float>(local.z);
-    const Floats bound = Floats{} + static_cast<float>(error_bound);
+    const float slack = 4.0f;
+    const Floats qx = Floats{} + static_cast<float>((local.x + 1.0) * kPositionScale),
+                 qy = Floats{} + static_cast<float>((local.y + 1.0) * kPositionScale),
+                 qz = Floats{} + static_cast<float>((local.z + 1.0) * kPositionScale);
+    // A radius step is 1 / (reach kRadiusScale) node sizes of R_i, times error_bound, in position steps.
+    const Floats bound = Floats{} + static_cast<float>(error_bound / reach * kPositionScale / kRadiusScale);
     std::size_t found = 0;
     for (std::size_t i = begin; i < end; ++i) {
         const Node::Block& b = n.blocks[i];
-        Floats x, y, z, radius;
-        std::memcpy(&x, b.x, sizeof x);
-        std::memcpy(&y, b.y, sizeof y);
-        std::memcpy(&z, b.z, sizeof z);
-        std::memcpy(&radius, b.radius, sizeof radius);
-        const Floats dx = qx - x, dy = qy - y, dz = qz - z;
-        const Floats reach = bound * radius + slack;
-        const auto inside = dx * dx + dy * dy + dz * dz < reach * reach;  // -1 in the lanes that pass
+        const Floats dx = qx - widen(b.x), dy = qy - widen(b.y), dz = qz - widen(b.z);
+        const Floats within = bound * widen(b.radius) + slack;
+        const auto inside = dx * dx + dy * dy + dz * dz < within * within;  // -1 in the lanes that pass
         // Branch-free: most entries fail, and a mispredicted branch per entry costs more than the test.
         for (std::size_t k = 0; k < kBlock; ++k) {
             near[found] = b.index[k];

@@ -72,7 +72,7 @@ public:
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
             for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, cube, q, error_bound, begin, near);
+                const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
                 // The candidates' geometry is fetched together, not one miss after another.
                 for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
                 for (std::size_t i = 0; i < found; ++i) {
@@ -95,7 +95,7 @@ public:
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
             for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, cube, q, 1.0, begin, near);
+                const std::size_t found = scan_near(n, cube, q, 1.0, filing->reach, begin, near);
                 for (std::size_t i = 0; i < found; ++i) visit(near[i]);
             }
         });
@@ -134,14 +134,16 @@ private:
     /// One cache line (with a 24-byte vector), so that a walk reads one line per node.
     struct alignas(64) Node {
         std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
-        /// The records filed here in insertion order, four to a block: position relative to the cube's min and
-        /// radius at filing, both in units of its size, as floats (the radius rounded up), and index, each field side by side for the scan (one
-        /// allocation per node, read in order): 20 bytes an entry, against 40 in doubles, for up to 27 entries a
-        /// record in each of three filings. The last block's unused lanes have index kNoRecord and a position
-        /// no query is near.
+        /// The records filed here in insertion order, four to a block, each field side by side for the scan (one
+        /// allocation per node, read in order): position relative to the cube's min in units of its size, which
+        /// lies in [-1, 2] (the filed sphere overlaps the cube and is at most as wide), as 16-bit fixed point
+        /// (kPositionScale steps a unit, rounded to nearest); the filed sphere's radius reach × R_i at filing in
+        /// units of the size, in (0, 1], as 16-bit fixed point rounded up; and the index. 12 bytes an entry,
+        /// against 40 in doubles, for up to 27 entries a record in each of three filings. The last block's unused
+        /// lanes have index kNoRecord, radius 0 and a position no query is near.
         struct alignas(16) Block {
-            float x[kBlock], y[kBlock], z[kBlock];
-            float radius[kBlock];
+            std::uint16_t x[kBlock], y[kBlock], z[kBlock];
+            std::uint16_t radius[kBlock];
             std::uint32_t index[kBlock];
         };
         std::vector<Block> blocks;
@@ -191,9 +193,10 @@ private:
 
     /// How many blocks visit_near() tests in one scan.
     static constexpr std::size_t kScanBlocks = 16;
-    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` that may lie within
-    /// error_bound × radius of q (a superset: the test is widened by the floats' rounding); returns how many.
-    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` (in a filing of
+    /// `reach`) that may lie within error_bound × radius of q (a superset: the test is widened by the fixed point's
+    /// and the floats' rounding); returns how many.
+    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound, double reach,
                                  std::size_t begin, std::uint32_t* near);
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
     static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
