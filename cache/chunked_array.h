@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <iterator>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace wardray::cache {
@@ -21,10 +23,14 @@ public:
     ChunkedArray() = default;
     ChunkedArray(ChunkedArray&&) noexcept = default;
     ChunkedArray& operator=(ChunkedArray&&) noexcept = default;
-    ChunkedArray(const ChunkedArray& other) {
+    ChunkedArray(const ChunkedArray& other)
+        requires std::is_copy_assignable_v<T>
+    {
         for (const T& v : other) push_back(v);
     }
-    ChunkedArray& operator=(const ChunkedArray& other) {
+    ChunkedArray& operator=(const ChunkedArray& other)
+        requires std::is_copy_assignable_v<T>
+    {
         if (this != &other) *this = ChunkedArray(other);
         return *this;
     }
@@ -46,6 +52,10 @@ public:
     void push_back(const T& value) {
         if (m_size == m_capacity) grow();
         (*this)[m_size++] = value;
+    }
+    void push_back(T&& value) {
+        if (m_size == m_capacity) grow();
+        (*this)[m_size++] = std::move(value);
     }
     void clear() {
         m_chunks.clear();
@@ -84,7 +94,7 @@ private:
             // The first chunk doubles (from 16) until it is full size: a copy of at most one chunk.
             const std::size_t capacity = std::min(kChunk, std::max<std::size_t>(16, 2 * m_capacity));
             std::unique_ptr<T[]> bigger(new T[capacity]);
-            if (!m_chunks.empty()) std::copy(m_chunks[0].get(), m_chunks[0].get() + m_size, bigger.get());
+            if (!m_chunks.empty()) std::move(m_chunks[0].get(), m_chunks[0].get() + m_size, bigger.get());
             m_chunks.clear();
             m_chunks.push_back(std::move(bigger));
             m_capacity = capacity;

@@ -62,8 +62,8 @@ RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
     for (std::size_t k = 0; k < inner.size(); ++k)
         if (!(inner[k] > 0.0 && inner[k] <= 1.0)) inner[k] = defaults[k];
     m_inner = inner;
-    m_filings.push_back(Filing{r, {}, {}, -1, {}});
-    for (const double f : inner) m_filings.push_back(Filing{r * f, {}, {}, -1, {}});
+    m_filings.emplace_back().reach = r;
+    for (const double f : inner) m_filings.emplace_back().reach = r * f;
 }
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
@@ -87,7 +87,7 @@ void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::u
         Cube& root = f.root_cube;
         root.size = std::ldexp(1.0, e);
         for (int a = 0; a < 3; ++a) root.min[a] = std::floor(lo[a] / root.size) * root.size;
-        f.nodes.emplace_back();
+        f.nodes.push_back(Node{});
         f.root = 0;
     }
     grow_to_fit(f, lo, hi);
@@ -106,7 +106,7 @@ void RecordOctree::insert_into(Filing& f, const IrradianceRecord& record, std::u
         if (cube.size <= target) break;
         const int octant = cube.octant_of(record.position);
         cube = cube.child(octant);
-        node = n.children[static_cast<std::size_t>(octant)];
+        node = n.children < 0 ? -1 : f.children[static_cast<std::size_t>(n.children)][static_cast<std::size_t>(octant)];
     }
 }
 
@@ -129,7 +129,11 @@ void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
             }
         }
         Node node;
-        node.children[octant] = f.root;
+        Children children;
+        children.fill(-1);
+        children[static_cast<std::size_t>(octant)] = f.root;
+        node.children = static_cast<std::int32_t>(f.children.size());
+        f.children.push_back(children);
         node.subtree_homes = f.nodes[static_cast<std::size_t>(f.root)].subtree_homes;
         f.nodes.push_back(std::move(node));
         f.root = static_cast<std::int32_t>(f.nodes.size() - 1);
@@ -138,11 +142,18 @@ void RecordOctree::grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi) {
 }
 
 std::int32_t RecordOctree::child(Filing& f, std::int32_t node, int octant) {
-    if (f.nodes[node].children[octant] < 0) {
-        f.nodes.emplace_back();
-        f.nodes[node].children[octant] = static_cast<std::int32_t>(f.nodes.size() - 1);
+    if (f.nodes[node].children < 0) {
+        Children none;
+        none.fill(-1);
+        f.nodes[node].children = static_cast<std::int32_t>(f.children.size());
+        f.children.push_back(none);
     }
-    return f.nodes[node].children[octant];
+    Children& children = f.children[static_cast<std::size_t>(f.nodes[node].children)];
+    if (children[octant] < 0) {
+        children[octant] = static_cast<std::int32_t>(f.nodes.size());
+        f.nodes.push_back(Node{});
+    }
+    return children[octant];
 }
 
 void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes,
@@ -156,7 +167,7 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
         // The filed sphere's radius, rounded up (at least one step, at most a node size: it is filed here).
         const auto radius = static_cast<std::uint16_t>(
             std::clamp(std::ceil(f.reach * record.radius * unit * kRadiusScale), 1.0, kRadiusScale));
-        if (n.blocks.empty() || n.blocks.back().index[kBlock - 1] != kNoRecord) {
+        if (n.block_count == 0 || n.blocks[n.block_count - 1].index[kBlock - 1] != kNoRecord) {
             // Position 0 is a node size outside the cube, where no query is, and radius 0 reaches no farther than
             // the scan's slack.
             Node::Block unused;
@@ -165,9 +176,15 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                 unused.radius[k] = 0;
                 unused.index[k] = kNoRecord;
             }
-            n.blocks.push_back(unused);
+            if (n.block_count == block_capacity(n.block_count)) {
+                // Full: a new allocation of the next capacity.
+                std::unique_ptr<Node::Block[]> more(new Node::Block[block_capacity(n.block_count + 1)]);
+                std::copy(n.blocks.get(), n.blocks.get() + n.block_count, more.get());
+                n.blocks = std::move(more);
+            }
+            n.blocks[n.block_count++] = unused;
         }
-        Node::Block& b = n.blocks.back();
+        Node::Block& b = n.blocks[n.block_count - 1];
         std::size_t lane = 0;
         while (b.index[lane] != kNoRecord) ++lane;
         b.x[lane] = quantized_position(local.x);
@@ -215,7 +232,7 @@ std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3&
         return __builtin_convertvector(steps, Floats);
 #endif
     };
-    const std::size_t end = std::min(n.blocks.size(), begin + kScanBlocks);
+    const std::size_t end = std::min<std::size_t>(n.block_count, begin + kScanBlocks);
     // In position steps, as filed: q lies in the cube, so within [kPositionScale, 2 kPositionScale). A filed
     // position is off by at most half a step an axis (under a step in distance), its radius only rounded up, and
     // every float term is under 2^17 (rounding moves it by under 2^-6): the slack of 4 steps covers both.
@@ -255,9 +272,11 @@ void RecordOctree::clamp_within(std::int32_t node, const Cube& cube, const Vec3&
     // The child holding the centre first: its records are the likeliest to lower the bound for the others.
     const double half = 0.5 * cube.size;
     const int first = cube.octant_of(centre);
+    if (n.children < 0) return;
+    const Children& children = f.children[static_cast<std::size_t>(n.children)];
     for (int k = 0; k < 8; ++k) {
         const int octant = k ^ first;
-        const std::int32_t c = n.children[static_cast<std::size_t>(octant)];
+        const std::int32_t c = children[static_cast<std::size_t>(octant)];
         if (c < 0 || m_filings.front().nodes[static_cast<std::size_t>(c)].subtree_homes == 0) continue;
         // Only children within the bound found so far.
         const Vec3 b{bound, bound, bound};
@@ -278,8 +297,8 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
 std::size_t RecordOctree::memory_bytes() const {
     std::size_t bytes = m_records.memory_bytes() + m_geometry.memory_bytes();
     for (const Filing& f : m_filings) {
-        bytes += f.nodes.size() * sizeof(Node);
-        for (const Node& n : f.nodes) bytes += n.blocks.capacity() * sizeof(Node::Block);
+        bytes += f.nodes.memory_bytes() + f.children.memory_bytes();
+        for (const Node& n : f.nodes) bytes += block_capacity(n.block_count) * sizeof(Node::Block);
         for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(Node::Home);
     }
     return bytes;

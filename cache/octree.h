@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
 #include "cache/chunked_array.h"
@@ -55,8 +56,8 @@ public:
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
         walk(m_filings.front(), q, [&](const Node& n, const Cube&) {
-            for (const Node::Block& b : n.blocks)
-                for (const std::uint32_t index : b.index)
+            for (std::uint32_t i = 0; i < n.block_count; ++i)
+                for (const std::uint32_t index : n.blocks[i].index)
                     if (index != kNoRecord) visit(index);
         });
     }
@@ -71,7 +72,7 @@ public:
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
-            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
+            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
                 const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
                 // The candidates' geometry is fetched together, not one miss after another.
                 for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
@@ -94,7 +95,7 @@ public:
             if (f.reach >= 1.0 && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
-            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
+            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
                 const std::size_t found = scan_near(n, cube, q, 1.0, filing->reach, begin, near);
                 for (std::size_t i = 0; i < found; ++i) visit(near[i]);
             }
@@ -131,9 +132,9 @@ private:
                     half};
         }
     };
-    /// One cache line (with a 24-byte vector), so that a walk reads one line per node.
-    struct alignas(64) Node {
-        std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
+    /// 24 bytes: the children are in a group of the filing's (most nodes are leaves and need none), and the blocks
+    /// in one allocation of exactly the blocks used (a few more in long lists).
+    struct Node {
         /// The records filed here in insertion order, four to a block, each field side by side for the scan (one
         /// allocation per node, read in order): position relative to the cube's min in units of its size, which
         /// lies in [-1, 2] (the filed sphere overlaps the cube and is at most as wide), as 16-bit fixed point
@@ -146,7 +147,10 @@ private:
             std::uint16_t radius[kBlock];
             std::uint32_t index[kBlock];
         };
-        std::vector<Block> blocks;
+        std::unique_ptr<Block[]> blocks;
+        std::uint32_t block_count = 0;
+        /// The index of this node's group of eight children in the filing's `children`; -1 for none.
+        std::int32_t children = -1;
         /// Of those, the records whose position lies in this node's cube (each record has one such home node in
         /// the first filing), so that range queries test each record once; positions packed for the scan.
         /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
@@ -159,11 +163,21 @@ private:
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
     };
-    static_assert(sizeof(Node) == 64 || sizeof(void*) != 8, "a node no longer fits one cache line");
+    static_assert(sizeof(Node) == 24 || sizeof(void*) != 8, "a node has grown");
+    /// The blocks allocated for a node of `count` blocks: all of them up to 8, then up to a quarter more, so that
+    /// growing a long list copies it only now and then.
+    static std::uint32_t block_capacity(std::uint32_t count) {
+        if (count <= 8) return count;
+        const std::uint32_t step = (std::uint32_t{1} << (31 - __builtin_clz(count))) / 4;
+        return (count + step - 1) / step * step;
+    }
+    /// A node's eight children (-1: none).
+    using Children = std::array<std::int32_t, 8>;
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
         double reach = 1.0;
-        std::deque<Node> nodes;  ///< a deque: no copy of every node and no doubled capacity as it grows
+        ChunkedArray<Node> nodes;  ///< in chunks: no copy of every node and no doubled capacity as it grows
+        ChunkedArray<Children> children;  ///< the children of the nodes that have any
         std::deque<std::vector<Node::Home>> home_lists;
         std::int32_t root = -1;
         Cube root_cube;
@@ -182,7 +196,8 @@ private:
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
             const int octant = cube.octant_of(q);
-            const std::int32_t next = n.children[static_cast<std::size_t>(octant)];
+            const std::int32_t next =
+                n.children < 0 ? -1 : f.children[static_cast<std::size_t>(n.children)][static_cast<std::size_t>(octant)];
             // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
             if (next >= 0) __builtin_prefetch(&f.nodes[static_cast<std::size_t>(next)]);
             at(n, cube);
