@@ -177,10 +177,13 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                 unused.index[k] = kNoRecord;
             }
             if (n.block_count == block_capacity(n.block_count)) {
-                // Full: a new allocation of the next capacity.
-                std::unique_ptr<Node::Block[]> more(new Node::Block[block_capacity(n.block_count + 1)]);
-                std::copy(n.blocks.get(), n.blocks.get() + n.block_count, more.get());
-                n.blocks = std::move(more);
+                // Full: a run of the next capacity, the old one back to the pool.
+                Node::Block* more = f.blocks.allocate(block_capacity(n.block_count + 1));
+                if (n.block_count > 0) {
+                    std::copy(n.blocks, n.blocks + n.block_count, more);
+                    f.blocks.release(n.blocks, n.block_count);
+                }
+                n.blocks = more;
             }
             n.blocks[n.block_count++] = unused;
         }
@@ -297,8 +300,7 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
 std::size_t RecordOctree::memory_bytes() const {
     std::size_t bytes = m_records.memory_bytes() + m_geometry.memory_bytes();
     for (const Filing& f : m_filings) {
-        bytes += f.nodes.memory_bytes() + f.children.memory_bytes();
-        for (const Node& n : f.nodes) bytes += block_capacity(n.block_count) * sizeof(Node::Block);
+        bytes += f.nodes.memory_bytes() + f.children.memory_bytes() + f.blocks.memory_bytes();
         for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(Node::Home);
     }
     return bytes;

@@ -9,6 +9,7 @@
 
 #include "cache/chunked_array.h"
 #include "cache/irradiance_record.h"
+#include "cache/run_pool.h"
 #include "core/vec3.h"
 
 namespace wardray::cache {
@@ -133,7 +134,7 @@ private:
         }
     };
     /// 24 bytes: the children are in a group of the filing's (most nodes are leaves and need none), and the blocks
-    /// in one allocation of exactly the blocks used (a few more in long lists).
+    /// in one run of the filing's pool of exactly the blocks used (a few more in long lists).
     struct Node {
         /// The records filed here in insertion order, four to a block, each field side by side for the scan (one
         /// allocation per node, read in order): position relative to the cube's min in units of its size, which
@@ -147,7 +148,7 @@ private:
             std::uint16_t radius[kBlock];
             std::uint32_t index[kBlock];
         };
-        std::unique_ptr<Block[]> blocks;
+        Block* blocks = nullptr;  ///< a run of block_capacity(block_count) in the filing's pool
         std::uint32_t block_count = 0;
         /// The index of this node's group of eight children in the filing's `children`; -1 for none.
         std::int32_t children = -1;
@@ -178,6 +179,7 @@ private:
         double reach = 1.0;
         ChunkedArray<Node> nodes;  ///< in chunks: no copy of every node and no doubled capacity as it grows
         ChunkedArray<Children> children;  ///< the children of the nodes that have any
+        RunPool<Node::Block> blocks;      ///< the nodes' blocks
         std::deque<std::vector<Node::Home>> home_lists;
         std::int32_t root = -1;
         Cube root_cube;
