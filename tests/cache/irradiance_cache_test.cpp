@@ -149,6 +149,38 @@ TEST(IrradianceCache, MemoryGrowsWithTheRecords) {
     }
 }
 
+// A lookup sums exactly the records a brute-force scan in insertion order accepts, in that order: the result is
+// bit for bit the same, at every error bound up to the reach, at depth 0 and 1 (whose filings differ).
+TEST(IrradianceCache, LookupIsBitForBitABruteForceScanInInsertionOrder) {
+    SplitMix64 rng(2024);
+    IrradianceCache cache(2, 0.6, {0.4, 0.2});
+    for (int i = 0; i < 4000; ++i) {
+        IrradianceRecord r = record_at({4 * rng.uniform(), 0.2 * rng.uniform(), 4 * rng.uniform()},
+                                       0.02 + 0.3 * rng.uniform(), i % 2);
+        r.normal = normalize(Vec3{0.3 * rng.uniform() - 0.15, 1, 0.3 * rng.uniform() - 0.15});
+        r.irradiance = {rng.uniform(), rng.uniform(), rng.uniform()};
+        for (int c = 0; c < 3; ++c) r.translational[c] = {rng.uniform() - 0.5, 0, rng.uniform() - 0.5};
+        cache.add(r);
+    }
+    int found = 0;
+    for (int qi = 0; qi < 3000; ++qi) {
+        const Vec3 q{4 * rng.uniform(), 0.2 * rng.uniform(), 4 * rng.uniform()};
+        const Vec3 n = normalize(Vec3{0.2 * rng.uniform() - 0.1, 1, 0.2 * rng.uniform() - 0.1});
+        const int depth = qi % 2;
+        LookupParams params;
+        params.error_bound = std::ldexp((qi % 7 + 1) * 0.6 / 7, depth);
+        InterpolationAccumulator brute(q, n, params);
+        for (const IrradianceRecord& r : cache.records(depth)) brute.add(r);
+        const Interpolation want = brute.result(), got = cache.lookup(q, n, depth, params);
+        ASSERT_EQ(got.records, want.records) << "query " << qi;
+        ASSERT_EQ(std::memcmp(&got.irradiance, &want.irradiance, sizeof got.irradiance), 0) << "query " << qi;
+        ASSERT_EQ(std::memcmp(&got.weight_sum, &want.weight_sum, sizeof got.weight_sum), 0) << "query " << qi;
+        ASSERT_EQ(std::memcmp(&got.coverage, &want.coverage, sizeof got.coverage), 0) << "query " << qi;
+        found += want.records > 1 ? 1 : 0;
+    }
+    EXPECT_GT(found, 200) << "too few lookups found several records to test the order";
+}
+
 TEST(IrradianceCache, NeighbourClampingAtInsertion) {
     IrradianceCache cache(1, 1.8);
     cache.add(record_at({0, 0, 0}, 4.0));
