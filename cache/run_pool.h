@@ -13,10 +13,10 @@ namespace wardray::cache {
 
 /// Runs of T (each contiguous, its address stable until released) for many small growing lists: carved from chunks
 /// of kChunk items, so that a run costs no allocator header or rounding, and a released run is kept on a free list
-/// of its length for the next run of that length. Lengths must be the values of one growth sequence (a list grows
-/// by taking a longer run and releasing its old one), which keeps the free lists few and busy: the class of a length
-/// n is n itself up to 8, then its power of two and which quarter of it. Runs longer than a chunk are allocated on
-/// their own. Not thread-safe for writing.
+/// of its length for the next run of that length, or split for a shorter one. Lengths must be 1 to 8 or a multiple of
+/// a quarter of their power of two (10, 12, 14, 16, 20, ...: a list grows by taking a longer run and releasing its
+/// old one), which keeps the free lists few and busy: the class of a length is itself up to 8, then its power of two
+/// and which quarter of it. Runs longer than a chunk are allocated on their own. Not thread-safe for writing.
 template <typename T, std::size_t kChunk = 4096>
 class RunPool {
     static_assert(std::is_trivially_copyable_v<T> && sizeof(T) >= sizeof(T*), "a free run holds a pointer");
@@ -33,10 +33,16 @@ public:
             m_large_items += n;
             return m_large.back().get();
         }
-        T*& head = m_free[length_class(n)];
-        if (head) {
-            T* run = head;
-            std::memcpy(static_cast<void*>(&head), static_cast<const void*>(run), sizeof(T*));
+        const std::size_t wanted = length_class(n);
+        if (m_free[wanted]) return pop(wanted);
+        // A longer free run, split into this one and a rest of a length the lists hold (most released runs are
+        // ones their nodes outgrew, which no new node asks for).
+        for (std::size_t c = wanted + 1; c < m_free.size(); ++c) {
+            if (!m_free[c]) continue;
+            const std::uint32_t rest = class_length(c) - n;
+            if (!is_length(rest)) continue;
+            T* run = pop(c);
+            release(run + n, rest);
             return run;
         }
         if (m_chunks.empty() || m_used + n > kChunk) {
@@ -74,6 +80,25 @@ private:
         if (n <= 8) return n;
         const int e = 31 - __builtin_clz(n);
         return 8 + 4 * static_cast<std::size_t>(e - 3) + ((n >> (e - 2)) & 3u);
+    }
+    /// The length of class c: length_class() inverted.
+    static std::uint32_t class_length(std::size_t c) {
+        if (c <= 8) return static_cast<std::uint32_t>(c);
+        const std::size_t e = (c - 8) / 4 + 3, quarter = (c - 8) % 4;
+        return static_cast<std::uint32_t>((std::size_t{4} + quarter) << (e - 2));
+    }
+    /// Whether n is a length of the sequence: up to 8, or a multiple of a quarter of its power of two.
+    static bool is_length(std::uint32_t n) {
+        if (n == 0) return false;
+        if (n <= 8) return true;
+        const int e = 31 - __builtin_clz(n);
+        return (n & ((std::uint32_t{1} << (e - 2)) - 1)) == 0;
+    }
+    /// The first free run of class c, taken off its list.
+    T* pop(std::size_t c) {
+        T* run = m_free[c];
+        std::memcpy(static_cast<void*>(&m_free[c]), static_cast<const void*>(run), sizeof(T*));
+        return run;
     }
 
     std::vector<std::unique_ptr<T[]>> m_chunks;
