@@ -19,8 +19,9 @@ using RecordArray = ChunkedArray<IrradianceRecord>;
 
 /// Records of one bounce depth, each filed by the sphere of radius reach × R_i around its position
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
-/// are at least as wide as its sphere's radius and that its sphere's box overlaps (at most 27), so a lookup only
-/// walks from the root to the leaf holding the query point and tests each record it meets at most once.
+/// are at least as wide as its sphere's diameter (in the first filing: its radius) and that its sphere's box overlaps
+/// (at most 8; 27), so a lookup only walks from the root to the leaf holding the query point and tests each record it
+/// meets at most once.
 /// The records are filed three times, at reach and at two smaller fractions of it (by default 1/2 and 1/4; the cache
 /// chooses the error bounds its lookups use), so that a lookup walks a filing whose spheres are not much larger than
 /// its validity spheres: the candidates a node holds grow with the cube of that ratio.
@@ -137,12 +138,12 @@ private:
     /// in one run of the filing's pool of exactly the blocks used (a few more in long lists).
     struct Node {
         /// The records filed here in insertion order, four to a block, each field side by side for the scan (one
-        /// allocation per node, read in order): position relative to the cube's min in units of its size, which
-        /// lies in [-1, 2] (the filed sphere overlaps the cube and is at most as wide), as 16-bit fixed point
-        /// (kPositionScale steps a unit, rounded to nearest); the filed sphere's radius reach × R_i at filing in
-        /// units of the size, in (0, 1], as 16-bit fixed point rounded up; and the index. 12 bytes an entry,
-        /// against 40 in doubles, for up to 27 entries a record in each of three filings. The last block's unused
-        /// lanes have index kNoRecord, radius 0 and a position no query is near.
+        /// run per node, read in order): position relative to the cube's min in units of its size, which lies in
+        /// [-1, 2] (the filed sphere overlaps the cube and its radius is at most the cube's size), as 16-bit fixed
+        /// point (kPositionScale steps a unit, rounded to nearest); the filed sphere's radius reach × R_i at filing
+        /// in units of the size, in (0, 1], as 16-bit fixed point rounded up; and the index. 12 bytes an entry,
+        /// against 40 in doubles. The last block's unused lanes have index kNoRecord, radius 0 and a position no
+        /// query is near.
         struct alignas(16) Block {
             std::uint16_t x[kBlock], y[kBlock], z[kBlock];
             std::uint16_t radius[kBlock];
@@ -198,8 +199,9 @@ private:
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
             const int octant = cube.octant_of(q);
-            const std::int32_t next =
-                n.children < 0 ? -1 : f.children[static_cast<std::size_t>(n.children)][static_cast<std::size_t>(octant)];
+            const std::int32_t next = n.children < 0 ? -1
+                                                     : f.children[static_cast<std::size_t>(n.children)]
+                                                                 [static_cast<std::size_t>(octant)];
             // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
             if (next >= 0) __builtin_prefetch(&f.nodes[static_cast<std::size_t>(next)]);
             at(n, cube);

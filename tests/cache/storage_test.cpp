@@ -1,4 +1,4 @@
-// Tests of the cache's storage: ChunkedArray keeps order and addresses, RunPool hands out disjoint runs and reuses them.
+// Tests of the cache's storage: ChunkedArray keeps order and addresses; RunPool gives disjoint runs and reuses them.
 #include "cache/chunked_array.h"
 #include "cache/run_pool.h"
 
