@@ -208,7 +208,7 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
                 n.home_list = static_cast<std::int32_t>(f.home_lists.size());
                 f.home_lists.emplace_back();
             }
-            f.home_lists[static_cast<std::size_t>(n.home_list)].push_back({record.position, index});
+            f.home_lists[static_cast<std::size_t>(n.home_list)].push_back(index);
         }
         return;
     }
@@ -272,9 +272,10 @@ void RecordOctree::clamp_within(std::int32_t node, const Cube& cube, const Vec3&
     // A record is filed in up to 27 nodes; it is tested only in the one that holds its position. Only records
     // closer than the bound can lower it (R_i > 0).
     if (n.home_list >= 0) {
-        for (const Node::Home& h : f.home_lists[static_cast<std::size_t>(n.home_list)]) {
-            const double d = length(h.position - centre);
-            if (d < bound) bound = std::min(bound, m_records[h.index].radius + d);
+        for (const std::uint32_t home : f.home_lists[static_cast<std::size_t>(n.home_list)]) {
+            const RecordGeometry& g = m_geometry[home];
+            const double d = length(g.position - centre);
+            if (d < bound) bound = std::min(bound, g.radius + d);
         }
     }
     // The child holding the centre first: its records are the likeliest to lower the bound for the others.
@@ -306,7 +307,7 @@ std::size_t RecordOctree::memory_bytes() const {
     std::size_t bytes = m_records.memory_bytes() + m_geometry.memory_bytes();
     for (const Filing& f : m_filings) {
         bytes += f.nodes.memory_bytes() + f.children.memory_bytes() + f.blocks.memory_bytes();
-        for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(Node::Home);
+        for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(std::uint32_t);
     }
     return bytes;
 }

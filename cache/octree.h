@@ -153,14 +153,9 @@ private:
         std::uint32_t block_count = 0;
         /// The index of this node's group of eight children in the filing's `children`; -1 for none.
         std::int32_t children = -1;
-        /// Of those, the records whose position lies in this node's cube (each record has one such home node in
-        /// the first filing), so that range queries test each record once; positions packed for the scan.
-        /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
-        /// none.)
-        struct Home {
-            Vec3 position;
-            std::uint32_t index = 0;
-        };
+        /// Of those, the indices of the records whose position lies in this node's cube (each record has one such
+        /// home node in the first filing), so that range queries test each record once. (Kept in the filing's
+        /// home_lists, since only the first filing has them: `home_list` indexes it, -1 for none.)
         std::int32_t home_list = -1;
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
@@ -181,7 +176,7 @@ private:
         ChunkedArray<Node> nodes;  ///< in chunks: no copy of every node and no doubled capacity as it grows
         ChunkedArray<Children> children;  ///< the children of the nodes that have any
         RunPool<Node::Block> blocks;      ///< the nodes' blocks
-        std::deque<std::vector<Node::Home>> home_lists;
+        std::deque<std::vector<std::uint32_t>> home_lists;
         std::int32_t root = -1;
         Cube root_cube;
     };
