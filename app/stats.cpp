@@ -21,7 +21,7 @@ const char* gi_name(lighting::GiMode mode) {
     return "off";
 }
 
-// The cache's records per pass and depth, lookups, hit rate, mean radius and rays per record; null without one.
+// The cache's records per pass and depth, lookups, hit rate, mean radius, memory and rays per record; null without one.
 nlohmann::json cache_stats(const cache::IrradianceCache* irradiance_cache, const lighting::RayCounters& rays) {
     if (!irradiance_cache) return nullptr;
     const cache::CacheStatistics cs = irradiance_cache->statistics();
@@ -35,6 +35,7 @@ nlohmann::json cache_stats(const cache::IrradianceCache* irradiance_cache, const
             {"hits", cs.hits},
             {"hit_rate", cs.hit_rate()},
             {"mean_radius", cs.mean_radius},
+            {"memory_bytes", cs.memory_bytes},
             {"rays_per_record", rays_per_record}};
 }
 

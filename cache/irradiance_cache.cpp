@@ -296,7 +296,7 @@ std::vector<std::size_t> IrradianceCache::sizes() const {
     return out;
 }
 
-const std::vector<IrradianceRecord>& IrradianceCache::records(int depth) const {
+const RecordArray& IrradianceCache::records(int depth) const {
     return m_octrees.at(static_cast<std::size_t>(depth)).records();
 }
 
@@ -331,7 +331,10 @@ CacheStatistics IrradianceCache::statistics() const {
     for (const RecordOctree& tree : m_octrees) {
         for (const IrradianceRecord& r : tree.records()) radius_sum += r.radius;
         s.total_records += tree.size();
+        s.memory_bytes += tree.memory_bytes();
     }
+    for (const auto& tile : m_tiles)
+        for (const RecordOctree& own : tile->m_own) s.memory_bytes += own.memory_bytes();
     if (s.total_records > 0) s.mean_radius = radius_sum / static_cast<double>(s.total_records);
     return s;
 }

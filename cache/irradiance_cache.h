@@ -26,6 +26,7 @@ struct CacheStatistics {
     std::uint64_t hits = 0;     ///< of those, lookups that found enough records (Interpolation::sufficient)
     std::uint64_t total_records = 0;
     double mean_radius = 0.0;  ///< over all records, world units
+    std::uint64_t memory_bytes = 0;  ///< what the octrees and the open pass's tile views have allocated
 
     double hit_rate() const { return lookups > 0 ? static_cast<double>(hits) / static_cast<double>(lookups) : 0.0; }
 };
@@ -122,7 +123,7 @@ public:
     /// Inserts one record outside a pass, with neighbour clamping (std::logic_error inside a pass).
     void add(const IrradianceRecord& record);
     /// The records of `depth` in insertion order.
-    const std::vector<IrradianceRecord>& records(int depth) const;
+    const RecordArray& records(int depth) const;
     /// Keeps only the records `keep` accepts, each depth's in its order, refiled as they are (no neighbour
     /// clamping): a cache carried to the next frame of an animation without the records that frame invalidates.
     /// Returns how many were dropped. Outside a pass (std::logic_error inside one).

@@ -4,17 +4,24 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
+#include "cache/chunked_array.h"
 #include "cache/irradiance_record.h"
+#include "cache/run_pool.h"
 #include "core/vec3.h"
 
 namespace wardray::cache {
 
+/// Records in insertion order, in chunks: growing never copies them all or doubles their memory.
+using RecordArray = ChunkedArray<IrradianceRecord>;
+
 /// Records of one bounce depth, each filed by the sphere of radius reach × R_i around its position
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
-/// are at least as wide as its sphere's radius and that its sphere's box overlaps (at most 27), so a lookup only
-/// walks from the root to the leaf holding the query point and tests each record it meets at most once.
+/// are at least as wide as its sphere's diameter (in the first filing: its radius) and that its sphere's box overlaps
+/// (at most 8; 27), so a lookup only walks from the root to the leaf holding the query point and tests each record it
+/// meets at most once.
 /// The records are filed three times, at reach and at two smaller fractions of it (by default 1/2 and 1/4; the cache
 /// chooses the error bounds its lookups use), so that a lookup walks a filing whose spheres are not much larger than
 /// its validity spheres: the candidates a node holds grow with the cube of that ratio.
@@ -32,7 +39,7 @@ public:
     /// non-finite position or radius is kept but never found.
     std::uint32_t insert(const IrradianceRecord& record);
     /// Every record in insertion order.
-    const std::vector<IrradianceRecord>& records() const { return m_records; }
+    const RecordArray& records() const { return m_records; }
     /// The position, normal and radius of record `index`, packed (what lookups test before reading the record).
     const RecordGeometry& geometry(std::uint32_t index) const { return m_geometry[index]; }
     /// Neighbour clamping: record `index`'s radius becomes `radius` when that is smaller (the filing stays
@@ -41,6 +48,9 @@ public:
         if (radius < m_records[index].radius) m_records[index].radius = m_geometry[index].radius = radius;
     }
     std::size_t size() const { return m_records.size(); }
+    /// The bytes this octree has allocated (records, packed geometry, nodes, entries and homes, by capacity; not the
+    /// allocator's own overhead): what --stats reports as the cache's memory.
+    std::size_t memory_bytes() const;
     double reach() const { return m_filings.front().reach; }
 
     /// Calls `visit(index)` for each record whose filed sphere may contain `q` (a superset of the records valid at q
@@ -48,8 +58,8 @@ public:
     template <typename Visit>
     void visit(const Vec3& q, Visit&& visit) const {
         walk(m_filings.front(), q, [&](const Node& n, const Cube&) {
-            for (const Node::Block& b : n.blocks)
-                for (const std::uint32_t index : b.index)
+            for (std::uint32_t i = 0; i < n.block_count; ++i)
+                for (const std::uint32_t index : n.blocks[i].index)
                     if (index != kNoRecord) visit(index);
         });
     }
@@ -64,8 +74,8 @@ public:
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
-            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, cube, q, error_bound, begin, near);
+            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
+                const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
                 // The candidates' geometry is fetched together, not one miss after another.
                 for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
                 for (std::size_t i = 0; i < found; ++i) {
@@ -87,8 +97,8 @@ public:
             if (f.reach >= 1.0 && f.reach < filing->reach) filing = &f;
         std::uint32_t near[kScanBlocks * kBlock];
         walk(*filing, q, [&](const Node& n, const Cube& cube) {
-            for (std::size_t begin = 0; begin < n.blocks.size(); begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, cube, q, 1.0, begin, near);
+            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
+                const std::size_t found = scan_near(n, cube, q, 1.0, filing->reach, begin, near);
                 for (std::size_t i = 0; i < found; ++i) visit(near[i]);
             }
         });
@@ -124,38 +134,49 @@ private:
                     half};
         }
     };
-    /// One cache line (with a 24-byte vector), so that a walk reads one line per node.
-    struct alignas(64) Node {
-        std::array<std::int32_t, 8> children{-1, -1, -1, -1, -1, -1, -1, -1};
-        /// The records filed here in insertion order, four to a block: position relative to the cube's min and
-        /// radius at filing, both in units of its size, as floats (the radius rounded up), and index, each field side by side for the scan (one
-        /// allocation per node, read in order): 20 bytes an entry, against 40 in doubles, for up to 27 entries a
-        /// record in each of three filings. The last block's unused lanes have index kNoRecord and a position
-        /// no query is near.
+    /// 24 bytes: the children are in a group of the filing's (most nodes are leaves and need none), and the blocks
+    /// in one run of the filing's pool of exactly the blocks used (a few more in long lists).
+    struct Node {
+        /// The records filed here in insertion order, four to a block, each field side by side for the scan (one
+        /// run per node, read in order): position relative to the cube's min in units of its size, which lies in
+        /// [-1, 2] (the filed sphere overlaps the cube and its radius is at most the cube's size), as 16-bit fixed
+        /// point (kPositionScale steps a unit, rounded to nearest); the filed sphere's radius reach × R_i at filing
+        /// in units of the size, in (0, 1], as 16-bit fixed point rounded up; and the index. 12 bytes an entry,
+        /// against 40 in doubles. The last block's unused lanes have index kNoRecord, radius 0 and a position no
+        /// query is near.
         struct alignas(16) Block {
-            float x[kBlock], y[kBlock], z[kBlock];
-            float radius[kBlock];
+            std::uint16_t x[kBlock], y[kBlock], z[kBlock];
+            std::uint16_t radius[kBlock];
             std::uint32_t index[kBlock];
         };
-        std::vector<Block> blocks;
-        /// Of those, the records whose position lies in this node's cube (each record has one such home node in
-        /// the first filing), so that range queries test each record once; positions packed for the scan.
-        /// (Kept in the filing's home_lists, since only the first filing has them: `home_list` indexes it, -1 for
-        /// none.)
-        struct Home {
-            Vec3 position;
-            std::uint32_t index = 0;
-        };
+        Block* blocks = nullptr;  ///< a run of block_capacity(block_count) in the filing's pool
+        std::uint32_t block_count = 0;
+        /// The index of this node's group of eight children in the filing's `children`; -1 for none.
+        std::int32_t children = -1;
+        /// Of those, the indices of the records whose position lies in this node's cube (each record has one such
+        /// home node in the first filing), so that range queries test each record once. (Kept in the filing's
+        /// home_lists, since only the first filing has them: `home_list` indexes it, -1 for none.)
         std::int32_t home_list = -1;
         /// How many homes this node and the nodes below it hold (first filing): clamping skips empty subtrees.
         std::uint32_t subtree_homes = 0;
     };
-    static_assert(sizeof(Node) == 64 || sizeof(void*) != 8, "a node no longer fits one cache line");
+    static_assert(sizeof(Node) == 24 || sizeof(void*) != 8, "a node has grown");
+    /// The blocks allocated for a node of `count` blocks: all of them up to 8, then up to a quarter more, so that
+    /// growing a long list copies it only now and then.
+    static std::uint32_t block_capacity(std::uint32_t count) {
+        if (count <= 8) return count;
+        const std::uint32_t step = (std::uint32_t{1} << (31 - __builtin_clz(count))) / 4;
+        return (count + step - 1) / step * step;
+    }
+    /// A node's eight children (-1: none).
+    using Children = std::array<std::int32_t, 8>;
     /// The nodes of one filing of every record, by spheres of radius reach × R_i.
     struct Filing {
         double reach = 1.0;
-        std::deque<Node> nodes;  ///< a deque: no copy of every node and no doubled capacity as it grows
-        std::deque<std::vector<Node::Home>> home_lists;
+        ChunkedArray<Node> nodes;  ///< in chunks: no copy of every node and no doubled capacity as it grows
+        ChunkedArray<Children> children;  ///< the children of the nodes that have any
+        RunPool<Node::Block> blocks;      ///< the nodes' blocks
+        std::deque<std::vector<std::uint32_t>> home_lists;
         std::int32_t root = -1;
         Cube root_cube;
     };
@@ -173,7 +194,9 @@ private:
         while (node >= 0) {
             const Node& n = f.nodes[static_cast<std::size_t>(node)];
             const int octant = cube.octant_of(q);
-            const std::int32_t next = n.children[static_cast<std::size_t>(octant)];
+            const std::int32_t next = n.children < 0 ? -1
+                                                     : f.children[static_cast<std::size_t>(n.children)]
+                                                                 [static_cast<std::size_t>(octant)];
             // The next node is fetched while this one is scanned (a walk is a chain of dependent loads).
             if (next >= 0) __builtin_prefetch(&f.nodes[static_cast<std::size_t>(next)]);
             at(n, cube);
@@ -184,9 +207,10 @@ private:
 
     /// How many blocks visit_near() tests in one scan.
     static constexpr std::size_t kScanBlocks = 16;
-    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` that may lie within
-    /// error_bound × radius of q (a superset: the test is widened by the floats' rounding); returns how many.
-    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound,
+    /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` (in a filing of
+    /// `reach`) that may lie within error_bound × radius of q (a superset: the test is widened by the fixed point's
+    /// and the floats' rounding); returns how many.
+    static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound, double reach,
                                  std::size_t begin, std::uint32_t* near);
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
     static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
@@ -195,8 +219,8 @@ private:
                      const Cube& cube, const Vec3& lo, const Vec3& hi, double target_size);
     void clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const;
 
-    std::vector<IrradianceRecord> m_records;
-    std::vector<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
+    RecordArray m_records;
+    ChunkedArray<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
     std::array<double, 2> m_inner{0.5, 0.25};
     std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };

@@ -1,0 +1,96 @@
+// lookup_bench: times irradiance-cache lookups on a cache saved by +RFO, with a checksum of every result.
+//   lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] [--recursion-limit N] [--rounds R]
+// The cache is loaded into a cache made for those radiosity settings (the scene's: they choose its filings); then,
+// for each record, lookups near it at its depth as the pretrace, the final pass and a low-weight ray make them.
+// Prints the load time, nanoseconds per lookup (best of the rounds), the cache's bytes and a checksum of the
+// results, which two builds must print alike when they find the same records in the same order.
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cache/interpolation.h"
+#include "cache/irradiance_cache.h"
+
+namespace {
+
+using namespace wardray;
+
+struct Query {
+    Vec3 p, n;
+    int depth;
+    cache::LookupParams params;
+};
+
+std::uint64_t mix(std::uint64_t h, double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    return (h ^ bits) * 0x100000001B3ULL;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] "
+                             "[--recursion-limit N] [--rounds R]\n");
+        return 2;
+    }
+    scene::RadiositySettings settings;
+    int rounds = 5;
+    for (int i = 2; i + 1 < argc; i += 2) {
+        const std::string flag = argv[i];
+        const double value = std::atof(argv[i + 1]);
+        if (flag == "--error-bound") settings.error_bound = value;
+        else if (flag == "--low-error-factor") settings.low_error_factor = value;
+        else if (flag == "--recursion-limit") settings.recursion_limit = static_cast<int>(value);
+        else if (flag == "--rounds") rounds = static_cast<int>(value);
+    }
+    cache::IrradianceCache cache(settings);
+    std::ifstream in(argv[1], std::ios::binary);
+    const auto load_start = std::chrono::steady_clock::now();
+    cache.load(in);
+    const double load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - load_start).count();
+
+    // Queries: a fixed pseudo-random offset within half a radius of each record, in its tangent plane's
+    // neighbourhood, at the three kinds of lookup.
+    std::vector<Query> queries;
+    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+    auto uniform = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<double>(state >> 11) * 0x1p-53;
+    };
+    for (int d = 0; d < cache.depth_count(); ++d) {
+        for (const cache::IrradianceRecord& r : cache.records(d)) {
+            const Vec3 offset = Vec3{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5} * r.radius;
+            for (const auto& [final_pass, weight] :
+                 {std::pair{false, 1.0}, std::pair{true, 1.0}, std::pair{true, 0.1}}) {
+                queries.push_back(
+                    {r.position + offset, r.normal, d, cache::lookup_params(settings, d, final_pass, weight)});
+            }
+        }
+    }
+    double best = 1e300;
+    std::uint64_t checksum = 0;
+    for (int round = 0; round < rounds; ++round) {
+        std::uint64_t h = 0xCBF29CE484222325ULL;
+        const auto start = std::chrono::steady_clock::now();
+        for (const Query& q : queries) {
+            const cache::Interpolation r = cache.lookup(q.p, q.n, q.depth, q.params);
+            h = mix(mix(mix(mix(h, r.irradiance.x), r.irradiance.y), r.irradiance.z), r.weight_sum);
+            h = mix(h, static_cast<double>(r.records));
+        }
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        best = std::min(best, seconds);
+        checksum = h;
+    }
+    const cache::CacheStatistics stats = cache.statistics();
+    std::printf("records %llu queries %zu load %.3f s lookup %.1f ns (best of %d) checksum %016llx\n",
+                static_cast<unsigned long long>(stats.total_records), queries.size(), load_seconds,
+                1e9 * best / static_cast<double>(queries.size()), rounds, static_cast<unsigned long long>(checksum));
+    return 0;
+}
