@@ -133,19 +133,23 @@ const SkipReason& last_skip_reason() { return t_skip; }
 
 int max_csg_depth() { return k_max_csg_depth; }
 
-ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index)
+ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index,
+                             ObjectLifetime lifetime)
     : m_shape(std::move(shape)),
-      m_transform(object.transform),
+      m_transform(&object.transform),
+      m_own_transform(lifetime == ObjectLifetime::Outlives ? nullptr : std::make_shared<const Transform>(object.transform)),
       m_object(&object),
       m_index(index),
       m_inverse(object.inverse),
       m_no_shadow(object.no_shadow),
       m_no_image(object.no_image),
       m_no_reflection(object.no_reflection),
-      m_no_radiosity(object.no_radiosity) {}
+      m_no_radiosity(object.no_radiosity) {
+    if (m_own_transform) m_transform = m_own_transform.get();
+}
 
 std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
-                                                   bool flip_inverse) {
+                                                   bool flip_inverse, ObjectLifetime lifetime) {
     // A top-level create starts with no reason recorded; the parts it builds record theirs.
     if (t_create_depth == 0) t_skip_set = false;
     const CreateDepthGuard nesting;
@@ -161,8 +165,8 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     const CsgDepthGuard depth(csg != nullptr);
     if (t_csg_depth > k_max_csg_depth) return refuse(object, true);
     std::optional<AnyShape> shape;
-    if (csg && inverted) {
-        if (auto c = CsgShape::create(*csg, true)) shape = AnyShape(std::move(*c));
+    if (csg) {
+        if (auto c = CsgShape::create(*csg, inverted, lifetime)) shape = AnyShape(std::move(*c));
     } else {
         shape = make_shape(object.shape);
     }
@@ -170,7 +174,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     // POV-Ray compat: an inverted plane is the plane with its normal and distance negated (Plane::Invert).
     const auto* plane = std::get_if<PlaneShape>(&*shape);
     if (plane && inverted) shape = AnyShape(plane->inverted());
-    ShapeInstance inst(std::move(*shape), object, index);
+    ShapeInstance inst(std::move(*shape), object, index, lifetime);
     inst.m_inverse = inverted && !csg && !plane;
     // POV-Ray compat: a cylinder meets rays and answers inside tests through POV-Ray's one matrix to its unit
     // cylinder (clipped ones keep the object-space path their clips need).
@@ -184,7 +188,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         // one, within the clips'.
         if (const auto* q = std::get_if<QuadricShape>(&inst.m_shape)) local = q->clipped_bounds();
         for (const scene::Object& c : object.clipped_by) {
-            auto ci = create(c, index);
+            auto ci = create(c, index, false, lifetime);
             if (!ci) return refuse(c, false);
             local = intersect_bounds(local, ci->region_bounds());
             region = intersect_bounds(region, ci->region_bounds());
@@ -198,7 +202,7 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     if (!object.bounded_by.empty()) {
         auto bounds = std::make_shared<std::vector<ShapeInstance>>();
         for (const scene::Object& b : object.bounded_by) {
-            auto bi = create(b, index);
+            auto bi = create(b, index, false, lifetime);
             if (!bi) return refuse(b, false);
             bounds->push_back(std::move(*bi));
         }
@@ -235,7 +239,7 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
             return {};
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
     if (m_bounds && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
@@ -260,7 +264,7 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
 }
 
 std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
-    const Vec3 n = normalize(m_transform.normal(h.normal));
+    const Vec3 n = normalize(m_transform->normal(h.normal));
     if (!is_finite(n) || !std::isfinite(h.t)) return std::nullopt;
     return SurfaceHit{h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object};
 }
@@ -268,7 +272,7 @@ std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
 bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     // POV-Ray compat (Ray_In_Bound): the whole ray counts, from MIN_ISECT_DEPTH (1e-4 along the unit direction) on,
     // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
-    const double t_start = 1e-4 / length(m_transform.vector(ray.direction));
+    const double t_start = 1e-4 / length(m_transform->vector(ray.direction));
     for (const ShapeInstance& b : *m_bounds)
         if (!b.inside(ray.origin) && !b.crosses(ray.origin, ray.direction, t_start, INFINITY))
             return false;
@@ -294,7 +298,7 @@ bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std:
                                  double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
     return mesh->face_crossed(local, face, t_min, t_max);
 }
 
@@ -306,7 +310,7 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
 }
 
 Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
-    const Vec3 n = normalize(m_transform.normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    const Vec3 n = normalize(m_transform->normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
     return m_inverse ? -n : n;
 }
 
@@ -314,7 +318,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
                                   double t_max, Hit& out, const Vec3* flat_normals) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
     MeshShape::FaceCrossing c;
     if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
     const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
@@ -334,7 +338,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {
-    const Vec3 p = m_transform.inverse_point(p_world);
+    const Vec3 p = m_transform->inverse_point(p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
     if (m_clips)
         for (const ShapeInstance& c : *m_clips)
@@ -346,7 +350,7 @@ bool ShapeInstance::inside(const Vec3& p_world) const {
 }
 
 double ShapeInstance::object_implicit(const Vec3& p_world) const {
-    const Vec3 p = m_transform.inverse_point(p_world);
+    const Vec3 p = m_transform->inverse_point(p_world);
     return std::visit([&](const auto& s) { return s.implicit(p); }, m_shape);
 }
 

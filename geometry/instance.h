@@ -51,9 +51,11 @@ class ShapeInstance {
 public:
     /// Returns nothing for objects that cannot be drawn without NaN: singular transforms, degenerate shapes,
     /// non-finite parameters or bounds. `index` is the object's position in scene::Scene::objects;
-    /// `flip_inverse` inverts the object once more (the subtracted children of a difference).
+    /// `flip_inverse` inverts the object once more (the subtracted children of a difference). With `lifetime`
+    /// Outlives the instance points at the object's transform, else it keeps a copy.
     static std::optional<ShapeInstance> create(const scene::Object& object, std::uint32_t index,
-                                               bool flip_inverse = false);
+                                               bool flip_inverse = false,
+                                               ObjectLifetime lifetime = ObjectLifetime::MayEnd);
 
     /// Surface crossings of the ray with t in (t_min, t_max); normals are unit, in the parent's space, pointing
     /// out of the object (inverse objects flip them and the entering flags); `leaf` names the primitive hit.
@@ -113,7 +115,7 @@ public:
     }
     /// The object's index in scene::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
-    const Transform& transform() const { return m_transform; }
+    const Transform& transform() const { return *m_transform; }
     /// The shape in object space.
     const AnyShape& shape() const { return m_shape; }
     /// True when its inside and outside are swapped (`inverse`, or a subtracted child of a difference).
@@ -122,12 +124,14 @@ public:
     bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
 
 private:
-    ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index);
+    ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index, ObjectLifetime lifetime);
     /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.
     bool ray_in_bounds(const LocalRay& ray) const;
 
     AnyShape m_shape;
-    Transform m_transform;
+    /// The object-to-parent transform: the scene object's own, or m_own_transform's copy.
+    const Transform* m_transform = nullptr;
+    std::shared_ptr<const Transform> m_own_transform;
     std::optional<Bounds> m_world_bounds;
     std::optional<Bounds> m_region_bounds;
     std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point

@@ -88,7 +88,7 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
         plain_meshes += std::holds_alternative<scene::Mesh>(o.shape) && o.clipped_by.empty() && o.bounded_by.empty();
     impl.bounded.reserve(scene.objects.size() - plain_meshes);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        auto inst = ShapeInstance::create(scene.objects[i], i);
+        auto inst = ShapeInstance::create(scene.objects[i], i, false, ObjectLifetime::Outlives);
         if (!inst) {
             impl.skipped.push_back(i);
             impl.skip_reasons.push_back(last_skip_reason());
