@@ -133,19 +133,21 @@ const SkipReason& last_skip_reason() { return t_skip; }
 
 int max_csg_depth() { return k_max_csg_depth; }
 
-ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index,
-                             ObjectLifetime lifetime)
+ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index)
     : m_shape(std::move(shape)),
       m_transform(&object.transform),
-      m_own_transform(lifetime == ObjectLifetime::Outlives ? nullptr : std::make_shared<const Transform>(object.transform)),
       m_object(&object),
       m_index(index),
       m_inverse(object.inverse),
       m_no_shadow(object.no_shadow),
       m_no_image(object.no_image),
       m_no_reflection(object.no_reflection),
-      m_no_radiosity(object.no_radiosity) {
-    if (m_own_transform) m_transform = m_own_transform.get();
+      m_no_radiosity(object.no_radiosity) {}
+
+void ShapeInstance::cull_by_bounds() { m_cull_by_bounds = m_parts && !m_parts->clips.empty() && m_world_bounds.has_value(); }
+
+bool ShapeInstance::is_plain_mesh() const {
+    return std::holds_alternative<MeshShape>(m_shape) && (!m_parts || (m_parts->clips.empty() && m_parts->bounds.empty()));
 }
 
 std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
@@ -174,7 +176,13 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     // POV-Ray compat: an inverted plane is the plane with its normal and distance negated (Plane::Invert).
     const auto* plane = std::get_if<PlaneShape>(&*shape);
     if (plane && inverted) shape = AnyShape(plane->inverted());
-    ShapeInstance inst(std::move(*shape), object, index, lifetime);
+    ShapeInstance inst(std::move(*shape), object, index);
+    // What few instances have: clips, bounds, and the copy of a transform whose object may not live on.
+    std::shared_ptr<Parts> parts;
+    auto more = [&]() -> Parts& {
+        if (!parts) parts = std::make_shared<Parts>();
+        return *parts;
+    };
     inst.m_inverse = inverted && !csg && !plane;
     // POV-Ray compat: a cylinder meets rays and answers inside tests through POV-Ray's one matrix to its unit
     // cylinder (clipped ones keep the object-space path their clips need).
@@ -183,7 +191,8 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
     if (!object.clipped_by.empty()) {
         // Only the parts of the surface inside every clipping object remain.
-        auto clips = std::make_shared<std::vector<ShapeInstance>>();
+        std::vector<ShapeInstance>& clips = more().clips;
+        clips.reserve(object.clipped_by.size());
         // POV-Ray compat (Quadric::Compute_BBox at clipped_by): a clipped quadric's box is its own where it has
         // one, within the clips'.
         if (const auto* q = std::get_if<QuadricShape>(&inst.m_shape)) local = q->clipped_bounds();
@@ -192,24 +201,23 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
             if (!ci) return refuse(c, false);
             local = intersect_bounds(local, ci->region_bounds());
             region = intersect_bounds(region, ci->region_bounds());
-            clips->push_back(std::move(*ci));
+            clips.push_back(std::move(*ci));
         }
-        inst.m_clips = std::move(clips);
         inst.keep_all_crossings();
         if (local && local->empty()) local = Bounds{local->lower, local->lower};
         if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
     if (!object.bounded_by.empty()) {
-        auto bounds = std::make_shared<std::vector<ShapeInstance>>();
+        std::vector<ShapeInstance>& bounds = more().bounds;
+        bounds.reserve(object.bounded_by.size());
         for (const scene::Object& b : object.bounded_by) {
             auto bi = create(b, index, false, lifetime);
             if (!bi) return refuse(b, false);
-            bounds->push_back(std::move(*bi));
+            bounds.push_back(std::move(*bi));
         }
-        inst.m_bounds = std::move(bounds);
     }
     const auto* sphere = std::get_if<SphereShape>(&inst.m_shape);
-    if (sphere && !inst.m_clips) {
+    if (sphere && object.clipped_by.empty()) {
         inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
     } else if (local) {
         inst.m_world_bounds = transform_bounds(*local, xf);
@@ -218,6 +226,11 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     if (inst.m_world_bounds &&
         (!is_finite(inst.m_world_bounds->lower) || !is_finite(inst.m_world_bounds->upper)))
         return refuse(object, false);
+    if (lifetime == ObjectLifetime::MayEnd) {
+        more().transform = object.transform;
+        inst.m_transform = &*parts->transform;
+    }
+    inst.m_parts = std::move(parts);
     return inst;
 }
 
@@ -240,7 +253,7 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
     const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
-    if (m_bounds && !ray_in_bounds(local)) return {};
+    if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
             if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ConeShape>)
@@ -252,12 +265,12 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
             else return s.intersect_all(local, t_min, t_max);
         },
         m_shape);
-    if (!m_clips) return object_hits;
+    if (!m_parts || m_parts->clips.empty()) return object_hits;
     SurfaceHits kept;
     for (const SurfaceHit& h : object_hits) {
         const Vec3 p = local.origin + h.t * local.direction;
         bool inside_clips = true;
-        for (const ShapeInstance& c : *m_clips) inside_clips = inside_clips && c.inside(p);
+        for (const ShapeInstance& c : m_parts->clips) inside_clips = inside_clips && c.inside(p);
         if (inside_clips) kept.push(h);
     }
     return kept;
@@ -273,7 +286,7 @@ bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     // POV-Ray compat (Ray_In_Bound): the whole ray counts, from MIN_ISECT_DEPTH (1e-4 along the unit direction) on,
     // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
     const double t_start = 1e-4 / length(m_transform->vector(ray.direction));
-    for (const ShapeInstance& b : *m_bounds)
+    for (const ShapeInstance& b : m_parts->bounds)
         if (!b.inside(ray.origin) && !b.crosses(ray.origin, ray.direction, t_start, INFINITY))
             return false;
     return true;
@@ -340,8 +353,8 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
 bool ShapeInstance::inside(const Vec3& p_world) const {
     const Vec3 p = m_transform->inverse_point(p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
-    if (m_clips)
-        for (const ShapeInstance& c : *m_clips)
+    if (m_parts)
+        for (const ShapeInstance& c : m_parts->clips)
             if (!c.inside(p)) return false;
     const auto* cone = std::get_if<ConeShape>(&m_shape);
     const bool in = cone && cone->placed() ? cone->inside_parent(p_world)

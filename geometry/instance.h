@@ -98,7 +98,7 @@ public:
     /// POV-Ray compat (Find_Intersection): a top-level object is tested only on rays that meet its bounding box,
     /// which changes the picture only where a clipped surface leaves its clip's box (a cylinder clipped by a
     /// height field, whose inside reaches down without end); set for the clipped top-level objects.
-    void cull_by_bounds() { m_cull_by_bounds = m_clips != nullptr && m_world_bounds.has_value(); }
+    void cull_by_bounds();
     /// Bounds of the surface, or nothing when the surface is unbounded (planes, quadrics).
     const std::optional<Bounds>& world_bounds() const { return m_world_bounds; }
     /// Bounds of the inside region, or nothing when it is unbounded (inverse objects, planes, discs).
@@ -121,22 +121,22 @@ public:
     /// True when its inside and outside are swapped (`inverse`, or a subtracted child of a difference).
     bool inverse() const { return m_inverse; }
     /// True when the object is a mesh without clipping or bounds, which Embree can trace as native triangles.
-    bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
+    bool is_plain_mesh() const;
 
 private:
-    ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index, ObjectLifetime lifetime);
+    struct Parts;
+    ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index);
     /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.
     bool ray_in_bounds(const LocalRay& ray) const;
 
     AnyShape m_shape;
-    /// The object-to-parent transform: the scene object's own, or m_own_transform's copy.
+    /// The object-to-parent transform: the scene object's own, or a copy in m_parts.
     const Transform* m_transform = nullptr;
-    std::shared_ptr<const Transform> m_own_transform;
     std::optional<Bounds> m_world_bounds;
     std::optional<Bounds> m_region_bounds;
-    std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point
-    /// `bounded_by`, in object space: POV-Ray compat, the shape is hit only by rays that meet (or start in) all.
-    std::shared_ptr<const std::vector<ShapeInstance>> m_bounds;
+    /// What few instances have, shared by copies: clipping objects, `bounded_by` objects, the copy of the
+    /// transform; nothing for most instances of a scene.
+    std::shared_ptr<const Parts> m_parts;
     const scene::Object* m_object = nullptr;
     std::uint32_t m_index = 0;
     bool m_inverse = false;
@@ -145,6 +145,14 @@ private:
     bool m_no_reflection = false;
     bool m_no_radiosity = false;
     bool m_cull_by_bounds = false;
+};
+
+/// ShapeInstance's rarer parts.
+struct ShapeInstance::Parts {
+    std::vector<ShapeInstance> clips;  ///< in object space; all must contain a point
+    /// `bounded_by`, in object space: POV-Ray compat, the shape is hit only by rays that meet (or start in) all.
+    std::vector<ShapeInstance> bounds;
+    std::optional<Transform> transform;  ///< the copy of an instance made with ObjectLifetime::MayEnd
 };
 
 }  // namespace wardray::geometry
