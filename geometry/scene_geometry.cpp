@@ -135,6 +135,8 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
     impl.near_magnitude = near_origin_magnitude(boxes, impl.bounds->magnitude());
     if (std::isfinite(impl.near_magnitude))
         impl.near_bounds = padded_for_origins(boxes, impl.padded_bounds, impl.near_magnitude);
+    // The unpadded boxes are not needed in the BVH's build, the peak of memory.
+    std::vector<Bounds>().swap(boxes);
 
     impl.device = rtcNewDevice(nullptr);
     if (!impl.device) throw std::runtime_error("Embree error: cannot create device");
