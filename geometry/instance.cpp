@@ -127,6 +127,25 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
     return {c - half, c + half};
 }
 
+// Transform's inverse_point, inverse_vector and normal on an instance's own copy of the inverse matrix: the same
+// arithmetic, so the same bits.
+Vec3 inverse_point(const Transform::Matrix34& m, const Vec3& p) {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+}
+
+Vec3 inverse_vector(const Transform::Matrix34& m, const Vec3& v) {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+// (M^-1)^T n.
+Vec3 normal_through(const Transform::Matrix34& m, const Vec3& n) {
+    return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+            m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
+}
+
 }  // namespace
 
 const SkipReason& last_skip_reason() { return t_skip; }
@@ -135,7 +154,7 @@ int max_csg_depth() { return k_max_csg_depth; }
 
 ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index)
     : m_shape(std::move(shape)),
-      m_transform(&object.transform),
+      m_to_object(object.transform.inverse_matrix()),
       m_object(&object),
       m_index(index),
       m_inverse(object.inverse),
@@ -144,7 +163,11 @@ ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::u
       m_no_reflection(object.no_reflection),
       m_no_radiosity(object.no_radiosity) {}
 
-void ShapeInstance::cull_by_bounds() { m_cull_by_bounds = m_parts && !m_parts->clips.empty() && m_world_bounds.has_value(); }
+void ShapeInstance::cull_by_bounds() { m_cull_by_bounds = m_parts && !m_parts->clips.empty() && m_has_world_bounds; }
+
+const Transform& ShapeInstance::transform() const {
+    return m_parts && m_parts->transform ? *m_parts->transform : m_object->transform;
+}
 
 bool ShapeInstance::is_plain_mesh() const {
     return std::holds_alternative<MeshShape>(m_shape) && (!m_parts || (m_parts->clips.empty() && m_parts->bounds.empty()));
@@ -217,19 +240,18 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
         }
     }
     const auto* sphere = std::get_if<SphereShape>(&inst.m_shape);
+    inst.m_has_world_bounds = (sphere && object.clipped_by.empty()) || local;
     if (sphere && object.clipped_by.empty()) {
         inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
     } else if (local) {
         inst.m_world_bounds = transform_bounds(*local, xf);
     }
-    if (region && !inst.m_inverse) inst.m_region_bounds = transform_bounds(*region, xf);
-    if (inst.m_world_bounds &&
-        (!is_finite(inst.m_world_bounds->lower) || !is_finite(inst.m_world_bounds->upper)))
+    inst.m_has_region_bounds = region && !inst.m_inverse;
+    if (inst.m_has_region_bounds) inst.m_region_bounds = transform_bounds(*region, xf);
+    if (inst.m_has_world_bounds &&
+        (!is_finite(inst.m_world_bounds.lower) || !is_finite(inst.m_world_bounds.upper)))
         return refuse(object, false);
-    if (lifetime == ObjectLifetime::MayEnd) {
-        more().transform = object.transform;
-        inst.m_transform = &*parts->transform;
-    }
+    if (lifetime == ObjectLifetime::MayEnd) more().transform = object.transform;
     inst.m_parts = std::move(parts);
     return inst;
 }
@@ -247,12 +269,12 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
         double s0 = 0.0, s1 = 0.0;
-        if (!slab_interval(m_world_bounds->lower, m_world_bounds->upper, origin, direction, s0, s1) ||
+        if (!slab_interval(m_world_bounds.lower, m_world_bounds.upper, origin, direction, s0, s1) ||
             s1 < 1e-4 / length(direction))
             return {};
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
-    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
     if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
@@ -277,7 +299,7 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
 }
 
 std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
-    const Vec3 n = normalize(m_transform->normal(h.normal));
+    const Vec3 n = normalize(normal_through(m_to_object, h.normal));
     if (!is_finite(n) || !std::isfinite(h.t)) return std::nullopt;
     return SurfaceHit{h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object};
 }
@@ -285,7 +307,7 @@ std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
 bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     // POV-Ray compat (Ray_In_Bound): the whole ray counts, from MIN_ISECT_DEPTH (1e-4 along the unit direction) on,
     // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
-    const double t_start = 1e-4 / length(m_transform->vector(ray.direction));
+    const double t_start = 1e-4 / length(transform().vector(ray.direction));
     for (const ShapeInstance& b : m_parts->bounds)
         if (!b.inside(ray.origin) && !b.crosses(ray.origin, ray.direction, t_start, INFINITY))
             return false;
@@ -311,7 +333,7 @@ bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std:
                                  double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
     return mesh->face_crossed(local, face, t_min, t_max);
 }
 
@@ -323,7 +345,7 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
 }
 
 Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
-    const Vec3 n = normalize(m_transform->normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    const Vec3 n = normalize(normal_through(m_to_object, std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
     return m_inverse ? -n : n;
 }
 
@@ -331,7 +353,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
                                   double t_max, Hit& out, const Vec3* flat_normals) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform->inverse_point(origin), m_transform->inverse_vector(direction)};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
     MeshShape::FaceCrossing c;
     if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
     const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
@@ -351,7 +373,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {
-    const Vec3 p = m_transform->inverse_point(p_world);
+    const Vec3 p = inverse_point(m_to_object, p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
     if (m_parts)
         for (const ShapeInstance& c : m_parts->clips)
@@ -363,7 +385,7 @@ bool ShapeInstance::inside(const Vec3& p_world) const {
 }
 
 double ShapeInstance::object_implicit(const Vec3& p_world) const {
-    const Vec3 p = m_transform->inverse_point(p_world);
+    const Vec3 p = inverse_point(m_to_object, p_world);
     return std::visit([&](const auto& s) { return s.implicit(p); }, m_shape);
 }
 
