@@ -2,7 +2,6 @@
 // with what the CSG above it keeps of space, as the compact records of coincident_records.h.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -179,7 +178,7 @@ private:
                 if (total <= kSharedCornerLimit)
                     k = static_cast<std::size_t>(
                         std::find_if(seen.begin(), seen.end(),
-                                     [&](const Vec3& s) { return std::memcmp(&s, &c, sizeof(Vec3)) == 0; }) -
+                                     [&](const Vec3& s) { return same_bits(s, c); }) -
                         seen.begin());
                 if (total > kSharedCornerLimit || k == seen.size()) {
                     if (total <= kSharedCornerLimit) seen.push_back(c);

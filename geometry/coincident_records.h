@@ -3,8 +3,8 @@
 // coincident_surfaces.cpp pairs them; included by those two files only.
 #pragma once
 
+#include <bit>
 #include <cstdint>
-#include <cstring>
 #include <deque>
 #include <limits>
 #include <optional>
@@ -75,6 +75,13 @@ struct Round {
     double from = 0.0, to = 0.0;  ///< the cylinder's extent along `axis`
 };
 
+/// Whether two points are the same to the bit (-0 differs from 0, as it may in what follows).
+inline bool same_bits(const Vec3& a, const Vec3& b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
 /// Everything the check compares. The long lists are deques: they grow without a moment holding two copies.
 struct Records {
     std::vector<Node> nodes;
@@ -93,7 +100,8 @@ struct Records {
     }
     /// The index of `box` in clips, added unless it is (bit for bit) the last one added.
     std::int32_t clip_index(const Bounds& box) {
-        if (clips.empty() || std::memcmp(&clips.back(), &box, sizeof(Bounds)) != 0) clips.push_back(box);
+        if (clips.empty() || !same_bits(clips.back().lower, box.lower) || !same_bits(clips.back().upper, box.upper))
+            clips.push_back(box);
         return static_cast<std::int32_t>(clips.size() - 1);
     }
     /// Whether some CSG node at or above `node` clips its children.

@@ -89,53 +89,64 @@ private:
     bool spend() { return m_tests++ < kPairBudget; }
 
     void match_faces() {
-        // Faces grouped by their normal to about 1e-6 (unit normals: the keys fit 32 bits), in order of the faces
-        // within a group.
-        struct Keyed {
-            std::array<std::int32_t, 3> key;
-            std::uint32_t face;
-            bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : face < o.face; }
-        };
-        std::vector<Keyed> keyed(m.faces.size());
-        for (std::size_t k = 0; k < m.faces.size(); ++k) {
-            const Vec3& n = m.faces[k].normal;
-            keyed[k] = {{static_cast<std::int32_t>(std::llround(n.x * 1e6)), static_cast<std::int32_t>(std::llround(n.y * 1e6)),
-                         static_cast<std::int32_t>(std::llround(n.z * 1e6))},
-                        static_cast<std::uint32_t>(k)};
+        // Faces grouped by their normal to about 1e-6, in order of the faces within a group; the keys go once the
+        // groups are known. A unit normal's components round to -1e6..1e6: 21 bits each, packed in the order of
+        // (x, y, z).
+        std::vector<std::uint32_t> order(m.faces.size());
+        std::vector<std::size_t> ends;  // where each group ends in `order`
+        {
+            struct Keyed {
+                std::uint64_t key;
+                std::uint32_t face;
+                bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : face < o.face; }
+            };
+            auto field = [](double c) { return static_cast<std::uint64_t>(std::llround(c * 1e6) + 1'000'000); };
+            std::vector<Keyed> keyed(m.faces.size());
+            for (std::size_t k = 0; k < m.faces.size(); ++k) {
+                const Vec3& n = m.faces[k].normal;
+                keyed[k] = {field(n.x) << 42 | field(n.y) << 21 | field(n.z), static_cast<std::uint32_t>(k)};
+            }
+            std::sort(keyed.begin(), keyed.end());
+            for (std::size_t k = 0; k < keyed.size(); ++k) {
+                order[k] = keyed[k].face;
+                if (k + 1 == keyed.size() || keyed[k + 1].key != keyed[k].key) ends.push_back(k + 1);
+            }
         }
-        std::sort(keyed.begin(), keyed.end());
-        for (std::size_t begin = 0; begin < keyed.size();) {
-            std::size_t end = begin + 1;
-            while (end < keyed.size() && keyed[end].key == keyed[begin].key) ++end;
-            std::vector<std::size_t> members;
-            members.reserve(end - begin);
-            for (std::size_t k = begin; k < end; ++k) members.push_back(keyed[k].face);
-            match_group(members);
+        std::size_t begin = 0;
+        for (const std::size_t end : ends) {
+            match_group(order, begin, end);
             begin = end;
         }
     }
 
-    // One group of faces of one normal, drawn in one basis (u, v): sorted by offset, compared in runs.
-    void match_group(std::vector<std::size_t>& members) {
-        m_basis = plane_basis(m.faces[members.front()].normal);
+    // One group of faces of one normal (order[first..last)), drawn in one basis (u, v): sorted by offset, compared
+    // in runs.
+    void match_group(const std::vector<std::uint32_t>& order, std::size_t first, std::size_t last) {
+        m_basis = plane_basis(m.faces[order[first]].normal);
         double reach = 0.0;
-        for (std::size_t k : members) reach = std::max(reach, std::abs(m.faces[k].offset) + m.faces[k].size);
-        std::sort(members.begin(), members.end(),
-                  [&](std::size_t a, std::size_t b) { return m.faces[a].offset < m.faces[b].offset; });
+        for (std::size_t k = first; k < last; ++k)
+            reach = std::max(reach, std::abs(m.faces[order[k]].offset) + m.faces[order[k]].size);
+        // (offset, face) by offset: std::sort compares the offsets as it did the faces', so the order is the same.
+        std::vector<std::pair<double, std::size_t>> members(last - first);
+        for (std::size_t k = first; k < last; ++k) members[k - first] = {m.faces[order[k]].offset, order[k]};
+        std::sort(members.begin(), members.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
         // Runs of faces whose offsets lie within the widest tolerance of one another: only those are compared.
         const double window = kTolerance * reach;
         for (std::size_t begin = 0; begin < members.size();) {
             std::size_t end = begin + 1;
-            while (end < members.size() && m.faces[members[end]].offset - m.faces[members[end - 1]].offset <= window)
-                ++end;
+            while (end < members.size() && members[end].first - members[end - 1].first <= window) ++end;
             if (end - begin > 1) {
-                // The run's faces, their bounds and shapes, by their place in the run.
-                m_run.assign(members.begin() + static_cast<std::ptrdiff_t>(begin),
-                             members.begin() + static_cast<std::ptrdiff_t>(end));
+                // The run's faces (copied, at hand in the sweeps), their bounds and shapes, by their place in the run.
+                m_run.clear();
+                m_run_faces.clear();
+                for (std::size_t k = begin; k < end; ++k) {
+                    m_run.push_back(members[k].second);
+                    m_run_faces.push_back(m.faces[members[k].second]);
+                }
                 m_uv.resize(m_run.size());
                 m_shape_of.assign(m_run.size(), -1);
                 m_shapes.clear();
-                for (std::uint32_t x = 0; x < m_run.size(); ++x) m_uv[x] = bound(m.faces[m_run[x]]);
+                for (std::uint32_t x = 0; x < m_run.size(); ++x) m_uv[x] = bound(m_run_faces[x]);
                 sweep_run();
             }
             begin = end;
@@ -169,7 +180,7 @@ private:
     const std::vector<Point2>& make_shape(std::uint32_t x) {
         if (m_shape_of[x] >= 0) return m_shapes[static_cast<std::size_t>(m_shape_of[x])];
         m_shape_of[x] = static_cast<std::int32_t>(m_shapes.size());
-        const Face& f = m.faces[m_run[x]];
+        const Face& f = m_run_faces[x];
         const Leaf& leaf = m.leaves[f.leaf];
         const auto& [u, v] = m_basis;
         std::vector<Point2> flat;
@@ -184,7 +195,7 @@ private:
         return m_shapes.back();
     }
 
-    const Face& run_face(std::uint32_t x) const { return m.faces[m_run[x]]; }
+    const Face& run_face(std::uint32_t x) const { return m_run_faces[x]; }
     const Leaf& run_leaf(std::uint32_t x) const { return m.leaves[run_face(x).leaf]; }
 
     // The run of faces in one plane: where none lets light through, faces facing opposite ways matter only when a CSG
@@ -343,6 +354,7 @@ private:
     // (a deque: stable while others are made).
     std::pair<Vec3, Vec3> m_basis;
     std::vector<std::size_t> m_run;
+    std::vector<Face> m_run_faces;  // copies, at hand in the sweeps
     std::vector<std::array<double, 4>> m_uv;
     std::vector<std::int32_t> m_shape_of;
     std::deque<std::vector<Point2>> m_shapes;
