@@ -54,13 +54,14 @@ void add_constraint(const ShapeInstance& child, IntersectionBounds& out) {
 
 }  // namespace
 
-std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted) {
+std::optional<CsgShape> CsgShape::create(const scene::Csg& csg, bool inverted, ObjectLifetime lifetime) {
     CsgShape shape;
     auto children = std::make_shared<std::vector<ShapeInstance>>();
+    children->reserve(csg.children.size());
     for (std::size_t i = 0; i < csg.children.size(); ++i) {
         // POV-Ray compat: a difference is the first child intersected with every other child inverted.
         const bool flip = (csg.op == scene::Csg::Op::Difference && i > 0) != inverted;
-        auto inst = ShapeInstance::create(csg.children[i], 0, flip);
+        auto inst = ShapeInstance::create(csg.children[i], 0, flip, lifetime);
         if (!inst) return std::nullopt;
         inst->keep_all_crossings();
         children->push_back(std::move(*inst));

@@ -127,6 +127,25 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
     return {c - half, c + half};
 }
 
+// Transform's inverse_point, inverse_vector and normal on an instance's own copy of the inverse matrix: the same
+// arithmetic, so the same bits.
+Vec3 inverse_point(const Transform::Matrix34& m, const Vec3& p) {
+    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
+}
+
+Vec3 inverse_vector(const Transform::Matrix34& m, const Vec3& v) {
+    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+}
+
+// (M^-1)^T n.
+Vec3 normal_through(const Transform::Matrix34& m, const Vec3& n) {
+    return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+            m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
+}
+
 }  // namespace
 
 const SkipReason& last_skip_reason() { return t_skip; }
@@ -135,7 +154,7 @@ int max_csg_depth() { return k_max_csg_depth; }
 
 ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index)
     : m_shape(std::move(shape)),
-      m_transform(object.transform),
+      m_to_object(object.transform.inverse_matrix()),
       m_object(&object),
       m_index(index),
       m_inverse(object.inverse),
@@ -144,8 +163,18 @@ ShapeInstance::ShapeInstance(AnyShape shape, const scene::Object& object, std::u
       m_no_reflection(object.no_reflection),
       m_no_radiosity(object.no_radiosity) {}
 
+void ShapeInstance::cull_by_bounds() { m_cull_by_bounds = m_parts && !m_parts->clips.empty() && m_has_world_bounds; }
+
+const Transform& ShapeInstance::transform() const {
+    return m_parts && m_parts->transform ? *m_parts->transform : m_object->transform;
+}
+
+bool ShapeInstance::is_plain_mesh() const {
+    return std::holds_alternative<MeshShape>(m_shape) && (!m_parts || (m_parts->clips.empty() && m_parts->bounds.empty()));
+}
+
 std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
-                                                   bool flip_inverse) {
+                                                   bool flip_inverse, ObjectLifetime lifetime) {
     // A top-level create starts with no reason recorded; the parts it builds record theirs.
     if (t_create_depth == 0) t_skip_set = false;
     const CreateDepthGuard nesting;
@@ -161,8 +190,8 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     const CsgDepthGuard depth(csg != nullptr);
     if (t_csg_depth > k_max_csg_depth) return refuse(object, true);
     std::optional<AnyShape> shape;
-    if (csg && inverted) {
-        if (auto c = CsgShape::create(*csg, true)) shape = AnyShape(std::move(*c));
+    if (csg) {
+        if (auto c = CsgShape::create(*csg, inverted, lifetime)) shape = AnyShape(std::move(*c));
     } else {
         shape = make_shape(object.shape);
     }
@@ -171,6 +200,12 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     const auto* plane = std::get_if<PlaneShape>(&*shape);
     if (plane && inverted) shape = AnyShape(plane->inverted());
     ShapeInstance inst(std::move(*shape), object, index);
+    // What few instances have: clips, bounds, and the copy of a transform whose object may not live on.
+    std::shared_ptr<Parts> parts;
+    auto more = [&]() -> Parts& {
+        if (!parts) parts = std::make_shared<Parts>();
+        return *parts;
+    };
     inst.m_inverse = inverted && !csg && !plane;
     // POV-Ray compat: a cylinder meets rays and answers inside tests through POV-Ray's one matrix to its unit
     // cylinder (clipped ones keep the object-space path their clips need).
@@ -179,41 +214,45 @@ std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, 
     std::optional<Bounds> region = std::visit([](const auto& s) { return shape_region(s); }, inst.m_shape);
     if (!object.clipped_by.empty()) {
         // Only the parts of the surface inside every clipping object remain.
-        auto clips = std::make_shared<std::vector<ShapeInstance>>();
+        std::vector<ShapeInstance>& clips = more().clips;
+        clips.reserve(object.clipped_by.size());
         // POV-Ray compat (Quadric::Compute_BBox at clipped_by): a clipped quadric's box is its own where it has
         // one, within the clips'.
         if (const auto* q = std::get_if<QuadricShape>(&inst.m_shape)) local = q->clipped_bounds();
         for (const scene::Object& c : object.clipped_by) {
-            auto ci = create(c, index);
+            auto ci = create(c, index, false, lifetime);
             if (!ci) return refuse(c, false);
             local = intersect_bounds(local, ci->region_bounds());
             region = intersect_bounds(region, ci->region_bounds());
-            clips->push_back(std::move(*ci));
+            clips.push_back(std::move(*ci));
         }
-        inst.m_clips = std::move(clips);
         inst.keep_all_crossings();
         if (local && local->empty()) local = Bounds{local->lower, local->lower};
         if (region && region->empty()) region = Bounds{region->lower, region->lower};
     }
     if (!object.bounded_by.empty()) {
-        auto bounds = std::make_shared<std::vector<ShapeInstance>>();
+        std::vector<ShapeInstance>& bounds = more().bounds;
+        bounds.reserve(object.bounded_by.size());
         for (const scene::Object& b : object.bounded_by) {
-            auto bi = create(b, index);
+            auto bi = create(b, index, false, lifetime);
             if (!bi) return refuse(b, false);
-            bounds->push_back(std::move(*bi));
+            bounds.push_back(std::move(*bi));
         }
-        inst.m_bounds = std::move(bounds);
     }
     const auto* sphere = std::get_if<SphereShape>(&inst.m_shape);
-    if (sphere && !inst.m_clips) {
+    inst.m_has_world_bounds = (sphere && object.clipped_by.empty()) || local;
+    if (sphere && object.clipped_by.empty()) {
         inst.m_world_bounds = ellipsoid_bounds(*sphere, xf);
     } else if (local) {
         inst.m_world_bounds = transform_bounds(*local, xf);
     }
-    if (region && !inst.m_inverse) inst.m_region_bounds = transform_bounds(*region, xf);
-    if (inst.m_world_bounds &&
-        (!is_finite(inst.m_world_bounds->lower) || !is_finite(inst.m_world_bounds->upper)))
+    inst.m_has_region_bounds = region && !inst.m_inverse;
+    if (inst.m_has_region_bounds) inst.m_region_bounds = transform_bounds(*region, xf);
+    if (inst.m_has_world_bounds &&
+        (!is_finite(inst.m_world_bounds.lower) || !is_finite(inst.m_world_bounds.upper)))
         return refuse(object, false);
+    if (lifetime == ObjectLifetime::MayEnd) more().transform = object.transform;
+    inst.m_parts = std::move(parts);
     return inst;
 }
 
@@ -230,13 +269,13 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
         double s0 = 0.0, s1 = 0.0;
-        if (!slab_interval(m_world_bounds->lower, m_world_bounds->upper, origin, direction, s0, s1) ||
+        if (!slab_interval(m_world_bounds.lower, m_world_bounds.upper, origin, direction, s0, s1) ||
             s1 < 1e-4 / length(direction))
             return {};
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
-    if (m_bounds && !ray_in_bounds(local)) return {};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
+    if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
             if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ConeShape>)
@@ -248,19 +287,19 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
             else return s.intersect_all(local, t_min, t_max);
         },
         m_shape);
-    if (!m_clips) return object_hits;
+    if (!m_parts || m_parts->clips.empty()) return object_hits;
     SurfaceHits kept;
     for (const SurfaceHit& h : object_hits) {
         const Vec3 p = local.origin + h.t * local.direction;
         bool inside_clips = true;
-        for (const ShapeInstance& c : *m_clips) inside_clips = inside_clips && c.inside(p);
+        for (const ShapeInstance& c : m_parts->clips) inside_clips = inside_clips && c.inside(p);
         if (inside_clips) kept.push(h);
     }
     return kept;
 }
 
 std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
-    const Vec3 n = normalize(m_transform.normal(h.normal));
+    const Vec3 n = normalize(normal_through(m_to_object, h.normal));
     if (!is_finite(n) || !std::isfinite(h.t)) return std::nullopt;
     return SurfaceHit{h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object};
 }
@@ -268,8 +307,8 @@ std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
 bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     // POV-Ray compat (Ray_In_Bound): the whole ray counts, from MIN_ISECT_DEPTH (1e-4 along the unit direction) on,
     // whatever part of it the caller asks about; all hits of the shape then count, also those beyond the bound.
-    const double t_start = 1e-4 / length(m_transform.vector(ray.direction));
-    for (const ShapeInstance& b : *m_bounds)
+    const double t_start = 1e-4 / length(transform().vector(ray.direction));
+    for (const ShapeInstance& b : m_parts->bounds)
         if (!b.inside(ray.origin) && !b.crosses(ray.origin, ray.direction, t_start, INFINITY))
             return false;
     return true;
@@ -294,7 +333,7 @@ bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std:
                                  double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
     return mesh->face_crossed(local, face, t_min, t_max);
 }
 
@@ -306,7 +345,7 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
 }
 
 Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
-    const Vec3 n = normalize(m_transform.normal(std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    const Vec3 n = normalize(normal_through(m_to_object, std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
     return m_inverse ? -n : n;
 }
 
@@ -314,7 +353,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
                                   double t_max, Hit& out, const Vec3* flat_normals) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{m_transform.inverse_point(origin), m_transform.inverse_vector(direction)};
+    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
     MeshShape::FaceCrossing c;
     if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
     const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
@@ -334,10 +373,10 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {
-    const Vec3 p = m_transform.inverse_point(p_world);
+    const Vec3 p = inverse_point(m_to_object, p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
-    if (m_clips)
-        for (const ShapeInstance& c : *m_clips)
+    if (m_parts)
+        for (const ShapeInstance& c : m_parts->clips)
             if (!c.inside(p)) return false;
     const auto* cone = std::get_if<ConeShape>(&m_shape);
     const bool in = cone && cone->placed() ? cone->inside_parent(p_world)
@@ -346,7 +385,7 @@ bool ShapeInstance::inside(const Vec3& p_world) const {
 }
 
 double ShapeInstance::object_implicit(const Vec3& p_world) const {
-    const Vec3 p = m_transform.inverse_point(p_world);
+    const Vec3 p = inverse_point(m_to_object, p_world);
     return std::visit([&](const auto& s) { return s.implicit(p); }, m_shape);
 }
 

@@ -51,9 +51,11 @@ class ShapeInstance {
 public:
     /// Returns nothing for objects that cannot be drawn without NaN: singular transforms, degenerate shapes,
     /// non-finite parameters or bounds. `index` is the object's position in scene::Scene::objects;
-    /// `flip_inverse` inverts the object once more (the subtracted children of a difference).
+    /// `flip_inverse` inverts the object once more (the subtracted children of a difference). With `lifetime`
+    /// Outlives the instance points at the object's transform, else it keeps a copy.
     static std::optional<ShapeInstance> create(const scene::Object& object, std::uint32_t index,
-                                               bool flip_inverse = false);
+                                               bool flip_inverse = false,
+                                               ObjectLifetime lifetime = ObjectLifetime::MayEnd);
 
     /// Surface crossings of the ray with t in (t_min, t_max); normals are unit, in the parent's space, pointing
     /// out of the object (inverse objects flip them and the entering flags); `leaf` names the primitive hit.
@@ -96,11 +98,15 @@ public:
     /// POV-Ray compat (Find_Intersection): a top-level object is tested only on rays that meet its bounding box,
     /// which changes the picture only where a clipped surface leaves its clip's box (a cylinder clipped by a
     /// height field, whose inside reaches down without end); set for the clipped top-level objects.
-    void cull_by_bounds() { m_cull_by_bounds = m_clips != nullptr && m_world_bounds.has_value(); }
+    void cull_by_bounds();
     /// Bounds of the surface, or nothing when the surface is unbounded (planes, quadrics).
-    const std::optional<Bounds>& world_bounds() const { return m_world_bounds; }
+    std::optional<Bounds> world_bounds() const {
+        return m_has_world_bounds ? std::optional<Bounds>(m_world_bounds) : std::nullopt;
+    }
     /// Bounds of the inside region, or nothing when it is unbounded (inverse objects, planes, discs).
-    const std::optional<Bounds>& region_bounds() const { return m_region_bounds; }
+    std::optional<Bounds> region_bounds() const {
+        return m_has_region_bounds ? std::optional<Bounds>(m_region_bounds) : std::nullopt;
+    }
     /// Signed implicit function in object space at the world point (0 on the surface, negative inside the
     /// shape before `inverse`); for tests and diagnostics.
     double object_implicit(const Vec3& p_world) const;
@@ -113,26 +119,30 @@ public:
     }
     /// The object's index in scene::Scene::objects and its object-to-world transform.
     std::uint32_t index() const { return m_index; }
-    const Transform& transform() const { return m_transform; }
+    const Transform& transform() const;
     /// The shape in object space.
     const AnyShape& shape() const { return m_shape; }
     /// True when its inside and outside are swapped (`inverse`, or a subtracted child of a difference).
     bool inverse() const { return m_inverse; }
     /// True when the object is a mesh without clipping or bounds, which Embree can trace as native triangles.
-    bool is_plain_mesh() const { return std::holds_alternative<MeshShape>(m_shape) && !m_clips && !m_bounds; }
+    bool is_plain_mesh() const;
 
 private:
+    struct Parts;
     ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index);
     /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.
     bool ray_in_bounds(const LocalRay& ray) const;
 
     AnyShape m_shape;
-    Transform m_transform;
-    std::optional<Bounds> m_world_bounds;
-    std::optional<Bounds> m_region_bounds;
-    std::shared_ptr<const std::vector<ShapeInstance>> m_clips;  ///< in object space; all must contain a point
-    /// `bounded_by`, in object space: POV-Ray compat, the shape is hit only by rays that meet (or start in) all.
-    std::shared_ptr<const std::vector<ShapeInstance>> m_bounds;
+    /// The inverse of the object-to-parent transform (which is the scene object's, or a copy in m_parts), held
+    /// here: every ray and inside test maps through it, and reaching it in the scene object cost 5-8 % of truchet's
+    /// render.
+    Transform::Matrix34 m_to_object{};
+    Bounds m_world_bounds;   ///< when m_has_world_bounds
+    Bounds m_region_bounds;  ///< when m_has_region_bounds
+    /// What few instances have, shared by copies: clipping objects, `bounded_by` objects, the copy of the
+    /// transform; nothing for most instances of a scene.
+    std::shared_ptr<const Parts> m_parts;
     const scene::Object* m_object = nullptr;
     std::uint32_t m_index = 0;
     bool m_inverse = false;
@@ -141,6 +151,16 @@ private:
     bool m_no_reflection = false;
     bool m_no_radiosity = false;
     bool m_cull_by_bounds = false;
+    bool m_has_world_bounds = false;
+    bool m_has_region_bounds = false;
+};
+
+/// ShapeInstance's rarer parts.
+struct ShapeInstance::Parts {
+    std::vector<ShapeInstance> clips;  ///< in object space; all must contain a point
+    /// `bounded_by`, in object space: POV-Ray compat, the shape is hit only by rays that meet (or start in) all.
+    std::vector<ShapeInstance> bounds;
+    std::optional<Transform> transform;  ///< the copy of an instance made with ObjectLifetime::MayEnd
 };
 
 }  // namespace wardray::geometry

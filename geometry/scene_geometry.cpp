@@ -88,7 +88,7 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
         plain_meshes += std::holds_alternative<scene::Mesh>(o.shape) && o.clipped_by.empty() && o.bounded_by.empty();
     impl.bounded.reserve(scene.objects.size() - plain_meshes);
     for (std::uint32_t i = 0; i < scene.objects.size(); ++i) {
-        auto inst = ShapeInstance::create(scene.objects[i], i);
+        auto inst = ShapeInstance::create(scene.objects[i], i, false, ObjectLifetime::Outlives);
         if (!inst) {
             impl.skipped.push_back(i);
             impl.skip_reasons.push_back(last_skip_reason());
@@ -135,6 +135,8 @@ SceneGeometry::SceneGeometry(const scene::Scene& scene) : m_impl(std::make_uniqu
     impl.near_magnitude = near_origin_magnitude(boxes, impl.bounds->magnitude());
     if (std::isfinite(impl.near_magnitude))
         impl.near_bounds = padded_for_origins(boxes, impl.padded_bounds, impl.near_magnitude);
+    // The unpadded boxes are not needed in the BVH's build, the peak of memory.
+    std::vector<Bounds>().swap(boxes);
 
     impl.device = rtcNewDevice(nullptr);
     if (!impl.device) throw std::runtime_error("Embree error: cannot create device");

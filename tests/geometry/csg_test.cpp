@@ -333,7 +333,7 @@ TEST(Csg, PlanesAndAQuadricBoundAnIntersection) {
         const auto inst = ShapeInstance::create(obj, 0);
         ASSERT_TRUE(inst);
         ASSERT_TRUE(inst->world_bounds()) << trial;
-        const Bounds& box = *inst->world_bounds();
+        const Bounds box = *inst->world_bounds();
         EXPECT_LT(box.magnitude(), 1e3) << trial;
         int inside = 0, crossings = 0;
         // Half the points around the box (twice its size), half over a wide cube of the node's space.

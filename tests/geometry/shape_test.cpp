@@ -218,7 +218,7 @@ TEST(Shapes, TransformedSphereBoundsAreTight) {
     const auto inst = ShapeInstance::create(obj, 0);
     ASSERT_TRUE(inst && inst->world_bounds());
     // Every surface point lies in the bounds, and the bounds are touched along each axis.
-    const Bounds& b = *inst->world_bounds();
+    const Bounds b = *inst->world_bounds();
     Vec3 lo{1e30, 1e30, 1e30};
     Vec3 hi{-1e30, -1e30, -1e30};
     for (int i = 0; i < 20000; ++i) {
