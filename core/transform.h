@@ -36,16 +36,25 @@ public:
     /// Transforms a surface normal (inverse transpose); the result is not normalized.
     Vec3 normal(const Vec3& n) const;
     /// Inline: every shape test of every ray maps the ray into object space through these two.
-    Vec3 inverse_point(const Vec3& p) const {
-        const auto& m = m_inverse;
+    Vec3 inverse_point(const Vec3& p) const { return point_through(m_inverse, p); }
+    Vec3 inverse_vector(const Vec3& v) const { return vector_through(m_inverse, v); }
+
+    /// The arithmetic of point(), vector() and normal() on a matrix of their kind (a forward or an inverse matrix),
+    /// for a copy of one kept elsewhere: the same operations in the same order, so the same bits.
+    static Vec3 point_through(const Matrix34& m, const Vec3& p) {
         return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
                 m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
                 m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
     }
-    Vec3 inverse_vector(const Vec3& v) const {
-        const auto& m = m_inverse;
+    static Vec3 vector_through(const Matrix34& m, const Vec3& v) {
         return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
                 m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
+    }
+    /// A normal through the transform whose inverse matrix is `inverse`: (M^-1)^T n, not normalized.
+    static Vec3 normal_through(const Matrix34& inverse, const Vec3& n) {
+        const auto& m = inverse;
+        return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
+                m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
     }
 
     const Matrix34& matrix() const { return m_forward; }

@@ -127,25 +127,6 @@ Bounds ellipsoid_bounds(const SphereShape& s, const Transform& xf) {
     return {c - half, c + half};
 }
 
-// Transform's inverse_point, inverse_vector and normal on an instance's own copy of the inverse matrix: the same
-// arithmetic, so the same bits.
-Vec3 inverse_point(const Transform::Matrix34& m, const Vec3& p) {
-    return {m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
-            m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
-            m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]};
-}
-
-Vec3 inverse_vector(const Transform::Matrix34& m, const Vec3& v) {
-    return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
-
-// (M^-1)^T n.
-Vec3 normal_through(const Transform::Matrix34& m, const Vec3& n) {
-    return {m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z, m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
-            m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z};
-}
-
 }  // namespace
 
 const SkipReason& last_skip_reason() { return t_skip; }
@@ -170,7 +151,8 @@ const Transform& ShapeInstance::transform() const {
 }
 
 bool ShapeInstance::is_plain_mesh() const {
-    return std::holds_alternative<MeshShape>(m_shape) && (!m_parts || (m_parts->clips.empty() && m_parts->bounds.empty()));
+    return std::holds_alternative<MeshShape>(m_shape) &&
+           (!m_parts || (m_parts->clips.empty() && m_parts->bounds.empty()));
 }
 
 std::optional<ShapeInstance> ShapeInstance::create(const scene::Object& object, std::uint32_t index,
@@ -274,7 +256,8 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
             return {};
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
-    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
+    const LocalRay local{Transform::point_through(m_to_object, origin),
+                         Transform::vector_through(m_to_object, direction)};
     if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return {};
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
@@ -299,7 +282,7 @@ SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& dire
 }
 
 std::optional<SurfaceHit> ShapeInstance::to_parent(const SurfaceHit& h) const {
-    const Vec3 n = normalize(normal_through(m_to_object, h.normal));
+    const Vec3 n = normalize(Transform::normal_through(m_to_object, h.normal));
     if (!is_finite(n) || !std::isfinite(h.t)) return std::nullopt;
     return SurfaceHit{h.t, m_inverse ? -n : n, m_inverse ? !h.entering : h.entering, h.leaf ? h.leaf : m_object};
 }
@@ -333,7 +316,8 @@ bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std:
                                  double t_max) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
+    const LocalRay local{Transform::point_through(m_to_object, origin),
+                         Transform::vector_through(m_to_object, direction)};
     return mesh->face_crossed(local, face, t_min, t_max);
 }
 
@@ -345,7 +329,8 @@ std::optional<Hit> ShapeInstance::face_hit(const Vec3& origin, const Vec3& direc
 }
 
 Vec3 ShapeInstance::face_world_normal(std::size_t face, const MeshShape::FaceCrossing& crossing) const {
-    const Vec3 n = normalize(normal_through(m_to_object, std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
+    const Vec3 n = normalize(
+        Transform::normal_through(m_to_object, std::get<MeshShape>(m_shape).face_normal(face, crossing, Vec3{})));
     return m_inverse ? -n : n;
 }
 
@@ -353,7 +338,8 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
                                   double t_max, Hit& out, const Vec3* flat_normals) const {
     const auto* mesh = std::get_if<MeshShape>(&m_shape);
     if (mesh == nullptr || face >= mesh->faces().size()) return false;
-    const LocalRay local{inverse_point(m_to_object, origin), inverse_vector(m_to_object, direction)};
+    const LocalRay local{Transform::point_through(m_to_object, origin),
+                         Transform::vector_through(m_to_object, direction)};
     MeshShape::FaceCrossing c;
     if (!mesh->face_crossing(local, face, t_min, t_max, true, c)) return false;
     const Vec3 n = flat_normals ? flat_normals[face] : face_world_normal(face, c);
@@ -373,7 +359,7 @@ bool ShapeInstance::face_hit_into(const Vec3& origin, const Vec3& direction, std
 }
 
 bool ShapeInstance::inside(const Vec3& p_world) const {
-    const Vec3 p = inverse_point(m_to_object, p_world);
+    const Vec3 p = Transform::point_through(m_to_object, p_world);
     // POV-Ray compat: a clipped object is inside only within all its clipping objects (inverse leaves them be).
     if (m_parts)
         for (const ShapeInstance& c : m_parts->clips)
@@ -385,7 +371,7 @@ bool ShapeInstance::inside(const Vec3& p_world) const {
 }
 
 double ShapeInstance::object_implicit(const Vec3& p_world) const {
-    const Vec3 p = inverse_point(m_to_object, p_world);
+    const Vec3 p = Transform::point_through(m_to_object, p_world);
     return std::visit([&](const auto& s) { return s.implicit(p); }, m_shape);
 }
 
