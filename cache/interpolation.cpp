@@ -76,14 +76,19 @@ bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, doub
 }
 
 Vec3 extrapolate(const IrradianceRecord& record, const Vec3& p, const Vec3& n, bool gradients) {
-    if (!gradients) return record.irradiance;
+    return extrapolate(geometry_of(record), values_of(record), p, n, gradients);
+}
+
+Vec3 extrapolate(const RecordGeometry& geometry, const RecordValues& values, const Vec3& p, const Vec3& n,
+                 bool gradients) {
+    if (!gradients) return values.irradiance;
     // Ward & Heckbert 1992, first-order extrapolation: E_i + (n_i × n)·∇r E_i + (p − p_i)·∇t E_i.
-    const Vec3 axis = cross(record.normal, n);
-    const Vec3 offset = p - record.position;
+    const Vec3 axis = cross(geometry.normal, n);
+    const Vec3 offset = p - geometry.position;
     Vec3 out;
     for (int c = 0; c < 3; ++c) {
-        const double e = record.irradiance[c];
-        const double v = e + dot(axis, record.rotational[c]) + dot(offset, record.translational[c]);
+        const double e = values.irradiance[c];
+        const double v = e + dot(axis, values.rotational[c]) + dot(offset, values.translational[c]);
         // Never negative; POV-Ray compat: a negative value (negative light) stays on its side of zero.
         out[c] = e >= 0.0 ? std::max(v, 0.0) : std::min(v, 0.0);
     }
@@ -136,7 +141,12 @@ bool InterpolationAccumulator::weigh_near(const RecordGeometry& record, RecordWe
 }
 
 void InterpolationAccumulator::add_weighted(const IrradianceRecord& record, const RecordWeight& w) {
-    m_sum += extrapolate(record, m_p, m_n, m_params.gradients) * w.weight;
+    add_weighted(geometry_of(record), values_of(record), w);
+}
+
+void InterpolationAccumulator::add_weighted(const RecordGeometry& geometry, const RecordValues& values,
+                                            const RecordWeight& w) {
+    m_sum += extrapolate(geometry, values, m_p, m_n, m_params.gradients) * w.weight;
     m_weight_sum += w.weight;
     m_coverage += w.coverage;
     ++m_records;

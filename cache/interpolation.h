@@ -47,6 +47,9 @@ bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, doub
 /// The record's value moved to (p, n) with its gradients (Ward & Heckbert 1992):
 /// E_i + (n_i × n)·∇r E_i + (p − p_i)·∇t E_i per channel, never crossing zero.
 Vec3 extrapolate(const IrradianceRecord& record, const Vec3& p, const Vec3& n, bool gradients = true);
+/// extrapolate() of the record made of these two parts.
+Vec3 extrapolate(const RecordGeometry& geometry, const RecordValues& values, const Vec3& p, const Vec3& n,
+                 bool gradients = true);
 
 /// The outcome of a lookup.
 struct Interpolation {
@@ -80,6 +83,8 @@ public:
     bool weigh_near(const RecordGeometry& record, RecordWeight& out) const;
     /// Adds a record that weigh() accepted with weights `w`; the record is read only here.
     void add_weighted(const IrradianceRecord& record, const RecordWeight& w);
+    /// add_weighted() of the record made of these two parts.
+    void add_weighted(const RecordGeometry& geometry, const RecordValues& values, const RecordWeight& w);
     /// A quick necessary condition for add() to accept a record at `position` with `normal` and (at least) `radius`:
     /// near enough for ε alone and facing the same side (the distance first: it rejects most candidates).
     bool may_accept(const Vec3& position, const Vec3& normal, double radius) const {

@@ -26,7 +26,7 @@ std::array<double, 2> lookup_filings(const scene::RadiositySettings& settings) {
 /// change nothing).
 void shrink_holding(RecordOctree& tree, const IrradianceRecord& record) {
     tree.visit_holding(record.position,
-                       [&](std::uint32_t i) { tree.shrink_radius(i, clamped_radius(tree.records()[i], record)); });
+                       [&](std::uint32_t i) { tree.shrink_radius(i, clamped_radius(tree.geometry(i), record)); });
 }
 
 /// Neighbour clamping both ways: R_new ≤ R_i + |p_new − p_i| for the records closer than R_new, then
@@ -45,7 +45,6 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
     };
     thread_local std::vector<Valid> valid;
     valid.clear();
-    const auto& records = tree.records();
     tree.visit_near(p, acc.error_bound(), [&](std::uint32_t i, const RecordGeometry& g) {
         // Weighed in place: no copy of the weights through the stack.
         Valid& v = valid.emplace_back();
@@ -55,13 +54,13 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
             return;
         }
         // The values add_weighted() reads (irradiance and gradients) are fetched meanwhile.
-        const char* values = reinterpret_cast<const char*>(&records[i].irradiance);
-        const char* values_end = reinterpret_cast<const char*>(&records[i] + 1) - 1;
+        const char* values = reinterpret_cast<const char*>(&tree.values(i));
+        const char* values_end = values + sizeof(RecordValues) - 1;
         for (const char* line = values; line < values_end; line += 64) __builtin_prefetch(line);
         __builtin_prefetch(values_end);
     });
     std::sort(valid.begin(), valid.end(), [](const Valid& a, const Valid& b) { return a.index < b.index; });
-    for (const Valid& v : valid) acc.add_weighted(records[v.index], v.weight);
+    for (const Valid& v : valid) acc.add_weighted(tree.geometry(v.index), tree.values(v.index), v.weight);
 }
 
 /// The records one merge_tiles() call has filed so far at one depth, positions side by side for the scan: a record
@@ -76,7 +75,7 @@ public:
     std::size_t size() const { return m_position.size(); }
     /// Keeps record `index` of `tree` when the octree filed it (as a home, so its own clamping sees it too).
     void add(const RecordOctree& tree, std::uint32_t index) {
-        const IrradianceRecord& r = tree.records()[index];
+        const RecordGeometry& r = tree.geometry(index);
         const double s = tree.reach() * r.radius;
         if (!is_finite(r.position) || !(s > 0.0) || !std::isfinite(s)) return;
         m_position.push_back(r.position);
@@ -86,7 +85,6 @@ public:
     /// in `tree`: the same value RecordOctree::clamped_radius() finds among these records.
     double clamped_radius(const RecordOctree& tree, const Vec3& centre, double bound) const {
         if (!is_finite(centre) || !(bound >= 0.0)) return bound;
-        const auto& records = tree.records();
         // Squared distances screen the candidates, with a margin over rounding; the test itself is the octree's.
         double screen = bound * bound * (1.0 + 0x1p-40);
         for (std::size_t k = 0; k < m_position.size(); ++k) {
@@ -95,7 +93,7 @@ public:
             if (!(d2 < screen)) continue;
             const double d = std::sqrt(d2);
             if (d < bound) {
-                bound = std::min(bound, records[m_index[k]].radius + d);
+                bound = std::min(bound, tree.geometry(m_index[k]).radius + d);
                 screen = bound * bound * (1.0 + 0x1p-40);
             }
         }

@@ -35,6 +35,26 @@ inline RecordGeometry geometry_of(const IrradianceRecord& record) {
     return {record.position, record.normal, record.radius};
 }
 
+/// The rest of a record: what a lookup reads of the records it uses, and their bookkeeping.
+struct RecordValues {
+    Vec3 irradiance;                   ///< IrradianceRecord::irradiance
+    ChannelGradients rotational{};     ///< IrradianceRecord::rotational
+    ChannelGradients translational{};  ///< IrradianceRecord::translational
+    std::int32_t depth = 0;            ///< IrradianceRecord::depth
+    std::int32_t pass = 0;             ///< IrradianceRecord::pass
+};
+
+/// A record's irradiance, gradients, depth and pass.
+inline RecordValues values_of(const IrradianceRecord& record) {
+    return {record.irradiance, record.rotational, record.translational, record.depth, record.pass};
+}
+
+/// The record made of its two parts again.
+inline IrradianceRecord record_of(const RecordGeometry& geometry, const RecordValues& values) {
+    return {geometry.position, geometry.normal,      values.irradiance, geometry.radius,
+            values.rotational, values.translational, values.depth,      values.pass};
+}
+
 /// The range a record's radius is clamped into, in world units.
 struct RadiusLimits {
     double min = 0.0;
@@ -60,8 +80,11 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
                              const RadiusLimits& limits, const RecordOptions& options = {});
 
 /// Neighbour clamping (Křivánek et al. 2006), one way: `record`'s radius bounded by R_j + |p − p_j| for `neighbour` j.
-inline double clamped_radius(const IrradianceRecord& record, const IrradianceRecord& neighbour) {
+inline double clamped_radius(const RecordGeometry& record, const IrradianceRecord& neighbour) {
     return std::min(record.radius, neighbour.radius + length(neighbour.position - record.position));
+}
+inline double clamped_radius(const IrradianceRecord& record, const IrradianceRecord& neighbour) {
+    return clamped_radius(geometry_of(record), neighbour);
 }
 
 /// Neighbour clamping (Křivánek et al. 2006): R_a ≤ R_b + |p_a − p_b| and R_b ≤ R_a + |p_a − p_b|.

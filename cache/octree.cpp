@@ -69,7 +69,6 @@ RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {
     const auto index = static_cast<std::uint32_t>(m_records.size());
     m_records.push_back(record);
-    m_geometry.push_back(geometry_of(record));
     for (std::size_t k = 0; k < m_filings.size(); ++k) insert_into(m_filings[k], record, index, k == 0);
     return index;
 }
@@ -273,7 +272,7 @@ void RecordOctree::clamp_within(std::int32_t node, const Cube& cube, const Vec3&
     // closer than the bound can lower it (R_i > 0).
     if (n.home_list >= 0) {
         for (const std::uint32_t home : f.home_lists[static_cast<std::size_t>(n.home_list)]) {
-            const RecordGeometry& g = m_geometry[home];
+            const RecordGeometry& g = m_records.geometry(home);
             const double d = length(g.position - centre);
             if (d < bound) bound = std::min(bound, g.radius + d);
         }
@@ -304,7 +303,7 @@ double RecordOctree::clamped_radius(const Vec3& centre, double bound) const {
 }
 
 std::size_t RecordOctree::memory_bytes() const {
-    std::size_t bytes = m_records.memory_bytes() + m_geometry.memory_bytes();
+    std::size_t bytes = m_records.memory_bytes();
     for (const Filing& f : m_filings) {
         bytes += f.nodes.memory_bytes() + f.children.memory_bytes() + f.blocks.memory_bytes();
         for (const auto& homes : f.home_lists) bytes += sizeof homes + homes.capacity() * sizeof(std::uint32_t);

@@ -9,13 +9,14 @@
 
 #include "cache/chunked_array.h"
 #include "cache/irradiance_record.h"
+#include "cache/record_store.h"
 #include "cache/run_pool.h"
 #include "core/vec3.h"
 
 namespace wardray::cache {
 
-/// Records in insertion order, in chunks: growing never copies them all or doubles their memory.
-using RecordArray = ChunkedArray<IrradianceRecord>;
+/// Records in insertion order (each read whole as a value).
+using RecordArray = RecordStore;
 
 /// Records of one bounce depth, each filed by the sphere of radius reach × R_i around its position
 /// (Ward, Rubinstein & Clear 1988, section "the octree"). A record goes into every node of the level whose cells
@@ -41,11 +42,13 @@ public:
     /// Every record in insertion order.
     const RecordArray& records() const { return m_records; }
     /// The position, normal and radius of record `index`, packed (what lookups test before reading the record).
-    const RecordGeometry& geometry(std::uint32_t index) const { return m_geometry[index]; }
+    const RecordGeometry& geometry(std::uint32_t index) const { return m_records.geometry(index); }
+    /// The irradiance, gradients, depth and pass of record `index` (what a lookup reads of the records it uses).
+    const RecordValues& values(std::uint32_t index) const { return m_records.values(index); }
     /// Neighbour clamping: record `index`'s radius becomes `radius` when that is smaller (the filing stays
     /// conservative).
     void shrink_radius(std::uint32_t index, double radius) {
-        if (radius < m_records[index].radius) m_records[index].radius = m_geometry[index].radius = radius;
+        if (radius < m_records.geometry(index).radius) m_records.set_radius(index, radius);
     }
     std::size_t size() const { return m_records.size(); }
     /// The bytes this octree has allocated (records, packed geometry, nodes, entries and homes, by capacity; not the
@@ -77,9 +80,9 @@ public:
             for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
                 const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
                 // The candidates' geometry is fetched together, not one miss after another.
-                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_geometry[near[i]]);
+                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_records.geometry(near[i]));
                 for (std::size_t i = 0; i < found; ++i) {
-                    const RecordGeometry& g = m_geometry[near[i]];
+                    const RecordGeometry& g = m_records.geometry(near[i]);
                     const Vec3 d = q - g.position;
                     const double reach = error_bound * g.radius;
                     if (dot(d, d) < reach * reach) visit(near[i], g);
@@ -220,7 +223,6 @@ private:
     void clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const;
 
     RecordArray m_records;
-    ChunkedArray<RecordGeometry> m_geometry;  ///< geometry_of(m_records[i]), radius shrunk with it
     std::array<double, 2> m_inner{0.5, 0.25};
     std::vector<Filing> m_filings;  ///< reach, reach × m_inner[0], reach × m_inner[1]
 };
