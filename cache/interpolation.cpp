@@ -75,24 +75,47 @@ bool is_valid(const IrradianceRecord& record, const Vec3& p, const Vec3& n, doub
     return front_distance(record, p, n) > -kFrontLimit;
 }
 
+namespace {
+
+/// Ward & Heckbert 1992, first-order extrapolation: E_i + (n_i × n)·∇r E_i + (p − p_i)·∇t E_i, with the gradients
+/// of channel c given by `rotational(c)` and `translational(c)`.
+template <typename Rotational, typename Translational>
+Vec3 extrapolate_from(const Vec3& position, const Vec3& normal, const Vec3& irradiance, Rotational&& rotational,
+                      Translational&& translational, const Vec3& p, const Vec3& n) {
+    const Vec3 axis = cross(normal, n);
+    const Vec3 offset = p - position;
+    Vec3 out;
+    for (int c = 0; c < 3; ++c) {
+        const double e = irradiance[c];
+        const double v = e + dot(axis, rotational(c)) + dot(offset, translational(c));
+        // Never negative; POV-Ray compat: a negative value (negative light) stays on its side of zero.
+        out[c] = e >= 0.0 ? std::max(v, 0.0) : std::min(v, 0.0);
+    }
+    return out;
+}
+
+Vec3 channel(const PackedGradients& g, int c) {
+    const auto k = 3 * static_cast<std::size_t>(c);
+    return {g[k], g[k + 1], g[k + 2]};
+}
+
+}  // namespace
+
 Vec3 extrapolate(const IrradianceRecord& record, const Vec3& p, const Vec3& n, bool gradients) {
-    return extrapolate(geometry_of(record), values_of(record), p, n, gradients);
+    if (!gradients) return record.irradiance;
+    return extrapolate_from(
+        record.position, record.normal, record.irradiance,
+        [&](int c) { return record.rotational[static_cast<std::size_t>(c)]; },
+        [&](int c) { return record.translational[static_cast<std::size_t>(c)]; }, p, n);
 }
 
 Vec3 extrapolate(const RecordGeometry& geometry, const RecordValues& values, const Vec3& p, const Vec3& n,
                  bool gradients) {
     if (!gradients) return values.irradiance;
-    // Ward & Heckbert 1992, first-order extrapolation: E_i + (n_i × n)·∇r E_i + (p − p_i)·∇t E_i.
-    const Vec3 axis = cross(geometry.normal, n);
-    const Vec3 offset = p - geometry.position;
-    Vec3 out;
-    for (int c = 0; c < 3; ++c) {
-        const double e = values.irradiance[c];
-        const double v = e + dot(axis, values.rotational[c]) + dot(offset, values.translational[c]);
-        // Never negative; POV-Ray compat: a negative value (negative light) stays on its side of zero.
-        out[c] = e >= 0.0 ? std::max(v, 0.0) : std::min(v, 0.0);
-    }
-    return out;
+    return extrapolate_from(
+        geometry.position, geometry.normal, values.irradiance,
+        [&](int c) { return channel(values.rotational, c); },
+        [&](int c) { return channel(values.translational, c); }, p, n);
 }
 
 InterpolationAccumulator::InterpolationAccumulator(const Vec3& p, const Vec3& n, const LookupParams& params)
@@ -141,12 +164,16 @@ bool InterpolationAccumulator::weigh_near(const RecordGeometry& record, RecordWe
 }
 
 void InterpolationAccumulator::add_weighted(const IrradianceRecord& record, const RecordWeight& w) {
-    add_weighted(geometry_of(record), values_of(record), w);
+    add_sample(extrapolate(record, m_p, m_n, m_params.gradients), w);
 }
 
 void InterpolationAccumulator::add_weighted(const RecordGeometry& geometry, const RecordValues& values,
                                             const RecordWeight& w) {
-    m_sum += extrapolate(geometry, values, m_p, m_n, m_params.gradients) * w.weight;
+    add_sample(extrapolate(geometry, values, m_p, m_n, m_params.gradients), w);
+}
+
+void InterpolationAccumulator::add_sample(const Vec3& extrapolated, const RecordWeight& w) {
+    m_sum += extrapolated * w.weight;
     m_weight_sum += w.weight;
     m_coverage += w.coverage;
     ++m_records;

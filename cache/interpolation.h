@@ -99,6 +99,9 @@ public:
     Interpolation result() const;
 
 private:
+    /// Adds a record's value extrapolated to the point, with its weights.
+    void add_sample(const Vec3& extrapolated, const RecordWeight& w);
+
     Vec3 m_p;
     Vec3 m_n;
     LookupParams m_params;

@@ -68,6 +68,9 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
     r = std::min(r, hi);
     // A zero radius (a ray hit at distance 0 and no lower limit) becomes the smallest radius the coordinates resolve.
     rec.radius = r > 0.0 ? r : 1e-9 * std::max(1.0, max_abs_component(position));
+    // Kept in single precision, as the cache stores them.
+    rec.rotational = unpack(pack(rec.rotational));
+    rec.translational = unpack(pack(rec.translational));
     return rec;
 }
 

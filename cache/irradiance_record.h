@@ -2,6 +2,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cfloat>
 #include <cstdint>
 
 #include "cache/gather.h"
@@ -11,6 +13,7 @@
 namespace wardray::cache {
 
 /// One entry of the irradiance cache (Ward, Rubinstein & Clear 1988), in POV-Ray's normalisation (no π).
+/// make_record() rounds both gradients to single precision, as the octree keeps them (PackedGradients).
 struct IrradianceRecord {
     Vec3 position;     ///< world space
     Vec3 normal;       ///< unit, world space
@@ -35,24 +38,42 @@ inline RecordGeometry geometry_of(const IrradianceRecord& record) {
     return {record.position, record.normal, record.radius};
 }
 
+/// A record's three gradient vectors in single precision, x, y, z per channel: make_record() rounds them so, and
+/// the octree keeps them so (a gradient is a first-order correction; 36 bytes instead of 72 a kind and record).
+using PackedGradients = std::array<float, 9>;
+
+/// The gradients rounded to single precision (to nearest; beyond its range, its largest finite value).
+inline PackedGradients pack(const ChannelGradients& g) {
+    PackedGradients out;
+    for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < 3; ++a)
+            out[3 * c + a] = static_cast<float>(std::clamp(g[c][a], -double{FLT_MAX}, double{FLT_MAX}));
+    return out;
+}
+inline ChannelGradients unpack(const PackedGradients& g) {
+    return {Vec3{g[0], g[1], g[2]}, Vec3{g[3], g[4], g[5]}, Vec3{g[6], g[7], g[8]}};
+}
+
 /// The rest of a record: what a lookup reads of the records it uses, and their bookkeeping.
 struct RecordValues {
-    Vec3 irradiance;                   ///< IrradianceRecord::irradiance
-    ChannelGradients rotational{};     ///< IrradianceRecord::rotational
-    ChannelGradients translational{};  ///< IrradianceRecord::translational
-    std::int32_t depth = 0;            ///< IrradianceRecord::depth
-    std::int32_t pass = 0;             ///< IrradianceRecord::pass
+    Vec3 irradiance;                  ///< IrradianceRecord::irradiance
+    PackedGradients rotational{};     ///< IrradianceRecord::rotational
+    PackedGradients translational{};  ///< IrradianceRecord::translational
+    std::int32_t depth = 0;           ///< IrradianceRecord::depth
+    std::int32_t pass = 0;            ///< IrradianceRecord::pass
 };
 
-/// A record's irradiance, gradients, depth and pass.
+/// A record's irradiance, gradients, depth and pass (the gradients exactly when make_record() made them).
 inline RecordValues values_of(const IrradianceRecord& record) {
-    return {record.irradiance, record.rotational, record.translational, record.depth, record.pass};
+    return {record.irradiance, pack(record.rotational), pack(record.translational), record.depth, record.pass};
 }
 
 /// The record made of its two parts again.
 inline IrradianceRecord record_of(const RecordGeometry& geometry, const RecordValues& values) {
-    return {geometry.position, geometry.normal,      values.irradiance, geometry.radius,
-            values.rotational, values.translational, values.depth,      values.pass};
+    return {geometry.position,         geometry.normal,
+            values.irradiance,         geometry.radius,
+            unpack(values.rotational), unpack(values.translational),
+            values.depth,              values.pass};
 }
 
 /// The range a record's radius is clamped into, in world units.

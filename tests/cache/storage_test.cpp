@@ -1,10 +1,14 @@
 // Tests of the cache's storage: ChunkedArray keeps order and addresses; RunPool gives disjoint runs and reuses them.
 #include "cache/chunked_array.h"
+#include "cache/irradiance_record.h"
+#include "cache/record_store.h"
 #include "cache/run_pool.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cstring>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -94,6 +98,43 @@ TEST(RunPool, RunsAreDisjointAndReleasedRunsAreReusedByLength) {
     const std::size_t with_large = pool.memory_bytes();
     pool.release(large, 100);
     EXPECT_LT(pool.memory_bytes(), with_large);
+}
+
+TEST(RecordStore, GivesBackARecordFromMakeRecordBitForBitAndKeepsGradientsInSinglePrecision) {
+    GatherResult gathered;
+    gathered.irradiance = {0.3, 0.5, 0.7};
+    gathered.harmonic_mean_distance = 0.8;
+    gathered.nearest_distance = 0.2;
+    // Values a float does not hold exactly, one beyond its range.
+    gathered.rotational = {Vec3{0.1, -0.2, 0.3}, Vec3{1.0 / 3.0, 0, 1e-7}, Vec3{-0.7, 2.0 / 3.0, 1e40}};
+    gathered.translational = {Vec3{0.01, 0.02, -0.03}, Vec3{0, 0.1, 0}, Vec3{-1e-3, 0, 0.9}};
+    const IrradianceRecord made = make_record({1, 2, 3}, {0, 1, 0}, gathered, 1, {0.01, 10.0});
+    for (int c = 0; c < 3; ++c) {
+        for (int a = 0; a < 3; ++a) {
+            for (const ChannelGradients* g : {&made.rotational, &made.translational})
+                EXPECT_EQ((*g)[c][a], static_cast<double>(static_cast<float>((*g)[c][a]))) << c << a;
+            // Rounded to nearest, not truncated or zeroed.
+            EXPECT_NEAR(made.translational[c][a], gathered.translational[c][a],
+                        1e-7 * std::fabs(gathered.translational[c][a]));
+        }
+    }
+    EXPECT_EQ(made.rotational[2].z, double{FLT_MAX});
+
+    RecordStore store;
+    IrradianceRecord other = made;
+    other.position = {4, 5, 6};
+    other.pass = 3;
+    store.push_back(made);
+    store.push_back(other);
+    ASSERT_EQ(store.size(), 2u);
+    const IrradianceRecord back = store[0];
+    EXPECT_EQ(std::memcmp(&back, &made, sizeof back), 0);
+    EXPECT_EQ(store[1].position, other.position);
+    EXPECT_EQ(store[1].pass, 3);
+    store.set_radius(1, 0.25);
+    EXPECT_EQ(store.geometry(1).radius, 0.25);
+    EXPECT_EQ(store[1].radius, 0.25);
+    EXPECT_EQ(store[0].radius, made.radius);
 }
 
 }  // namespace
