@@ -224,7 +224,7 @@ std::vector<SlopeMapEntry> Parser::parse_slope_map() {
     expect("{");
     std::vector<SlopeMapEntry> map;
     while (!accept("}")) {
-        const Token open = expect("[");
+        expect("[");
         SlopeMapEntry e;
         e.value = static_cast<double>(static_cast<float>(parse_float()));
         accept(",");
