@@ -205,7 +205,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     }
     // Shared among processes, each process renders its share of every wave and they exchange records between waves.
     TileExchange exchange(settings.communicator);
-    exchange.begin(tile_count, wave_count);
+    exchange.begin(tile_count, wave_count, tiles_x);
     std::vector<TileExchange::TileRect> final_tiles;  // this process's tiles of the final pass
     const int processes = settings.communicator ? std::max(settings.communicator->size(), 1) : 1;
     const double total_work = static_cast<double>(tiles_rendered) / processes;
@@ -221,6 +221,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     int pass_number = 0;
     auto run_pass = [&](bool final_pass, const auto& body) {
         if (cached) cache->begin_pass(tile_count);
+        exchange.start_pass();
         const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
         for (const std::vector<int>& wave : pass_waves[static_cast<std::size_t>(pass_number - 1)]) {
             exchange.start_wave(wave);

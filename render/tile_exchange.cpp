@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <ctime>
 #include <stdexcept>
@@ -67,9 +68,13 @@ void ByteReader::take(void* out, std::size_t n) {
 TileExchange::TileExchange(Communicator* communicator)
     : m_comm(communicator && communicator->size() > 1 ? communicator : nullptr) {}
 
-void TileExchange::begin(int tile_count, std::size_t wave_count) {
+void TileExchange::begin(int tile_count, std::size_t wave_count, int tiles_x) {
     m_cost.assign(static_cast<std::size_t>(std::max(tile_count, 0)), 0.0);
     m_measured = m_cost;
+    m_cost_before = m_cost;
+    m_cost_pass.assign(m_cost.size(), -1);
+    m_tiles_x = std::max(tiles_x, 1);
+    m_pass = 0;
     m_waves = 0;
     m_counters.reset();
     if (m_comm) m_counters = m_comm->shared_counters(wave_count);
@@ -86,25 +91,50 @@ void TileExchange::tile_cost(int tile, double seconds) {
         m_measured[static_cast<std::size_t>(tile)] = seconds;
 }
 
+std::vector<double> TileExchange::predicted_costs(const std::vector<int>& wave) const {
+    std::vector<double> cost;
+    for (const int tile : wave) {
+        const auto t = static_cast<std::size_t>(tile);
+        if (t >= m_cost.size() || !(m_cost[t] > 0.0) || m_cost_pass[t] >= m_pass) return {};
+        cost.push_back(m_cost[t]);
+    }
+    // The growth of the tiles rendered in this pass, each weighing 1 / distance in tiles: a tile's cost follows
+    // the records its region still needs, which changes smoothly across the image from one pass to the next.
+    std::vector<std::size_t> grown;
+    for (std::size_t u = 0; u < m_cost.size(); ++u)
+        if (m_cost_pass[u] == m_pass && m_cost_before[u] > 0.0) grown.push_back(u);
+    if (grown.empty()) return cost;
+    for (std::size_t i = 0; i < wave.size(); ++i) {
+        const int tx = wave[i] % m_tiles_x, ty = wave[i] / m_tiles_x;
+        double weighted = 0.0, weights = 0.0;
+        for (const std::size_t u : grown) {
+            const double dx = static_cast<double>(static_cast<int>(u) % m_tiles_x - tx);
+            const double dy = static_cast<double>(static_cast<int>(u) / m_tiles_x - ty);
+            const double w = 1.0 / std::max(std::sqrt(dx * dx + dy * dy), 1e-3);
+            weighted += w * (m_cost[u] / m_cost_before[u]);
+            weights += w;
+        }
+        cost[i] *= weighted / weights;
+    }
+    return cost;
+}
+
 std::vector<int> TileExchange::fixed_share(const std::vector<int>& wave) const {
     const auto size = static_cast<std::size_t>(m_comm->size());
     const auto rank = static_cast<std::size_t>(m_comm->rank());
-    bool known = wave.size() > size;
-    for (const int tile : wave)
-        known = known && static_cast<std::size_t>(tile) < m_cost.size() && m_cost[static_cast<std::size_t>(tile)] > 0.0;
+    const std::vector<double> cost = wave.size() > size ? predicted_costs(wave) : std::vector<double>{};
     std::vector<int> mine;
-    if (known) {
+    if (!cost.empty()) {
         // Longest processing time first (Graham 1969), on the costs every process holds alike: the same shares
-        // everywhere. Ties go to the lower tile index and the lower rank.
-        std::vector<int> order = wave;
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-            return m_cost[static_cast<std::size_t>(a)] > m_cost[static_cast<std::size_t>(b)];
-        });
+        // everywhere. Ties go to the earlier tile of the wave and the lower rank.
+        std::vector<std::size_t> order(wave.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
         std::vector<double> load(size, 0.0);
-        for (const int tile : order) {
+        for (const std::size_t i : order) {
             const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
-            load[least] += m_cost[static_cast<std::size_t>(tile)];
-            if (least == rank) mine.push_back(tile);
+            load[least] += cost[i];
+            if (least == rank) mine.push_back(wave[i]);
         }
     } else {
         for (std::size_t i = 0; i < wave.size(); ++i)
@@ -128,13 +158,13 @@ void TileExchange::start_wave(const std::vector<int>& wave) {
         // in that order ends within the last tile's cost of the best split. The order is the same everywhere, as
         // the costs are.
         m_order = wave;
-        bool known = true;
-        for (const int tile : wave)
-            known = known && static_cast<std::size_t>(tile) < m_cost.size() && m_cost[static_cast<std::size_t>(tile)] > 0.0;
-        if (known)
-            std::stable_sort(m_order.begin(), m_order.end(), [&](int a, int b) {
-                return m_cost[static_cast<std::size_t>(a)] > m_cost[static_cast<std::size_t>(b)];
-            });
+        const std::vector<double> cost = predicted_costs(wave);
+        if (!cost.empty()) {
+            std::vector<std::size_t> order(wave.size());
+            for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+            for (std::size_t i = 0; i < order.size(); ++i) m_order[i] = wave[order[i]];
+        }
     } else {
         m_order = fixed_share(wave);
     }
@@ -217,7 +247,10 @@ void TileExchange::end_wave(const std::vector<int>& wave, const std::vector<int>
             if (tile < 0 || static_cast<std::size_t>(tile) >= in_wave.size() || !in_wave[static_cast<std::size_t>(tile)])
                 throw std::runtime_error("tile exchange: a process sent a tile outside the wave");
             // Every process keeps the same costs: its own tiles' as it sent them.
-            m_cost[static_cast<std::size_t>(tile)] = std::max(in.get<double>(), 1e-9);
+            const auto t = static_cast<std::size_t>(tile);
+            if (m_cost_pass[t] < m_pass) m_cost_before[t] = m_cost[t];
+            m_cost[t] = std::max(in.get<double>(), 1e-9);
+            m_cost_pass[t] = m_pass;
             cache::TileCache::Contribution c;
             c.lookups = in.get<std::uint64_t>();
             c.hits = in.get<std::uint64_t>();

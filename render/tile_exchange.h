@@ -58,12 +58,14 @@ public:
     bool distributed() const { return m_comm != nullptr; }
     bool root() const { return !m_comm || m_comm->rank() == 0; }
 
-    /// Readies the exchange for a render of `tile_count` tiles in `wave_count` waves over every pass (collective when
-    /// distributed: the processes then set up the counters they draw tiles from).
-    void begin(int tile_count, std::size_t wave_count);
+    /// Readies the exchange for a render of `tile_count` tiles, `tiles_x` to a row, in `wave_count` waves over every
+    /// pass (collective when distributed: the processes then set up the counters they draw tiles from).
+    void begin(int tile_count, std::size_t wave_count, int tiles_x = 1);
+    /// A new pass over the tiles begins: each tile's cost in the passes before is what start_wave() predicts from.
+    void start_pass() { ++m_pass; }
     /// Starts `wave`: afterwards next_tile() hands out its tiles. Distributed, processes draw the wave's tiles from
     /// a counter they share, each taking the next tile as it becomes free, the costliest first once every tile's
-    /// cost in an earlier pass is known. Where the processes cannot share counters, the shares are fixed in
+    /// cost in an earlier pass is known (predicted_costs()). Where the processes cannot share counters, the shares are fixed in
     /// advance: longest processing time first on the known costs, otherwise every size()-th tile, the starting
     /// point turning with each wave so that one-tile waves do not all fall to the same process. Who renders a tile
     /// never changes a pixel.
@@ -104,6 +106,10 @@ public:
 private:
     /// The fixed shares of a wave, for processes that cannot draw from shared counters.
     std::vector<int> fixed_share(const std::vector<int>& wave) const;
+    /// Each tile of `wave`'s cost in this pass as predicted from what every process holds alike, or empty when a
+    /// tile's cost in an earlier pass is not known: that cost, scaled by how much dearer the tiles already rendered
+    /// in this pass became since their previous pass, nearer tiles weighing more.
+    std::vector<double> predicted_costs(const std::vector<int>& wave) const;
 
     Communicator* m_comm;
     std::unique_ptr<SharedCounters> m_counters;  ///< one counter per wave; null: fixed shares
@@ -118,6 +124,10 @@ private:
     std::vector<RankWaveTimes> m_wave_times;  ///< this process's times in each exchanged wave
     double m_unexchanged = 0.0;  ///< busy time of waves without an exchange, sent with the image
     std::vector<double> m_cost;  ///< each tile's last exchanged cost (the same on every process); 0: not known
+    std::vector<double> m_cost_before;  ///< and its cost the time before that; 0: not known
+    std::vector<int> m_cost_pass;  ///< the pass m_cost was measured in
+    int m_tiles_x = 1;
+    int m_pass = 0;
     std::vector<double> m_measured;  ///< this process's tiles' costs in the current wave
     RankStatistics m_mine;
     std::vector<RankStatistics> m_ranks;

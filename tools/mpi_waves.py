@@ -8,6 +8,8 @@ loses against a perfect split of the same processor time:
 - the rest of the waiting: tiles of uneven cost within a wave (at most the last tile's cost with tiles drawn as ranks
   become free);
 - the merge, which every rank makes in full (serial, as in one process).
+Last, the critical path in processor time and its excess over an even split, the figure to compare between builds
+on a loaded machine.
 
 usage: tools/mpi_waves.py STATS.json [--waves]      (--waves: one line per wave as well as the totals)
 """
@@ -52,6 +54,12 @@ def main(argv):
           f"waiting {sum(t['exchange'] for t in totals) / ranks:.3f} s a rank "
           f"({narrow_wait / ranks:.3f} s of it in waves of fewer tiles than ranks), "
           f"merging {sum(t['merge'] for t in totals) / ranks:.3f} s a rank")
+    # The same in processor time, which the machine's load moves far less than wall time: the sum over waves of the
+    # busiest rank's time in its tiles, and how far it lies above half of all the ranks' time in tiles.
+    critical = sum(w["busy_max_cpu_seconds"] for w in waves)
+    busy = sum(t["busy"] for t in totals)
+    print(f"critical path {critical:.3f} cpu s, {(critical - busy / ranks) * 1e3:.1f} ms over an even split of "
+          f"all the ranks' {busy:.3f} cpu s in tiles")
     return 0
 
 
