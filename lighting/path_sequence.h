@@ -1,0 +1,24 @@
+// PathSequence: the random numbers of a pixel's reference paths, from one Owen-scrambled Sobol sequence per pixel.
+#pragma once
+
+#include <cstdint>
+
+#include "core/vec3.h"
+
+namespace wardray::lighting {
+
+/// How many dimensions path_sample provides: two per bounce for the first four bounces.
+inline constexpr int kPathDimensions = 8;
+
+/// Coordinate `dimension` (< kPathDimensions) of point `index` of a Sobol sequence (Sobol 1967; the first
+/// dimensions' direction numbers are Joe & Kuo's 2008) under a nested scrambling keyed by `seed` (Owen 1995's
+/// structure, hashed as Laine & Karras 2011 do), in [0, 1). Over seeds every point is uniform on the unit cube, so
+/// an average over points keeps the expectation of independent uniform samples, while the first 2^m points share
+/// the cube out (a (t, m, s)-net): a pixel's paths stratify each bounce and the bounces jointly.
+double path_sample(std::uint32_t index, int dimension, std::uint64_t seed);
+
+/// A cosine-distributed direction in the local frame (z along the normal) from a point of the unit square:
+/// sin²θ = u, φ = 2πv (Ward & Heckbert 1992, section 3: density cos θ / π).
+Vec3 cosine_direction(double u, double v);
+
+}  // namespace wardray::lighting
