@@ -101,8 +101,9 @@ public:
     Vec3 irradiance(const Vec3& p, const Vec3& n, double, const RayState& state, TraceContext& ctx) const override {
         // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π);
         // the first bounce takes all of --gi-rays, each deeper bounce continues its path with one ray, so a pixel
-        // averages --gi-rays independent paths. Their directions are one scrambled Sobol point per path, two
-        // dimensions per bounce, so the paths stratify every bounce and the bounces jointly.
+        // averages --gi-rays independent paths. Each path is one point of a scrambled Sobol sequence, two of its
+        // dimensions per direction and one per light picked (path_sequence.h), so the pixel's paths stratify
+        // every bounce and the bounces jointly.
         const std::uint64_t salt = reseed(state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth, m_seed);
         cache::SplitMix64 rng(cache::seed_from(p, n, salt));
         Vec3 t, b;
@@ -110,7 +111,7 @@ public:
         ++ctx.rays.gathers;
         if (state.gi_depth > 0) {
             // A path below its first bounce: its own point's next two dimensions, or a uniform pair past them.
-            const int dim = 2 * state.gi_depth;
+            const int dim = path_direction_dimension(state.gi_depth);
             Vec3 d;
             if (state.path_count > 0 && dim + 1 < kPathDimensions) {
                 const auto index = static_cast<std::uint32_t>(state.path_index);
@@ -130,8 +131,9 @@ public:
         for (int i = 0; i < m_rays; ++i) {
             path.path_index = i;
             const auto index = static_cast<std::uint32_t>(i);
-            const Vec3 d = cosine_direction(path_sample(index, 0, path.path_group),
-                                            path_sample(index, 1, path.path_group));
+            const int dim = path_direction_dimension(0);
+            const Vec3 d = cosine_direction(path_sample(index, dim, path.path_group),
+                                            path_sample(index, dim + 1, path.path_group));
             sum += trace_one(p, t * d.x + b * d.y + n * d.z, path, rng.next(), ctx);
         }
         return sum / static_cast<double>(m_rays);

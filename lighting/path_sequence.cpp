@@ -22,7 +22,8 @@ struct Polynomial {
     std::array<std::uint32_t, 5> initial;
 };
 
-/// Dimensions 1 to 7 (dimension 0 is van der Corput's): x+1, x²+x+1, x³+x+1, x³+x²+1, x⁴+x+1, x⁴+x³+1, x⁵+x²+1
+/// Dimensions 1 to 8 (dimension 0 is van der Corput's): x+1, x²+x+1, x³+x+1, x³+x²+1, x⁴+x+1, x⁴+x³+1, x⁵+x²+1,
+/// x⁵+x³+1
 /// with Joe & Kuo's (2008) initial numbers.
 constexpr std::array<Polynomial, kPathDimensions - 1> kPolynomials{{
     {1, 0, {1}},
@@ -32,6 +33,7 @@ constexpr std::array<Polynomial, kPathDimensions - 1> kPolynomials{{
     {4, 1, {1, 1, 3, 3}},
     {4, 4, {1, 3, 5, 13}},
     {5, 2, {1, 1, 5, 5, 17}},
+    {5, 4, {1, 1, 5, 5, 5}},
 }};
 
 /// v_k = m_k / 2^k as 32-bit fractions, m_k from Sobol's recurrence

@@ -7,8 +7,15 @@
 
 namespace wardray::lighting {
 
-/// How many dimensions path_sample provides: two per bounce for the first four bounces.
-inline constexpr int kPathDimensions = 8;
+/// How many dimensions path_sample provides: the first bounce's direction, then at each hit of bounce depth g the
+/// light picked there and the next direction (path_pick_dimension, path_direction_dimension), up to depth 3.
+inline constexpr int kPathDimensions = 9;
+
+/// The first of the two dimensions of the direction a path leaves a hit of bounce depth `gi_depth` along (0 at the
+/// camera hit).
+constexpr int path_direction_dimension(int gi_depth) { return gi_depth == 0 ? 0 : 3 * gi_depth; }
+/// The dimension of the light a path picks at a hit of bounce depth `gi_depth` ≥ 1.
+constexpr int path_pick_dimension(int gi_depth) { return 3 * gi_depth - 1; }
 
 /// Coordinate `dimension` (< kPathDimensions) of point `index` of a Sobol sequence (Sobol 1967; the first
 /// dimensions' direction numbers are Joe & Kuo's 2008) under a nested scrambling keyed by `seed` (Owen 1995's
