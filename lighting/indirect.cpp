@@ -12,6 +12,7 @@
 #include "geometry/scene_geometry.h"
 #include "lighting/indirect_light.h"
 #include "lighting/integrator.h"
+#include "lighting/path_sequence.h"
 #include "texture/pigment.h"
 
 namespace wardray::lighting {
@@ -95,31 +96,57 @@ private:
 class ReferenceIrradiance final : public IndirectLight {
 public:
     ReferenceIrradiance(const GatherTracer& tracer, int rays, std::uint64_t seed)
-        : m_tracer(tracer), m_rays(rays), m_seed(seed) {}
+        : m_tracer(tracer), m_rays(std::max(1, rays)), m_seed(seed) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double, const RayState& state, TraceContext& ctx) const override {
-        // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π) by
-        // stratified Monte Carlo; the first bounce takes all of --gi-rays, each deeper bounce continues its path
-        // with one ray, so a pixel averages --gi-rays independent paths.
-        const int rays = state.gi_depth == 0 ? std::max(1, m_rays) : 1;
+        // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π);
+        // the first bounce takes all of --gi-rays, each deeper bounce continues its path with one ray, so a pixel
+        // averages --gi-rays independent paths. Each path is one point of a scrambled Sobol sequence, two of its
+        // dimensions per direction and one per light picked (path_sequence.h), so the pixel's paths stratify
+        // every bounce and the bounces jointly.
         const std::uint64_t salt = reseed(state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth, m_seed);
         cache::SplitMix64 rng(cache::seed_from(p, n, salt));
-        const std::vector<cache::HemisphereSample> samples =
-            cache::stratified_cosine_samples(cache::strata_for_count(rays), rng);
         Vec3 t, b;
         cache::orthonormal_basis(n, t, b);
         ++ctx.rays.gathers;
-        Vec3 sum;
-        for (const cache::HemisphereSample& sample : samples) {
-            const Vec3& d = sample.direction;
-            double distance = 0.0;
-            const Vec3 l = m_tracer.gather_radiance(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx, distance);
-            if (is_finite(l)) sum += l;
+        if (state.gi_depth > 0) {
+            // A path below its first bounce: its own point's next two dimensions, or a uniform pair past them.
+            const int dim = path_direction_dimension(state.gi_depth);
+            Vec3 d;
+            if (state.path_count > 0 && dim + 1 < kPathDimensions) {
+                const auto index = static_cast<std::uint32_t>(state.path_index);
+                d = cosine_direction(path_sample(index, dim, state.path_group),
+                                     path_sample(index, dim + 1, state.path_group));
+            } else {
+                const double u = rng.uniform();
+                d = cosine_direction(u, rng.uniform());
+            }
+            return trace_one(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx);
         }
-        return samples.empty() ? Vec3{} : sum / static_cast<double>(samples.size());
+        // The pixel's paths: one Sobol sequence, scrambled by this hit's stream.
+        RayState path = state;
+        path.path_group = rng.next();
+        path.path_count = m_rays;
+        Vec3 sum;
+        for (int i = 0; i < m_rays; ++i) {
+            path.path_index = i;
+            const auto index = static_cast<std::uint32_t>(i);
+            const int dim = path_direction_dimension(0);
+            const Vec3 d = cosine_direction(path_sample(index, dim, path.path_group),
+                                            path_sample(index, dim + 1, path.path_group));
+            sum += trace_one(p, t * d.x + b * d.y + n * d.z, path, rng.next(), ctx);
+        }
+        return sum / static_cast<double>(m_rays);
     }
 
 private:
+    Vec3 trace_one(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
+                   TraceContext& ctx) const {
+        double distance = 0.0;
+        const Vec3 l = m_tracer.gather_radiance(p, dir, state, path_seed, ctx, distance);
+        return is_finite(l) ? l : Vec3{};
+    }
+
     const GatherTracer& m_tracer;
     int m_rays = 256;
     std::uint64_t m_seed = 0;
@@ -169,6 +196,9 @@ Vec3 Integrator::gather_radiance(const Vec3& p, const Vec3& dir, const RayState&
     next.gi_depth = state.gi_depth + 1;
     next.gather_ray = true;
     next.path_seed = path_seed;
+    next.path_group = state.path_group;
+    next.path_index = state.path_index;
+    next.path_count = state.path_count;
     next.interiors = state.interiors;
     const geometry::Ray ray{p, dir, m_geometry.self_intersection_offset(p), 1e30, geometry::RayKind::Gather};
     ++ctx.rays.gather;

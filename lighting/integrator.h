@@ -114,6 +114,14 @@ private:
         bool highlights = true;
         /// The path's seed (RayState::path_seed), from which a gather path picks the lights it tests.
         std::uint64_t path_seed = 0;
+        /// A reference path's place in its pixel's sequence (RayState's path fields and bounce depth), from which
+        /// the light it picks here is drawn.
+        struct {
+            std::uint64_t group = 0;
+            int index = 0;
+            int count = 0;  ///< 0: not a reference path
+            int gi_depth = 0;
+        } path;
     };
 
     /// POV-Ray's TraceRay: the colour along `ray` (level and weight checks, surface or sky, then the atmosphere);

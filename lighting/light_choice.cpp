@@ -10,6 +10,7 @@
 #include "core/render_seed.h"
 #include "geometry/scene_geometry.h"
 #include "lighting/integrator.h"
+#include "lighting/path_sequence.h"
 
 namespace wardray::lighting {
 
@@ -80,8 +81,15 @@ Vec3 Integrator::direct_light_picked(const scene::Finish& finish, const Vec3& pi
     }
     // The picks' uniforms: one number from the path's seed and the ray, stratified over the picks, so the image
     // depends on neither thread nor order, and --seed turns it.
-    cache::SplitMix64 rng(cache::seed_from(s.direction, n, reseed(s.path_seed ^ 0x4C49474854ull, m_options.seed)));
-    const double u = rng.uniform();
+    // A reference path takes it from its pixel's sequence instead, so the pixel's paths stratify their picks too.
+    double u = 0.0;
+    const int dim = path_pick_dimension(s.path.gi_depth);
+    if (s.path.count > 0 && dim < kPathDimensions) {
+        u = path_sample(static_cast<std::uint32_t>(s.path.index), dim, s.path.group);
+    } else {
+        cache::SplitMix64 rng(cache::seed_from(s.direction, n, reseed(s.path_seed ^ 0x4C49474854ull, m_options.seed)));
+        u = rng.uniform();
+    }
     for (std::size_t k = 0; k < picks; ++k) {
         const LightPick pick = pick_light(importance, total, (static_cast<double>(k) + u) / static_cast<double>(picks));
         const Candidate& c = candidates[pick.index];

@@ -54,6 +54,7 @@ Vec3 Integrator::shade(const geometry::Hit& hit, const Vec3& direction, double d
     s.interiors = &state.interiors;
     s.highlights = !state.gather_ray;
     s.path_seed = state.path_seed;
+    s.path = {state.path_group, state.path_index, state.path_count, state.gi_depth};
     texture::SurfacePoint surface{hit.position, s.raw_normal, direction, m_quality.quick_colors};
     s.surface = &surface;
     std::vector<const scene::Pattern*> warps;

@@ -91,6 +91,11 @@ struct RayState {
     /// the rays they refract or transmit; reflected and gather rays see it opaque).
     bool alpha_background = false;
     std::uint64_t path_seed = 0;  ///< reference mode: tells the independent paths of one pixel apart
+    /// Reference mode: the scrambling of the Sobol sequence a pixel's paths share (lighting/path_sequence.h),
+    /// this path's point in it and the number of paths (0: not a reference path; deeper bounces draw uniformly).
+    std::uint64_t path_group = 0;
+    int path_index = 0;
+    int path_count = 0;
     /// The spectral band of a ray that a dispersive surface split (POV-Ray's SpectralBand): later dispersive
     /// surfaces bend it by its band's index instead of splitting it again. White light until then.
     photons::SpectralBand band;

@@ -226,9 +226,10 @@ TEST(Radiosity, LightsPickedOnGatherPathsRepeatForAnyThreadCountAndTurnWithTheSe
 }
 
 TEST(Radiosity, TwoSeedsOfTheReferenceConvergeTogether) {
-    // Two seeds draw independent paths: their images differ by noise alone, which falls as 1/sqrt(paths), so with
-    // 4 times the paths the rRMSE between them about halves. A seed that changed nothing, or changed what the paths
-    // converge to, fails.
+    // Two seeds draw independent paths: their images differ by noise alone, which falls at least as 1/sqrt(paths)
+    // and, the paths being stratified (lighting/path_sequence.h), up to about paths^-3/4 where the integrands have
+    // edges: with 4 times the paths the rRMSE between them falls to between about 0.5 and 0.35 of itself. A seed
+    // that changed nothing, or changed what the paths converge to, fails.
     const fs::path dir = fresh_dir("seed_convergence");
     const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W32 +H24 -A +WT2 --gi=reference";
     double rrmse[2] = {0.0, 0.0};
@@ -253,7 +254,7 @@ TEST(Radiosity, TwoSeedsOfTheReferenceConvergeTogether) {
     EXPECT_LT(rrmse[0], 0.3) << "seeds 1 and 2 disagree by more than noise";
     EXPECT_GT(rrmse[1], 0.0);
     EXPECT_LT(rrmse[1], 0.7 * rrmse[0]) << "the difference between seeds does not fall with more paths";
-    EXPECT_GT(rrmse[1], 0.3 * rrmse[0]) << "the difference between seeds falls faster than noise would";
+    EXPECT_GT(rrmse[1], 0.25 * rrmse[0]) << "the difference between seeds falls faster than noise would";
 }
 
 TEST(Radiosity, CacheAgreesWithTheReferenceOnTheBox) {

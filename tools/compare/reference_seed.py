@@ -15,6 +15,7 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import resource
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
@@ -25,16 +26,20 @@ def render(wardray, scene, out, args, extra):
     width, height = args.size.split("x")
     cmd = [wardray, f"+I{scene}", f"+O{out}", f"+W{width}", f"+H{height}", "-A", f"+WT{args.threads}",
            f"+L{pathlib.Path(scene).resolve().parent}"] + extra
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     run = subprocess.run(cmd, capture_output=True, text=True)
     seconds = time.monotonic() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if run.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed:\n{run.stderr[-2000:]}")
-    return seconds
+    # CPU time (user + system, all threads) compares on a loaded machine; wall time does not.
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return seconds, cpu
 
 
 def pair(wardray, scene, out_dir, args, label, extra, fmt):
-    """Renders `extra` with each seed; returns the wall times and the rRMSE between the first two seeds."""
+    """Renders `extra` with each seed; returns (wall, CPU) times and the rRMSE between the first two seeds."""
     flag = "+FH" if fmt == "hdr" else "+FE"
     images, times = [], []
     for seed in args.seeds:
@@ -56,6 +61,7 @@ def main():
     p.add_argument("--format", choices=["hdr", "exr", "both"], default="hdr")
     p.add_argument("--direct", action="store_true", help="also the --gi=off pair (the jitter floor)")
     p.add_argument("--out", help="keep the images here (default: a temporary folder)")
+    p.add_argument("--extra", default="", help="more wardray arguments for every render, e.g. '--gi-light-picks 0'")
     args = p.parse_args()
     formats = ["hdr", "exr"] if args.format == "both" else [args.format]
     out_dir = pathlib.Path(args.out or tempfile.mkdtemp(prefix="reference_seed_"))
@@ -63,15 +69,15 @@ def main():
     s1, s2 = args.seeds
     print(f"{pathlib.Path(args.scene).name}, {args.size}, -A, {args.threads} threads, seeds {s1} and {s2}")
     print()
-    print(f"| mode | format | rRMSE seed {s1} vs {s2} | bad pixels | wall s (seed {s1}, seed {s2}) |")
-    print("|---|---|---|---|---|")
+    print(f"| mode | format | rRMSE seed {s1} vs {s2} | bad pixels | wall s (seed {s1}, seed {s2}) | CPU s |")
+    print("|---|---|---|---|---|---|")
     runs = [("--gi=off", "direct", ["--gi=off"])] if args.direct else []
     runs += [(f"--gi=reference --gi-rays {n}", f"ref{n}", ["--gi=reference", "--gi-rays", str(n)]) for n in args.rays]
     for mode, label, extra in runs:
         for fmt in formats:
-            times, error = pair(args.wardray, args.scene, out_dir, args, label, extra, fmt)
+            times, error = pair(args.wardray, args.scene, out_dir, args, label, extra + args.extra.split(), fmt)
             print(f"| `{mode}` | {fmt} | {100 * error['rrmse']:.3f} % | {100 * error['bad_fraction']:.2f} % | "
-                  f"{times[0]:.1f}, {times[1]:.1f} |", flush=True)
+                  f"{times[0][0]:.1f}, {times[1][0]:.1f} | {times[0][1]:.2f}, {times[1][1]:.2f} |", flush=True)
     print()
     print(f"images in {out_dir}")
 
