@@ -11,6 +11,31 @@
 
 namespace wardray::cache {
 
+/// Read-only forward iteration over `Container` by index: `*it` is `container[i]` (a reference or a value, as the
+/// container's const operator[] gives it).
+template <typename Container>
+class IndexIterator {
+public:
+    using reference = decltype(std::declval<const Container&>()[std::size_t{}]);
+    using value_type = std::remove_cvref_t<reference>;
+    using iterator_category = std::conditional_t<std::is_reference_v<reference>, std::forward_iterator_tag,
+                                                 std::input_iterator_tag>;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    IndexIterator(const Container* container, std::size_t i) : m_container(container), m_i(i) {}
+    reference operator*() const { return (*m_container)[m_i]; }
+    IndexIterator& operator++() {
+        ++m_i;
+        return *this;
+    }
+    bool operator==(const IndexIterator& o) const { return m_i == o.m_i; }
+    bool operator!=(const IndexIterator& o) const { return m_i != o.m_i; }
+
+private:
+    const Container* m_container;
+    std::size_t m_i;
+};
+
 /// Elements in chunks of 2^kShift, addressed by index with one more load than a std::vector (the chunk's address);
 /// unlike a std::vector, growing never holds the old and the new copy at once, and at most one chunk is unused.
 /// The first chunk starts small and doubles up to the full chunk size, so that a small array stays small.
@@ -64,27 +89,7 @@ public:
     }
 
     /// Read-only iteration in index order.
-    class const_iterator {
-    public:
-        using iterator_category = std::forward_iterator_tag;
-        using value_type = T;
-        using difference_type = std::ptrdiff_t;
-        using pointer = const T*;
-        using reference = const T&;
-        const_iterator(const ChunkedArray* array, std::size_t i) : m_array(array), m_i(i) {}
-        const T& operator*() const { return (*m_array)[m_i]; }
-        const T* operator->() const { return &(*m_array)[m_i]; }
-        const_iterator& operator++() {
-            ++m_i;
-            return *this;
-        }
-        bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
-        bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
-
-    private:
-        const ChunkedArray* m_array;
-        std::size_t m_i;
-    };
+    using const_iterator = IndexIterator<ChunkedArray>;
     const_iterator begin() const { return {this, 0}; }
     const_iterator end() const { return {this, m_size}; }
 

@@ -3,7 +3,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <iterator>
 
 #include "cache/chunked_array.h"
 #include "cache/irradiance_record.h"
@@ -32,26 +31,7 @@ public:
     std::size_t memory_bytes() const { return m_geometry.memory_bytes() + m_values.memory_bytes(); }
 
     /// Read-only iteration in insertion order, by value.
-    class const_iterator {
-    public:
-        using iterator_category = std::input_iterator_tag;
-        using value_type = IrradianceRecord;
-        using difference_type = std::ptrdiff_t;
-        using pointer = void;
-        using reference = IrradianceRecord;
-        const_iterator(const RecordStore* store, std::size_t i) : m_store(store), m_i(i) {}
-        IrradianceRecord operator*() const { return (*m_store)[m_i]; }
-        const_iterator& operator++() {
-            ++m_i;
-            return *this;
-        }
-        bool operator==(const const_iterator& o) const { return m_i == o.m_i; }
-        bool operator!=(const const_iterator& o) const { return m_i != o.m_i; }
-
-    private:
-        const RecordStore* m_store;
-        std::size_t m_i;
-    };
+    using const_iterator = IndexIterator<RecordStore>;
     const_iterator begin() const { return {this, 0}; }
     const_iterator end() const { return {this, size()}; }
 
