@@ -124,6 +124,8 @@ public:
     void add(const IrradianceRecord& record);
     /// The records of `depth` in insertion order.
     const RecordArray& records(int depth) const;
+    /// The octree of the records of bounce depth `depth` (for diagnostics, tools/bench/lookup_bench).
+    const RecordOctree& octree(int depth) const { return m_octrees.at(static_cast<std::size_t>(depth)); }
     /// Keeps only the records `keep` accepts, each depth's in its order, refiled as they are (no neighbour
     /// clamping): a cache carried to the next frame of an animation without the records that frame invalidates.
     /// Returns how many were dropped. Outside a pass (std::logic_error inside one).

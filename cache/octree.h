@@ -72,23 +72,30 @@ public:
     /// the exact test on the record's packed geometry (one cache line; the record itself is not read).
     template <typename Visit>
     void visit_near(const Vec3& q, double error_bound, Visit&& visit) const {
-        const Filing* filing = &m_filings.front();
-        for (const Filing& f : m_filings)
-            if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
-        std::uint32_t near[kScanBlocks * kBlock];
-        walk(*filing, q, [&](const Node& n, const Cube& cube) {
-            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
-                const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
-                // The candidates' geometry is fetched together, not one miss after another.
-                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_records.geometry(near[i]));
-                for (std::size_t i = 0; i < found; ++i) {
-                    const RecordGeometry& g = m_records.geometry(near[i]);
-                    const Vec3 d = q - g.position;
-                    const double reach = error_bound * g.radius;
-                    if (dot(d, d) < reach * reach) visit(near[i], g);
-                }
-            }
-        });
+        visit_near_counted<false>(q, error_bound, visit, nullptr);
+    }
+    /// What visit_near() at q walks and scans (a diagnostic for tools/bench/lookup_bench; lookups do not count).
+    struct WalkStats {
+        std::uint64_t nodes = 0;                 ///< nodes walked, root to leaf
+        std::uint64_t nodes_before_entries = 0;  ///< of those, above the first that holds any entry
+        std::uint64_t nodes_with_entries = 0;
+        std::uint64_t entries_scanned = 0;  ///< lanes of the blocks scanned, unused ones included
+        std::uint64_t candidates = 0;       ///< entries the float scan lets through
+        std::uint64_t within = 0;           ///< of those, within error_bound × R_i (the records visited)
+        WalkStats& operator+=(const WalkStats& o) {
+            nodes += o.nodes;
+            nodes_before_entries += o.nodes_before_entries;
+            nodes_with_entries += o.nodes_with_entries;
+            entries_scanned += o.entries_scanned;
+            candidates += o.candidates;
+            within += o.within;
+            return *this;
+        }
+    };
+    WalkStats walk_stats(const Vec3& q, double error_bound) const {
+        WalkStats stats;
+        visit_near_counted<true>(q, error_bound, [](std::uint32_t, const RecordGeometry&) {}, &stats);
+        return stats;
     }
     /// Calls `visit(index)` for every record whose sphere of radius R_i holds q (|q − p_i| < R_i, what neighbour
     /// clamping of a new record at q can shrink), and for a few more: the records that pass visit_near()'s float
@@ -208,6 +215,37 @@ private:
         }
     }
 
+    /// visit_near(), counting into `stats` when kCount.
+    template <bool kCount, typename Visit>
+    void visit_near_counted(const Vec3& q, double error_bound, Visit&& visit, WalkStats* stats) const {
+        const Filing* filing = &m_filings.front();
+        for (const Filing& f : m_filings)
+            if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
+        std::uint32_t near[kScanBlocks * kBlock];
+        walk(*filing, q, [&](const Node& n, const Cube& cube) {
+            if constexpr (kCount) {
+                ++stats->nodes;
+                if (n.block_count > 0) ++stats->nodes_with_entries;
+                if (stats->nodes_with_entries == 0) ++stats->nodes_before_entries;
+                stats->entries_scanned += kBlock * n.block_count;
+            }
+            for (std::size_t begin = 0; begin < n.block_count; begin += kScanBlocks) {
+                const std::size_t found = scan_near(n, cube, q, error_bound, filing->reach, begin, near);
+                if constexpr (kCount) stats->candidates += found;
+                // The candidates' geometry is fetched together, not one miss after another.
+                for (std::size_t i = 0; i < found; ++i) __builtin_prefetch(&m_records.geometry(near[i]));
+                for (std::size_t i = 0; i < found; ++i) {
+                    const RecordGeometry& g = m_records.geometry(near[i]);
+                    const Vec3 d = q - g.position;
+                    const double reach = error_bound * g.radius;
+                    if (dot(d, d) < reach * reach) {
+                        if constexpr (kCount) ++stats->within;
+                        visit(near[i], g);
+                    }
+                }
+            }
+        });
+    }
     /// How many blocks visit_near() tests in one scan.
     static constexpr std::size_t kScanBlocks = 16;
     /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` (in a filing of

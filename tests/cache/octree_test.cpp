@@ -102,6 +102,13 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
                 EXPECT_TRUE(std::adjacent_find(found.begin(), found.end()) == found.end()) << "visited twice";
                 ASSERT_EQ(found, brute) << "query " << qi << " bound " << bound << " inner " << inner[0];
                 hits += brute.empty() ? 0 : 1;
+                // The walk's diagnostics count the same records, within what was scanned and walked.
+                const RecordOctree::WalkStats w = tree.walk_stats(q, bound);
+                ASSERT_EQ(w.within, brute.size());
+                EXPECT_GE(w.candidates, w.within);
+                EXPECT_GE(w.entries_scanned, w.candidates);
+                EXPECT_GE(w.nodes, w.nodes_with_entries + w.nodes_before_entries);
+                if (!brute.empty()) EXPECT_GT(w.nodes_with_entries, 0u);
             }
         }
         EXPECT_GT(hits, 3000);

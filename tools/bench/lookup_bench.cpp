@@ -1,9 +1,12 @@
 // lookup_bench: times irradiance-cache lookups on a cache saved by +RFO, with a checksum of every result.
 //   lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] [--recursion-limit N] [--rounds R]
+//                         [--walk-stats 1]
 // The cache is loaded into a cache made for those radiosity settings (the scene's: they choose its filings); then,
 // for each record, lookups near it at its depth as the pretrace, the final pass and a low-weight ray make them.
 // Prints the load time, nanoseconds per lookup (best of the rounds), the cache's bytes and a checksum of the
-// results, which two builds must print alike when they find the same records in the same order.
+// results, which two builds must print alike when they find the same records in the same order. With --walk-stats 1,
+// also what an average lookup walks and scans in the octree of its depth (RecordOctree::walk_stats, untimed).
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -37,11 +40,12 @@ std::uint64_t mix(std::uint64_t h, double v) {
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr, "usage: lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] "
-                             "[--recursion-limit N] [--rounds R]\n");
+                             "[--recursion-limit N] [--rounds R] [--walk-stats 1]\n");
         return 2;
     }
     scene::RadiositySettings settings;
     int rounds = 5;
+    bool walk_stats = false;
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         const double value = std::atof(argv[i + 1]);
@@ -49,6 +53,7 @@ int main(int argc, char** argv) {
         else if (flag == "--low-error-factor") settings.low_error_factor = value;
         else if (flag == "--recursion-limit") settings.recursion_limit = static_cast<int>(value);
         else if (flag == "--rounds") rounds = static_cast<int>(value);
+        else if (flag == "--walk-stats") walk_stats = value != 0.0;
     }
     cache::IrradianceCache cache(settings);
     std::ifstream in(argv[1], std::ios::binary);
@@ -87,6 +92,22 @@ int main(int argc, char** argv) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         best = std::min(best, seconds);
         checksum = h;
+    }
+    if (walk_stats && !queries.empty()) {
+        cache::RecordOctree::WalkStats sum;
+        std::uint64_t used = 0;
+        for (const Query& q : queries) {
+            const double bound = std::min(q.params.error_bound, cache.reach(q.depth));  // as lookups clamp it
+            sum += cache.octree(q.depth).walk_stats(q.p, bound);
+            used += static_cast<std::uint64_t>(cache.lookup(q.p, q.n, q.depth, q.params).records);
+        }
+        const double n = static_cast<double>(queries.size());
+        std::printf("per lookup: nodes walked %.2f (%.2f above the first with entries), nodes with entries %.2f, "
+                    "entries scanned %.1f, candidates %.2f, within the bound %.2f, records used %.2f\n",
+                    static_cast<double>(sum.nodes) / n, static_cast<double>(sum.nodes_before_entries) / n,
+                    static_cast<double>(sum.nodes_with_entries) / n, static_cast<double>(sum.entries_scanned) / n,
+                    static_cast<double>(sum.candidates) / n, static_cast<double>(sum.within) / n,
+                    static_cast<double>(used) / n);
     }
     const cache::CacheStatistics stats = cache.statistics();
     std::printf("records %llu queries %zu load %.3f s lookup %.1f ns (best of %d) checksum %016llx\n",
