@@ -18,21 +18,21 @@ namespace wardray::app {
 
 /// POV-Ray's animation settings as given (+KFI, +KFF, +KI, +KF, +KC, +SF, +EF, +K); app/animation.h makes frames.
 struct AnimationOptions {
-    std::optional<int> initial_frame;  ///< +KFI; with +KFF unset, no animation unless one of them is given
-    std::optional<int> final_frame;    ///< +KFF
-    double initial_clock = 0.0;        ///< +KI
-    double final_clock = 1.0;          ///< +KF
-    bool cyclic = false;               ///< +KC: the last frame is one step short of final_clock
-    std::optional<int> subset_start;   ///< +SF: the first frame rendered
-    std::optional<int> subset_end;     ///< +EF: the last frame rendered
-    std::optional<double> clock;       ///< +K / Clock=: a still image's clock
+    std::optional<int> initial_frame{};  ///< +KFI; with +KFF unset, no animation unless one of them is given
+    std::optional<int> final_frame{};    ///< +KFF
+    double initial_clock = 0.0;          ///< +KI
+    double final_clock = 1.0;            ///< +KF
+    bool cyclic = false;                 ///< +KC: the last frame is one step short of final_clock
+    std::optional<int> subset_start{};   ///< +SF: the first frame rendered
+    std::optional<int> subset_end{};     ///< +EF: the last frame rendered
+    std::optional<double> clock{};       ///< +K / Clock=: a still image's clock
 
     friend bool operator==(const AnimationOptions&, const AnimationOptions&) = default;
 };
 
 /// +SR/+ER/+SC/+EC as written: a fraction of the image or a 1-based pixel number (app/partial_render.h).
 struct RegionOptions {
-    std::optional<double> start_row, end_row, start_column, end_column;
+    std::optional<double> start_row{}, end_row{}, start_column{}, end_column{};
 
     friend bool operator==(const RegionOptions&, const RegionOptions&) = default;
 };
