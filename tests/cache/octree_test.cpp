@@ -108,7 +108,9 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
                 EXPECT_GE(w.candidates, w.within);
                 EXPECT_GE(w.entries_scanned, w.candidates);
                 EXPECT_GE(w.nodes, w.nodes_with_entries + w.nodes_before_entries);
-                if (!brute.empty()) EXPECT_GT(w.nodes_with_entries, 0u);
+                if (!brute.empty()) {
+                    EXPECT_GT(w.nodes_with_entries, 0u);
+                }
             }
         }
         EXPECT_GT(hits, 3000);

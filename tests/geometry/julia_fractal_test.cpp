@@ -98,7 +98,9 @@ TEST(JuliaFractal, CrossingsChangeTheInsideStateWithOutwardNormals) {
         for (std::size_t i = 0; i < hits.size(); ++i) {
             const SurfaceHit& h = hits[i];
             ASSERT_TRUE(std::isfinite(h.t));
-            if (i > 0) EXPECT_GE(h.t, hits[i - 1].t);
+            if (i > 0) {
+                EXPECT_GE(h.t, hits[i - 1].t);
+            }
             // The bisection ends within 1e-7 of the change along the unit direction (the reported depth lags by up
             // to one step after the first crossing, as POV-Ray's does, so only the first is placed exactly).
             if (i > 0) continue;

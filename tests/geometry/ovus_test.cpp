@@ -79,7 +79,9 @@ TEST(Ovus, HitsNormalsAndInsideAgreeWithBruteForce) {
                 const double margin = 1e-7;
                 bool near = false;
                 for (const SurfaceHit& h : hits) near = near || std::fabs(t - h.t) < margin;
-                if (!near) EXPECT_EQ(inst->inside(origin + t * dir), between) << "t " << t;
+                if (!near) {
+                    EXPECT_EQ(inst->inside(origin + t * dir), between) << "t " << t;
+                }
             }
             // Brute force: a march of inside() finds no crossing the solver missed.
             if (hits.empty()) {
@@ -113,7 +115,9 @@ TEST(Ovus, JoinsAreTangentAndTheBoxIsPovRays) {
             const SurfaceHits h = egg->intersect_all(LocalRay{{-10.0, y, 0.0}, {1.0, 0.0, 0.0}}, 0.0, INFINITY);
             ASSERT_EQ(h.size(), 2u) << "y " << y;
             const Vec3 n = normalize(h[0].normal);
-            if (k > 1) EXPECT_GT(dot(n, last), 0.99) << "y " << y;
+            if (k > 1) {
+                EXPECT_GT(dot(n, last), 0.99) << "y " << y;
+            }
             last = n;
         }
     }

@@ -107,8 +107,12 @@ TEST(Parametric, PlanePatchIsHitWithinAccuracy) {
         const Vec3 on_plane = origin + ((0.3 - 0.001 - origin.z) / dir.z) * dir;
         const bool over = std::fabs(on_plane.x) < 0.5 - 0.002 && std::fabs(on_plane.y) < 0.5 - 0.002;
         const bool off = std::fabs(on_plane.x) > 0.5 + 0.002 || std::fabs(on_plane.y) > 0.5 + 0.002;
-        if (over) EXPECT_EQ(h.size(), 1u);
-        if (off) EXPECT_TRUE(h.empty());
+        if (over) {
+            EXPECT_EQ(h.size(), 1u);
+        }
+        if (off) {
+            EXPECT_TRUE(h.empty());
+        }
         if (h.empty()) continue;
         ++hits;
         const Vec3 p = origin + h[0].t * dir;

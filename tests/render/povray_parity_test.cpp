@@ -25,7 +25,7 @@ struct ParityCase {
     std::string name;
     fs::path scene;
     std::string switches = "-A";  ///< given to both renderers
-    std::string frame;            ///< an animation's frame: both write povray<frame>.hdr, wardray<frame>.hdr
+    std::string frame{};          ///< an animation's frame: both write povray<frame>.hdr, wardray<frame>.hdr
 };
 
 // Names the case in test output instead of dumping its bytes.
