@@ -154,7 +154,7 @@ std::optional<MeshShape> MeshShape::create(const scene::BicubicPatch& bp) {
         if (!is_finite(bp.points[i])) return std::nullopt;
         world[i / 4][i % 4] = bp.placement->point(bp.points[i]);
     }
-    Tessellator t{world, bp.placement, bp.placement->inverse(), bp.u_steps, bp.v_steps, bp.flatness, {}};
+    Tessellator t{world, bp.placement, bp.placement->inverse(), bp.u_steps, bp.v_steps, bp.flatness, {}, {}};
     t.mesh.kind = scene::Mesh::Kind::Mesh;
     t.build(world, 0.0, 1.0, 0.0, 1.0, 0);
     auto shape = create(t.mesh);

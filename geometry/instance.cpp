@@ -301,7 +301,15 @@ std::optional<Hit> ShapeInstance::nearest(const Vec3& origin, const Vec3& direct
                                           double t_max) const {
     // The crossings come sorted by t: only the first one with a finite normal needs its normal mapped.
     for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max)) {
-        if (const auto h = to_parent(crossing)) return Hit{h->t, origin + h->t * direction, h->normal, m_index, h->leaf};
+        if (const auto h = to_parent(crossing)) {
+            Hit hit;
+            hit.t = h->t;
+            hit.position = origin + h->t * direction;
+            hit.normal = h->normal;
+            hit.object = m_index;
+            hit.leaf = h->leaf;
+            return hit;
+        }
     }
     return std::nullopt;
 }

@@ -77,7 +77,7 @@ bool PhotonTracer::shoot(const ShotUnit& unit, const Vec3& origin, const Vec3& d
     path.unit = &unit;
     path.out = &out;
     path.media_out = &media_out;
-    RayIn ray{origin, dir, {}};
+    RayIn ray{origin, dir, {}, {}};
     ray.interiors = origin == unit.light->position && unit.light_interiors ? *unit.light_interiors
                                                                             : objects_containing(m_scene, origin);
     trace(ray, colour, 1.0, path);
