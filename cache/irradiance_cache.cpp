@@ -327,7 +327,7 @@ CacheStatistics IrradianceCache::statistics() const {
     s.hits = m_hits;
     double radius_sum = 0.0;
     for (const RecordOctree& tree : m_octrees) {
-        for (const IrradianceRecord& r : tree.records()) radius_sum += r.radius;
+        for (std::uint32_t i = 0; i < tree.size(); ++i) radius_sum += tree.geometry(i).radius;
         s.total_records += tree.size();
         s.memory_bytes += tree.memory_bytes();
     }

@@ -19,6 +19,14 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// The positions of `cost` from the costliest to the cheapest; equal costs keep their order.
+std::vector<std::size_t> costliest_first(const std::vector<double>& cost) {
+    std::vector<std::size_t> order(cost.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+    return order;
+}
+
 // Records travel as their bytes: every process is the same executable on the same kind of machine.
 static_assert(std::is_trivially_copyable_v<cache::IrradianceRecord>);
 static_assert(std::is_trivially_copyable_v<lighting::RayCounters>);
@@ -127,11 +135,8 @@ std::vector<int> TileExchange::fixed_share(const std::vector<int>& wave) const {
     if (!cost.empty()) {
         // Longest processing time first (Graham 1969), on the costs every process holds alike: the same shares
         // everywhere. Ties go to the earlier tile of the wave and the lower rank.
-        std::vector<std::size_t> order(wave.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
         std::vector<double> load(size, 0.0);
-        for (const std::size_t i : order) {
+        for (const std::size_t i : costliest_first(cost)) {
             const auto least = static_cast<std::size_t>(std::min_element(load.begin(), load.end()) - load.begin());
             load[least] += cost[i];
             if (least == rank) mine.push_back(wave[i]);
@@ -160,9 +165,7 @@ void TileExchange::start_wave(const std::vector<int>& wave) {
         m_order = wave;
         const std::vector<double> cost = predicted_costs(wave);
         if (!cost.empty()) {
-            std::vector<std::size_t> order(wave.size());
-            for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-            std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cost[a] > cost[b]; });
+            const std::vector<std::size_t> order = costliest_first(cost);
             for (std::size_t i = 0; i < order.size(); ++i) m_order[i] = wave[order[i]];
         }
     } else {

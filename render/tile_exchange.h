@@ -65,10 +65,10 @@ public:
     void start_pass() { ++m_pass; }
     /// Starts `wave`: afterwards next_tile() hands out its tiles. Distributed, processes draw the wave's tiles from
     /// a counter they share, each taking the next tile as it becomes free, the costliest first once every tile's
-    /// cost in an earlier pass is known (predicted_costs()). Where the processes cannot share counters, the shares are fixed in
-    /// advance: longest processing time first on the known costs, otherwise every size()-th tile, the starting
-    /// point turning with each wave so that one-tile waves do not all fall to the same process. Who renders a tile
-    /// never changes a pixel.
+    /// cost in an earlier pass is known (predicted_costs()). Where the processes cannot share counters, the shares
+    /// are fixed in advance: longest processing time first on the known costs, otherwise every size()-th tile, the
+    /// starting point turning with each wave so that one-tile waves do not all fall to the same process. Who renders
+    /// a tile never changes a pixel.
     void start_wave(const std::vector<int>& wave);
     /// The next tile of the wave this process renders, or -1 when there is none left for it (any thread).
     int next_tile();
