@@ -59,7 +59,14 @@ void add_in_insertion_order(InterpolationAccumulator& acc, const RecordOctree& t
         for (const char* line = values; line < values_end; line += 64) __builtin_prefetch(line);
         __builtin_prefetch(values_end);
     });
-    std::sort(valid.begin(), valid.end(), [](const Valid& a, const Valid& b) { return a.index < b.index; });
+    // Into insertion order. The walk visits nodes root to leaf, each node's entries in insertion order, so the list
+    // is a few ascending runs of a few records: an insertion sort moves little (std::sort's set-up costs more).
+    for (std::size_t i = 1; i < valid.size(); ++i) {
+        const Valid v = valid[i];
+        std::size_t j = i;
+        for (; j > 0 && valid[j - 1].index > v.index; --j) valid[j] = valid[j - 1];
+        valid[j] = v;
+    }
     for (const Valid& v : valid) acc.add_weighted(tree.geometry(v.index), tree.values(v.index), v.weight);
 }
 

@@ -8,6 +8,10 @@
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define WARDRAY_WIDE_SCAN 1
+#endif
 
 namespace wardray::cache {
 namespace {
@@ -54,7 +58,45 @@ unsigned overlapped_octants(const Vec3& lo, const Vec3& hi, const Vec3& cube_min
     return mask;
 }
 
+#ifdef WARDRAY_WIDE_SCAN
+/// For each 8-bit mask of passing lanes, the lanes in order, then zeros: the permutation that packs them first.
+struct CompressTable {
+    std::uint8_t lanes[256][8];
+    constexpr CompressTable() : lanes{} {
+        for (unsigned mask = 0; mask < 256; ++mask) {
+            unsigned k = 0;
+            for (unsigned lane = 0; lane < 8; ++lane)
+                if (mask & (1u << lane)) lanes[mask][k++] = static_cast<std::uint8_t>(lane);
+        }
+    }
+};
+constexpr CompressTable kCompress;
+
+/// The four 16-bit steps at `first` and the four at `second`, as eight floats.
+__attribute__((target("avx2"), always_inline)) inline __m256 widen_pair(const std::uint16_t* first,
+                                                                       const std::uint16_t* second) {
+    const __m128i both = _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(first)),
+                                            _mm_loadl_epi64(reinterpret_cast<const __m128i*>(second)));
+    return _mm256_cvtepi32_ps(_mm256_cvtepu16_epi32(both));
+}
+
+bool cpu_has_avx2() {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("popcnt");
+}
+const bool kCpuHasAvx2 = cpu_has_avx2();
+#else
+const bool kCpuHasAvx2 = false;
+#endif
+/// Whether scan_near() uses the AVX2 scan (RecordOctree::use_wide_scan()).
+bool g_wide_scan = kCpuHasAvx2;
+
 }  // namespace
+
+bool RecordOctree::use_wide_scan(bool wanted) {
+    g_wide_scan = wanted && kCpuHasAvx2;
+    return g_wide_scan;
+}
 
 RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
     const double r = std::isfinite(reach) ? std::max(reach, 1.0) : 1.0;
@@ -221,6 +263,20 @@ void RecordOctree::file(Filing& f, const IrradianceRecord& record, std::uint32_t
 
 std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound, double reach,
                                    std::size_t begin, std::uint32_t* near) {
+    const std::size_t end = std::min<std::size_t>(n.block_count, begin + kScanBlocks);
+    // In position steps, as filed: q lies in the cube, so within [kPositionScale, 2 kPositionScale). A filed
+    // position is off by at most half a step an axis (under a step in distance), its radius only rounded up, and
+    // every float term is under 2^17 (rounding moves it by under 2^-6): the slack of 4 steps covers both.
+    const Vec3 local = (q - cube.min) * (1.0 / cube.size);
+    // x, y, z, then the bound (a radius step is 1 / (reach kRadiusScale) node sizes of R_i, times error_bound, in
+    // position steps), then the slack.
+    const float query[5] = {static_cast<float>((local.x + 1.0) * kPositionScale),
+                            static_cast<float>((local.y + 1.0) * kPositionScale),
+                            static_cast<float>((local.z + 1.0) * kPositionScale),
+                            static_cast<float>(error_bound / reach * kPositionScale / kRadiusScale), 4.0f};
+#ifdef WARDRAY_WIDE_SCAN
+    if (g_wide_scan) return begin < end ? scan_blocks_avx2(n.blocks + begin, end - begin, query, near) : 0;
+#endif
     // Four lanes at a time (GCC/Clang vector extensions: SSE on x86-64, NEON on ARM).
     using Floats = float __attribute__((vector_size(16)));
     // Four 16-bit steps to floats. On x86-64 widened by an unpack with zero and converted as a vector (GCC makes
@@ -239,17 +295,9 @@ std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3&
         return __builtin_convertvector(steps, Floats);
 #endif
     };
-    const std::size_t end = std::min<std::size_t>(n.block_count, begin + kScanBlocks);
-    // In position steps, as filed: q lies in the cube, so within [kPositionScale, 2 kPositionScale). A filed
-    // position is off by at most half a step an axis (under a step in distance), its radius only rounded up, and
-    // every float term is under 2^17 (rounding moves it by under 2^-6): the slack of 4 steps covers both.
-    const Vec3 local = (q - cube.min) * (1.0 / cube.size);
-    const float slack = 4.0f;
-    const Floats qx = Floats{} + static_cast<float>((local.x + 1.0) * kPositionScale),
-                 qy = Floats{} + static_cast<float>((local.y + 1.0) * kPositionScale),
-                 qz = Floats{} + static_cast<float>((local.z + 1.0) * kPositionScale);
-    // A radius step is 1 / (reach kRadiusScale) node sizes of R_i, times error_bound, in position steps.
-    const Floats bound = Floats{} + static_cast<float>(error_bound / reach * kPositionScale / kRadiusScale);
+    const Floats qx = Floats{} + query[0], qy = Floats{} + query[1], qz = Floats{} + query[2];
+    const Floats bound = Floats{} + query[3];
+    const float slack = query[4];
     std::size_t found = 0;
     for (std::size_t i = begin; i < end; ++i) {
         const Node::Block& b = n.blocks[i];
@@ -264,6 +312,43 @@ std::size_t RecordOctree::scan_near(const Node& n, const Cube& cube, const Vec3&
     }
     return found;
 }
+
+#ifdef WARDRAY_WIDE_SCAN
+__attribute__((target("avx2,popcnt"))) std::size_t RecordOctree::scan_blocks_avx2(const Node::Block* blocks,
+                                                                                   std::size_t count,
+                                                                                   const float (&query)[5],
+                                                                                   std::uint32_t* near) {
+    static_assert(kBlock == 4, "the wide scan takes two blocks of four a step");
+    const __m256 qx = _mm256_set1_ps(query[0]), qy = _mm256_set1_ps(query[1]), qz = _mm256_set1_ps(query[2]);
+    const __m256 bound = _mm256_set1_ps(query[3]), slack = _mm256_set1_ps(query[4]);
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < count; i += 2) {
+        const Node::Block& b0 = blocks[i];
+        // An odd last block is taken twice and its second copy's lanes masked off.
+        const Node::Block& b1 = blocks[i + 1 < count ? i + 1 : i];
+        const unsigned lanes = i + 1 < count ? 0xFFu : 0x0Fu;
+        // The portable scan's operations in its order: (q - p)² summed x, y, z against (bound r + slack)².
+        const __m256 dx = _mm256_sub_ps(qx, widen_pair(b0.x, b1.x));
+        const __m256 dy = _mm256_sub_ps(qy, widen_pair(b0.y, b1.y));
+        const __m256 dz = _mm256_sub_ps(qz, widen_pair(b0.z, b1.z));
+        const __m256 within = _mm256_add_ps(_mm256_mul_ps(bound, widen_pair(b0.radius, b1.radius)), slack);
+        const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
+                                        _mm256_mul_ps(dz, dz));
+        const unsigned mask =
+            static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(d2, _mm256_mul_ps(within, within), _CMP_LT_OQ))) &
+            lanes;
+        // The passing lanes' indices packed to the front and stored whole; the count moves past them only.
+        const __m256i index = _mm256_inserti128_si256(
+            _mm256_castsi128_si256(_mm_load_si128(reinterpret_cast<const __m128i*>(b0.index))),
+            _mm_load_si128(reinterpret_cast<const __m128i*>(b1.index)), 1);
+        const __m256i order =
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(kCompress.lanes[mask])));
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(near + found), _mm256_permutevar8x32_epi32(index, order));
+        found += static_cast<std::size_t>(__builtin_popcount(mask));
+    }
+    return found;
+}
+#endif
 
 void RecordOctree::clamp_within(std::int32_t node, const Cube& cube, const Vec3& centre, double& bound) const {
     const Filing& f = m_filings.front();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -129,19 +130,16 @@ private:
         Vec3 min;
         double size = 0.0;
         /// The octant of the cube that holds p, one bit per axis.
+        /// (Axis by axis by name: Vec3's operator[] selects through branches in the walk's inner loop.)
         int octant_of(const Vec3& p) const {
             const double half = 0.5 * size;
-            int octant = 0;
-            for (int a = 0; a < 3; ++a) {
-                if (p[a] >= min[a] + half) octant |= 1 << a;
-            }
-            return octant;
+            return static_cast<int>(p.x >= min.x + half) | static_cast<int>(p.y >= min.y + half) << 1 |
+                   static_cast<int>(p.z >= min.z + half) << 2;
         }
         Cube child(int octant) const {
             const double half = 0.5 * size;
-            return {{min.x + ((octant & 1) ? half : 0.0), min.y + ((octant & 2) ? half : 0.0),
-                     min.z + ((octant & 4) ? half : 0.0)},
-                    half};
+            const auto step = [&](int axis) { return half * static_cast<double>((octant >> axis) & 1); };
+            return {{min.x + step(0), min.y + step(1), min.z + step(2)}, half};
         }
     };
     /// 24 bytes: the children are in a group of the filing's (most nodes are leaves and need none), and the blocks
@@ -218,6 +216,30 @@ private:
     /// visit_near(), counting into `stats` when kCount.
     template <bool kCount, typename Visit>
     void visit_near_counted(const Vec3& q, double error_bound, Visit&& visit, WalkStats* stats) const {
+        if (m_records.size() <= kLinearRecords) {
+            // A few records (a tile's own, the cache's first): each tested in turn, in insertion order, cheaper
+            // than a walk. The records the filings left out (not finite, no positive radius) are left out here too.
+            if constexpr (kCount) {
+                ++stats->nodes;
+                ++stats->nodes_with_entries;
+                stats->entries_scanned += m_records.size();
+            }
+            if (!is_finite(q)) return;
+            for (std::uint32_t i = 0; i < m_records.size(); ++i) {
+                const RecordGeometry& g = m_records.geometry(i);
+                const Vec3 d = q - g.position;
+                const double reach = error_bound * g.radius;
+                if (dot(d, d) < reach * reach && g.radius > 0.0 && std::isfinite(this->reach() * g.radius) &&
+                    is_finite(g.position)) {
+                    if constexpr (kCount) {
+                        ++stats->candidates;
+                        ++stats->within;
+                    }
+                    visit(i, g);
+                }
+            }
+            return;
+        }
         const Filing* filing = &m_filings.front();
         for (const Filing& f : m_filings)
             if (f.reach >= error_bound && f.reach < filing->reach) filing = &f;
@@ -246,6 +268,8 @@ private:
             }
         });
     }
+    /// Up to this many records, visit_near() tests each in turn instead of walking a filing.
+    static constexpr std::size_t kLinearRecords = 32;
     /// How many blocks visit_near() tests in one scan.
     static constexpr std::size_t kScanBlocks = 16;
     /// Writes to `near` the indices of the records in blocks [begin, begin + kScanBlocks) of `n` (in a filing of
@@ -253,6 +277,19 @@ private:
     /// and the floats' rounding); returns how many.
     static std::size_t scan_near(const Node& n, const Cube& cube, const Vec3& q, double error_bound, double reach,
                                  std::size_t begin, std::uint32_t* near);
+    /// The scan of `count` blocks from `blocks` against the query (qx, qy, qz) in position steps, `bound` (steps of
+    /// position per step of radius) and the slack, with AVX2: two blocks a step and the passing lanes' indices
+    /// compressed by a permutation, no branch and no store per lane. The same test as the portable scan, operation
+    /// for operation (no fused multiply-add), so both find the same candidates in the same order.
+    static std::size_t scan_blocks_avx2(const Node::Block* blocks, std::size_t count, const float (&query)[5],
+                                        std::uint32_t* near);
+
+public:
+    /// Whether lookups scan with AVX2 (chosen once from the CPU; tests and benchmarks may turn it off to check and
+    /// time the portable scan, which then runs everywhere). Returns whether the wide scan is now used.
+    static bool use_wide_scan(bool wanted);
+
+private:
     static void insert_into(Filing& f, const IrradianceRecord& record, std::uint32_t index, bool homes);
     static void grow_to_fit(Filing& f, const Vec3& lo, const Vec3& hi);
     static std::int32_t child(Filing& f, std::int32_t node, int octant);

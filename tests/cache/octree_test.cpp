@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "cache/hemisphere_sampler.h"
@@ -182,6 +183,91 @@ TEST(RecordOctree, PackedGeometryFollowsShrunkRadii) {
         std::sort(found.begin(), found.end());
         ASSERT_EQ(found, brute) << "query " << qi;
     }
+}
+
+// The AVX2 scan (where the CPU has it) and the portable one let through the same entries in the same order, so
+// lookups find the same records in the same order, and holding visits the same records, whichever runs.
+TEST(RecordOctree, WideAndPortableScansFindTheSameRecordsInTheSameOrder) {
+    SplitMix64 rng(2024);
+    RecordOctree tree(1.2, {0.6, 0.3});
+    std::vector<IrradianceRecord> all;
+    // Nodes of every length: odd and even block counts, and runs longer than one scan.
+    for (int i = 0; i < 4000; ++i) {
+        all.push_back(random_record(rng, Vec3{-5, 2, 9}, 3.0));
+        tree.insert(all.back());
+    }
+    const bool wide = RecordOctree::use_wide_scan(true);
+    int hits = 0;
+    for (int qi = 0; qi < 1500; ++qi) {
+        const IrradianceRecord& near_record = all[static_cast<std::size_t>(qi * 7) % all.size()];
+        const Vec3 q = near_record.position + random_direction(rng) * (uniform(rng, 0, 1.3) * near_record.radius);
+        for (const double bound : {1.2, 0.6, 0.45, 0.3, 0.1}) {
+            std::vector<std::uint32_t> in_order[2], holding[2];
+            for (const bool use : {false, true}) {
+                RecordOctree::use_wide_scan(use);
+                tree.visit_near(q, bound, [&](std::uint32_t i, const RecordGeometry&) { in_order[use].push_back(i); });
+                tree.visit_holding(q, [&](std::uint32_t i) { holding[use].push_back(i); });
+            }
+            ASSERT_EQ(in_order[0], in_order[1]) << "query " << qi << " bound " << bound;
+            ASSERT_EQ(holding[0], holding[1]) << "query " << qi;
+            std::vector<std::uint32_t> brute;
+            for (std::uint32_t i = 0; i < all.size(); ++i) {
+                const Vec3 d = q - all[i].position;
+                if (dot(d, d) < bound * all[i].radius * (bound * all[i].radius)) brute.push_back(i);
+            }
+            std::sort(in_order[1].begin(), in_order[1].end());
+            ASSERT_EQ(in_order[1], brute) << "query " << qi << " bound " << bound;
+            hits += brute.empty() ? 0 : 1;
+        }
+    }
+    EXPECT_GT(hits, 3000);
+    // Turning it back on gives the wide scan again exactly when the CPU has it.
+    EXPECT_EQ(RecordOctree::use_wide_scan(true), wide);
+}
+
+// Up to a few dozen records visit_near() tests each in turn instead of walking: it finds exactly the records a walk
+// finds, in insertion order, and never the degenerate ones the filings leave out (non-finite position, radius zero,
+// negative or infinite), however many records the tree holds as it grows past the threshold.
+TEST(RecordOctree, SmallTreesFindWhatTheWalkFinds) {
+    SplitMix64 rng(5);
+    RecordOctree tree(1.0);
+    std::vector<IrradianceRecord> all;
+    const double inf = std::numeric_limits<double>::infinity();
+    int hits = 0;
+    for (int i = 0; i < 80; ++i) {
+        IrradianceRecord r = random_record(rng, {1, 1, 1}, 1.0);
+        if (i % 9 == 4) r.position = {std::nan(""), 1, 1};
+        if (i % 9 == 5) r.radius = 0.0;
+        if (i % 9 == 6) r.radius = -0.3;
+        if (i % 9 == 7) r.radius = inf;
+        if (i % 9 == 8) r.position = {1, inf, 1};
+        all.push_back(r);
+        tree.insert(r);
+        for (int qi = 0; qi < 40; ++qi) {
+            const IrradianceRecord& near_record = all[rng.next() % all.size()];
+            const bool usable = is_finite(near_record.position) && near_record.radius > 0.0 && near_record.radius < inf;
+            const double offset = uniform(rng, 0, 1.2) * near_record.radius;
+            const Vec3 q = usable ? near_record.position + random_direction(rng) * offset
+                                  : Vec3{uniform(rng, 0, 2), uniform(rng, 0, 2), uniform(rng, 0, 2)};
+            for (const double bound : {1.0, 0.5, 0.2}) {
+                std::vector<std::uint32_t> brute, found;
+                for (std::uint32_t k = 0; k < all.size(); ++k) {
+                    const Vec3 d = q - all[k].position;
+                    const bool filed = is_finite(all[k].position) && all[k].radius > 0.0 && all[k].radius < inf;
+                    if (filed && dot(d, d) < bound * all[k].radius * (bound * all[k].radius)) brute.push_back(k);
+                }
+                tree.visit_near(q, bound, [&](std::uint32_t k, const RecordGeometry&) { found.push_back(k); });
+                if (all.size() <= 32) {
+                    ASSERT_EQ(found, brute) << "records " << all.size() << " query " << qi;  // in insertion order
+                } else {
+                    std::sort(found.begin(), found.end());
+                    ASSERT_EQ(found, brute) << "records " << all.size() << " query " << qi;
+                }
+                hits += brute.empty() ? 0 : 1;
+            }
+        }
+    }
+    EXPECT_GT(hits, 2000);
 }
 
 TEST(RecordOctree, ClampedRadiusMatchesBruteForce) {

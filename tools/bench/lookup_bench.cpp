@@ -1,11 +1,12 @@
 // lookup_bench: times irradiance-cache lookups on a cache saved by +RFO, with a checksum of every result.
 //   lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] [--recursion-limit N] [--rounds R]
-//                         [--walk-stats 1]
+//                         [--walk-stats 1] [--wide-scan 0|1]
 // The cache is loaded into a cache made for those radiosity settings (the scene's: they choose its filings); then,
 // for each record, lookups near it at its depth as the pretrace, the final pass and a low-weight ray make them.
 // Prints the load time, nanoseconds per lookup (best of the rounds), the cache's bytes and a checksum of the
 // results, which two builds must print alike when they find the same records in the same order. With --walk-stats 1,
 // also what an average lookup walks and scans in the octree of its depth (RecordOctree::walk_stats, untimed).
+// --wide-scan 0 times the portable scan where the CPU has AVX2 (the checksum must not change).
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -40,7 +41,7 @@ std::uint64_t mix(std::uint64_t h, double v) {
 int main(int argc, char** argv) {
     if (argc < 2) {
         std::fprintf(stderr, "usage: lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] "
-                             "[--recursion-limit N] [--rounds R] [--walk-stats 1]\n");
+                             "[--recursion-limit N] [--rounds R] [--walk-stats 1] [--wide-scan 0|1]\n");
         return 2;
     }
     scene::RadiositySettings settings;
@@ -54,6 +55,7 @@ int main(int argc, char** argv) {
         else if (flag == "--recursion-limit") settings.recursion_limit = static_cast<int>(value);
         else if (flag == "--rounds") rounds = static_cast<int>(value);
         else if (flag == "--walk-stats") walk_stats = value != 0.0;
+        else if (flag == "--wide-scan") cache::RecordOctree::use_wide_scan(value != 0.0);
     }
     cache::IrradianceCache cache(settings);
     std::ifstream in(argv[1], std::ios::binary);
