@@ -297,6 +297,10 @@ constexpr OptionSpec kOptions[] = {
      .set = set_gi_carry},
     {.long_name = "--no-pretrace", .kind = K::None, .usage = "--no-pretrace",
      .help = "cache mode: skip the pretrace passes", .set = set_no_pretrace},
+    {.long_name = "--gi-record-pass", .kind = K::Value, .usage = "--gi-record-pass=on|off",
+     .help = "cache mode: after the pretrace, the final pass's first rays make its records\n"
+             "first, so every pixel sees them (default on; POV-Ray 3.7 makes them as it goes)",
+     .set = [](U u, Options& o) { return set_on_off(u, o.gi_record_pass); }},
     {.long_name = "--aov", .kind = K::TwoValues, .usage = "--aov irradiance|records FILE",
      .help = "also write the indirect irradiance alone (irradiance), or the image\n"
              "with each cache record (first bounce) as a red dot (records)",

@@ -67,6 +67,7 @@ struct Options {
     bool gi_gradient_cap = true;                    ///< --gi-gradient-cap=off: no radius cap E/|∇t E|
     bool gi_neighbour_clamp = true;                 ///< --gi-neighbour-clamp=off: no neighbour clamping
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
+    bool gi_record_pass = true;                     ///< --gi-record-pass=off: the final pass makes its records
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
     bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
     std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca

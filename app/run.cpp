@@ -413,6 +413,7 @@ RenderedFrame render_frame(const scene::Scene& scene, const Illumination& illumi
     settings.antialias = {options.antialias, options.antialias_threshold, options.antialias_depth, options.jitter,
                           antialias_gamma, options.sampling_method};
     settings.pretrace = options.pretrace;
+    settings.record_pass = options.gi_record_pass;
     settings.seed = options.seed;
     settings.irradiance_aov = options.aov_irradiance.has_value();
     settings.alpha = options.output_alpha;

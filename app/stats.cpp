@@ -97,7 +97,7 @@ bool write_stats(const std::filesystem::path& path, const Job& job, const scene:
     double pretrace_seconds = 0.0;
     nlohmann::json passes = nlohmann::json::array();
     for (const render::PassTiming& pass : result.passes) {
-        if (pass.kind == "pretrace") pretrace_seconds += pass.seconds;
+        if (pass.kind == "pretrace" || pass.kind == "record") pretrace_seconds += pass.seconds;
         passes.push_back({{"kind", pass.kind}, {"block_size", pass.block_size}, {"seconds", pass.seconds}});
     }
     stats["phases"] = {{"parse", times.parse}, {"build", times.build}, {"pretrace", pretrace_seconds},

@@ -140,7 +140,10 @@ void TileCache::add(IrradianceRecord record) {
     m_cache->clamp_new_record(record);
     // Then against this tile's own records, both ways.
     RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
-    if (m_cache->m_neighbour_clamp) clamp_both_ways(own, record);
+    if (m_cache->m_neighbour_clamp) {
+        if (m_cache->m_shrink_older) clamp_both_ways(own, record);
+        else record.radius = own.clamped_radius(record.position, record.radius);
+    }
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
@@ -216,9 +219,11 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
                 // --gi-neighbour-clamp=off: the radius stays as make_record() gave it.
             } else if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
                 record.radius = merged[depth].clamped_radius(tree, record.position, record.radius);
-                shrink_holding(tree, record);
-            } else {
+                if (m_shrink_older) shrink_holding(tree, record);
+            } else if (m_shrink_older) {
                 clamp_both_ways(tree, record);
+            } else {
+                record.radius = tree.clamped_radius(record.position, record.radius);
             }
             merged[depth].add(tree, tree.insert(record));
             count_record(record);

@@ -117,6 +117,10 @@ public:
     /// Neighbour clamping (Křivánek et al. 2006) of every record added from now on (default on; off keeps each
     /// record's radius as make_record() gave it, as POV-Ray 3.7 does).
     void set_neighbour_clamp(bool on) { m_neighbour_clamp = on; }
+    /// With neighbour clamping, whether a new record also shrinks the older records whose spheres hold it (both
+    /// ways, the default) or only takes their bound (one way: R_new ≤ R_i + |p_new − p_i|, nothing older shrinks),
+    /// for the records of the passes that follow.
+    void set_shrink_older(bool on) { m_shrink_older = on; }
 
     /// Interpolates from the frozen cache (no statistics; thread-safe while no pass is merging).
     Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const;
@@ -157,6 +161,7 @@ private:
     std::vector<std::unique_ptr<TileCache>> m_tiles;
     bool m_in_pass = false;
     bool m_neighbour_clamp = true;
+    bool m_shrink_older = true;
     int m_pass = 0;
     std::vector<std::vector<std::uint64_t>> m_records_per_pass;
     std::uint64_t m_lookups = 0;

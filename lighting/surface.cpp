@@ -246,7 +246,7 @@ Vec3 Integrator::shade_layers(const scene::Texture& texture, const Surface& s,
             own += pigment * indirect_light * (opacity * f.diffuse);
         }
         // POV-Ray compat: pretrace camera rays only fill the cache, so their own direct light is skipped.
-        const bool pretrace_eye = !ctx.final_pass && state.gi_depth == 0;
+        const bool pretrace_eye = !ctx.colour_kept && state.gi_depth == 0;
         const bool lit = f.diffuse != 0.0 || f.specular != 0.0 || f.phong != 0.0;
         ctx.lit_ignores_photons = !s.object->photons.collect;
         if (lit && !pretrace_eye) own += direct_light(f, pigment, opacity, s, n, ctx);

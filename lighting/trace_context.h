@@ -42,7 +42,10 @@ struct RayCounters {
 struct TraceContext {
     RayCounters rays;
     cache::TileCache* cache = nullptr;  ///< the tile's view of the irradiance cache (cache mode only)
-    bool final_pass = true;             ///< false in POV-Ray's pretrace passes
+    bool final_pass = true;             ///< false in POV-Ray's pretrace passes: their lookups' parameters
+    /// False in every pass whose colours are thrown away (the pretrace and the record passes after it): camera hits
+    /// there only fill the cache, so their own direct light is skipped.
+    bool colour_kept = true;
     /// The next cache gather's seed: set per tile and pass by the renderer and stepped by each gather, so a record's
     /// samples depend on the order the tile makes records in (fixed), not on its position: a scene scaled by any
     /// factor then draws the same samples.

@@ -142,6 +142,12 @@ void keep_region_tiles(std::vector<std::vector<int>>& waves, const PixelRegion& 
     std::erase_if(waves, [](const std::vector<int>& wave) { return wave.empty(); });
 }
 
+/// The record passes (RenderSettings::record_pass): first a ray through every this many pixels' centres in each
+/// direction, then through every pixel's when the first says the final pass would make more than this share of the
+/// cache's records.
+constexpr double kSparseRecordStep = 4.0;
+constexpr double kRecordPassShare = 0.01;
+
 /// A uniform number in [0, 1) from a pretrace position, pass and the render seed, so pretrace jitter is the same on
 /// every run.
 double pretrace_jitter(int pass, double x, double y, int axis, std::uint64_t seed) {
@@ -181,9 +187,12 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
 
     // Without a cache every tile is independent: one wave. With one, tiles go in waves and each wave's records are
     // merged (in a fixed order) before the next starts, so the image is the same for any thread count.
-    std::vector<double> sizes;
-    if (cached && settings.pretrace) sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
-    std::vector<std::vector<std::vector<int>>> pass_waves(sizes.size() + 1);
+    std::vector<double> sizes, record_sizes;
+    if (cached && settings.pretrace) {
+        sizes = pretrace_sizes(*scene.global.radiosity, settings.width, settings.height);
+        if (settings.record_pass) record_sizes = {kSparseRecordStep, 1.0};
+    }
+    std::vector<std::vector<std::vector<int>>> pass_waves(sizes.size() + record_sizes.size() + 1);
     for (std::size_t pass = 0; pass < pass_waves.size(); ++pass) {
         std::vector<std::vector<int>>& waves = pass_waves[pass];
         if (cached) {
@@ -219,7 +228,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     };
     // One pass over the image in waves, `body` rendering one tile with its trace context.
     int pass_number = 0;
-    auto run_pass = [&](bool final_pass, const auto& body) {
+    auto run_pass = [&](bool final_pass, bool colour_kept, const auto& body) {
         if (cached) cache->begin_pass(tile_count);
         exchange.start_pass();
         const std::uint64_t pass_seed = 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(++pass_number);
@@ -229,6 +238,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                 lighting::TraceContext& ctx = tile_counters[tile].trace;
                 ctx.cache = cached ? &cache->tile(tile) : nullptr;
                 ctx.final_pass = final_pass;
+                ctx.colour_kept = colour_kept;
                 ctx.gather_seed =
                     reseed(pass_seed ^ (0xD1B54A32D192ED03ULL * static_cast<std::uint64_t>(tile + 1)), settings.seed);
                 const double tile_start = exchange.distributed() ? TileExchange::thread_seconds() : 0.0;
@@ -239,7 +249,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
             const std::vector<int> mine = exchange.taken();
             exchange.end_wave(wave, mine, cached ? cache : nullptr);
             if (cached) exchange.merge_wave(wave, *cache);
-            if (final_pass && exchange.distributed()) {
+            if (colour_kept && exchange.distributed()) {
                 for (const int tile : mine) {
                     const int x0 = (tile % tiles_x) * settings.tile_size, y0 = (tile / tiles_x) * settings.tile_size;
                     final_tiles.push_back({tile, x0, y0, std::min(x0 + settings.tile_size, settings.width),
@@ -251,15 +261,20 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
     };
 
     // POV-Ray's pretrace: camera rays on a coarse grid fill the cache (their colours are thrown away), the grid
-    // halving each pass; each pass sees the records of the passes and waves before it.
-    for (std::size_t pass = 0; pass < sizes.size(); ++pass) {
-        const auto pass_start = std::chrono::steady_clock::now();
-        const double size = sizes[pass];
-        const double jitter = std::min(1.0, size / 2.0);
-        const double offset = (size - 1.0) / 2.0;
-        run_pass(false, [&](int, int x0, int y0, int x1, int y1, lighting::TraceContext& ctx) {
+    // halving each pass; each pass sees the records of the passes and waves before it. Then the record passes: the
+    // final pass's first rays (through the pixels' centres, in the same tiles and waves) with its lookups, so that
+    // the records the final pass would make, each seen only by the pixels after it, are made before it and seen by
+    // every pixel; first through every kSparseRecordStep-th pixel a row and column, then through every pixel when
+    // that sample says the final pass would make more than kRecordPassShare of the records.
+    int grid_pass = 0;
+    auto grid_pass_body = [&](double size, bool record_pass) {
+        // The record passes' rays go through pixels' centres, as the final pass's first; the pretrace jitters
+        // within its blocks.
+        const double jitter = record_pass ? 0.0 : std::min(1.0, size / 2.0);
+        const double offset = record_pass ? 0.0 : (size - 1.0) / 2.0;
+        const int p = grid_pass++;
+        return [&, size, jitter, offset, p](int, int x0, int y0, int x1, int y1, lighting::TraceContext& ctx) {
             // POV-Ray compat (RadiosityTask): one jittered ray per size × size block, the grid anchored at the origin.
-            const int p = static_cast<int>(pass);
             for (double y = std::ceil((y0 - 0.5) / size) * size; y < y1; y += size) {
                 for (double x = std::ceil((x0 - 0.5) / size) * size; x < x1; x += size) {
                     const double px = x + offset + jitter * pretrace_jitter(p, x, y, 0, settings.seed) + 0.5;
@@ -267,13 +282,40 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
                     if (const auto ray = camera.ray(px, py)) integrator.trace_camera_ray(*ray, ctx);
                 }
             }
-        });
-        result.passes.push_back({"pretrace", size, std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                                                 pass_start).count()});
+        };
+    };
+    auto records_now = [&] {
+        std::size_t n = 0;
+        for (int depth = 0; depth < cache->depth_count(); ++depth) n += cache->records(depth).size();
+        return n;
+    };
+    for (const auto& [pass_sizes, final_params, kind] :
+         {std::tuple{&sizes, false, "pretrace"}, std::tuple{&record_sizes, true, "record"}}) {
+        for (const double size : *pass_sizes) {
+            const auto pass_start = std::chrono::steady_clock::now();
+            const std::size_t before = cached ? records_now() : 0;
+            // The record passes fill holes in the cache's cover; a record made there that shrank its older
+            // neighbours (neighbour clamping both ways) would open new holes around them for the final pass to fill.
+            if (cached) cache->set_shrink_older(!final_params);
+            run_pass(final_params, false, grid_pass_body(size, final_params));
+            if (cached) cache->set_shrink_older(true);
+            result.passes.push_back(
+                {kind, size, std::chrono::duration<double>(std::chrono::steady_clock::now() - pass_start).count()});
+            if (final_params && size == kSparseRecordStep) {
+                // Every pixel would make about step² times the sample's records: when that is a small share of the
+                // cache, the final pass makes them as it goes (the pass's waves are left unused, on every process
+                // alike: the merged cache is the same everywhere).
+                const double made = static_cast<double>(records_now() - before);
+                if (made * kSparseRecordStep * kSparseRecordStep <= kRecordPassShare * records_now()) {
+                    ++pass_number;
+                    break;
+                }
+            }
+        }
     }
 
     const auto final_start = std::chrono::steady_clock::now();
-    run_pass(true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
+    run_pass(true, true, [&](int tile, int x0, int y0, int x1, int y1, lighting::TraceContext&) {
         const Sampler sample(camera, blur ? &*blur : nullptr, integrator, tile_counters[tile],
                              result.irradiance ? &*result.irradiance : nullptr,
                              result.alpha ? &*result.alpha : nullptr);

@@ -48,6 +48,9 @@ struct RenderSettings {
     int tile_size = 32;  ///< POV-Ray's render block size; antialiasing decisions are made per block
     AntialiasSettings antialias;
     bool pretrace = true;  ///< fill the irradiance cache with POV-Ray's pretrace passes before the final pass
+    /// Then the record passes (--gi-record-pass): the final pass's first rays with its lookups, colours thrown away,
+    /// so that the records the final pass would make are made before it and every pixel sees them.
+    bool record_pass = true;
     /// --seed: turns the renderer's random streams (cache gathers, pretrace, antialiasing and focal blur jitter);
     /// 0 draws those of a render without it (core/render_seed.h).
     std::uint64_t seed = 0;
@@ -62,7 +65,7 @@ struct RenderSettings {
 
 /// One pass over the image: a pretrace pass with its block size in pixels, or the final pass.
 struct PassTiming {
-    std::string kind;  ///< "pretrace" or "final"
+    std::string kind;  ///< "pretrace", "record" or "final"
     double block_size = 1.0;
     double seconds = 0.0;
 };

@@ -281,6 +281,50 @@ TEST(Radiosity, CacheAgreesWithTheReferenceOnTheBox) {
     EXPECT_LT(final_depth0 * 10, total) << stats["cache"].dump();
 }
 
+// A coarse pretrace leaves POV-Ray's final pass to make most records, each seen only by the pixels after it. The
+// record passes trace the final pass's first rays beforehand with its lookups, so the final pass makes almost none;
+// --gi-record-pass=off is POV-Ray's order. The record passes are listed in --stats, and the image stays the same for
+// any thread count.
+TEST(Radiosity, RecordPassesLeaveTheFinalPassAlmostNoRecordToMake) {
+    const fs::path dir = fresh_dir("record_pass");
+    const std::string scene = " +I" + shell_quote(kBoxScene.string()) +
+                              " +W64 +H48 -A Declare=PretraceEnd=0.08 Declare=ErrorBound=0.3 Declare=Count=40";
+    auto final_share = [&](const std::string& name) {
+        const nlohmann::json stats = read_json(dir / (name + ".json"));
+        const auto& per_pass = stats["cache"]["records_per_pass_and_depth"];
+        std::uint64_t total = 0, final = 0;
+        for (const auto& pass : per_pass)
+            for (const auto& n : pass) total += n.get<std::uint64_t>();
+        for (const auto& n : per_pass.back()) final += n.get<std::uint64_t>();
+        EXPECT_GT(total, 100u);
+        return static_cast<double>(final) / static_cast<double>(std::max<std::uint64_t>(total, 1));
+    };
+    for (const char* run : {"+WT2 +Oon.hdr --stats on.json", "+WT1 +Oone.hdr",
+                            "+WT2 +Ooff.hdr --gi-record-pass=off --stats off.json"}) {
+        const auto r = run_command(wardray() + scene + " " + run, dir.string());
+        ASSERT_EQ(r.exit_status, 0) << r.output;
+    }
+    const double on = final_share("on"), off = final_share("off");
+    EXPECT_GT(off, 0.1) << "the test scene's pretrace is meant to leave the final pass many records";
+    EXPECT_LT(on, 0.02);
+    std::vector<std::string> kinds;
+    const nlohmann::json on_stats = read_json(dir / "on.json");
+    for (const auto& pass : on_stats["passes"]) kinds.push_back(pass["kind"].get<std::string>());
+    EXPECT_EQ(std::count(kinds.begin(), kinds.end(), "record"), 2) << "a sample of the pixels, then all of them";
+    EXPECT_EQ(kinds.back(), "final");
+    EXPECT_EQ(file_bytes(dir / "on.hdr"), file_bytes(dir / "one.hdr"));
+    // And the image is no further from brute force than POV-Ray's order leaves it.
+    const auto r = run_command(wardray() + scene + " +WT2 +Oreference.hdr --gi=reference --gi-rays 512", dir.string());
+    ASSERT_EQ(r.exit_status, 0) << r.output;
+    const render::Film reference = read(dir / "reference.hdr");
+    const auto with = render::compare_images(read(dir / "on.hdr"), reference);
+    const auto without = render::compare_images(read(dir / "off.hdr"), reference);
+    ASSERT_TRUE(with && without);
+    std::cout << "[ radiosity] rRMSE against brute force: record passes " << 100 * with->rrmse << " %, POV-Ray's order "
+              << 100 * without->rrmse << " %\n";
+    EXPECT_LT(with->rrmse, 1.1 * without->rrmse);
+}
+
 TEST(Radiosity, RecordsImageMarksEachFirstBounceRecord) {
     const fs::path dir = fresh_dir("records_aov");
     const std::string scene = " +I" + shell_quote(kBoxScene.string()) + " +W64 +H48 -A";
