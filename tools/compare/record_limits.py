@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off.
+"""Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off, or
+(`--set spacing`) its two record spacings, `--gi-spacing=harmonic` and `hessian`.
 
 For one scene: a brute-force reference (`--gi=reference --gi-rays N`, seeds 1 and 2, their mean), then the ladder
 points of tools/compare/ladder.json with the four configurations (both limits on, neighbour clamping off, the
@@ -11,6 +12,7 @@ with each configuration's error over the default's at the same record count and 
 (log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
 
   tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
+                                 [--set limits|spacing]
   tools/compare/record_limits.py --report build/record-limits/rows.jsonl
 """
 import argparse
@@ -27,12 +29,28 @@ sys.path.insert(0, str(HERE))
 from gimetrics import image_error, read_linear_rgb  # noqa: E402
 from povrewrite import rewrite_radiosity  # noqa: E402
 
-CONFIGS = {
-    "both on": [],
-    "clamp off": ["--gi-neighbour-clamp=off"],
-    "cap off": ["--gi-gradient-cap=off"],
-    "both off": ["--gi-neighbour-clamp=off", "--gi-gradient-cap=off"],
+# Each set's first configuration is the baseline the others are compared with.
+CONFIG_SETS = {
+    "limits": {
+        "both on": [],
+        "clamp off": ["--gi-neighbour-clamp=off"],
+        "cap off": ["--gi-gradient-cap=off"],
+        "both off": ["--gi-neighbour-clamp=off", "--gi-gradient-cap=off"],
+    },
+    "spacing": {
+        "harmonic": ["--gi-spacing=harmonic"],
+        "hessian": ["--gi-spacing=hessian"],
+    },
 }
+CONFIGS = CONFIG_SETS["limits"]
+
+
+def configs_of(names):
+    """The configuration set whose names are `names` (the limits' when none matches)."""
+    for configs in CONFIG_SETS.values():
+        if set(names) <= set(configs):
+            return configs
+    return CONFIG_SETS["limits"]
 
 
 def render(exe, scene, output, size, scene_dir, extra, cwd, stats=None):
@@ -50,6 +68,7 @@ def render(exe, scene, output, size, scene_dir, extra, cwd, stats=None):
 
 def measure(args):
     ladder = json.loads((HERE / "ladder.json").read_text())
+    configs = CONFIG_SETS[args.set]
     size = tuple(int(x) for x in args.size.split("x"))
     path = pathlib.Path(args.scene).resolve()
     text = path.read_text(errors="replace")
@@ -72,7 +91,7 @@ def measure(args):
     rows = []
     for p in points:
         (work / "scene.pov").write_text(rewrite_radiosity(text, p["radiosity"])[0])
-        for config, extra in CONFIGS.items():  # in turn, so that their times are comparable
+        for config, extra in configs.items():  # in turn, so that their times are comparable
             seconds = render(args.wardray, "scene.pov", "image.hdr", size, path.parent, extra, work, work / "stats.json")
             stats = json.loads((work / "stats.json").read_text())
             err = image_error(read_linear_rgb(work / "image.hdr"), reference)
@@ -80,12 +99,12 @@ def measure(args):
                          "time": seconds, "records": stats["cache"]["records"], "gather": stats["rays"]["gather"],
                          "shadow": stats["rays"]["shadow"], "rrmse": err["rrmse"], "bad": err["bad_fraction"],
                          "corr": math.sqrt(max(err["rrmse"] ** 2 - noise ** 2, 0.0)), "noise": noise})
-        base = rows[-len(CONFIGS)]["time"]
-        for r in rows[-len(CONFIGS):]:
+        base = rows[-len(configs)]["time"]
+        for r in rows[-len(configs):]:
             r["ratio"] = r["time"] / base
             print(f"{r['scene']}\t{r['point']}\t{r['config']}\t{r['records']}\t{r['gather']}\t"
                   f"{100 * r['corr']:.2f} %\t{r['ratio']:.2f}", flush=True)
-    with open(pathlib.Path(args.out) / "rows.jsonl", "a") as f:
+    with open(pathlib.Path(args.out) / f"rows{'' if args.set == 'limits' else '-' + args.set}.jsonl", "a") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
 
@@ -114,18 +133,20 @@ def report(rows_file):
     for r in sorted(rows, key=lambda r: labels.index(r["point"]) if r["point"] in labels else len(labels)):
         by[(r["scene"], r["config"])].append(r)
     order = list(dict.fromkeys(r["scene"] for r in rows))
+    configs = configs_of({r["config"] for r in rows})
+    base_name = next(iter(configs))
     print("| scene | point | limits | records | gather rays | rRMSE | bad pixels | time / default's | "
           "error / default's at equal records | at equal gather rays |")
     print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|")
     summary = collections.defaultdict(list)
     per_scene = collections.defaultdict(list)
     for scene in order:
-        base = by[(scene, "both on")]
-        for config in CONFIGS:
+        base = by[(scene, base_name)]
+        for config in configs:
             for r in by[(scene, config)]:
                 cells = []
                 for key in ("records", "gather"):
-                    if config == "both on":
+                    if config == base_name:
                         cells.append("1")
                         continue
                     e, outside = interpolate(base, r[key], key)
@@ -139,10 +160,11 @@ def report(rows_file):
     print()
     def mean(v):
         return math.exp(sum(math.log(x) for x in v) / len(v)) if v else float("nan")
-    print("| scene | clamp off: records | gather rays | cap off: records | gather rays | both off: records | gather rays |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+    others = list(configs)[1:]
+    print("| scene | " + " | ".join(f"{c}: records | gather rays" for c in others) + " |")
+    print("|---|" + "---:|---:|" * len(others))
     for scene in order:
-        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in list(CONFIGS)[1:] for k in ("records", "gather")]
+        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in others for k in ("records", "gather")]
         print(f"| {scene} | " + " | ".join(cells) + " |")
     print()
     for (config, key), v in summary.items():
@@ -158,6 +180,8 @@ def main():
     ap.add_argument("--rays", type=int, default=512, help="reference paths per pixel, per seed")
     ap.add_argument("--points", default="c40/e0.7,c80/e0.5,c150/e0.35", help="labels of ladder.json's 'full'")
     ap.add_argument("--wardray", default=str(HERE.parent.parent / "build" / "wardray"))
+    ap.add_argument("--set", choices=sorted(CONFIG_SETS), default="limits",
+                    help="the configurations: the radius limits on and off, or the two record spacings")
     ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
     ap.add_argument("--report", metavar="ROWS", help="print the table of a rows.jsonl and stop")
     args = ap.parse_args()
