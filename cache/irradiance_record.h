@@ -103,8 +103,11 @@ struct RecordOptions {
     double error_bound = 1.0;  ///< the final pass's error_bound at the record's depth (Hessian spacing)
 };
 
-/// The fraction of error_bound that Hessian spacing allows as relative error at the edge of a record's reach.
-inline constexpr double kHessianErrorFraction = 0.5;
+/// The fraction of error_bound that Hessian spacing allows as relative error at the edge of a record's reach: 1,
+/// the error there equals error_bound × E (with 0.5 and 2 instead, cornell and box at c40/e0.7 and c80/e0.5 made
+/// 10-50 % more and about as many records as harmonic spacing, at about the same error; see
+/// docs/reports/radiosity.md).
+inline constexpr double kHessianErrorFraction = 1.0;
 
 /// The radius at which first-order extrapolation's estimated error reaches kHessianErrorFraction × error_bound of
 /// the record's irradiance at the edge of its reach, error_bound × R (see irradiance_record.cpp); +infinity when
