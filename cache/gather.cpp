@@ -133,7 +133,7 @@ GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& stra
 }
 
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed) {
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order) {
     GatherResult out;
     const Vec3 n = normalize(normal);
     const int m = std::max(strata.polar, 1);
@@ -231,8 +231,10 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
             for (int c = 0; c < 3; ++c) out.translational[c] += dir * dl[c];
         }
     }
-    tangent_hessian(samples, l, r, {m, cells_azimuthal}, distance_floor, out);
-    occlusion_curvature(sin_lo, l, r, {m, cells_azimuthal}, distance_floor, out);
+    if (second_order) {
+        tangent_hessian(samples, l, r, {m, cells_azimuthal}, distance_floor, out);
+        occlusion_curvature(sin_lo, l, r, {m, cells_azimuthal}, distance_floor, out);
+    }
     return out;
 }
 

@@ -39,11 +39,11 @@ struct GatherResult {
     /// dE/dx for a move of the point by x along a tangent direction u is u·translational[c]
     /// (Ward & Heckbert 1992, in the occlusion-robust form of Křivánek et al. 2005).
     ChannelGradients translational{};
-    /// Second derivatives of E for a move of the point in its tangent plane, each hit taken as a small planar
-    /// patch that stays in place (its orientation from the neighbouring hits; see gather.cpp). It sees no
-    /// change of visibility: that is occlusion_curvature's part.
+    /// (gather_seeded() with second_order) Second derivatives of E for a move of the point in its tangent plane,
+    /// each hit taken as a small planar patch that stays in place (its orientation from the neighbouring hits;
+    /// see gather.cpp). It sees no change of visibility: that is occlusion_curvature's part.
     ChannelHessians hessian{};
-    /// Per channel, a bound on what moving occlusion edges add to |∂²E/∂x²| (units of E per length²): each wall
+    /// (With second_order) Per channel, a bound on what moving occlusion edges add to |∂²E/∂x²| (units of E per length²): each wall
     /// between neighbouring cells across a depth step adds |ΔL| times its gradient weight over the nearer
     /// distance squared (Schwarzhaupt, Jensen & Jarosz 2012's occlusion-aware idea, in a conservative form).
     Vec3 occlusion_curvature;
@@ -55,8 +55,10 @@ struct GatherResult {
 GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& strata, const RadianceFunction& radiance,
                     std::uint64_t salt = 0);
 
-/// Like gather(), with an explicit seed (finite-difference tests keep one seed for neighbouring points).
+/// Like gather(), with an explicit seed (finite-difference tests keep one seed for neighbouring points). With
+/// `second_order`, also the Hessian and the occlusion bound (GatherResult), else those stay zero: they cost about
+/// as much again as the rest of the reduction.
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed);
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order = false);
 
 }  // namespace wardray::cache

@@ -68,7 +68,7 @@ public:
                 sample.radiance = m_tracer.gather_radiance(p, dir, state, seeds.next(), ctx, sample.distance);
                 return sample;
             },
-            seeds.next() ^ static_cast<std::uint64_t>(depth));
+            seeds.next() ^ static_cast<std::uint64_t>(depth), m_gradients && m_hessian_spacing);
         if (ctx.cache) {
             const double camera_distance = length(p - m_scene.camera.location);
             const cache::RadiusLimits limits =

@@ -94,7 +94,7 @@ TEST(GatherHessian, MatchesSecondDifferencesOfExactIrradianceInACorner) {
     const Vec3 n{0, 0, 1};
     const Vec3 points[] = {{0.2, 0.1, 0.0}, {0.7, 0.9, 0.0}, {-0.5, 0.6, 0.0}, {0.8, -0.6, 0.0}};
     for (const Vec3& p : points) {
-        const GatherResult g = gather_seeded(p, n, strata_for_count(16384), room.radiance_at(p), 0x5EED);
+        const GatherResult g = gather_seeded(p, n, strata_for_count(16384), room.radiance_at(p), 0x5EED, true);
         for (int c = 0; c < 3; ++c) {
             const std::array<double, 3> exact = exact_hessian(room, p, n, c, 1e-3);
             const std::array<double, 3>& est = g.hessian[c];
@@ -112,7 +112,7 @@ TEST(GatherHessian, MatchesSecondDifferencesOfExactIrradianceInACorner) {
 TEST(GatherHessian, VanishesInAUniformSphere) {
     const double radius = 3.0;
     const RadianceFunction sphere = [&](const Vec3&) { return RadianceSample{{1.0, 1.0, 1.0}, radius}; };
-    const GatherResult g = gather({0, 0, 0}, {0, 0, 1}, strata_for_count(4096), sphere);
+    const GatherResult g = gather_seeded({0, 0, 0}, {0, 0, 1}, strata_for_count(4096), sphere, 3, true);
     for (int c = 0; c < 3; ++c) EXPECT_LT(frobenius(g.hessian[c]), 0.05 / (radius * radius));
 }
 
@@ -124,7 +124,7 @@ TEST(HessianSpacing, RadiusScalesWithTheScene) {
     double unit = 0.0;
     for (const double scale : {1.0, 1e-3, 1e3}) {
         const PanelRoom room = corner_room(scale);
-        const GatherResult g = gather_seeded(p * scale, n, strata_for_count(400), room.radiance_at(p * scale), 7);
+        const GatherResult g = gather_seeded(p * scale, n, strata_for_count(400), room.radiance_at(p * scale), 7, true);
         const double r = hessian_radius(g, 0.5);
         ASSERT_TRUE(std::isfinite(r) && r > 0.0);
         if (scale == 1.0) unit = r;
@@ -145,7 +145,7 @@ TEST(HessianSpacing, ErrorAtTheEdgeOfReachMatchesTheTarget) {
     const PanelRoom room = corner_room();
     const Vec3 n{0, 0, 1};
     const Vec3 p{0.2, 0.1, 0.0};
-    const GatherResult g = gather_seeded(p, n, strata_for_count(16384), room.radiance_at(p), 11);
+    const GatherResult g = gather_seeded(p, n, strata_for_count(16384), room.radiance_at(p), 11, true);
     const double eb = 0.3;
     const double reach = eb * hessian_radius(g, eb);
     ASSERT_TRUE(std::isfinite(reach));
