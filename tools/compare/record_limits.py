@@ -14,7 +14,7 @@ with each configuration's error over the default's at the same record count and 
 (log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
 
   tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
-                                 [--set limits|spacing] [--seeds N]
+                                 [--set limits|spacing] [--seeds N [--first-seed S]]
   tools/compare/record_limits.py --report build/record-limits/rows.jsonl
 """
 import argparse
@@ -91,7 +91,7 @@ def measure(args):
     reference = (refs[0] + refs[1]) / 2
     print(f"# {path.stem} {args.size}: reference {args.rays} paths x 2 seeds, noise of their mean {100 * noise:.2f} %")
     points = [p for p in ladder["full"] if p["label"] in args.points.split(",")]
-    seeds = list(range(1, args.seeds + 1)) if args.seeds > 1 else [0]
+    seeds = list(range(args.first_seed, args.first_seed + args.seeds)) if args.seeds > 1 else [0]
     rows = []
     for p in points:
         (work / "scene.pov").write_text(rewrite_radiosity(text, p["radiosity"])[0])
@@ -209,6 +209,7 @@ def main():
     ap.add_argument("--points", default="c40/e0.7,c80/e0.5,c150/e0.35", help="labels of ladder.json's 'full'")
     ap.add_argument("--wardray", default=str(HERE.parent.parent / "build" / "wardray"))
     ap.add_argument("--seeds", type=int, default=1, help="render each configuration with seeds 1..N (1: no --seed)")
+    ap.add_argument("--first-seed", type=int, default=1, help="with --seeds: the first seed (more seeds later)")
     ap.add_argument("--set", choices=sorted(CONFIG_SETS), default="limits",
                     help="the configurations: the radius limits on and off, or the two record spacings")
     ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
