@@ -232,6 +232,7 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
         }
     }
     if (second_order) {
+        out.second_order = true;
         tangent_hessian(samples, l, r, {m, cells_azimuthal}, distance_floor, out);
         occlusion_curvature(sin_lo, l, r, {m, cells_azimuthal}, distance_floor, out);
     }

@@ -47,6 +47,7 @@ struct GatherResult {
     /// between neighbouring cells across a depth step adds |ΔL| times its gradient weight over the nearer
     /// distance squared (Schwarzhaupt, Jensen & Jarosz 2012's occlusion-aware idea, in a conservative form).
     Vec3 occlusion_curvature;
+    bool second_order = false;  ///< whether hessian and occlusion_curvature were computed
     int ray_count = 0;
 };
 

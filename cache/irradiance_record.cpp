@@ -70,7 +70,7 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
 
     // Ward, Rubinstein & Clear 1988: R = harmonic mean distance to the surfaces seen; or from the Hessian, whose
     // error model is that of extrapolation with gradients.
-    double r = options.gradients && options.spacing == RadiusSpacing::Hessian
+    double r = options.gradients && options.spacing == RadiusSpacing::Hessian && gathered.second_order
                    ? hessian_radius(gathered, options.error_bound)
                    : gathered.harmonic_mean_distance;
     if (std::isnan(r)) r = hi;

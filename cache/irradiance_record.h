@@ -99,7 +99,8 @@ enum class RadiusSpacing {
 struct RecordOptions {
     bool gradients = true;            ///< keep the gradients (off: stored as zero, as POV-Ray 3.7)
     bool gradient_radius_cap = true;  ///< R ≤ E/|∇t E| (Křivánek et al. 2006)
-    RadiusSpacing spacing = RadiusSpacing::Harmonic;  ///< Hessian needs gradients; without them, Harmonic
+    /// Hessian needs gradients and a gather with second_order; without them, Harmonic.
+    RadiusSpacing spacing = RadiusSpacing::Harmonic;
     double error_bound = 1.0;  ///< the final pass's error_bound at the record's depth (Hessian spacing)
 };
 
