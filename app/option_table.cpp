@@ -300,8 +300,8 @@ constexpr OptionSpec kOptions[] = {
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_neighbour_clamp); }},
     {.long_name = "--gi-spacing", .kind = K::Value, .usage = "--gi-spacing=harmonic|hessian",
      .help = "cache mode: a record's radius from the harmonic mean distance of its hits\n"
-             "(default, as POV-Ray 3.7) or, with gradients, from the irradiance Hessian\n"
-             "(Schwarzhaupt, Jensen and Jarosz 2012)",
+             "(as POV-Ray 3.7) or, with gradients, from the irradiance Hessian (Schwarzhaupt,\n"
+             "Jensen and Jarosz 2012; the default)",
      .set = set_gi_spacing},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"

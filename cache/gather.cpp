@@ -44,9 +44,10 @@ double inverse_wall_distance(double r0, double r1, double floor) { return 1.0 / 
 /// the tangent plane) gives, for tangent axes i, j:
 ///   ∂²g/∂x_i∂x_j = L / (MN r²) · (24 ω_i ω_j − 4 δ_ij − 4 (p_i ω_j + p_j ω_i) / (p·ω)),
 /// which sums to zero over a uniformly bright sphere or plane around the point, as it must. The patch's normal
-/// comes from its neighbours' hits (central differences across θ and φ) where they lie on one surface, else the
-/// patch faces the point (p = ω); a grazing estimate (p·ω < 0.05) is taken as facing too. This is the smooth part of
-/// Schwarzhaupt, Jensen & Jarosz 2012's Hessian (their per-sample patches), written for the stratified grid.
+/// comes from differences of its neighbours' hits across θ and φ, central where both lie on the same surface,
+/// one-sided where one does; else the patch faces the point (p = ω), as it does for a grazing estimate
+/// (p·ω < 0.05). This is the smooth part of Schwarzhaupt, Jensen & Jarosz 2012's Hessian (their per-sample
+/// patches), written for the stratified grid.
 void tangent_hessian(const std::vector<HemisphereSample>& samples, const std::vector<Vec3>& l,
                      const std::vector<double>& r, const Strata& grid, double distance_floor, GatherResult& out) {
     const int m = grid.polar, cells = grid.azimuthal;

@@ -92,7 +92,7 @@ private:
     const GatherTracer& m_tracer;
     bool m_gradients = true;
     bool m_gradient_cap = true;
-    bool m_hessian_spacing = false;
+    bool m_hessian_spacing = true;
     double m_footprint = 0.0;
 };
 

@@ -151,9 +151,9 @@ TEST(Options, RecordRadiusLimitSwitches) {
 }
 
 TEST(Options, RecordSpacingSwitch) {
-    EXPECT_FALSE(parse_ok({}).gi_hessian_spacing);
-    EXPECT_TRUE(parse_ok({"--gi-spacing=hessian"}).gi_hessian_spacing);
-    EXPECT_FALSE(parse_ok({"--gi-spacing=hessian", "--gi-spacing=harmonic"}).gi_hessian_spacing);
+    EXPECT_TRUE(parse_ok({}).gi_hessian_spacing);
+    EXPECT_FALSE(parse_ok({"--gi-spacing=harmonic"}).gi_hessian_spacing);
+    EXPECT_TRUE(parse_ok({"--gi-spacing=harmonic", "--gi-spacing=hessian"}).gi_hessian_spacing);
     EXPECT_NE(parse_error({"--gi-spacing=ward"}).find("--gi-spacing"), std::string::npos);
 }
 
