@@ -105,9 +105,9 @@ struct RecordOptions {
 };
 
 /// The fraction of error_bound that Hessian spacing allows as relative error at the edge of a record's reach: 1,
-/// the error there equals error_bound × E (with 0.5 and 2 instead, cornell and box at c40/e0.7 and c80/e0.5 made
-/// 10-50 % more and about as many records as harmonic spacing, at about the same error; see
-/// docs/reports/radiosity.md).
+/// the error there equals error_bound × E. With 0.5 instead, cornell (256x256) and box at c40/e0.7 and c80/e0.5
+/// made 14-53 % more records than harmonic spacing, with 2 about as many; the radius is often set by the limits
+/// instead (docs/reports/radiosity.md).
 inline constexpr double kHessianErrorFraction = 1.0;
 
 /// The radius at which first-order extrapolation's estimated error reaches kHessianErrorFraction × error_bound of
