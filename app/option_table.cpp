@@ -124,6 +124,13 @@ Why set_gi(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_gi_spacing(const OptionUse& use, Options& o) {
+    if (use.value == "harmonic") o.gi_hessian_spacing = false;
+    else if (use.value == "hessian") o.gi_hessian_spacing = true;
+    else return "must be harmonic or hessian";
+    return std::nullopt;
+}
+
 Why set_aov(const OptionUse& use, Options& o) {
     if ((use.value != "irradiance" && use.value != "records") || use.second.empty())
         return "needs a kind (irradiance or records) and a file name";
@@ -291,6 +298,11 @@ constexpr OptionSpec kOptions[] = {
      .help = "cache mode: radii clamped by neighbours' R_j + |p - p_j| (Krivanek et al.\n"
              "2006; default on; POV-Ray 3.7 has no such clamp)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_neighbour_clamp); }},
+    {.long_name = "--gi-spacing", .kind = K::Value, .usage = "--gi-spacing=harmonic|hessian",
+     .help = "cache mode: a record's radius from the harmonic mean distance of its hits\n"
+             "(as POV-Ray 3.7) or, with gradients, from the irradiance Hessian (Schwarzhaupt,\n"
+             "Jensen and Jarosz 2012; the default)",
+     .set = set_gi_spacing},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"
              "(all) or those no changed object covers 1 % of the hemisphere of (still)",

@@ -358,6 +358,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.seed = options.seed;
     settings.gradients = options.gi_gradients;
     settings.gradient_cap = options.gi_gradient_cap;
+    settings.hessian_spacing = options.gi_hessian_spacing;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
     // Up to +Q5 surfaces show their pigments' quick_color (the integrator); the sky's pigments keep theirs.

@@ -21,9 +21,110 @@ double sanitize_distance(double d) {
     return std::max(d, 0.0);
 }
 
+/// Neighbouring hits this close in distance (ratio) are taken as one surface; farther apart, as a depth step.
+constexpr double kSameSurface = 2.0;
+
+/// Whether two hit distances lie on one surface (both finite, within kSameSurface of each other).
+bool same_surface(double r0, double r1) {
+    return std::isfinite(r0) && std::isfinite(r1) && std::max(r0, r1) <= kSameSurface * std::min(r0, r1);
+}
+
+/// Whether a wall between cells at distances r0 and r1 is a depth step (an occlusion edge).
+bool depth_step(double r0, double r1) { return std::max(r0, r1) > kSameSurface * std::min(r0, r1); }
+
 /// The reciprocal of the distance that sets how fast a cell wall moves, with a floor so that a zero distance gives a
 /// large but finite rate.
 double inverse_wall_distance(double r0, double r1, double floor) { return 1.0 / std::max(std::min(r0, r1), floor); }
+
+/// The translational Hessian of E in the tangent plane (local frame: x along t, y along b, z along n).
+/// Each cell's hit is a planar patch of area A = r² Δω / (p·ω) at q = r ω, facing the point along p = −(its
+/// normal), fixed in space while the point moves by x. Its share of E (no π) is
+///   g(x) = (L A / π) ((q − x)·n) (p·(q − x)) / |q − x|⁴,
+/// and with cosine-weighted strata L Δω cos θ / π = L / (MN). Differentiating g twice at x = 0 (n_i = 0 along
+/// the tangent plane) gives, for tangent axes i, j:
+///   ∂²g/∂x_i∂x_j = L / (MN r²) · (24 ω_i ω_j − 4 δ_ij − 4 (p_i ω_j + p_j ω_i) / (p·ω)),
+/// which sums to zero over a uniformly bright sphere or plane around the point, as it must. The patch's normal
+/// comes from differences of its neighbours' hits across θ and φ, central where both lie on the same surface,
+/// one-sided where one does; else the patch faces the point (p = ω), as it does for a grazing estimate
+/// (p·ω < 0.05). This is the smooth part of Schwarzhaupt, Jensen & Jarosz 2012's Hessian (their per-sample
+/// patches), written for the stratified grid.
+void tangent_hessian(const std::vector<HemisphereSample>& samples, const std::vector<Vec3>& l,
+                     const std::vector<double>& r, const Strata& grid, double distance_floor, GatherResult& out) {
+    const int m = grid.polar, cells = grid.azimuthal;
+    const auto at = [cells](int j, int k) { return static_cast<std::size_t>(j) * cells + k; };
+    const double per_cell = 1.0 / static_cast<double>(samples.size());
+    const auto hit = [&](std::size_t i) { return samples[i].direction * r[i]; };
+    for (int j = 0; j < m; ++j) {
+        for (int k = 0; k < cells; ++k) {
+            const std::size_t i = at(j, k);
+            if (!std::isfinite(r[i])) continue;  // a miss: light from infinitely far does not change with x
+            const Vec3& w = samples[i].direction;
+            Vec3 p = w;
+            double cos_patch = 1.0;
+            // A difference across θ and one across φ, central where both neighbours lie on the same surface, else
+            // one-sided toward the one that does.
+            const auto across = [&](std::size_t before, std::size_t after, Vec3& edge) {
+                const bool b_ok = before != i && same_surface(r[i], r[before]);
+                const bool a_ok = after != i && same_surface(r[i], r[after]);
+                if (!b_ok && !a_ok) return false;
+                edge = (a_ok ? hit(after) : hit(i)) - (b_ok ? hit(before) : hit(i));
+                return true;
+            };
+            Vec3 e_theta, e_phi;
+            if (cells >= 3 && across(at(std::max(j - 1, 0), k), at(std::min(j + 1, m - 1), k), e_theta) &&
+                across(at(j, (k + cells - 1) % cells), at(j, (k + 1) % cells), e_phi)) {
+                Vec3 normal = cross(e_theta, e_phi);
+                const double len = length(normal);
+                if (len > 0.0) {
+                    normal = normal / len;
+                    const double c = dot(normal, w);
+                    if (std::fabs(c) >= 0.05) {
+                        p = c > 0.0 ? normal : -normal;
+                        cos_patch = std::fabs(c);
+                    }
+                }
+            }
+            const double d = std::max(r[i], distance_floor);
+            const double s = per_cell / (d * d);
+            const double xx = s * (24.0 * w.x * w.x - 4.0 - 8.0 * p.x * w.x / cos_patch);
+            const double xy = s * (24.0 * w.x * w.y - 4.0 * (p.x * w.y + p.y * w.x) / cos_patch);
+            const double yy = s * (24.0 * w.y * w.y - 4.0 - 8.0 * p.y * w.y / cos_patch);
+            for (int c = 0; c < 3; ++c) {
+                out.hessian[c][0] += l[i][c] * xx;
+                out.hessian[c][1] += l[i][c] * xy;
+                out.hessian[c][2] += l[i][c] * yy;
+            }
+        }
+    }
+}
+
+/// The occlusion part: a depth step between two cells is an edge that sweeps over what lies behind it as the point
+/// moves. Its first-order effect is the wall's term of the translational gradient, |ΔL| · weight / r_near
+/// (Křivánek et al. 2005, as in gather()); the rate r_near changes at is of order one per unit of x, so its second
+/// derivative is bounded by |ΔL| · weight / r_near², summed without signs, so that no two edges cancel.
+void occlusion_curvature(const std::vector<double>& sin_lo, const std::vector<Vec3>& l, const std::vector<double>& r,
+                         const Strata& grid, double distance_floor, GatherResult& out) {
+    const int m = grid.polar, cells = grid.azimuthal;
+    const auto at = [cells](int j, int k) { return static_cast<std::size_t>(j) * cells + k; };
+    const auto add = [&](std::size_t a, std::size_t b, double weight) {
+        if (!depth_step(r[a], r[b])) return;
+        const double near = std::max(std::min(r[a], r[b]), distance_floor);
+        const Vec3 dl = l[a] - l[b];
+        const double scale = weight / (near * near);
+        for (int c = 0; c < 3; ++c) out.occlusion_curvature[c] += std::fabs(dl[c]) * scale;
+    };
+    // The gradient's wall weights: polar walls (1/π) sin θ cos² θ |∫u dφ|, azimuthal walls (1/π) ∫ cos θ dθ.
+    const double arc = 2.0 * std::sin(std::numbers::pi / cells);
+    for (int j = 1; j < m; ++j) {
+        const double s = sin_lo[j];
+        const double weight = s * (1.0 - s * s) * arc / std::numbers::pi;
+        for (int k = 0; k < cells; ++k) add(at(j, k), at(j - 1, k), weight);
+    }
+    for (int j = 0; j < m; ++j) {
+        const double weight = (sin_lo[j + 1] - sin_lo[j]) / std::numbers::pi;
+        for (int k = 0; k < cells; ++k) add(at(j, k), at(j, (k + cells - 1) % cells), weight);
+    }
+}
 
 }  // namespace
 
@@ -33,7 +134,7 @@ GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& stra
 }
 
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed) {
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order) {
     GatherResult out;
     const Vec3 n = normalize(normal);
     const int m = std::max(strata.polar, 1);
@@ -130,6 +231,11 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
             const Vec3 dl = l[cur] - l[prev];
             for (int c = 0; c < 3; ++c) out.translational[c] += dir * dl[c];
         }
+    }
+    if (second_order) {
+        out.second_order = true;
+        tangent_hessian(samples, l, r, {m, cells_azimuthal}, distance_floor, out);
+        occlusion_curvature(sin_lo, l, r, {m, cells_azimuthal}, distance_floor, out);
     }
     return out;
 }

@@ -22,6 +22,10 @@ using RadianceFunction = std::function<RadianceSample(const Vec3& direction_worl
 /// One gradient vector (world space) per colour channel: [0] red, [1] green, [2] blue.
 using ChannelGradients = std::array<Vec3, 3>;
 
+/// One symmetric 2x2 tangent-plane Hessian per colour channel, as {∂²/∂t², ∂²/∂t∂b, ∂²/∂b²} along the tangent t
+/// and bitangent b that orthonormal_basis() gives for the gather's normal.
+using ChannelHessians = std::array<std::array<double, 3>, 3>;
+
 /// The reduction of one gather, in POV-Ray's normalisation: irradiance is the cosine-weighted mean of the incoming
 /// radiance (no factor π), and both gradients are derivatives of that same quantity.
 struct GatherResult {
@@ -35,6 +39,15 @@ struct GatherResult {
     /// dE/dx for a move of the point by x along a tangent direction u is u·translational[c]
     /// (Ward & Heckbert 1992, in the occlusion-robust form of Křivánek et al. 2005).
     ChannelGradients translational{};
+    /// (gather_seeded() with second_order) Second derivatives of E for a move of the point in its tangent plane,
+    /// each hit taken as a small planar patch that stays in place (its orientation from the neighbouring hits;
+    /// see gather.cpp). It sees no change of visibility: that is occlusion_curvature's part.
+    ChannelHessians hessian{};
+    /// (With second_order) Per channel, a bound on what moving occlusion edges add to |∂²E/∂x²| (units of E per length²): each wall
+    /// between neighbouring cells across a depth step adds |ΔL| times its gradient weight over the nearer
+    /// distance squared (Schwarzhaupt, Jensen & Jarosz 2012's occlusion-aware idea, in a conservative form).
+    Vec3 occlusion_curvature;
+    bool second_order = false;  ///< whether hessian and occlusion_curvature were computed
     int ray_count = 0;
 };
 
@@ -43,8 +56,10 @@ struct GatherResult {
 GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& strata, const RadianceFunction& radiance,
                     std::uint64_t salt = 0);
 
-/// Like gather(), with an explicit seed (finite-difference tests keep one seed for neighbouring points).
+/// Like gather(), with an explicit seed (finite-difference tests keep one seed for neighbouring points). With
+/// `second_order`, also the Hessian and the occlusion bound (GatherResult), else those stay zero: they cost about
+/// as much again as the rest of the reduction.
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed);
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order = false);
 
 }  // namespace wardray::cache

@@ -10,7 +10,33 @@ namespace {
 /// Replaces a non-finite or non-positive value by `fallback`.
 double finite_positive_or(double v, double fallback) { return std::isfinite(v) && v > 0.0 ? v : fallback; }
 
+/// The largest |eigenvalue| of the symmetric 2x2 matrix {a, b; b, c}.
+double spectral_radius(double a, double b, double c) {
+    return std::fabs(0.5 * (a + c)) + std::sqrt(0.25 * (a - c) * (a - c) + b * b);
+}
+
 }  // namespace
+
+double hessian_radius(const GatherResult& gathered, double error_bound) {
+    // Schwarzhaupt, Jensen & Jarosz 2012: bound the error of first-order extrapolation by the Hessian. Moving x
+    // from the record, E(x) − (E + x·∇E) = ½ xᵀ H x + O(|x|³), so |error| ≤ ½ λ |x|² with λ the largest
+    // |eigenvalue| of the tangent Hessian, plus the occlusion bound (GatherResult). A lookup reuses a record up to
+    // |x| = eb R (record_error's translational term, eb = error_bound); asking the error there to be at most
+    // f · eb · E (f = kHessianErrorFraction, a relative error tied to error_bound as the split sphere's is):
+    //   ½ λ (eb R)² = f eb E   ⇒   R = √(2 f E / (eb λ)).
+    // The brightest channel sets both E and λ, so that a black channel next to a bright one does not make the
+    // radius vanish (their "robust to black occluders").
+    double curvature = 0.0, brightest = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        const auto& h = gathered.hessian[c];
+        const double lambda = spectral_radius(h[0], h[1], h[2]) + std::fabs(gathered.occlusion_curvature[c]);
+        if (std::isfinite(lambda)) curvature = std::max(curvature, lambda);
+        if (std::isfinite(gathered.irradiance[c])) brightest = std::max(brightest, std::fabs(gathered.irradiance[c]));
+    }
+    const double eb = error_bound > 0.0 && std::isfinite(error_bound) ? error_bound : 1.0;
+    if (!(curvature > 0.0)) return HUGE_VAL;
+    return std::sqrt(2.0 * kHessianErrorFraction * brightest / (eb * curvature));
+}
 
 RadiusLimits radius_limits(const scene::RadiositySettings& settings, int depth, double distance_to_camera,
                            double footprint_min, double footprint_max) {
@@ -42,8 +68,11 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
     const double lo = std::min(std::isfinite(limits.min) ? std::max(limits.min, 0.0) : 0.0, hi_raw);
     const double hi = std::max(hi_raw, lo);
 
-    // Ward, Rubinstein & Clear 1988: R = harmonic mean distance to the surfaces seen.
-    double r = gathered.harmonic_mean_distance;
+    // Ward, Rubinstein & Clear 1988: R = harmonic mean distance to the surfaces seen; or from the Hessian, whose
+    // error model is that of extrapolation with gradients.
+    double r = options.gradients && options.spacing == RadiusSpacing::Hessian && gathered.second_order
+                   ? hessian_radius(gathered, options.error_bound)
+                   : gathered.harmonic_mean_distance;
     if (std::isnan(r)) r = hi;
 
     // Křivánek et al. 2006 (gradient-based radius limit): R ≤ E/|∇t E|, taking the channel with the largest

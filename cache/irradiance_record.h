@@ -89,14 +89,35 @@ struct RadiusLimits {
 RadiusLimits radius_limits(const scene::RadiositySettings& settings, int depth, double distance_to_camera,
                            double footprint_min = 0.0, double footprint_max = 1e300);
 
+/// Where a record's radius comes from before its limits (`--gi-spacing`).
+enum class RadiusSpacing {
+    Harmonic,  ///< the harmonic mean distance of the gather's hits (Ward, Rubinstein & Clear 1988)
+    Hessian,   ///< the distance at which the irradiance Hessian's error reaches a target (hessian_radius())
+};
+
 /// Switches for the improvements over POV-Ray, so that each can be measured on and off.
 struct RecordOptions {
     bool gradients = true;            ///< keep the gradients (off: stored as zero, as POV-Ray 3.7)
     bool gradient_radius_cap = true;  ///< R ≤ E/|∇t E| (Křivánek et al. 2006)
+    /// Hessian needs gradients and a gather with second_order; without them, Harmonic.
+    RadiusSpacing spacing = RadiusSpacing::Harmonic;
+    double error_bound = 1.0;  ///< the final pass's error_bound at the record's depth (Hessian spacing)
 };
 
-/// Makes a record from a gather: radius from the harmonic mean distance, capped by E/|∇t E| and clamped to `limits`;
-/// the translational gradient scaled down when the radius was clamped up; always finite.
+/// The fraction of error_bound that Hessian spacing allows as relative error at the edge of a record's reach: 1,
+/// the error there equals error_bound × E. With 0.5 instead, cornell (256x256) and box at c40/e0.7 and c80/e0.5
+/// made 14-53 % more records than harmonic spacing, with 2 about as many; the radius is often set by the limits
+/// instead (docs/reports/radiosity.md).
+inline constexpr double kHessianErrorFraction = 1.0;
+
+/// The radius at which first-order extrapolation's estimated error reaches kHessianErrorFraction × error_bound of
+/// the record's irradiance at the edge of its reach, error_bound × R (see irradiance_record.cpp); +infinity when
+/// the gather saw no curvature. Proportional to the scene's scale: the Hessian goes as E / length².
+double hessian_radius(const GatherResult& gathered, double error_bound);
+
+/// Makes a record from a gather: radius from the harmonic mean distance (or hessian_radius()), capped by
+/// E/|∇t E| and clamped to `limits`; the translational gradient scaled down when the radius was clamped up; always
+/// finite.
 IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const GatherResult& gathered, int depth,
                              const RadiusLimits& limits, const RecordOptions& options = {});
 

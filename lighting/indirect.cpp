@@ -40,9 +40,9 @@ double gather_weight(double base, int exponent) {
 class CachedIrradiance final : public IndirectLight {
 public:
     CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint,
-                     bool gradient_cap)
+                     bool gradient_cap, bool hessian_spacing)
         : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_gradient_cap(gradient_cap),
-          m_footprint(footprint) {}
+          m_hessian_spacing(hessian_spacing), m_footprint(footprint) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                     TraceContext& ctx) const override {
@@ -68,7 +68,7 @@ public:
                 sample.radiance = m_tracer.gather_radiance(p, dir, state, seeds.next(), ctx, sample.distance);
                 return sample;
             },
-            seeds.next() ^ static_cast<std::uint64_t>(depth));
+            seeds.next() ^ static_cast<std::uint64_t>(depth), m_gradients && m_hessian_spacing);
         if (ctx.cache) {
             const double camera_distance = length(p - m_scene.camera.location);
             const cache::RadiusLimits limits =
@@ -76,6 +76,9 @@ public:
             cache::RecordOptions options;
             options.gradients = m_gradients;
             options.gradient_radius_cap = m_gradients && m_gradient_cap;
+            options.spacing = m_hessian_spacing ? cache::RadiusSpacing::Hessian : cache::RadiusSpacing::Harmonic;
+            // The bound lookups use on the final pass at this depth (interpolation.cpp's lookup_params).
+            options.error_bound = std::ldexp(rs.error_bound, depth);
             ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
         }
         // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
@@ -89,6 +92,7 @@ private:
     const GatherTracer& m_tracer;
     bool m_gradients = true;
     bool m_gradient_cap = true;
+    bool m_hessian_spacing = true;
     double m_footprint = 0.0;
 };
 
@@ -155,8 +159,9 @@ private:
 }  // namespace
 
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
-                                                            bool gradients, double footprint, bool gradient_cap) {
-    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap);
+                                                            bool gradients, double footprint, bool gradient_cap,
+                                                            bool hessian_spacing) {
+    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap, hessian_spacing);
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,

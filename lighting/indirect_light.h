@@ -32,10 +32,11 @@ public:
 };
 
 /// Ward's irradiance cache in the tile's view `TraceContext::cache` (Ward, Rubinstein & Clear 1988): interpolate
-/// where valid records cover the point, else gather a new record. `footprint` and `gradient_cap` as in
-/// IntegratorOptions.
+/// where valid records cover the point, else gather a new record. `footprint`, `gradient_cap` and
+/// `hessian_spacing` as in IntegratorOptions.
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
-                                                            bool gradients, double footprint, bool gradient_cap);
+                                                            bool gradients, double footprint, bool gradient_cap,
+                                                            bool hessian_spacing = true);
 
 /// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render
 /// seed `seed` (--seed).

@@ -74,7 +74,8 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     // POV-Ray compat (+Q): radiosity and photons only from quality 9.
     const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
     if (radiosity && options.gi == GiMode::Cache)
-        m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint, options.gradient_cap);
+        m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint, options.gradient_cap,
+                                            options.hessian_spacing);
     else if (radiosity && options.gi == GiMode::Reference) {
         m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed);
         // The reference converges the direct light at camera hits too: each jittered area light is sampled at about

@@ -150,6 +150,13 @@ TEST(Options, RecordRadiusLimitSwitches) {
     EXPECT_NE(parse_error({"--gi-neighbour-clamp=1"}).find("--gi-neighbour-clamp"), std::string::npos);
 }
 
+TEST(Options, RecordSpacingSwitch) {
+    EXPECT_TRUE(parse_ok({}).gi_hessian_spacing);
+    EXPECT_FALSE(parse_ok({"--gi-spacing=harmonic"}).gi_hessian_spacing);
+    EXPECT_TRUE(parse_ok({"--gi-spacing=harmonic", "--gi-spacing=hessian"}).gi_hessian_spacing);
+    EXPECT_NE(parse_error({"--gi-spacing=ward"}).find("--gi-spacing"), std::string::npos);
+}
+
 TEST(Options, SeedTakesAny64BitNumber) {
     EXPECT_EQ(parse_ok({}).seed, 0u);
     EXPECT_EQ(parse_ok({"--seed", "7"}).seed, 7u);

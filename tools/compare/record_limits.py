@@ -1,16 +1,20 @@
 #!/usr/bin/python3
-"""Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off.
+"""Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off, or
+(`--set spacing`) its two record spacings, `--gi-spacing=harmonic` and `hessian`.
 
 For one scene: a brute-force reference (`--gi=reference --gi-rays N`, seeds 1 and 2, their mean), then the ladder
 points of tools/compare/ladder.json with the four configurations (both limits on, neighbour clamping off, the
 E/|grad E| cap off, both off) rendered in turn, A B C D, 2 threads, linear HDR, `-A`. Each render's records, gather
 and shadow rays (from --stats), rRMSE and bad-pixel fraction against the reference (docs/metrics.md), the rRMSE with
 the reference's own noise taken out in quadrature, and its time over the default's at the same point are
-appended to a JSON-lines file; `--report` turns that file into the Markdown table of docs/reports/radiosity.md,
+appended to a JSON-lines file (with `--seeds N`, each configuration is rendered with `--seed 1` .. `--seed N` in
+turn and the report takes the mean records and rays and the root-mean-square error over the seeds, so that one
+record placement's luck does not decide a comparison); `--report` turns that file into the Markdown table of docs/reports/radiosity.md,
 with each configuration's error over the default's at the same record count and at the same gather rays
 (log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
 
   tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
+                                 [--set limits|spacing] [--seeds N [--first-seed S]]
   tools/compare/record_limits.py --report build/record-limits/rows.jsonl
 """
 import argparse
@@ -27,12 +31,29 @@ sys.path.insert(0, str(HERE))
 from gimetrics import image_error, read_linear_rgb  # noqa: E402
 from povrewrite import rewrite_radiosity  # noqa: E402
 
-CONFIGS = {
-    "both on": [],
-    "clamp off": ["--gi-neighbour-clamp=off"],
-    "cap off": ["--gi-gradient-cap=off"],
-    "both off": ["--gi-neighbour-clamp=off", "--gi-gradient-cap=off"],
+# Each set's first configuration is the baseline the others are compared with.
+CONFIG_SETS = {
+    "limits": {
+        "both on": [],
+        "clamp off": ["--gi-neighbour-clamp=off"],
+        "cap off": ["--gi-gradient-cap=off"],
+        "both off": ["--gi-neighbour-clamp=off", "--gi-gradient-cap=off"],
+    },
+    "spacing": {
+        "harmonic": ["--gi-spacing=harmonic"],
+        "hessian": ["--gi-spacing=hessian"],
+        "hessian, cap off": ["--gi-spacing=hessian", "--gi-gradient-cap=off"],
+    },
 }
+CONFIGS = CONFIG_SETS["limits"]
+
+
+def configs_of(names):
+    """The configuration set whose names are `names` (the limits' when none matches)."""
+    for configs in CONFIG_SETS.values():
+        if set(names) <= set(configs):
+            return configs
+    return CONFIG_SETS["limits"]
 
 
 def render(exe, scene, output, size, scene_dir, extra, cwd, stats=None):
@@ -50,6 +71,7 @@ def render(exe, scene, output, size, scene_dir, extra, cwd, stats=None):
 
 def measure(args):
     ladder = json.loads((HERE / "ladder.json").read_text())
+    configs = CONFIG_SETS[args.set]
     size = tuple(int(x) for x in args.size.split("x"))
     path = pathlib.Path(args.scene).resolve()
     text = path.read_text(errors="replace")
@@ -69,23 +91,29 @@ def measure(args):
     reference = (refs[0] + refs[1]) / 2
     print(f"# {path.stem} {args.size}: reference {args.rays} paths x 2 seeds, noise of their mean {100 * noise:.2f} %")
     points = [p for p in ladder["full"] if p["label"] in args.points.split(",")]
+    seeds = list(range(args.first_seed, args.first_seed + args.seeds)) if args.seeds > 1 else [0]
     rows = []
     for p in points:
         (work / "scene.pov").write_text(rewrite_radiosity(text, p["radiosity"])[0])
-        for config, extra in CONFIGS.items():  # in turn, so that their times are comparable
-            seconds = render(args.wardray, "scene.pov", "image.hdr", size, path.parent, extra, work, work / "stats.json")
+        for seed, (config, extra) in ((s, c) for s in seeds for c in configs.items()):  # in turn: comparable times
+            seed_args = ["--seed", str(seed)] if seed else []
+            seconds = render(args.wardray, "scene.pov", "image.hdr", size, path.parent, [*extra, *seed_args], work,
+                             work / "stats.json")
             stats = json.loads((work / "stats.json").read_text())
             err = image_error(read_linear_rgb(work / "image.hdr"), reference)
             rows.append({"scene": path.stem, "size": args.size, "point": p["label"], "config": config,
                          "time": seconds, "records": stats["cache"]["records"], "gather": stats["rays"]["gather"],
                          "shadow": stats["rays"]["shadow"], "rrmse": err["rrmse"], "bad": err["bad_fraction"],
-                         "corr": math.sqrt(max(err["rrmse"] ** 2 - noise ** 2, 0.0)), "noise": noise})
-        base = rows[-len(CONFIGS)]["time"]
-        for r in rows[-len(CONFIGS):]:
-            r["ratio"] = r["time"] / base
+                         "corr": math.sqrt(max(err["rrmse"] ** 2 - noise ** 2, 0.0)), "noise": noise,
+                         "seed": seed, "rays_ref": args.rays})
+            if len(rows) % len(configs) == 0:
+                base = rows[-len(configs)]["time"]
+                for r in rows[-len(configs):]:
+                    r["ratio"] = r["time"] / base
+        for r in rows[-len(configs) * len(seeds):]:
             print(f"{r['scene']}\t{r['point']}\t{r['config']}\t{r['records']}\t{r['gather']}\t"
                   f"{100 * r['corr']:.2f} %\t{r['ratio']:.2f}", flush=True)
-    with open(pathlib.Path(args.out) / "rows.jsonl", "a") as f:
+    with open(pathlib.Path(args.out) / f"rows{'' if args.set == 'limits' else '-' + args.set}.jsonl", "a") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
 
@@ -107,25 +135,46 @@ def interpolate(curve, x, key):
     return a[1] * (x / a[0]) ** slope, outside
 
 
+def merge_seeds(rows):
+    """One row per scene, point and configuration: mean records, rays and time ratio, RMS error over the seeds."""
+    groups = collections.defaultdict(list)
+    for r in rows:
+        groups[(r["scene"], r["size"], r["point"], r["config"])].append(r)
+    merged = []
+    for g in groups.values():
+        m = dict(g[0])
+        for key in ("records", "gather", "shadow", "time", "ratio", "bad"):
+            m[key] = sum(r[key] for r in g) / len(g)
+        for key in ("records", "gather"):
+            m[key] = round(m[key])
+        for key in ("rrmse", "corr"):
+            m[key] = math.sqrt(sum(r[key] ** 2 for r in g) / len(g))
+        m["seeds"] = len(g)
+        merged.append(m)
+    return merged
+
+
 def report(rows_file):
-    rows = [json.loads(line) for line in open(rows_file)]
+    rows = merge_seeds([json.loads(line) for line in open(rows_file)])
     labels = [p["label"] for p in json.loads((HERE / "ladder.json").read_text())["full"]]
     by = collections.defaultdict(list)
     for r in sorted(rows, key=lambda r: labels.index(r["point"]) if r["point"] in labels else len(labels)):
         by[(r["scene"], r["config"])].append(r)
     order = list(dict.fromkeys(r["scene"] for r in rows))
+    configs = configs_of({r["config"] for r in rows})
+    base_name = next(iter(configs))
     print("| scene | point | limits | records | gather rays | rRMSE | bad pixels | time / default's | "
           "error / default's at equal records | at equal gather rays |")
     print("|---|---|---|---:|---:|---:|---:|---:|---:|---:|")
     summary = collections.defaultdict(list)
     per_scene = collections.defaultdict(list)
     for scene in order:
-        base = by[(scene, "both on")]
-        for config in CONFIGS:
+        base = by[(scene, base_name)]
+        for config in configs:
             for r in by[(scene, config)]:
                 cells = []
                 for key in ("records", "gather"):
-                    if config == "both on":
+                    if config == base_name:
                         cells.append("1")
                         continue
                     e, outside = interpolate(base, r[key], key)
@@ -139,10 +188,11 @@ def report(rows_file):
     print()
     def mean(v):
         return math.exp(sum(math.log(x) for x in v) / len(v)) if v else float("nan")
-    print("| scene | clamp off: records | gather rays | cap off: records | gather rays | both off: records | gather rays |")
-    print("|---|---:|---:|---:|---:|---:|---:|")
+    others = list(configs)[1:]
+    print("| scene | " + " | ".join(f"{c}: records | gather rays" for c in others) + " |")
+    print("|---|" + "---:|---:|" * len(others))
     for scene in order:
-        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in list(CONFIGS)[1:] for k in ("records", "gather")]
+        cells = [f"{mean(per_scene[(scene, c, k)]):.2f}" for c in others for k in ("records", "gather")]
         print(f"| {scene} | " + " | ".join(cells) + " |")
     print()
     for (config, key), v in summary.items():
@@ -158,6 +208,10 @@ def main():
     ap.add_argument("--rays", type=int, default=512, help="reference paths per pixel, per seed")
     ap.add_argument("--points", default="c40/e0.7,c80/e0.5,c150/e0.35", help="labels of ladder.json's 'full'")
     ap.add_argument("--wardray", default=str(HERE.parent.parent / "build" / "wardray"))
+    ap.add_argument("--seeds", type=int, default=1, help="render each configuration with seeds 1..N (1: no --seed)")
+    ap.add_argument("--first-seed", type=int, default=1, help="with --seeds: the first seed (more seeds later)")
+    ap.add_argument("--set", choices=sorted(CONFIG_SETS), default="limits",
+                    help="the configurations: the radius limits on and off, or the two record spacings")
     ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
     ap.add_argument("--report", metavar="ROWS", help="print the table of a rows.jsonl and stop")
     args = ap.parse_args()
