@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off, or
-(`--set spacing`) its two record spacings, `--gi-spacing=harmonic` and `hessian`.
+(`--set spacing`) its two record spacings, `--gi-spacing=harmonic` and `hessian`, or (`--set record-pass`) its
+record passes off and on (each row also has the share of the records the final pass made).
 
 For one scene: a brute-force reference (`--gi=reference --gi-rays N`, seeds 1 and 2, their mean), then the ladder
 points of tools/compare/ladder.json with the four configurations (both limits on, neighbour clamping off, the
@@ -14,7 +15,7 @@ with each configuration's error over the default's at the same record count and 
 (log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
 
   tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
-                                 [--set limits|spacing] [--seeds N [--first-seed S]]
+                                 [--set limits|spacing|record-pass] [--seeds N [--first-seed S]]
   tools/compare/record_limits.py --report build/record-limits/rows.jsonl
 """
 import argparse
@@ -43,6 +44,10 @@ CONFIG_SETS = {
         "harmonic": ["--gi-spacing=harmonic"],
         "hessian": ["--gi-spacing=hessian"],
         "hessian, cap off": ["--gi-spacing=hessian", "--gi-gradient-cap=off"],
+    },
+    "record-pass": {
+        "record pass off": ["--gi-record-pass=off"],
+        "record pass on": ["--gi-record-pass=on"],
     },
 }
 CONFIGS = CONFIG_SETS["limits"]
@@ -101,7 +106,10 @@ def measure(args):
                              work / "stats.json")
             stats = json.loads((work / "stats.json").read_text())
             err = image_error(read_linear_rgb(work / "image.hdr"), reference)
-            rows.append({"scene": path.stem, "size": args.size, "point": p["label"], "config": config,
+            per_pass = stats["cache"]["records_per_pass_and_depth"]
+            final_share = sum(per_pass[-1]) / max(sum(map(sum, per_pass)), 1)
+            rows.append({"final_share": final_share,
+                         "scene": path.stem, "size": args.size, "point": p["label"], "config": config,
                          "time": seconds, "records": stats["cache"]["records"], "gather": stats["rays"]["gather"],
                          "shadow": stats["rays"]["shadow"], "rrmse": err["rrmse"], "bad": err["bad_fraction"],
                          "corr": math.sqrt(max(err["rrmse"] ** 2 - noise ** 2, 0.0)), "noise": noise,
@@ -112,7 +120,7 @@ def measure(args):
                     r["ratio"] = r["time"] / base
         for r in rows[-len(configs) * len(seeds):]:
             print(f"{r['scene']}\t{r['point']}\t{r['config']}\t{r['records']}\t{r['gather']}\t"
-                  f"{100 * r['corr']:.2f} %\t{r['ratio']:.2f}", flush=True)
+                  f"{100 * r['corr']:.2f} %\t{r['ratio']:.2f}\tfinal pass {100 * r['final_share']:.1f} %", flush=True)
     with open(pathlib.Path(args.out) / f"rows{'' if args.set == 'limits' else '-' + args.set}.jsonl", "a") as f:
         for r in rows:
             f.write(json.dumps(r) + "\n")
@@ -211,7 +219,8 @@ def main():
     ap.add_argument("--seeds", type=int, default=1, help="render each configuration with seeds 1..N (1: no --seed)")
     ap.add_argument("--first-seed", type=int, default=1, help="with --seeds: the first seed (more seeds later)")
     ap.add_argument("--set", choices=sorted(CONFIG_SETS), default="limits",
-                    help="the configurations: the radius limits on and off, or the two record spacings")
+                    help="the configurations: the radius limits on and off, the two record spacings, "
+                         "or the record passes off and on")
     ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
     ap.add_argument("--report", metavar="ROWS", help="print the table of a rows.jsonl and stop")
     args = ap.parse_args()
