@@ -160,16 +160,18 @@ private:
         }
         // The first uniform chooses the part and, rescaled, still places the direction, so strata stay strata.
         Vec3 dir;
+        double guide_pdf = 0.0;
         if (u < kCosineShare) {
             const Vec3 d = cosine_direction(u / kCosineShare, v);
             dir = f.t * d.x + f.b * d.y + f.n * d.z;
         } else {
-            dir = f.guide->sample((u - kCosineShare) / (1.0 - kCosineShare), v);
+            dir = f.guide->sample((u - kCosineShare) / (1.0 - kCosineShare), v, guide_pdf);
         }
         const double cos_theta = dot(dir, f.n);
         if (!(cos_theta > 0.0)) return {};  // the guide's lobe below the surface: this path adds nothing
+        if (u < kCosineShare) guide_pdf = f.guide->pdf(dir);
         const double cosine_pdf = cos_theta * std::numbers::inv_pi;
-        const double pdf = kCosineShare * cosine_pdf + (1.0 - kCosineShare) * f.guide->pdf(dir);
+        const double pdf = kCosineShare * cosine_pdf + (1.0 - kCosineShare) * guide_pdf;
         return trace_one(p, dir, state, path_seed, ctx) * (cosine_pdf / pdf);
     }
 

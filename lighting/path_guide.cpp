@@ -17,20 +17,51 @@ constexpr int kBins = Distribution::kBins;
 /// at c·√(samples of the iteration)), unless it is this deep: enough vertices for a mean per bin of a surface's
 /// hemisphere, few enough that a leaf stays near one surface's light.
 constexpr int kMaxDepth = 12;
-constexpr double kBinSolidAngle = 4.0 * std::numbers::pi / kBins;
 
-/// The bin of a unit direction: the row of z = cos θ, the column of φ = atan2(y, x).
+/// The pseudo-angle of (x, y) in [0, 4): a quarter turn per unit, y/(x + y) within the first quadrant. It grows with
+/// φ as atan2 does but costs one division, so the columns are its equal steps (Δφ of a column varies a little).
+double diamond_angle(double x, double y) {
+    if (x == 0.0 && y == 0.0) return 0.0;
+    if (y >= 0.0) return x >= 0.0 ? y / (x + y) : 1.0 - x / (y - x);
+    return x < 0.0 ? 2.0 + y / (x + y) : 3.0 + x / (x - y);
+}
+
+/// φ at each column edge: the angle whose pseudo-angle is 4k/kColumns (within a quadrant t = y/(x + y) is at
+/// φ = atan(t/(1 − t))).
+const std::array<double, kColumns + 1>& column_edges() {
+    static const auto edges = [] {
+        std::array<double, kColumns + 1> e{};
+        for (int k = 0; k <= kColumns; ++k) {
+            const double d = 4.0 * k / kColumns;
+            const int quadrant = std::min(3, static_cast<int>(d));
+            const double t = d - quadrant;
+            e[k] = quadrant * 0.5 * std::numbers::pi + std::atan2(t, 1.0 - t);
+        }
+        return e;
+    }();
+    return edges;
+}
+
+/// The solid angle of a bin of column `col`: Δz · Δφ.
+double bin_solid_angle(int col) {
+    const auto& e = column_edges();
+    return (2.0 / kRows) * (e[col + 1] - e[col]);
+}
+
+/// The bin of a unit direction: the row of z = cos θ, the column of its pseudo-angle.
 int bin_of(const Vec3& d) {
     const int row = std::clamp(static_cast<int>((d.z + 1.0) * 0.5 * kRows), 0, kRows - 1);
-    const double phi = std::atan2(d.y, d.x) + std::numbers::pi;
-    const int col = std::clamp(static_cast<int>(phi * (0.5 / std::numbers::pi) * kColumns), 0, kColumns - 1);
+    const int col = std::clamp(static_cast<int>(diamond_angle(d.x, d.y) * (kColumns / 4.0)), 0, kColumns - 1);
     return row * kColumns + col;
 }
 
-/// The direction at fractional grid coordinates (row + a, column + b).
+/// The direction at fractional grid coordinates (row + a, column + b): z and φ each uniform within the bin, so
+/// uniform in solid angle there.
 Vec3 direction_at(double row, double col) {
     const double z = std::clamp(-1.0 + 2.0 * row / kRows, -1.0, 1.0);
-    const double phi = -std::numbers::pi + 2.0 * std::numbers::pi * col / kColumns;
+    const int c = std::clamp(static_cast<int>(col), 0, kColumns - 1);
+    const auto& e = column_edges();
+    const double phi = e[c] + (col - c) * (e[c + 1] - e[c]);
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
@@ -98,23 +129,25 @@ GuideDistribution GuideDistribution::from_weights(const std::array<double, kBins
     return d;
 }
 
-Vec3 GuideDistribution::sample(double u, double v) const {
+Vec3 GuideDistribution::sample(double u, double v, double& pdf) const {
     const int r = invert(m_row_cdf.data(), kRows, u);
     const double row_mass = m_row_cdf[r + 1] - m_row_cdf[r];
     const double ur = std::clamp((u - m_row_cdf[r]) / row_mass, 0.0, 1.0);
     const float* cdf = &m_col_cdf[r * (kColumns + 1)];
     const int c = invert(cdf, kColumns, v);
     const double vc = std::clamp((v - cdf[c]) / (cdf[c + 1] - cdf[c]), 0.0, 1.0);
+    pdf = bin_pdf(r * kColumns + c);
     return direction_at(r + ur, c + vc);
 }
 
-double GuideDistribution::pdf(const Vec3& dir) const {
-    const int b = bin_of(dir);
+double GuideDistribution::pdf(const Vec3& dir) const { return bin_pdf(bin_of(dir)); }
+
+double GuideDistribution::bin_pdf(int b) const {
     const int r = b / kColumns, c = b % kColumns;
     const float* cdf = &m_col_cdf[r * (kColumns + 1)];
     // The sampler's own density: the row's marginal times the column's conditional, over the bin's solid angle.
     return (static_cast<double>(m_row_cdf[r + 1]) - m_row_cdf[r]) * (static_cast<double>(cdf[c + 1]) - cdf[c]) /
-           kBinSolidAngle;
+           bin_solid_angle(c);
 }
 
 PathGuide PathGuide::build(const std::vector<GuideSample>& samples) {
@@ -157,7 +190,7 @@ PathGuide PathGuide::build(const std::vector<GuideSample>& samples) {
             std::array<double, kBins> w{};
             double wsum = 0.0;
             for (int b = 0; b < kBins; ++b) {
-                w[b] = mean[b] * cosines[a][b];
+                w[b] = mean[b] * cosines[a][b] * bin_solid_angle(b % kColumns);
                 wsum += w[b];
             }
             leaf.valid[a] = wsum > 0.0 && std::isfinite(wsum);

@@ -18,9 +18,9 @@ struct GuideSample {
     float radiance = 0.0f;
 };
 
-/// A piecewise-constant density over the sphere on an equal-area grid (z = cos θ about world +z in kRows rows,
-/// φ in kColumns columns), proportional to one spatial cell's mean radiance per bin times the clamped cosine to
-/// one of the six axis normals.
+/// A piecewise-constant density over the sphere on a grid of bins (z = cos θ about world +z in kRows equal rows,
+/// φ in kColumns columns of equal pseudo-angle, about 2π/kColumns each), proportional to one spatial cell's mean
+/// radiance per bin times the clamped cosine to one of the six axis normals.
 class GuideDistribution {
 public:
     static constexpr int kRows = 16;
@@ -28,8 +28,9 @@ public:
     static constexpr int kBins = kRows * kColumns;
 
     /// A unit direction drawn from the density with two uniforms in [0, 1) (rows by the marginal, then the column
-    /// by the row's conditional: the unit square maps piecewise-continuously, so stratified uniforms stay so).
-    Vec3 sample(double u, double v) const;
+    /// by the row's conditional: the unit square maps piecewise-continuously, so stratified uniforms stay so), and
+    /// its density in `pdf`.
+    Vec3 sample(double u, double v, double& pdf) const;
     /// The density of `dir` (unit) per steradian.
     double pdf(const Vec3& dir) const;
 
@@ -37,6 +38,8 @@ public:
     static GuideDistribution from_weights(const std::array<double, kBins>& weights);
 
 private:
+    double bin_pdf(int bin) const;
+
     std::array<float, kRows + 1> m_row_cdf{};      ///< marginal over rows
     std::array<float, kBins + kRows> m_col_cdf{};  ///< per row, its conditional over columns (kColumns + 1 each)
 };

@@ -47,11 +47,12 @@ TEST(PathGuide, SamplesTheDensityItReports) {
     double sphere = 0.0, cap = 0.0, opposite = 0.0;
     const Vec3 axis = normalize(Vec3{0.3, 0.2, 1.0});
     for (int i = 0; i < n; ++i) {
+        double pdf = 0.0;
         const Vec3 w = d->sample(path_sample(static_cast<std::uint32_t>(i), 0, seed),
-                                 path_sample(static_cast<std::uint32_t>(i), 1, seed));
+                                 path_sample(static_cast<std::uint32_t>(i), 1, seed), pdf);
         ASSERT_NEAR(length(w), 1.0, 1e-9);
-        const double pdf = d->pdf(w);
         ASSERT_GT(pdf, 0.0);
+        ASSERT_NEAR(pdf, d->pdf(w), 1e-9 * pdf) << "the sampled bin's density is not the direction's";
         sphere += 1.0 / pdf / n;
         if (dot(w, axis) > 0.8) cap += 1.0 / pdf / n;
         if (dot(w, axis) < -0.5) opposite += 1.0 / pdf / n;
@@ -62,19 +63,23 @@ TEST(PathGuide, SamplesTheDensityItReports) {
     EXPECT_EQ(opposite, 0.0) << "samples where the density says nothing can come from";
     // The bright cone is where the samples go: far more than its share of cosine sampling.
     int in_cone = 0;
-    for (int i = 0; i < 4096; ++i)
+    for (int i = 0; i < 4096; ++i) {
+        double pdf = 0.0;
         in_cone += dot(d->sample(path_sample(static_cast<std::uint32_t>(i), 0, 5),
-                                 path_sample(static_cast<std::uint32_t>(i), 1, 5)),
+                                 path_sample(static_cast<std::uint32_t>(i), 1, 5), pdf),
                        axis) > 0.9;
+    }
     EXPECT_GT(in_cone, 4096 / 2);
 }
 
 TEST(PathGuide, DensityIsNormalisedOverTheSphere) {
-    // ∫ pdf dω = 1: uniform directions on a fine equal-area grid, pdf · 4π averaged.
+    // ∫ pdf dω = 1: uniform directions on a fine equal-area grid, pdf · 4π averaged. The grid's cells do not line up
+    // with the guide's columns (equal steps of a pseudo-angle), which costs the quadrature about 4e-4; a bin's
+    // solid angle left out of the density would be off by several per cent.
     const PathGuide guide = guide_towards({1, 0, 0}, 0.5, 10.0f, 0.5f);
     const GuideDistribution* d = guide.find({0, 0, 0}, {0, 0, 1});
     ASSERT_NE(d, nullptr);
-    const int rows = 400, cols = 800;
+    const int rows = 400, cols = 1600;
     double integral = 0.0;
     for (int r = 0; r < rows; ++r)
         for (int c = 0; c < cols; ++c) {
@@ -83,7 +88,7 @@ TEST(PathGuide, DensityIsNormalisedOverTheSphere) {
             const double s = std::sqrt(1.0 - z * z);
             integral += d->pdf({s * std::cos(phi), s * std::sin(phi), z}) * 4.0 * std::numbers::pi / (rows * cols);
         }
-    EXPECT_NEAR(integral, 1.0, 1e-4);
+    EXPECT_NEAR(integral, 1.0, 2e-3);
 }
 
 /// A tracer standing in for a scene with two bounces at the origin, normal +z: a first-bounce ray along `dir` sees
