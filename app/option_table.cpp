@@ -284,6 +284,10 @@ constexpr OptionSpec kOptions[] = {
      .help = "lights tested with a shadow ray at each hit of a gather ray's path, picked\n"
              "by their unshadowed light (default 1; 0 tests every light)",
      .set = [](U u, Options& o) { return set_count(u.value, 0, 64, "needs a count 0..64", o.gi_light_picks); }},
+    {.long_name = "--gi-guide", .kind = K::Value, .usage = "--gi-guide=on|off",
+     .help = "reference mode: guide every bounce towards where a pilot pass found the\n"
+             "light coming from (default on; off samples the cosine alone)",
+     .set = [](U u, Options& o) { return set_on_off(u, o.gi_guide); }},
     {.long_name = "--seed", .kind = K::Value, .usage = "--seed N",
      .help = "another sample pattern for every stochastic part (reference paths, cache\n"
              "gathers, jitter, photons); the same N, the same image (default 0)",

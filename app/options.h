@@ -62,6 +62,7 @@ struct Options {
     std::optional<lighting::GiMode> gi;             ///< empty: cache when the scene has radiosity, else off
     int gi_rays = 256;                              ///< --gi-rays: paths per pixel in reference mode
     int gi_light_picks = 1;                         ///< --gi-light-picks: shadow-tested lights per gather hit
+    bool gi_guide = true;                           ///< --gi-guide=off: reference paths sample the cosine alone
     std::uint64_t seed = 0;                         ///< --seed: 0 draws the samples the renders without it draw
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
     bool gi_gradient_cap = true;                    ///< --gi-gradient-cap=off: no radius cap E/|∇t E|

@@ -1,6 +1,7 @@
 // The steps of rendering one scene: resolve the job, load, build, render, write.
 #include "app/run.h"
 
+#include <tbb/parallel_for.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -355,6 +356,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gi = options.gi.value_or(scene.global.radiosity ? lighting::GiMode::Cache : lighting::GiMode::Off);
     settings.reference_rays = options.gi_rays;
     settings.gather_light_picks = options.gi_light_picks;
+    settings.guide_paths = options.gi_guide;
     settings.seed = options.seed;
     settings.gradients = options.gi_gradients;
     settings.gradient_cap = options.gi_gradient_cap;
@@ -387,6 +389,30 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     illumination.integrator = std::make_unique<lighting::Integrator>(scene, geometry, settings);
     for (const std::string& limitation : illumination.integrator->limitations())
         std::cerr << options.scene.string() << ": warning: " << limitation << "\n";
+    // The reference's guide learns from a pilot pass through a fixed grid of image positions, one row a task and
+    // the rows' samples joined in order, so it depends on the scene, the seed, the size and the paths only.
+    if (illumination.integrator->wants_guide()) {
+        const camera::CameraModel model(scene.camera, options.width, options.height, scene.global.noise_generator);
+        const int grid = lighting::Integrator::kPilotGrid;
+        const int paths = lighting::Integrator::pilot_paths(
+            static_cast<long long>(options.width) * options.height, options.gi_rays);
+        std::vector<std::vector<lighting::GuideSample>> rows(grid);
+        tbb::parallel_for(0, grid, [&](int j) {
+            for (int i = 0; i < grid; ++i)
+                if (const auto ray = model.ray((i + 0.5) * options.width / grid, (j + 0.5) * options.height / grid))
+                    illumination.integrator->pilot(*ray, paths, rows[j]);
+        });
+        // Joined row by row, each row freed once copied: the pilot's vertices are about 60 bytes a path.
+        std::size_t total = 0;
+        for (const auto& row : rows) total += row.size();
+        std::vector<lighting::GuideSample> samples;
+        samples.reserve(total);
+        for (auto& row : rows) {
+            samples.insert(samples.end(), row.begin(), row.end());
+            std::vector<lighting::GuideSample>().swap(row);
+        }
+        illumination.integrator->learn_guide(samples);
+    }
     // The irradiance cache, only when the scene asks for radiosity and --gi is cache; +RFI starts it from a file.
     illumination.cache_file = options.radiosity_file.value_or(options.scene.stem().string() + ".rca");
     if (illumination.integrator->uses_cache()) {

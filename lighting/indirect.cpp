@@ -2,6 +2,7 @@
 // brute force, each behind IndirectLight.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "cache/gather.h"
 #include "cache/hemisphere_sampler.h"
@@ -12,6 +13,7 @@
 #include "geometry/scene_geometry.h"
 #include "lighting/indirect_light.h"
 #include "lighting/integrator.h"
+#include "lighting/path_guide.h"
 #include "lighting/path_sequence.h"
 #include "texture/pigment.h"
 
@@ -99,8 +101,8 @@ private:
 /// Reference mode: a Monte Carlo estimate, many rays at the first bounce and one per path deeper.
 class ReferenceIrradiance final : public IndirectLight {
 public:
-    ReferenceIrradiance(const GatherTracer& tracer, int rays, std::uint64_t seed)
-        : m_tracer(tracer), m_rays(std::max(1, rays)), m_seed(seed) {}
+    ReferenceIrradiance(const GatherTracer& tracer, int rays, std::uint64_t seed, const PathGuide* guide)
+        : m_tracer(tracer), m_rays(std::max(1, rays)), m_seed(seed), m_guide(guide) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double, const RayState& state, TraceContext& ctx) const override {
         // Brute force: the cosine-weighted mean of radiance over the hemisphere (POV-Ray's normalisation, no π);
@@ -110,50 +112,94 @@ public:
         // every bounce and the bounces jointly.
         const std::uint64_t salt = reseed(state.path_seed * 0x9E3779B97F4A7C15ULL + state.gi_depth, m_seed);
         cache::SplitMix64 rng(cache::seed_from(p, n, salt));
-        Vec3 t, b;
-        cache::orthonormal_basis(n, t, b);
+        Frame frame;
+        frame.n = n;
+        cache::orthonormal_basis(n, frame.t, frame.b);
+        // Where the guide (learned before the render) says this point's light comes from; none: cosine alone.
+        frame.guide = m_guide && !m_guide->empty() && !ctx.guide_samples ? m_guide->find(p, n) : nullptr;
         ++ctx.rays.gathers;
         if (state.gi_depth > 0) {
             // A path below its first bounce: its own point's next two dimensions, or a uniform pair past them.
             const int dim = path_direction_dimension(state.gi_depth);
-            Vec3 d;
             if (state.path_count > 0 && dim + 1 < kPathDimensions) {
                 const auto index = static_cast<std::uint32_t>(state.path_index);
-                d = cosine_direction(path_sample(index, dim, state.path_group),
-                                     path_sample(index, dim + 1, state.path_group));
-            } else {
-                const double u = rng.uniform();
-                d = cosine_direction(u, rng.uniform());
+                return one_path(p, frame, path_sample(index, dim, state.path_group),
+                                path_sample(index, dim + 1, state.path_group), state, rng.next(), ctx);
             }
-            return trace_one(p, t * d.x + b * d.y + n * d.z, state, rng.next(), ctx);
+            const double u = rng.uniform();
+            const double v = rng.uniform();
+            return one_path(p, frame, u, v, state, rng.next(), ctx);
         }
         // The pixel's paths: one Sobol sequence, scrambled by this hit's stream.
         RayState path = state;
         path.path_group = rng.next();
-        path.path_count = m_rays;
+        path.path_count = ctx.pilot_paths > 0 ? ctx.pilot_paths : m_rays;
         Vec3 sum;
-        for (int i = 0; i < m_rays; ++i) {
+        for (int i = 0; i < path.path_count; ++i) {
             path.path_index = i;
             const auto index = static_cast<std::uint32_t>(i);
             const int dim = path_direction_dimension(0);
-            const Vec3 d = cosine_direction(path_sample(index, dim, path.path_group),
-                                            path_sample(index, dim + 1, path.path_group));
-            sum += trace_one(p, t * d.x + b * d.y + n * d.z, path, rng.next(), ctx);
+            sum += one_path(p, frame, path_sample(index, dim, path.path_group),
+                            path_sample(index, dim + 1, path.path_group), path, rng.next(), ctx);
         }
-        return sum / static_cast<double>(m_rays);
+        return sum / static_cast<double>(path.path_count);
     }
 
 private:
+    /// A shading point's frame and the guide's density there (null: cosine sampling alone).
+    struct Frame {
+        Vec3 n, t, b;
+        const GuideDistribution* guide = nullptr;
+    };
+
+    /// One path's estimate of the irradiance from the uniforms (u, v): a cosine-distributed direction, or with a
+    /// guide a one-sample mixture of the cosine density and the guide's (Veach 1997, sec. 9.2.2: the sample
+    /// weighted by the cosine density over the mixture's). Its weight is at most 1/kCosineShare, and its
+    /// expectation is that of cosine sampling because the mixture's cosine part covers the whole hemisphere.
+    Vec3 one_path(const Vec3& p, const Frame& f, double u, double v, const RayState& state, std::uint64_t path_seed,
+                  TraceContext& ctx) const {
+        if (!f.guide) {
+            const Vec3 d = cosine_direction(u, v);
+            return trace_one(p, f.t * d.x + f.b * d.y + f.n * d.z, state, path_seed, ctx);
+        }
+        // The first uniform chooses the part and, rescaled, still places the direction, so strata stay strata.
+        Vec3 dir;
+        double guide_pdf = 0.0;
+        if (u < kCosineShare) {
+            const Vec3 d = cosine_direction(u / kCosineShare, v);
+            dir = f.t * d.x + f.b * d.y + f.n * d.z;
+        } else {
+            dir = f.guide->sample((u - kCosineShare) / (1.0 - kCosineShare), v, guide_pdf);
+        }
+        const double cos_theta = dot(dir, f.n);
+        if (!(cos_theta > 0.0)) return {};  // the guide's lobe below the surface: this path adds nothing
+        if (u < kCosineShare) guide_pdf = f.guide->pdf(dir);
+        const double cosine_pdf = cos_theta * std::numbers::inv_pi;
+        const double pdf = kCosineShare * cosine_pdf + (1.0 - kCosineShare) * guide_pdf;
+        return trace_one(p, dir, state, path_seed, ctx) * (cosine_pdf / pdf);
+    }
+
     Vec3 trace_one(const Vec3& p, const Vec3& dir, const RayState& state, std::uint64_t path_seed,
                    TraceContext& ctx) const {
         double distance = 0.0;
         const Vec3 l = m_tracer.gather_radiance(p, dir, state, path_seed, ctx, distance);
-        return is_finite(l) ? l : Vec3{};
+        if (!is_finite(l)) return {};
+        // The pilot pass records what each vertex received, for the guide.
+        if (ctx.guide_samples)
+            ctx.guide_samples->push_back({{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)},
+                                          {static_cast<float>(dir.x), static_cast<float>(dir.y),
+                                           static_cast<float>(dir.z)},
+                                          static_cast<float>((l.x + l.y + l.z) / 3.0)});
+        return l;
     }
+
+    /// The mixture's share of cosine sampling (Müller et al. 2017 use one half).
+    static constexpr double kCosineShare = 0.5;
 
     const GatherTracer& m_tracer;
     int m_rays = 256;
     std::uint64_t m_seed = 0;
+    const PathGuide* m_guide = nullptr;
 };
 
 }  // namespace
@@ -165,8 +211,8 @@ std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& 
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,
-                                                               std::uint64_t seed) {
-    return std::make_unique<ReferenceIrradiance>(tracer, rays, seed);
+                                                               std::uint64_t seed, const PathGuide* guide) {
+    return std::make_unique<ReferenceIrradiance>(tracer, rays, seed, guide);
 }
 
 Vec3 Integrator::indirect(const Surface& s, const Vec3& n_layer, double weight, const RayState& state,

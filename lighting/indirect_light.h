@@ -39,8 +39,10 @@ std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& 
                                                             bool hessian_spacing = true);
 
 /// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render
-/// seed `seed` (--seed).
+/// seed `seed` (--seed); with a `guide` that is not empty, every bounce mixes cosine sampling with the guide's
+/// (path_guide.h), which changes the noise, not the expectation. The guide must outlive the estimator and may be
+/// filled after it is made, before the render.
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,
-                                                               std::uint64_t seed);
+                                                               std::uint64_t seed, const PathGuide* guide = nullptr);
 
 }  // namespace wardray::lighting

@@ -77,7 +77,8 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint, options.gradient_cap,
                                             options.hessian_spacing);
     else if (radiosity && options.gi == GiMode::Reference) {
-        m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed);
+        if (options.guide_paths) m_guide = std::make_unique<PathGuide>();
+        m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed, m_guide.get());
         // The reference converges the direct light at camera hits too: each jittered area light is sampled at about
         // as many points as the pixel has paths, shared out among the area lights.
         int area_lights = 0;
@@ -154,6 +155,34 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
 }
 
 Integrator::~Integrator() = default;
+
+int Integrator::pilot_paths(long long pixels, int rays) {
+    const long long per_ray = pixels * rays / (8LL * kPilotGrid * kPilotGrid);
+    return static_cast<int>(std::clamp(per_ray, 1LL, 1024LL));
+}
+
+void Integrator::pilot(const geometry::Ray& ray, int paths, std::vector<GuideSample>& samples) const {
+    if (!m_guide || !m_indirect) return;
+    const std::optional<geometry::Hit> hit = m_geometry.intersect(ray);
+    if (!hit) return;
+    TraceContext ctx;
+    ctx.guide_samples = &samples;
+    ctx.pilot_paths = paths;
+    // A gather as a camera hit starts one, around the geometric normal facing the ray; the path seed keeps the
+    // pilot's random numbers apart from the render's, so that the guide does not depend on the render's samples.
+    const Vec3 n = dot(hit->normal, ray.direction) > 0.0 ? -hit->normal : hit->normal;
+    RayState state;
+    state.level = 1;
+    state.adc_bailout = m_scene.global.adc_bailout;
+    state.max_level = m_scene.global.max_trace_level;
+    state.interiors = m_camera_interiors;
+    state.path_seed = 0x50494C4F54ull;
+    m_indirect->irradiance(hit->position, n, 1.0, state, ctx);
+}
+
+void Integrator::learn_guide(const std::vector<GuideSample>& samples) {
+    if (m_guide) *m_guide = PathGuide::build(samples);
+}
 
 Vec3 Integrator::trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const {
     ++ctx.rays.camera;

@@ -11,6 +11,7 @@
 #include "core/vec3.h"
 #include "lighting/indirect_light.h"
 #include "lighting/light_sampler.h"
+#include "lighting/path_guide.h"
 #include "lighting/quality.h"
 #include "lighting/trace_context.h"
 #include "media/medium.h"
@@ -70,6 +71,9 @@ struct IntegratorOptions {
     /// Reference mode: jittered area lights at camera hits are sampled on a fine jittered grid (about reference_rays
     /// points shared among them) so that their jitter converges with the paths; false keeps POV-Ray's own grid.
     bool fine_area_lights = true;
+    /// Reference mode (--gi-guide): every bounce also samples where a pilot pass found the light coming from
+    /// (learn_guide, path_guide.h); false samples the cosine alone.
+    bool guide_paths = true;
 };
 
 /// Shades rays against a built scene. Stateless after construction, so one instance serves every thread; it
@@ -85,6 +89,20 @@ public:
 
     /// Linear RGB radiance arriving along a camera ray (the background where it hits nothing).
     Vec3 trace_camera_ray(const geometry::Ray& ray, TraceContext& ctx) const;
+
+    /// True when the reference's paths are to be guided: pilot() and learn_guide() must run before the render.
+    bool wants_guide() const { return m_guide != nullptr; }
+    /// The pilot's camera rays: a grid of kPilotGrid x kPilotGrid positions over the image.
+    static constexpr int kPilotGrid = 64;
+    /// Paths per pilot camera ray for a render of `pixels` pixels and `rays` paths each: an eighth of the render's
+    /// paths over the grid, from 1 to 1024 a ray (at most 4.2 M paths, about 300 MB of vertices).
+    static int pilot_paths(long long pixels, int rays);
+    /// Reference mode's pilot (cosine-sampled, its own random streams): traces `paths` paths from where `ray`
+    /// first hits and appends what each of their vertices received to `samples`. Safe to call from any thread.
+    void pilot(const geometry::Ray& ray, int paths, std::vector<GuideSample>& samples) const;
+    /// Learns the guide from the pilot's samples (path_guide.h): the same samples in the same order, the same
+    /// guide, so the image depends on the scene, the seed, the size and the paths, not on threads.
+    void learn_guide(const std::vector<GuideSample>& samples);
 
     /// True when indirect light goes through an irradiance cache that the renderer must fill in passes.
     bool uses_cache() const { return m_indirect && m_options.gi == GiMode::Cache; }
@@ -193,6 +211,7 @@ private:
     IntegratorOptions m_options;
     QualityFeatures m_quality;
     LightSampler m_lights;
+    std::unique_ptr<PathGuide> m_guide;  ///< reference mode with guide_paths: the guide its paths read
     std::unique_ptr<const IndirectLight> m_indirect;  ///< null without a radiosity block or with --gi=off
     media::Sky m_sky;
     std::unique_ptr<const media::Medium> m_atmosphere;  ///< null when the scene has no fog

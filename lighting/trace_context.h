@@ -4,8 +4,10 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "core/vec3.h"
+#include "lighting/path_guide.h"
 #include "photons/dispersion.h"
 
 namespace wardray::scene {
@@ -60,6 +62,10 @@ struct TraceContext {
     /// Output_Alpha: how much of the transparent background the last traced ray (or shaded surface) lets through,
     /// POV-Ray's transmit channel of its colour; 0 on rays that see the background opaque.
     double transmit = 0.0;
+    /// Reference mode's pilot pass (Integrator::learn_guide): where every path vertex's incoming radiance is
+    /// recorded, and how many paths a camera hit starts (0: --gi-rays); null outside the pilot.
+    std::vector<GuideSample>* guide_samples = nullptr;
+    int pilot_paths = 0;
 };
 
 /// The interiors a ray is inside, innermost last (POV-Ray's ray interior list), each named by the object whose

@@ -124,6 +124,9 @@ TEST(Options, RadiositySwitches) {
     EXPECT_EQ(o.gi_rays, 64);
     EXPECT_EQ(o.gi_light_picks, 0);
     EXPECT_EQ(parse_ok({}).gi_light_picks, 1);
+    EXPECT_TRUE(parse_ok({}).gi_guide);
+    EXPECT_FALSE(parse_ok({"--gi-guide=off"}).gi_guide);
+    EXPECT_NE(parse_error({"--gi-guide=maybe"}).find("--gi-guide"), std::string::npos);
     EXPECT_FALSE(o.gi_gradients);
     EXPECT_FALSE(o.pretrace);
     ASSERT_TRUE(o.aov_irradiance && o.aov_records);
