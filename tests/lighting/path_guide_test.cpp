@@ -12,6 +12,7 @@
 #include "cache/hemisphere_sampler.h"
 #include "lighting/indirect_light.h"
 #include "lighting/path_sequence.h"
+#include "seed_estimates.h"
 
 namespace wardray::lighting {
 namespace {
@@ -123,23 +124,14 @@ double cap_irradiance(const Vec3& light) {
     return e;
 }
 
-struct Estimates {
-    double mean = 0.0;
-    double variance = 0.0;
-};
 Estimates estimate(const PathGuide* guide, int paths, int seeds) {
-    Estimates e;
-    std::vector<double> values;
-    for (int s = 1; s <= seeds; ++s) {
+    return over_seeds(seeds, [&](std::uint64_t seed) {
         CapTracer tracer;
-        const auto reference = make_reference_irradiance(tracer, paths, static_cast<std::uint64_t>(s), guide);
+        const auto reference = make_reference_irradiance(tracer, paths, seed, guide);
         tracer.reference = reference.get();
         TraceContext ctx;
-        values.push_back(reference->irradiance({0, 0, 0}, {0, 0, 1}, 1.0, RayState{}, ctx).x);
-        e.mean += values.back() / seeds;
-    }
-    for (double v : values) e.variance += (v - e.mean) * (v - e.mean) / (seeds - 1);
-    return e;
+        return reference->irradiance({0, 0, 0}, {0, 0, 1}, 1.0, RayState{}, ctx).x;
+    });
 }
 
 TEST(PathGuide, GuidedPathsKeepTheExpectationOfCosineSampling) {

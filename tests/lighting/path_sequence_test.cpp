@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lighting/indirect_light.h"
+#include "seed_estimates.h"
 
 namespace wardray::lighting {
 namespace {
@@ -108,24 +109,15 @@ private:
 };
 
 /// The reference's estimate at the origin, normal +z, with `paths` paths and render seed `seed`, and its variance.
-struct Estimates {
-    double mean = 0.0;
-    double variance = 0.0;
-};
 Estimates estimate(int paths, int seeds, bool first_bounce_seen) {
-    Estimates e;
-    std::vector<double> values;
-    for (int s = 1; s <= seeds; ++s) {
+    return over_seeds(seeds, [&](std::uint64_t seed) {
         TwoBounceTracer tracer;
         tracer.first_bounce_seen = first_bounce_seen;
-        const auto reference = make_reference_irradiance(tracer, paths, static_cast<std::uint64_t>(s));
+        const auto reference = make_reference_irradiance(tracer, paths, seed);
         tracer.reference = reference.get();
         TraceContext ctx;
-        values.push_back(reference->irradiance({0, 0, 0}, {0, 0, 1}, 1.0, RayState{}, ctx).x);
-        e.mean += values.back() / seeds;
-    }
-    for (double v : values) e.variance += (v - e.mean) * (v - e.mean) / (seeds - 1);
-    return e;
+        return reference->irradiance({0, 0, 0}, {0, 0, 1}, 1.0, RayState{}, ctx).x;
+    });
 }
 
 TEST(ReferencePaths, KeepTheExpectationOfIndependentPaths) {
