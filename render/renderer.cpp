@@ -201,6 +201,13 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
             // where two tiles at once make hardly more records than one after the other, and a one-tile wave
             // leaves all processes but one waiting.
             waves = tile_waves(tiles_x, tiles_y, pass == 0 ? 1 : 2);
+            if (!record_sizes.empty() && pass == sizes.size()) {
+                // The sparse record pass: little work a tile, and a record it makes covers many of its pixels, so
+                // its tiles go in one wave (across processes each wave costs an exchange of records).
+                for (std::size_t w = 1; w < waves.size(); ++w)
+                    waves[0].insert(waves[0].end(), waves[w].begin(), waves[w].end());
+                waves.resize(1);
+            }
         } else {
             waves.emplace_back(tile_count);
             for (int t = 0; t < tile_count; ++t) waves[0][t] = t;
