@@ -269,7 +269,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
 
     // POV-Ray's pretrace: camera rays on a coarse grid fill the cache (their colours are thrown away), the grid
     // halving each pass; each pass sees the records of the passes and waves before it. Then the record passes: the
-    // final pass's first rays (through the pixels' centres, in the same tiles and waves) with its lookups, so that
+    // final pass's first rays (through the pixels' centres, in the same tiles) with its lookups, so that
     // the records the final pass would make, each seen only by the pixels after it, are made before it and seen by
     // every pixel; first through every kSparseRecordStep-th pixel a row and column, then through every pixel when
     // that sample says the final pass would make more than kRecordPassShare of the records.
