@@ -29,11 +29,11 @@ void shrink_holding(RecordOctree& tree, const IrradianceRecord& record) {
                        [&](std::uint32_t i) { tree.shrink_radius(i, clamped_radius(tree.geometry(i), record)); });
 }
 
-/// Neighbour clamping both ways: R_new ≤ R_i + |p_new − p_i| for the records closer than R_new, then
-/// shrink_holding().
-void clamp_both_ways(RecordOctree& tree, IrradianceRecord& record) {
+/// Neighbour clamping of a new record: R_new ≤ R_i + |p_new − p_i| for the records closer than R_new, then, both
+/// ways (`shrink_older`), shrink_holding().
+void clamp_new(RecordOctree& tree, IrradianceRecord& record, bool shrink_older = true) {
     record.radius = tree.clamped_radius(record.position, record.radius);
-    shrink_holding(tree, record);
+    if (shrink_older) shrink_holding(tree, record);
 }
 
 /// Adds the records of `tree` valid at p to `acc` in insertion order, so that the sum does not depend on how the
@@ -140,10 +140,7 @@ void TileCache::add(IrradianceRecord record) {
     m_cache->clamp_new_record(record);
     // Then against this tile's own records, both ways.
     RecordOctree& own = m_own[static_cast<std::size_t>(record.depth)];
-    if (m_cache->m_neighbour_clamp) {
-        if (m_cache->m_shrink_older) clamp_both_ways(own, record);
-        else record.radius = own.clamped_radius(record.position, record.radius);
-    }
+    if (m_cache->m_neighbour_clamp) clamp_new(own, record, m_cache->m_shrink_older);
     m_order.emplace_back(record.depth, own.insert(record));
 }
 
@@ -220,10 +217,8 @@ void IrradianceCache::merge_tiles(const std::vector<int>& tiles) {
             } else if (made_against_found && merged[depth].size() <= MergedRecords::kMaxScan) {
                 record.radius = merged[depth].clamped_radius(tree, record.position, record.radius);
                 if (m_shrink_older) shrink_holding(tree, record);
-            } else if (m_shrink_older) {
-                clamp_both_ways(tree, record);
             } else {
-                record.radius = tree.clamped_radius(record.position, record.radius);
+                clamp_new(tree, record, m_shrink_older);
             }
             merged[depth].add(tree, tree.insert(record));
             count_record(record);
@@ -279,7 +274,7 @@ void IrradianceCache::clamp_new_record(IrradianceRecord& record) const {
 }
 
 void IrradianceCache::clamp_mutual(IrradianceRecord& record) {
-    if (m_neighbour_clamp) clamp_both_ways(m_octrees[static_cast<std::size_t>(record.depth)], record);
+    if (m_neighbour_clamp) clamp_new(m_octrees[static_cast<std::size_t>(record.depth)], record);
 }
 
 void IrradianceCache::add(const IrradianceRecord& record) {
