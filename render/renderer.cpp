@@ -147,6 +147,8 @@ void keep_region_tiles(std::vector<std::vector<int>>& waves, const PixelRegion& 
 /// cache's records.
 constexpr double kSparseRecordStep = 4.0;
 constexpr double kRecordPassShare = 0.01;
+/// The first wave's tiles in the passes after the first (the first pass's first wave is one tile).
+constexpr std::size_t kLaterFirstWave = 8;
 
 /// A uniform number in [0, 1) from a pretrace position, pass and the render seed, so pretrace jitter is the same on
 /// every run.
@@ -198,12 +200,16 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
         if (cached) {
             // The first pass starts from an empty cache (unless one was loaded), so its first tile goes alone: a second
             // tile beside it would make most of the same records again. Later passes start from a filled cache,
-            // where two tiles at once make hardly more records than one after the other, and a one-tile wave
-            // leaves all processes but one waiting.
-            waves = tile_waves(tiles_x, tiles_y, pass == 0 ? 1 : 2);
-            if (!record_sizes.empty() && pass == sizes.size()) {
-                // The sparse record pass: little work a tile, and a record it makes covers many of its pixels, so
-                // its tiles go in one wave (across processes each wave costs an exchange of records).
+            // where eight tiles at once make hardly more records than one after the other (0.7 % more over the
+            // whole render, at the same error: docs/reports/mpi.md), and small waves of tiles of unequal cost
+            // leave threads and processes waiting.
+            waves = tile_waves(tiles_x, tiles_y, pass == 0 ? 1 : kLaterFirstWave);
+            // The sparse record pass (little work a tile, and a record it makes covers many of its pixels) and the
+            // final pass after the record passes (which leave it almost nothing to make) go in one wave: across
+            // processes each wave costs an exchange of records, and one wave balances best.
+            const bool sparse_record_pass = !record_sizes.empty() && pass == sizes.size();
+            const bool final_after_record_passes = !record_sizes.empty() && pass + 1 == pass_waves.size();
+            if (sparse_record_pass || final_after_record_passes) {
                 for (std::size_t w = 1; w < waves.size(); ++w)
                     waves[0].insert(waves[0].end(), waves[w].begin(), waves[w].end());
                 waves.resize(1);
