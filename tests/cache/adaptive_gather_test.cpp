@@ -1,0 +1,146 @@
+// Tests of adaptive hemisphere sampling (--gi-adaptive): the budget, unbiased estimates, extras at edges, seeds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "cache/gather.h"
+#include "cache/hemisphere_sampler.h"
+
+namespace wardray::cache {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// An adaptive gather of `count` rays with seed `seed`.
+GatherResult adaptive_gather(const Vec3& n, int count, const RadianceFunction& f, std::uint64_t seed) {
+    const GatherPlan plan = gather_plan(count, true);
+    return gather_seeded({0, 0, 0}, n, plan.strata, f, seed, false, plan.extra);
+}
+
+TEST(GatherPlan, AdaptiveSpendsTheSameBudgetAsStratified) {
+    for (int count : {5, 20, 35, 100, 200, 400, 1600}) {
+        const GatherPlan off = gather_plan(count, false);
+        const GatherPlan on = gather_plan(count, true);
+        const int budget = off.strata.polar * off.strata.azimuthal;
+        EXPECT_EQ(off.extra, 0);
+        EXPECT_EQ(on.strata.polar * on.strata.azimuthal + on.extra, budget) << count;
+        // The base pass takes about three quarters of the budget, the extras the rest.
+        EXPECT_NEAR(on.extra, (1.0 - kAdaptiveBaseShare) * budget, 0.12 * budget + 1) << count;
+        // The traced rays are the budget, counted by the radiance function and by the result.
+        int calls = 0;
+        const RadianceFunction f = [&calls](const Vec3& d) {
+            ++calls;
+            return RadianceSample{Vec3{1, 1, 1} * (d.x > 0.2 ? 1.0 : 0.1), 1.0};
+        };
+        const GatherResult g = gather_seeded({0, 0, 0}, {0, 0, 1}, on.strata, f, 3, true, on.extra);
+        EXPECT_EQ(calls, budget) << count;
+        EXPECT_EQ(g.ray_count, budget) << count;
+    }
+}
+
+TEST(AdaptiveExtraRays, SpreadEvenlyWhereNoCellDiffers) {
+    const Strata s{5, 16};
+    const std::vector<int> rays = adaptive_extra_rays(std::vector<double>(80, 0.7), s, 100);
+    int total = 0, lo = 1 << 30, hi = 0;
+    for (const int r : rays) {
+        total += r;
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+    }
+    EXPECT_EQ(total, 100);
+    EXPECT_LE(hi - lo, 1);
+}
+
+TEST(AdaptiveGather, FurnaceGivesItselfExactly) {
+    // Constant radiance L: every cell's mean is L, whatever rays it got, so E = L and the distance stays.
+    const RadianceFunction uniform = [](const Vec3&) { return RadianceSample{{0.25, 0.5, 2.0}, 3.0}; };
+    const GatherResult g = adaptive_gather(normalize(Vec3{0, 1, 0.2}), 400, uniform, 17);
+    EXPECT_NEAR(g.irradiance.x, 0.25, 1e-12);
+    EXPECT_NEAR(g.irradiance.y, 0.5, 1e-12);
+    EXPECT_NEAR(g.irradiance.z, 2.0, 1e-12);
+    EXPECT_NEAR(g.harmonic_mean_distance, 3.0, 1e-12);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_LT(length(g.rotational[c]), 1e-12);
+        EXPECT_LT(length(g.translational[c]), 1e-12);
+    }
+}
+
+TEST(AdaptiveGather, CosineLobeHasKnownMean) {
+    // L = cos θ: E = (1/π) ∫ cos² θ dω = 2/3 (as the stratified gather's test).
+    const Vec3 n = normalize(Vec3{0.3, -0.2, 0.9});
+    const RadianceFunction lobe = [n](const Vec3& d) { return RadianceSample{Vec3{1, 1, 1} * dot(d, n), kInf}; };
+    const GatherResult g = adaptive_gather(n, 1600, lobe, 5);
+    EXPECT_NEAR(g.irradiance.x, 2.0 / 3.0, 2e-3);
+    EXPECT_EQ(g.harmonic_mean_distance, kInf);
+}
+
+TEST(AdaptiveGather, DiskLightMeanOverSeedsIsUnbiased) {
+    // A bright disk of half-angle θ0 around the normal over a dark hemisphere: E = sin² θ0. Its edge cuts one row
+    // of cells. Were a cell's extras chosen from its own base ray (a cell that differs from its neighbours), the
+    // dark cells of that row would be refined more often than the bright ones and the mean would drift by about
+    // 0.5 % of E; adaptive_extra_rays() leaves the cell's own value out. sin² θ0 = 0.37 lies inside a row.
+    const double exact = 0.37, cos0 = std::sqrt(1.0 - exact);
+    const Vec3 n{0, 0, 1};
+    const RadianceFunction disk = [&](const Vec3& d) {
+        return RadianceSample{Vec3{1, 1, 1} * (d.z > cos0 ? 1.0 : 0.0), 1.0};
+    };
+    constexpr int kSeeds = 4000, kCount = 200;
+    double sum = 0, sum2 = 0;
+    for (int s = 0; s < kSeeds; ++s) {
+        const double e = adaptive_gather(n, kCount, disk, 1000 + s).irradiance.x;
+        sum += e;
+        sum2 += (e - exact) * (e - exact);
+    }
+    const double mean = sum / kSeeds, rms = std::sqrt(sum2 / kSeeds);
+    std::printf("disk: mean %.5f (exact %.5f), rms error %.5f\n", mean, exact, rms);
+    // Four standard errors of the mean, plus a bias of at most 0.1 % of E.
+    EXPECT_NEAR(mean, exact, 4.0 * rms / std::sqrt(kSeeds) + 0.001 * exact);
+}
+
+TEST(AdaptiveGather, ExtraRaysLandNextToASharpEdge) {
+    // Bright where the world tangent t is positive: the edges lie at local azimuths φ = π/2 and 3π/2.
+    const Vec3 n = normalize(Vec3{0.2, 0.5, 0.8});
+    Vec3 t, b;
+    orthonormal_basis(n, t, b);
+    std::vector<Vec3> directions;
+    const RadianceFunction half = [&](const Vec3& d) {
+        directions.push_back(d);
+        return RadianceSample{Vec3{1, 1, 1} * (dot(d, t) > 0.0 ? 1.0 : 0.0), 2.0};
+    };
+    const GatherPlan plan = gather_plan(400, true);
+    const GatherResult g = gather_seeded({0, 0, 0}, n, plan.strata, half, 9, false, plan.extra);
+    const std::size_t base = static_cast<std::size_t>(plan.strata.polar) * plan.strata.azimuthal;
+    ASSERT_EQ(directions.size(), base + plan.extra);
+    ASSERT_GT(plan.extra, 50);
+    // A cell next to the edge reaches at most two cell widths of azimuth from it.
+    const double reach = 2.0 * 2.0 * std::numbers::pi / plan.strata.azimuthal;
+    int near_edge = 0;
+    for (std::size_t i = base; i < directions.size(); ++i) {
+        const double x = dot(directions[i], t), y = dot(directions[i], b);
+        const double from_edge = std::asin(std::min(1.0, std::fabs(x) / std::hypot(x, y)));
+        near_edge += from_edge < reach ? 1 : 0;
+    }
+    EXPECT_GE(near_edge, 0.9 * plan.extra) << near_edge << " of " << plan.extra;
+    EXPECT_NEAR(g.irradiance.x, 0.5, 0.02);
+}
+
+TEST(AdaptiveGather, SameSeedSameResultOtherSeedOther) {
+    const Vec3 n = normalize(Vec3{-0.1, 0.3, 1.0});
+    const RadianceFunction f = [](const Vec3& d) {
+        return RadianceSample{{d.x > 0.1 ? 2.0 : 0.2, 0.5 + d.y, 1.0}, d.z > 0.5 ? 1.0 : 4.0};
+    };
+    const GatherResult a = adaptive_gather(n, 300, f, 42);
+    const GatherResult b = adaptive_gather(n, 300, f, 42);
+    const GatherResult c = adaptive_gather(n, 300, f, 43);
+    EXPECT_EQ(a.irradiance, b.irradiance);
+    EXPECT_EQ(a.harmonic_mean_distance, b.harmonic_mean_distance);
+    EXPECT_EQ(a.translational[0], b.translational[0]);
+    EXPECT_EQ(a.rotational[2], b.rotational[2]);
+    EXPECT_NE(a.irradiance, c.irradiance);
+}
+
+}  // namespace
+}  // namespace wardray::cache
