@@ -308,7 +308,7 @@ constexpr OptionSpec kOptions[] = {
              "Jensen and Jarosz 2012; the default)",
      .set = set_gi_spacing},
     {.long_name = "--gi-adaptive", .kind = K::Value, .usage = "--gi-adaptive=on|off",
-     .help = "cache mode: adaptive hemisphere sampling, a quarter of each gather's rays\n"
+     .help = "cache mode: adaptive hemisphere sampling, a tenth of each gather's rays\n"
              "sent into the cells whose neighbours differ most (Ward's ambient\n"
              "super-sampling, as Radiance's -as; default off)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
