@@ -170,14 +170,18 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
         for (std::size_t i = 0; i < count; ++i)
             luminance[i] = 0.2126 * l[i].x + 0.7152 * l[i].y + 0.0722 * l[i].z;
         const std::vector<int> extra = adaptive_extra_rays(luminance, {m, cells_azimuthal}, extra_rays);
+        // Each cell draws its extras from its own stream, so a cell that gets one ray more or less (two nearly equal
+        // variances in a scaled scene) changes no other cell's directions.
+        const std::uint64_t extra_seed = rng.next();
         for (std::size_t i = 0; i < count; ++i) {
             if (extra[i] == 0) continue;
+            SplitMix64 cell_rng(SplitMix64(extra_seed ^ (0xD1B54A32D192ED03ull * (i + 1))).next());
             Vec3 l_sum = l[i];
             double inverse_sum = r[i] > 0.0 ? 1.0 / r[i] : kInf;
             for (int e = 0; e < extra[i]; ++e) {
                 Vec3 l_e;
                 double r_e = 0.0;
-                trace(sample_in_cell({m, cells_azimuthal}, samples[i].polar, samples[i].azimuth, rng).direction,
+                trace(sample_in_cell({m, cells_azimuthal}, samples[i].polar, samples[i].azimuth, cell_rng).direction,
                       l_e, r_e);
                 l_sum += l_e;
                 inverse_sum += r_e > 0.0 ? 1.0 / r_e : kInf;

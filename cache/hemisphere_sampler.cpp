@@ -69,6 +69,9 @@ std::vector<int> adaptive_extra_rays(const std::vector<double>& luminance, const
     mean /= static_cast<double>(count);
     // The floor: where every cell agrees, the extras spread evenly instead of piling into one cell.
     const double floor = 1e-6 * mean * mean + 1e-300;
+    // Differences at the level of rounding count as none, so that cells that agree tie exactly and a scene scaled
+    // by any factor sends its extras into the same cells.
+    const double negligible = 1e-9 * mean;
     const auto at = [cells](int j, int k) { return static_cast<std::size_t>(j) * cells + k; };
     // Each cell's variance from the squared luminance differences across it, between its two neighbours in θ and
     // between its two in φ (one-sided at the first and last rows). The cell's own value stays out, so that how many
@@ -80,7 +83,7 @@ std::vector<int> adaptive_extra_rays(const std::vector<double>& luminance, const
             double sum = 0.0;
             const auto add = [&](std::size_t a, std::size_t b) {
                 const double d = luminance[a] - luminance[b];
-                sum += std::isfinite(d) ? d * d : 0.0;
+                sum += std::isfinite(d) && std::fabs(d) > negligible ? d * d : 0.0;
             };
             if (j > 0 && j + 1 < m) add(at(j - 1, k), at(j + 1, k));
             if (cells > 2) add(at(j, (k + cells - 1) % cells), at(j, (k + 1) % cells));
