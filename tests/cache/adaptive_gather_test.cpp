@@ -54,6 +54,19 @@ TEST(AdaptiveExtraRays, SpreadEvenlyWhereNoCellDiffers) {
     EXPECT_LE(hi - lo, 1);
 }
 
+TEST(AdaptiveExtraRays, RoundingLevelDifferencesChangeNothing) {
+    // Luminance that agrees to 1e-9 (rounding in a scaled scene) gets the same extras as exact agreement, where
+    // ties go to the lower index; one real step still draws them.
+    const Strata s{4, 12};
+    std::vector<double> exact(48, 0.3), rounded(48, 0.3);
+    for (std::size_t i = 0; i < rounded.size(); ++i) rounded[i] *= 1.0 + 1e-10 * static_cast<double>(i % 7);
+    EXPECT_EQ(adaptive_extra_rays(exact, s, 20), adaptive_extra_rays(rounded, s, 20));
+    exact[17] = 3.0;
+    const std::vector<int> step = adaptive_extra_rays(exact, s, 20);
+    // Cell 17 (row 1, azimuth 5) lies between its neighbours 16 and 18 and between 5 and 29 across θ.
+    EXPECT_GT(step[16] + step[18] + step[5] + step[29], 15);
+}
+
 TEST(AdaptiveGather, FurnaceGivesItselfExactly) {
     // Constant radiance L: every cell's mean is L, whatever rays it got, so E = L and the distance stays.
     const RadianceFunction uniform = [](const Vec3&) { return RadianceSample{{0.25, 0.5, 2.0}, 3.0}; };
