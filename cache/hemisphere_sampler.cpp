@@ -53,7 +53,7 @@ HemisphereSample sample_in_cell(const Strata& strata, int polar, int azimuth, Sp
 
 GatherPlan gather_plan(int count, bool adaptive) {
     const Strata full = strata_for_count(count);
-    if (!adaptive) return {full, 0};
+    if (!adaptive || count < kAdaptiveMinRays) return {full, 0};
     const int total = full.polar * full.azimuthal;
     const Strata base = strata_for_count(static_cast<int>(std::lround(kAdaptiveBaseShare * total)));
     return {base, std::max(0, total - base.polar * base.azimuthal)};
