@@ -307,6 +307,11 @@ constexpr OptionSpec kOptions[] = {
              "(as POV-Ray 3.7) or, with gradients, from the irradiance Hessian (Schwarzhaupt,\n"
              "Jensen and Jarosz 2012; the default)",
      .set = set_gi_spacing},
+    {.long_name = "--gi-adaptive", .kind = K::Value, .usage = "--gi-adaptive=on|off",
+     .help = "cache mode: adaptive hemisphere sampling, a tenth of each gather's rays\n"
+             "sent into the cells whose neighbours differ most (Ward's ambient\n"
+             "super-sampling, as Radiance's -as; default off)",
+     .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"
              "(all) or those no changed object covers 1 % of the hemisphere of (still)",

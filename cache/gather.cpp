@@ -134,7 +134,7 @@ GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& stra
 }
 
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order) {
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order, int extra_rays) {
     GatherResult out;
     const Vec3 n = normalize(normal);
     const int m = std::max(strata.polar, 1);
@@ -153,19 +153,51 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
     const std::size_t count = samples.size();
     std::vector<Vec3> l(count);
     std::vector<double> r(count);
-    double inverse_distance_sum = 0.0;
     double nearest = kInf;
+    const auto trace = [&](const Vec3& d, Vec3& l_out, double& r_out) {
+        const RadianceSample s = radiance(t * d.x + b * d.y + n * d.z);
+        l_out = sanitize_radiance(s.radiance);
+        r_out = sanitize_distance(s.distance);
+        nearest = std::min(nearest, r_out);
+    };
+    for (std::size_t i = 0; i < count; ++i) trace(samples[i].direction, l[i], r[i]);
+    out.ray_count = static_cast<int>(count);
+    if (extra_rays > 0) {
+        // Adaptive hemisphere sampling: the extras go to the cells whose neighbours differ most in luminance, and
+        // each such cell keeps the mean radiance and the harmonic mean distance of its rays, so that every
+        // estimator below still sees one value per cell of the grid.
+        std::vector<double> luminance(count);
+        for (std::size_t i = 0; i < count; ++i)
+            luminance[i] = 0.2126 * l[i].x + 0.7152 * l[i].y + 0.0722 * l[i].z;
+        const std::vector<int> extra = adaptive_extra_rays(luminance, {m, cells_azimuthal}, extra_rays);
+        // Each cell draws its extras from its own stream, so a cell that gets one ray more or less (two nearly equal
+        // variances in a scaled scene) changes no other cell's directions.
+        const std::uint64_t extra_seed = rng.next();
+        for (std::size_t i = 0; i < count; ++i) {
+            if (extra[i] == 0) continue;
+            SplitMix64 cell_rng(SplitMix64(extra_seed ^ (0xD1B54A32D192ED03ull * (i + 1))).next());
+            Vec3 l_sum = l[i];
+            double inverse_sum = r[i] > 0.0 ? 1.0 / r[i] : kInf;
+            for (int e = 0; e < extra[i]; ++e) {
+                Vec3 l_e;
+                double r_e = 0.0;
+                trace(sample_in_cell({m, cells_azimuthal}, samples[i].polar, samples[i].azimuth, cell_rng).direction,
+                      l_e, r_e);
+                l_sum += l_e;
+                inverse_sum += r_e > 0.0 ? 1.0 / r_e : kInf;
+            }
+            const double rays = 1.0 + extra[i];
+            l[i] = l_sum / rays;
+            r[i] = inverse_sum > 0.0 ? rays / inverse_sum : kInf;
+            out.ray_count += extra[i];
+        }
+    }
+    double inverse_distance_sum = 0.0;
     Vec3 sum;
     for (std::size_t i = 0; i < count; ++i) {
-        const Vec3& d = samples[i].direction;
-        const RadianceSample s = radiance(t * d.x + b * d.y + n * d.z);
-        l[i] = sanitize_radiance(s.radiance);
-        r[i] = sanitize_distance(s.distance);
         sum += l[i];
         inverse_distance_sum += r[i] > 0.0 ? 1.0 / r[i] : kInf;
-        nearest = std::min(nearest, r[i]);
     }
-    out.ray_count = static_cast<int>(count);
 
     // Irradiance without π: E = (1/MN) Σ L_jk, each cell covering π/(MN) of projected solid angle.
     out.irradiance = sum / static_cast<double>(count);

@@ -48,7 +48,7 @@ struct GatherResult {
     /// distance squared (Schwarzhaupt, Jensen & Jarosz 2012's occlusion-aware idea, in a conservative form).
     Vec3 occlusion_curvature;
     bool second_order = false;  ///< whether hessian and occlusion_curvature were computed
-    int ray_count = 0;
+    int ray_count = 0;  ///< rays traced, extras included
 };
 
 /// Gathers at `position` with unit `normal` using one jittered ray per cell of `strata`, seeded by
@@ -58,8 +58,11 @@ GatherResult gather(const Vec3& position, const Vec3& normal, const Strata& stra
 
 /// Like gather(), with an explicit seed (finite-difference tests keep one seed for neighbouring points). With
 /// `second_order`, also the Hessian and the occlusion bound (GatherResult), else those stay zero: they cost about
-/// as much again as the rest of the reduction.
+/// as much again as the rest of the reduction. With `extra_rays` > 0 (adaptive hemisphere sampling, gather_plan()),
+/// that many more rays follow the stratified ones, in the cells adaptive_extra_rays() picks, drawn from the same
+/// seed; each such cell enters every estimate as the mean of its rays.
 GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strata& strata,
-                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order = false);
+                           const RadianceFunction& radiance, std::uint64_t seed, bool second_order = false,
+                           int extra_rays = 0);
 
 }  // namespace wardray::cache

@@ -5,6 +5,8 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <queue>
+#include <utility>
 
 namespace wardray::cache {
 
@@ -35,17 +37,70 @@ std::uint64_t seed_from(const Vec3& position, const Vec3& normal, std::uint64_t 
 std::vector<HemisphereSample> stratified_cosine_samples(const Strata& strata, SplitMix64& rng) {
     std::vector<HemisphereSample> samples;
     samples.reserve(static_cast<std::size_t>(strata.polar) * strata.azimuthal);
-    for (int j = 0; j < strata.polar; ++j) {
-        for (int k = 0; k < strata.azimuthal; ++k) {
-            // sin²θ uniform within the stratum makes the density proportional to cos θ.
-            const double sin2 = (j + rng.uniform()) / strata.polar;
-            const double phi = 2.0 * std::numbers::pi * (k + rng.uniform()) / strata.azimuthal;
-            const double sin_theta = std::sqrt(sin2);
-            const double cos_theta = std::sqrt(std::max(0.0, 1.0 - sin2));
-            samples.push_back({{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}, j, k});
+    for (int j = 0; j < strata.polar; ++j)
+        for (int k = 0; k < strata.azimuthal; ++k) samples.push_back(sample_in_cell(strata, j, k, rng));
+    return samples;
+}
+
+HemisphereSample sample_in_cell(const Strata& strata, int polar, int azimuth, SplitMix64& rng) {
+    // sin²θ uniform within the stratum makes the density proportional to cos θ.
+    const double sin2 = (polar + rng.uniform()) / strata.polar;
+    const double phi = 2.0 * std::numbers::pi * (azimuth + rng.uniform()) / strata.azimuthal;
+    const double sin_theta = std::sqrt(sin2);
+    const double cos_theta = std::sqrt(std::max(0.0, 1.0 - sin2));
+    return {{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}, polar, azimuth};
+}
+
+GatherPlan gather_plan(int count, bool adaptive) {
+    const Strata full = strata_for_count(count);
+    if (!adaptive || count < kAdaptiveMinRays) return {full, 0};
+    const int total = full.polar * full.azimuthal;
+    const Strata base = strata_for_count(static_cast<int>(std::lround(kAdaptiveBaseShare * total)));
+    return {base, std::max(0, total - base.polar * base.azimuthal)};
+}
+
+std::vector<int> adaptive_extra_rays(const std::vector<double>& luminance, const Strata& strata, int extra) {
+    const int m = strata.polar, cells = strata.azimuthal;
+    const std::size_t count = luminance.size();
+    std::vector<int> rays(count, 0);
+    if (extra <= 0 || count == 0 || count != static_cast<std::size_t>(m) * cells) return rays;
+    double mean = 0.0;
+    for (const double y : luminance) mean += std::fabs(y);
+    mean /= static_cast<double>(count);
+    // The floor: where every cell agrees, the extras spread evenly instead of piling into one cell.
+    const double floor = 1e-6 * mean * mean + 1e-300;
+    // Differences at the level of rounding count as none, so that cells that agree tie exactly and a scene scaled
+    // by any factor sends its extras into the same cells.
+    const double negligible = 1e-9 * mean;
+    const auto at = [cells](int j, int k) { return static_cast<std::size_t>(j) * cells + k; };
+    // Each cell's variance from the squared luminance differences across it, between its two neighbours in θ and
+    // between its two in φ (one-sided at the first and last rows). The cell's own value stays out, so that how many
+    // rays a cell gets does not depend on what its own base ray saw: that would bias its mean toward the values
+    // that look like their neighbours.
+    std::vector<double> variance(count);
+    for (int j = 0; j < m; ++j) {
+        for (int k = 0; k < cells; ++k) {
+            double sum = 0.0;
+            const auto add = [&](std::size_t a, std::size_t b) {
+                const double d = luminance[a] - luminance[b];
+                sum += std::isfinite(d) && std::fabs(d) > negligible ? d * d : 0.0;
+            };
+            if (j > 0 && j + 1 < m) add(at(j - 1, k), at(j + 1, k));
+            if (cells > 2) add(at(j, (k + cells - 1) % cells), at(j, (k + 1) % cells));
+            variance[at(j, k)] = sum + floor;
         }
     }
-    return samples;
+    // Greedy: a cell with n rays and variance v contributes v / n to its mean's variance; one more ray removes
+    // v / (n (n + 1)). Ties go to the lower index (the queue orders by gain, then by the negated index).
+    std::priority_queue<std::pair<double, std::ptrdiff_t>> queue;
+    for (std::size_t i = 0; i < count; ++i) queue.emplace(variance[i] / 2.0, -static_cast<std::ptrdiff_t>(i));
+    for (int e = 0; e < extra; ++e) {
+        const std::size_t i = static_cast<std::size_t>(-queue.top().second);
+        queue.pop();
+        const double n = 2.0 + rays[i]++;
+        queue.emplace(variance[i] / (n * (n + 1.0)), -static_cast<std::ptrdiff_t>(i));
+    }
+    return rays;
 }
 
 void orthonormal_basis(const Vec3& n, Vec3& tangent, Vec3& bitangent) {

@@ -42,9 +42,9 @@ double gather_weight(double base, int exponent) {
 class CachedIrradiance final : public IndirectLight {
 public:
     CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint,
-                     bool gradient_cap, bool hessian_spacing)
+                     bool gradient_cap, bool hessian_spacing, bool adaptive_gather)
         : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_gradient_cap(gradient_cap),
-          m_hessian_spacing(hessian_spacing), m_footprint(footprint) {}
+          m_hessian_spacing(hessian_spacing), m_adaptive_gather(adaptive_gather), m_footprint(footprint) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                     TraceContext& ctx) const override {
@@ -60,17 +60,18 @@ public:
         }
         // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
         ++ctx.rays.gathers;
-        const cache::Strata strata = cache::strata_for_count(rays_at_depth(rs, depth));
+        // With --gi-adaptive, a coarser stratified grid and the rest of the same budget where its cells differ.
+        const cache::GatherPlan plan = cache::gather_plan(rays_at_depth(rs, depth), m_adaptive_gather);
         cache::SplitMix64 seeds(ctx.gather_seed++);
         const cache::GatherResult gathered = cache::gather_seeded(
-            p, n, strata,
+            p, n, plan.strata,
             [&](const Vec3& dir) {
                 cache::RadianceSample sample;
                 // Each ray's own seed (after the gather's), for the lights its path picks.
                 sample.radiance = m_tracer.gather_radiance(p, dir, state, seeds.next(), ctx, sample.distance);
                 return sample;
             },
-            seeds.next() ^ static_cast<std::uint64_t>(depth), m_gradients && m_hessian_spacing);
+            seeds.next() ^ static_cast<std::uint64_t>(depth), m_gradients && m_hessian_spacing, plan.extra);
         if (ctx.cache) {
             const double camera_distance = length(p - m_scene.camera.location);
             const cache::RadiusLimits limits =
@@ -95,6 +96,7 @@ private:
     bool m_gradients = true;
     bool m_gradient_cap = true;
     bool m_hessian_spacing = true;
+    bool m_adaptive_gather = false;
     double m_footprint = 0.0;
 };
 
@@ -206,8 +208,9 @@ private:
 
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
-                                                            bool hessian_spacing) {
-    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap, hessian_spacing);
+                                                            bool hessian_spacing, bool adaptive_gather) {
+    return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap, hessian_spacing,
+                                              adaptive_gather);
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,

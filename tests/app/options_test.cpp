@@ -160,6 +160,13 @@ TEST(Options, RecordSpacingSwitch) {
     EXPECT_NE(parse_error({"--gi-spacing=ward"}).find("--gi-spacing"), std::string::npos);
 }
 
+TEST(Options, AdaptiveGatherSwitch) {
+    EXPECT_FALSE(parse_ok({}).gi_adaptive);
+    EXPECT_TRUE(parse_ok({"--gi-adaptive=on"}).gi_adaptive);
+    EXPECT_FALSE(parse_ok({"--gi-adaptive=on", "--gi-adaptive=off"}).gi_adaptive);
+    EXPECT_NE(parse_error({"--gi-adaptive=yes"}).find("--gi-adaptive"), std::string::npos);
+}
+
 TEST(Options, SeedTakesAny64BitNumber) {
     EXPECT_EQ(parse_ok({}).seed, 0u);
     EXPECT_EQ(parse_ok({"--seed", "7"}).seed, 7u);

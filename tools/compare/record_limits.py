@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Measures wardray's two record-radius limits that POV-Ray 3.7 lacks (issue 18), each on and off, or
 (`--set spacing`) its two record spacings, `--gi-spacing=harmonic` and `hessian`, or (`--set record-pass`) its
-record passes off and on (each row also has the share of the records the final pass made).
+record passes off and on (each row also has the share of the records the final pass made), or (`--set adaptive`)
+adaptive hemisphere sampling (`--gi-adaptive`) off and on.
 
 For one scene: a brute-force reference (`--gi=reference --gi-rays N`, seeds 1 and 2, their mean), then the ladder
 points of tools/compare/ladder.json with the four configurations (both limits on, neighbour clamping off, the
@@ -15,7 +16,7 @@ with each configuration's error over the default's at the same record count and 
 (log-log interpolation on the default's curve over the ladder; values outside its range are marked, not averaged).
 
   tools/compare/record_limits.py SCENE.pov [--size 160x120] [--rays 512] [--points c40/e0.7,c80/e0.5]
-                                 [--set limits|spacing|record-pass] [--seeds N [--first-seed S]]
+                                 [--set limits|spacing|record-pass|adaptive] [--seeds N [--first-seed S]]
   tools/compare/record_limits.py --report build/record-limits/rows.jsonl
 """
 import argparse
@@ -48,6 +49,10 @@ CONFIG_SETS = {
     "record-pass": {
         "record pass off": ["--gi-record-pass=off"],
         "record pass on": ["--gi-record-pass=on"],
+    },
+    "adaptive": {
+        "adaptive off": ["--gi-adaptive=off"],
+        "adaptive on": ["--gi-adaptive=on"],
     },
 }
 CONFIGS = CONFIG_SETS["limits"]
@@ -220,7 +225,7 @@ def main():
     ap.add_argument("--first-seed", type=int, default=1, help="with --seeds: the first seed (more seeds later)")
     ap.add_argument("--set", choices=sorted(CONFIG_SETS), default="limits",
                     help="the configurations: the radius limits on and off, the two record spacings, "
-                         "or the record passes off and on")
+                         "the record passes off and on, or adaptive hemisphere sampling off and on")
     ap.add_argument("--out", default=str(HERE.parent.parent / "build" / "record-limits"))
     ap.add_argument("--report", metavar="ROWS", help="print the table of a rows.jsonl and stop")
     args = ap.parse_args()
