@@ -10,6 +10,7 @@
 
 #include "cache/gather.h"
 #include "cache/hemisphere_sampler.h"
+#include "furnace_check.h"
 #include "test_scenes.h"
 
 namespace wardray::cache {
@@ -73,16 +74,7 @@ TEST(AdaptiveExtraRays, RoundingLevelDifferencesChangeNothing) {
 
 TEST(AdaptiveGather, FurnaceGivesItselfExactly) {
     // Constant radiance L: every cell's mean is L, whatever rays it got, so E = L and the distance stays.
-    const RadianceFunction uniform = [](const Vec3&) { return RadianceSample{{0.25, 0.5, 2.0}, 3.0}; };
-    const GatherResult g = adaptive_gather(normalize(Vec3{0, 1, 0.2}), 400, uniform, 17);
-    EXPECT_NEAR(g.irradiance.x, 0.25, 1e-12);
-    EXPECT_NEAR(g.irradiance.y, 0.5, 1e-12);
-    EXPECT_NEAR(g.irradiance.z, 2.0, 1e-12);
-    EXPECT_NEAR(g.harmonic_mean_distance, 3.0, 1e-12);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_LT(length(g.rotational[c]), 1e-12);
-        EXPECT_LT(length(g.translational[c]), 1e-12);
-    }
+    expect_furnace(adaptive_gather(normalize(Vec3{0, 1, 0.2}), 400, furnace_sample, 17));
 }
 
 TEST(AdaptiveGather, CosineLobeHasKnownMean) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "furnace_check.h"
 #include "test_scenes.h"
 
 namespace wardray::cache {
@@ -23,16 +24,7 @@ bool all_finite(const GatherResult& g) {
 
 TEST(Gather, UniformRadianceGivesItselfAndNoGradient) {
     // Furnace: constant radiance L everywhere gives E = L in POV-Ray's normalisation.
-    const RadianceFunction uniform = [](const Vec3&) { return RadianceSample{{0.25, 0.5, 2.0}, 3.0}; };
-    const GatherResult g = gather({1, 2, 3}, {0, 1, 0}, strata_for_count(400), uniform);
-    EXPECT_NEAR(g.irradiance.x, 0.25, 1e-12);
-    EXPECT_NEAR(g.irradiance.y, 0.5, 1e-12);
-    EXPECT_NEAR(g.irradiance.z, 2.0, 1e-12);
-    EXPECT_NEAR(g.harmonic_mean_distance, 3.0, 1e-12);
-    for (int c = 0; c < 3; ++c) {
-        EXPECT_LT(length(g.rotational[c]), 1e-12);
-        EXPECT_LT(length(g.translational[c]), 1e-12);
-    }
+    expect_furnace(gather({1, 2, 3}, {0, 1, 0}, strata_for_count(400), furnace_sample));
 }
 
 TEST(Gather, CosineLobeRadianceHasKnownMean) {
