@@ -7,6 +7,8 @@
 #include <numbers>
 #include <vector>
 
+#include "core/color.h"
+
 namespace wardray::cache {
 namespace {
 
@@ -167,8 +169,7 @@ GatherResult gather_seeded(const Vec3& position, const Vec3& normal, const Strat
         // each such cell keeps the mean radiance and the harmonic mean distance of its rays, so that every
         // estimator below still sees one value per cell of the grid.
         std::vector<double> luminance(count);
-        for (std::size_t i = 0; i < count; ++i)
-            luminance[i] = 0.2126 * l[i].x + 0.7152 * l[i].y + 0.0722 * l[i].z;
+        for (std::size_t i = 0; i < count; ++i) luminance[i] = wardray::luminance(l[i]);
         const std::vector<int> extra = adaptive_extra_rays(luminance, {m, cells_azimuthal}, extra_rays);
         // Each cell draws its extras from its own stream, so a cell that gets one ray more or less (two nearly equal
         // variances in a scaled scene) changes no other cell's directions.

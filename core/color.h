@@ -17,4 +17,7 @@ struct Color {
     bool operator==(const Color&) const = default;
 };
 
+/// The luminance of linear RGB (Rec. 709 weights), for image metrics and the cache's adaptive gathers.
+inline double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
 }  // namespace wardray

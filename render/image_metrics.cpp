@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/color.h"
+
 namespace wardray::render {
 
 namespace {
-
-double luminance(const Vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 double mean_luminance(const Film& f) {
     double sum = 0.0;

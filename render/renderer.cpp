@@ -201,7 +201,7 @@ RenderResult render_image(const scene::Scene& scene, const lighting::Integrator&
             // The first pass starts from an empty cache (unless one was loaded), so its first tile goes alone: a second
             // tile beside it would make most of the same records again. Later passes start from a filled cache,
             // where eight tiles at once make hardly more records than one after the other (0.7 % more over the
-            // whole render, at the same error: docs/reports/mpi.md), and small waves of tiles of unequal cost
+            // whole render, at the same error: docs/mpi.md), and small waves of tiles of unequal cost
             // leave threads and processes waiting.
             waves = tile_waves(tiles_x, tiles_y, pass == 0 ? 1 : kLaterFirstWave);
             // The sparse record pass (little work a tile, and a record it makes covers many of its pixels) and the
