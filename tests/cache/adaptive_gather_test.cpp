@@ -10,7 +10,7 @@
 
 #include "cache/gather.h"
 #include "cache/hemisphere_sampler.h"
-#include "furnace_check.h"
+#include "gather_checks.h"
 #include "test_scenes.h"
 
 namespace wardray::cache {
@@ -158,34 +158,16 @@ TEST(AdaptiveGather, GradientsStillMatchFiniteDifferences) {
     const test::RoomScene room;
     const GatherPlan plan = gather_plan(16384, true);
     ASSERT_GT(plan.extra, 1000);
-    const Strata reference_strata = strata_for_count(131072);
-    constexpr double kAngle = 0.03, kStep = 0.02;
     const Vec3 n{0, 1, 0};
     Vec3 t, b;
     orthonormal_basis(n, t, b);
     for (const Vec3& p : {Vec3{0.0, 0.0, 2.7}, Vec3{0.3, 0.0, 0.85}}) {
         const GatherResult g = gather_seeded(p, n, plan.strata, room.radiance_at(p), 77, false, plan.extra);
         const GatherResult s = gather_seeded(p, n, strata_for_count(16384), room.radiance_at(p), 77);
-        const auto irradiance = [&](const Vec3& q, const Vec3& nn) {
-            return gather_seeded(q, nn, reference_strata, room.radiance_at(q), 0x5EED).irradiance;
-        };
-        std::array<Vec3, 2> rot_fd, trans_fd;
-        const Vec3 axes[2] = {t, b};
-        for (int a = 0; a < 2; ++a) {
-            const Vec3 turn = cross(axes[a], n);
-            rot_fd[a] = (irradiance(p, n * std::cos(kAngle) + turn * std::sin(kAngle)) -
-                         irradiance(p, n * std::cos(kAngle) - turn * std::sin(kAngle))) / (2.0 * kAngle);
-            trans_fd[a] = (irradiance(p + axes[a] * kStep, n) - irradiance(p - axes[a] * kStep, n)) / (2.0 * kStep);
-        }
-        // The tangent-plane gradient's error relative to its size, as gather_test.cpp measures it.
-        const auto relative = [&](const Vec3& estimate, const std::array<Vec3, 2>& fd, int c) {
-            const double e0 = dot(estimate, t) - fd[0][c], e1 = dot(estimate, b) - fd[1][c];
-            return std::hypot(e0, e1) / std::hypot(fd[0][c], fd[1][c]);
-        };
+        const FiniteDifferenceGradients reference(room, p, n, t, b);
         for (int c = 0; c < 3; ++c) {
-            const double rot = relative(g.rotational[c], rot_fd, c), trans = relative(g.translational[c], trans_fd, c);
-            const double rot_s = relative(s.rotational[c], rot_fd, c);
-            const double trans_s = relative(s.translational[c], trans_fd, c);
+            const double rot = reference.rotational_error(g, c), trans = reference.translational_error(g, c);
+            const double rot_s = reference.rotational_error(s, c), trans_s = reference.translational_error(s, c);
             std::printf("z %.2f ch%d  rotational err %.3f (stratified %.3f)  translational err %.3f (%.3f)\n", p.z, c,
                         rot, rot_s, trans, trans_s);
             // Within gather_test.cpp's 10 %, or, where the gradient is small enough for noise to reach that (green's

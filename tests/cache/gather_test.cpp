@@ -8,7 +8,7 @@
 #include <limits>
 #include <numbers>
 
-#include "furnace_check.h"
+#include "gather_checks.h"
 #include "test_scenes.h"
 
 namespace wardray::cache {
@@ -70,14 +70,6 @@ struct Probe {
     double tolerance = 0.10;  ///< relative to the gradient's magnitude
 };
 
-/// Both tangent components of a world-space gradient vector.
-std::array<double, 2> tangent_components(const Vec3& g, const Vec3& t, const Vec3& b) { return {dot(g, t), dot(g, b)}; }
-
-double relative_error(const std::array<double, 2>& estimate, const std::array<double, 2>& reference) {
-    const double diff = std::hypot(estimate[0] - reference[0], estimate[1] - reference[1]);
-    return diff / std::hypot(reference[0], reference[1]);
-}
-
 const Probe kProbes[] = {
     {"floor near back wall", {0.0, 0.0, 2.7}, {0, 1, 0}},
     {"floor in left/back corner", {-1.75, 0.0, 2.75}, {0, 1, 0}},
@@ -89,45 +81,23 @@ const Probe kProbes[] = {
     {"left wall in corner", {-2.0, 0.3, 2.6}, {1, 0, 0}},
 };
 
-// Gradients from one 16384-ray gather against central finite differences of a 131072-ray brute-force irradiance,
-// one seed for both sides of each difference (the difference of the same stratified estimator). At 4096 rays the
-// translational gradient's noise alone is 5-13 % of its magnitude, hence the larger gather.
+// Gradients from one 16384-ray gather against central finite differences of a 131072-ray brute-force irradiance
+// (FiniteDifferenceGradients). At 4096 rays the translational gradient's noise alone is 5-13 % of its magnitude,
+// hence the larger gather.
 TEST(GatherGradients, MatchFiniteDifferencesNearWallsAndCorners) {
     const test::RoomScene room;
     const Strata gather_strata = strata_for_count(16384);
-    const Strata reference_strata = strata_for_count(131072);
-    constexpr std::uint64_t kSeed = 0x5EED;
-    constexpr double kAngle = 0.03;  // radians
-    constexpr double kStep = 0.02;   // scene units: (step / distance to the nearest wall)² stays below 1 %
-
     for (const Probe& probe : kProbes) {
         const Vec3 n = normalize(probe.n);
         Vec3 t, b;
         orthonormal_basis(n, t, b);
         const GatherResult g = gather(probe.p, n, gather_strata, room.radiance_at(probe.p));
-        const auto irradiance = [&](const Vec3& p, const Vec3& nn) {
-            return gather_seeded(p, nn, reference_strata, room.radiance_at(p), kSeed).irradiance;
-        };
-        std::array<Vec3, 2> rot_fd, trans_fd;
-        const Vec3 axes[2] = {t, b};
-        for (int a = 0; a < 2; ++a) {
-            // Rotation by ±α about the tangent axis: n(α) = n cos α + (axis × n) sin α.
-            const Vec3 turn = cross(axes[a], n);
-            const Vec3 e_plus = irradiance(probe.p, n * std::cos(kAngle) + turn * std::sin(kAngle));
-            const Vec3 e_minus = irradiance(probe.p, n * std::cos(kAngle) - turn * std::sin(kAngle));
-            rot_fd[a] = (e_plus - e_minus) / (2.0 * kAngle);
-            const Vec3 t_plus = irradiance(probe.p + axes[a] * kStep, n);
-            const Vec3 t_minus = irradiance(probe.p - axes[a] * kStep, n);
-            trans_fd[a] = (t_plus - t_minus) / (2.0 * kStep);
-        }
+        const FiniteDifferenceGradients reference(room, probe.p, n, t, b);
         for (int c = 0; c < 3; ++c) {
-            const std::array<double, 2> rot_ref{rot_fd[0][c], rot_fd[1][c]};
-            const std::array<double, 2> trans_ref{trans_fd[0][c], trans_fd[1][c]};
-            const double rot_err = relative_error(tangent_components(g.rotational[c], t, b), rot_ref);
-            const double trans_err = relative_error(tangent_components(g.translational[c], t, b), trans_ref);
+            const double rot_err = reference.rotational_error(g, c);
+            const double trans_err = reference.translational_error(g, c);
             std::printf("%-26s ch%d  |grad_r| %.4f err %.3f   |grad_t| %.4f err %.3f\n", probe.name, c,
-                        std::hypot(rot_ref[0], rot_ref[1]), rot_err, std::hypot(trans_ref[0], trans_ref[1]),
-                        trans_err);
+                        reference.rotational_size(c), rot_err, reference.translational_size(c), trans_err);
             EXPECT_LT(rot_err, 0.10) << probe.name << " channel " << c;
             EXPECT_LT(trans_err, probe.tolerance) << probe.name << " channel " << c;
         }
