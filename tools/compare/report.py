@@ -214,7 +214,8 @@ def markdown(data, plot_dir):
                   "check is up to 1.4 times more lenient than a second seed would be)"}.get(
             data.get("wardray_has_seed"), "a second seed (or, without a seed option, halving the rays)")
         + f" changes the image by less than {100 * data['references']['wardray_reference']['tolerance']:.1f} % "
-        "rRMSE. The rRMSE between the two references shows how much of any difference is the lighting model rather "
+        "rRMSE" + (" (the reference is then the mean of the two seeds' images, whose own noise is about half that "
+                   "change)" if data.get("wardray_has_seed") else "") + ". The rRMSE between the two references shows how much of any difference is the lighting model rather "
         "than noise or cache error.",
         "",
         "Renderers: " + "; ".join(v if v.lower().startswith(LABELS[k].lower()) else f"{LABELS[k]} {v}"
@@ -292,8 +293,9 @@ def markdown(data, plot_dir):
                    if s["references"].get("wardray") and not s["references"]["wardray"]["converged"]]
     if unconverged:
         lines += ["wardray's reference is **not converged** on " + ", ".join(unconverged) + ": an image's error "
-                  "against it cannot fall below the reference's own noise (about the change quoted above), so "
-                  "wardray's low targets may read \"not reached\" for that reason alone. Raise `max_rays` in "
+                  "against it cannot fall below the reference's own noise (with a seed option, about half the change "
+                  "quoted above: the reference is the mean of the two seeds), so wardray's low targets may read "
+                  "\"not reached\" for that reason alone. Raise `max_rays` in "
                   "`tools/compare/ladder.json` (cached references are kept) to converge them.", ""]
 
     unsupported = [s for s in data["scenes"] if s.get("wardray_warnings")]

@@ -235,6 +235,43 @@ class ReferenceRaysTest(unittest.TestCase):
         self.assertEqual(next_rays(64, 0.05, 0.005, 4096), 4096)    # capped
         self.assertEqual(next_rays(64, 0.02, 0.005, 8192), 2048)    # 16 x 1.2 x 64 = 1229 -> 2048
 
+    def test_the_reference_is_the_mean_of_the_two_seeds(self):
+        import compare_gi
+
+        class Ward:
+            gi_mode, has_reference, has_seed = "cache", True, True
+
+            def reference_args(self, rays, seed):
+                return [rays, seed]
+
+        class Cache:
+            def render(self, renderer, text, scene_dir, size, extra, work, what):
+                return tuple(extra), 1.0, True  # stands for the image's path
+
+        class Progress:
+            def show(self, *args):
+                pass
+
+            def finish(self, *args):
+                pass
+
+            def add(self, *args):
+                pass
+
+        # Seed 2 differs from seed 1 by 2 % at 64 rays and by 0.2 % at 2048 (next_rays' aim): the loop stops there.
+        pixels = {(64, 1): 1.00, (64, 2): 1.02, (2048, 1): 1.000, (2048, 2): 1.002}
+        saved = compare_gi.read_linear_rgb
+        compare_gi.read_linear_rgb = lambda key: np.full((2, 2, 3), pixels[key])
+        try:
+            image, info = compare_gi.wardray_reference(Ward(), "", None, (2, 2), None, Cache(),
+                                                       {"start_rays": 64, "tolerance": 0.005, "max_rays": 8192},
+                                                       Progress(), "scene")
+        finally:
+            compare_gi.read_linear_rgb = saved
+        self.assertEqual(info["rays"], 2048)
+        self.assertTrue(info["converged"])
+        np.testing.assert_allclose(image, 1.001)
+
 
 if __name__ == "__main__":
     unittest.main()
