@@ -310,7 +310,7 @@ constexpr OptionSpec kOptions[] = {
     {.long_name = "--gi-adaptive", .kind = K::Value, .usage = "--gi-adaptive=on|off",
      .help = "cache mode: adaptive hemisphere sampling, a tenth of each gather's rays\n"
              "sent into the cells whose neighbours differ most (Ward's ambient\n"
-             "super-sampling, as Radiance's -as; default off)",
+             "super-sampling, as Radiance's -as; the default)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"
