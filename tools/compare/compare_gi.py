@@ -81,13 +81,14 @@ def next_rays(rays, change, tolerance, max_rays):
 
 
 def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, name):
-    """wardray's converged image: brute force with enough rays that a second seed changes the image by less than
-    the tolerance (docs/metrics.md); without a seed option, that halving the rays does."""
+    """wardray's converged image, as pixels: brute force with enough rays that a second seed changes the image by
+    less than the tolerance (docs/metrics.md), the mean of the two seeds; without a seed option, that halving the
+    rays does."""
     if ward.gi_mode == "off":
         image, seconds, cached = cache.render(ward, text, scene_dir, size, [], work,
                                               f"wardray --gi=off image of {name}")
         progress.finish((name, "wardray", None), None if cached else seconds)
-        return image, {"rays": None, "seconds": seconds, "converged": False,
+        return read_linear_rgb(image), {"rays": None, "seconds": seconds, "converged": False,
                        "check": "none: wardray ran with --gi=off (development mode)"}
     if not ward.has_reference:
         raise RenderFailed("this wardray has no --gi=reference with --gi-rays (see wardray --help)")
@@ -141,10 +142,10 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                                                           f"POV-Ray reference of {name}")
                     progress.finish((name, r.name, None), None if cached else seconds)
                     info = {"settings": cfg["povray_reference"], "seconds": seconds, "converged": True}
+                    refs[r.name] = read_linear_rgb(image)
                 else:
-                    image, info = wardray_reference(r, ref_text, scene_dir, size, work, cache,
-                                                    cfg["wardray_reference"], progress, name)
-                refs[r.name] = read_linear_rgb(image) if isinstance(image, (str, pathlib.Path)) else image
+                    refs[r.name], info = wardray_reference(r, ref_text, scene_dir, size, work, cache,
+                                                           cfg["wardray_reference"], progress, name)
                 result["references"][r.name] = info
             except RenderFailed as e:
                 result["failures"].append(f"{r.label} reference: {e}")

@@ -215,7 +215,8 @@ def markdown(data, plot_dir):
             data.get("wardray_has_seed"), "a second seed (or, without a seed option, halving the rays)")
         + f" changes the image by less than {100 * data['references']['wardray_reference']['tolerance']:.1f} % "
         "rRMSE" + (" (the reference is then the mean of the two seeds' images, whose own noise is about half that "
-                   "change)" if data.get("wardray_has_seed") else "") + ". The rRMSE between the two references shows how much of any difference is the lighting model rather "
+                   "change)" if data.get("wardray_has_seed") else "")
+        + ". The rRMSE between the two references shows how much of any difference is the lighting model rather "
         "than noise or cache error.",
         "",
         "Renderers: " + "; ".join(v if v.lower().startswith(LABELS[k].lower()) else f"{LABELS[k]} {v}"
