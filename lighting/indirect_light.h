@@ -36,7 +36,7 @@ public:
 /// `hessian_spacing` and `adaptive_gather` as in IntegratorOptions.
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
-                                                            bool hessian_spacing = true, bool adaptive_gather = false);
+                                                            bool hessian_spacing = true, bool adaptive_gather = true);
 
 /// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render
 /// seed `seed` (--seed); with a `guide` that is not empty, every bounce mixes cosine sampling with the guide's
