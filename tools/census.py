@@ -1754,8 +1754,9 @@ def main():
     args.results = args.results or str(ROOT / "build" / "census")
     args.out = args.out or str(ROOT / "docs" / "reports" / "census.md")
     memory_limit = int(args.memory_limit * 2**30) if corpus and args.memory_limit > 0 else None
-    ward = renderers.Wardray(args.wardray)
-    pov = renderers.PovRay(args.povray)
+    # The census's images are Radiance HDR (its cached references and thresholds are).
+    ward = renderers.Wardray(args.wardray, image_format="hdr")
+    pov = renderers.PovRay(args.povray, image_format="hdr")
 
     def work_root(results):
         # POV-Ray reads only below /tmp and its current folder: a corpus is rendered from copies below /tmp.

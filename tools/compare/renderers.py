@@ -1,13 +1,17 @@
 """Runs POV-Ray and wardray on wrapper scenes, times them and caches converged references.
 
-Both renderers write linear Radiance HDR at the requested size, antialiasing off, 2 threads, and run with their
-current folder set to a scratch folder that holds the wrapper scene (POV-Ray writes only below its current
-folder); `+L<scene folder>` lets the scene's own includes resolve.
+Both renderers write linear images at the requested size, antialiasing off, 2 threads, and run with their current
+folder set to a scratch folder that holds the wrapper scene (POV-Ray writes only below its current folder);
+`+L<scene folder>` lets the scene's own includes resolve. The images are OpenEXR (`+FE`, half floats: 11 bits of
+mantissa a channel) unless the caller asks for Radiance HDR (`+FH`), whose 8-bit mantissa shared by the three
+channels, truncated, adds about 0.6 % rRMSE between two images of the same scene (docs/reports/reference_seed.md):
+too much for errors near 1 %.
 """
 import hashlib
 import json
 import pathlib
 import re
+import resource
 import shutil
 import subprocess
 import sys
@@ -16,6 +20,10 @@ import time
 from povrewrite import mask_comments_and_strings
 
 THREADS = 2
+
+# Output formats: the switch and the file suffix.
+FORMATS = {"exr": ("+FE", ".exr"), "hdr": ("+FH", ".hdr")}
+DEFAULT_FORMAT = "exr"
 
 
 class RenderFailed(RuntimeError):
@@ -48,12 +56,20 @@ def run_timed(cmd, cwd, timeout=None, attempts=10):
     return elapsed
 
 
+def children_cpu_seconds():
+    """User plus system seconds of the processes this one has waited for."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
 class PovRay:
     name = "povray"
     label = "POV-Ray"
 
-    def __init__(self, exe="povray"):
+    def __init__(self, exe="povray", image_format=DEFAULT_FORMAT):
         self.exe = shutil.which(exe) or exe
+        self.image_format = image_format
+        self.suffix = FORMATS[image_format][1]
         proc = subprocess.run([self.exe, "--version"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                               errors="replace")
         # The first lines may be complaints about a missing user configuration file.
@@ -64,7 +80,7 @@ class PovRay:
 
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
-        return [self.exe, f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A", "-D", "-V",
+        return [self.exe, f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A", "-D", "-V",
                 f"+WT{THREADS}", f"+L{scene_dir}", *extra]
 
 
@@ -72,9 +88,11 @@ class Wardray:
     name = "wardray"
     label = "wardray"
 
-    def __init__(self, exe, gi_mode="cache", wait_minutes=10):
+    def __init__(self, exe, gi_mode="cache", wait_minutes=10, image_format=DEFAULT_FORMAT):
         self.exe = pathlib.Path(exe).resolve()
         self.gi_mode = gi_mode
+        self.image_format = image_format
+        self.suffix = FORMATS[image_format][1]
         # The binary may be missing or mid-rebuild: wait a minute at a time before giving up.
         deadline = time.monotonic() + 60 * wait_minutes
         while True:
@@ -109,7 +127,7 @@ class Wardray:
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
         gi = [] if any(a.startswith("--gi=") for a in extra) else [f"--gi={self.gi_mode}"]
-        return [str(self.exe), f"+I{scene_name}", f"+O{output}", "+FH", f"+W{w}", f"+H{h}", "-A",
+        return [str(self.exe), f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A",
                 f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
 
     def reference_args(self, rays, seed=None):
@@ -156,24 +174,32 @@ class RenderCache:
         blob = json.dumps({"renderer": renderer.name, "version": renderer.version, "scene": scene_text,
                            "includes": local_includes(scene_text, scene_dir), "size": list(size),
                            "args": list(extra), "threads": THREADS}, sort_keys=True)
+        # Radiance HDR keeps the keys it had before the format was a choice, so its cached references still serve.
+        if renderer.image_format != "hdr":
+            blob += f" format={renderer.image_format}"
         return hashlib.sha256(blob.encode()).hexdigest()
 
     def render(self, renderer, scene_text, scene_dir, size, extra, work, what):
         """The path of a cached image for this render and the seconds it took, rendering it when needed."""
         key = self.key(renderer, scene_text, scene_dir, size, extra)
-        image, meta = self.folder / f"{key}.hdr", self.folder / f"{key}.json"
+        image, meta = self.folder / f"{key}{renderer.suffix}", self.folder / f"{key}.json"
         if image.is_file() and meta.is_file():
             seconds = json.loads(meta.read_text())["seconds"]
             print(f"compare: using cached {what} ({key[:12]}, rendered in {seconds:.1f} s)", file=sys.stderr,
                   flush=True)
             return image, seconds, True
         (work / "scene.pov").write_text(scene_text)
-        (work / "cached.hdr").unlink(missing_ok=True)
-        cmd = renderer.command("scene.pov", "cached.hdr", size, scene_dir, extra)
+        written = work / f"cached{renderer.suffix}"
+        written.unlink(missing_ok=True)
+        cmd = renderer.command("scene.pov", written.name, size, scene_dir, extra)
+        before = children_cpu_seconds()
         seconds = run_timed(cmd, work)
-        if not (work / "cached.hdr").is_file():
+        # Processor time too: a long reference rendered on a busy machine has a wall time that says little.
+        cpu_seconds = children_cpu_seconds() - before
+        if not written.is_file():
             raise RenderFailed(f"{' '.join(cmd)} exited without writing its image")
-        shutil.move(str(work / "cached.hdr"), image)
-        meta.write_text(json.dumps({"what": what, "seconds": seconds, "command": cmd, "version": renderer.version,
+        shutil.move(str(written), image)
+        meta.write_text(json.dumps({"what": what, "seconds": seconds, "cpu_seconds": cpu_seconds, "command": cmd,
+                                    "version": renderer.version,
                                     "created": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}, indent=1))
         return image, seconds, False

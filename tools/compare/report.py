@@ -198,7 +198,10 @@ def markdown(data, plot_dir):
     lines += [
         f"Produced by `{data['command']}` on {data['date']} (rendering took {data['wall_seconds'] / 60:.1f} min).",
         "",
-        f"Each scene is rendered {size_text}, antialiasing off, linear HDR, 2 threads per renderer, over a ladder of "
+        f"Each scene is rendered {size_text}, antialiasing off, "
+        + {"exr": "linear OpenEXR (`+FE`)", "hdr": "linear Radiance HDR (`+FH`; its truncated shared mantissa adds "
+           "about 0.6 % rRMSE between two images)"}[data.get("format", "hdr")]
+        + ", 2 threads per renderer, over a ladder of "
         f"radiosity settings (ladder `{data.get('ladder_set', 'full')}` of `tools/compare/ladder.json`; each point "
         "overrides `count`, `error_bound`, `pretrace_start`, `pretrace_end` and `nearest_count` of every radiosity "
         "block in the scene's "
@@ -213,7 +216,7 @@ def markdown(data, plot_dir):
            False: "halving the rays (wardray has no seed option; if the two renders share their first paths, this "
                   "check is up to 1.4 times more lenient than a second seed would be)"}.get(
             data.get("wardray_has_seed"), "a second seed (or, without a seed option, halving the rays)")
-        + f" changes the image by less than {100 * data['references']['wardray_reference']['tolerance']:.1f} % "
+        + f" changes the image by less than {100 * data['references']['wardray_reference']['tolerance']:g} % "
         "rRMSE" + (" (the reference is then the mean of the two seeds' images, whose own noise is about half that "
                    "change)" if data.get("wardray_has_seed") else "")
         + ". The rRMSE between the two references shows how much of any difference is the lighting model rather "

@@ -273,5 +273,44 @@ class ReferenceRaysTest(unittest.TestCase):
         np.testing.assert_allclose(image, 1.001)
 
 
+class FormatTest(unittest.TestCase):
+    def _renderer(self, image_format):
+        import renderers
+
+        class Stub:
+            name, version = "wardray", "stub"
+
+        r = Stub()
+        r.image_format, r.suffix = image_format, renderers.FORMATS[image_format][1]
+        return r
+
+    def test_renders_are_openexr_unless_hdr_is_asked(self):
+        import renderers
+        ward = renderers.Wardray.__new__(renderers.Wardray)
+        ward.exe, ward.gi_mode = pathlib.Path("/bin/wardray"), "cache"
+        ward.image_format = renderers.DEFAULT_FORMAT
+        self.assertEqual(renderers.DEFAULT_FORMAT, "exr")
+        self.assertIn("+FE", ward.command("scene.pov", "out.exr", (4, 3), "/scenes"))
+        ward.image_format = "hdr"
+        cmd = ward.command("scene.pov", "out.hdr", (4, 3), "/scenes")
+        self.assertIn("+FH", cmd)
+        self.assertNotIn("+FE", cmd)
+
+    def test_the_format_changes_the_cache_key_and_hdr_keeps_its_old_keys(self):
+        import hashlib
+        import json
+        import tempfile
+        import renderers
+        with tempfile.TemporaryDirectory() as tmp:
+            cache = renderers.RenderCache(tmp)
+            exr = cache.key(self._renderer("exr"), "scene", tmp, (4, 3), ["--gi=reference"])
+            hdr = cache.key(self._renderer("hdr"), "scene", tmp, (4, 3), ["--gi=reference"])
+        self.assertNotEqual(exr, hdr)
+        # The key an HDR render had before the format was a choice.
+        old = json.dumps({"renderer": "wardray", "version": "stub", "scene": "scene", "includes": [], "size": [4, 3],
+                          "args": ["--gi=reference"], "threads": renderers.THREADS}, sort_keys=True)
+        self.assertEqual(hdr, hashlib.sha256(old.encode()).hexdigest())
+
+
 if __name__ == "__main__":
     unittest.main()
