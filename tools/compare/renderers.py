@@ -80,8 +80,8 @@ class PovRay:
 
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
-        return [self.exe, f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A", "-D", "-V",
-                f"+WT{THREADS}", f"+L{scene_dir}", *extra]
+        return [self.exe, f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A",
+                "-D", "-V", f"+WT{THREADS}", f"+L{scene_dir}", *extra]
 
 
 class Wardray:
@@ -127,8 +127,8 @@ class Wardray:
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
         gi = [] if any(a.startswith("--gi=") for a in extra) else [f"--gi={self.gi_mode}"]
-        return [str(self.exe), f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A",
-                f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
+        return [str(self.exe), f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}",
+                "-A", f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
 
     def reference_args(self, rays, seed=None):
         if self.gi_mode == "off":
