@@ -5,7 +5,7 @@ For every scene of the list, each renderer renders the scene over a ladder of ra
 (tools/compare/ladder.json; every radiosity block of the scene's global_settings is overridden in a wrapper
 scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 threads each, N runs per point.
 Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
-renderer: POV-Ray at count 1600, error_bound 0.1, pretrace_end 0.01, nearest_count 20; wardray's brute-force
+renderer: POV-Ray at count 3200, error_bound 0.07, pretrace_end 0.005, nearest_count 20; wardray's brute-force
 `--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
 changes the image by less than 0.5 % rRMSE; and both against one common reference, POV-Ray's converged render.
 Each scene is rendered at the size its line in the scene list gives (cornell 256x256), else 160x120; --size sets
