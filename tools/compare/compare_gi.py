@@ -7,7 +7,8 @@ scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 
 Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
 renderer: POV-Ray at count 3200, error_bound 0.07, pretrace_end 0.005, nearest_count 20; wardray's brute-force
 `--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
-changes the image by less than 0.5 % rRMSE; and both against one common reference, POV-Ray's converged render.
+changes the image by less than 0.3 % rRMSE (ladder.json's tolerance); and both against one common reference,
+POV-Ray's converged render. Images are OpenEXR unless --format hdr.
 Each scene is rendered at the size its line in the scene list gives (cornell 256x256), else 160x120; --size sets
 one size for all. References are cached (build/compare-cache). Writes <out>/gi_comparison.csv, .json, .md and one
 error-against-time plot per scene under <out>/gi_comparison/.

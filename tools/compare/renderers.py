@@ -62,14 +62,30 @@ def children_cpu_seconds():
     return usage.ru_utime + usage.ru_stime
 
 
-class PovRay:
+class ImageFormat:
+    """The output format a renderer writes (a key of FORMATS), and what follows from it."""
+
+    def __init__(self, image_format):
+        if image_format not in FORMATS:
+            raise ValueError(f"unknown image format {image_format!r} (expected one of {', '.join(FORMATS)})")
+        self.image_format = image_format
+
+    @property
+    def format_switch(self):
+        return FORMATS[self.image_format][0]
+
+    @property
+    def suffix(self):
+        return FORMATS[self.image_format][1]
+
+
+class PovRay(ImageFormat):
     name = "povray"
     label = "POV-Ray"
 
     def __init__(self, exe="povray", image_format=DEFAULT_FORMAT):
+        super().__init__(image_format)
         self.exe = shutil.which(exe) or exe
-        self.image_format = image_format
-        self.suffix = FORMATS[image_format][1]
         proc = subprocess.run([self.exe, "--version"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                               errors="replace")
         # The first lines may be complaints about a missing user configuration file.
@@ -80,19 +96,18 @@ class PovRay:
 
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
-        return [self.exe, f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}", "-A",
+        return [self.exe, f"+I{scene_name}", f"+O{output}", self.format_switch, f"+W{w}", f"+H{h}", "-A",
                 "-D", "-V", f"+WT{THREADS}", f"+L{scene_dir}", *extra]
 
 
-class Wardray:
+class Wardray(ImageFormat):
     name = "wardray"
     label = "wardray"
 
     def __init__(self, exe, gi_mode="cache", wait_minutes=10, image_format=DEFAULT_FORMAT):
+        super().__init__(image_format)
         self.exe = pathlib.Path(exe).resolve()
         self.gi_mode = gi_mode
-        self.image_format = image_format
-        self.suffix = FORMATS[image_format][1]
         # The binary may be missing or mid-rebuild: wait a minute at a time before giving up.
         deadline = time.monotonic() + 60 * wait_minutes
         while True:
@@ -127,7 +142,7 @@ class Wardray:
     def command(self, scene_name, output, size, scene_dir, extra=()):
         w, h = size
         gi = [] if any(a.startswith("--gi=") for a in extra) else [f"--gi={self.gi_mode}"]
-        return [str(self.exe), f"+I{scene_name}", f"+O{output}", FORMATS[self.image_format][0], f"+W{w}", f"+H{h}",
+        return [str(self.exe), f"+I{scene_name}", f"+O{output}", self.format_switch, f"+W{w}", f"+H{h}",
                 "-A", f"+WT{THREADS}", f"+L{scene_dir}", *gi, *extra]
 
     def reference_args(self, rays, seed=None):

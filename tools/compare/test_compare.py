@@ -277,12 +277,10 @@ class FormatTest(unittest.TestCase):
     def _renderer(self, image_format):
         import renderers
 
-        class Stub:
+        class Stub(renderers.ImageFormat):
             name, version = "wardray", "stub"
 
-        r = Stub()
-        r.image_format, r.suffix = image_format, renderers.FORMATS[image_format][1]
-        return r
+        return Stub(image_format)
 
     def test_renders_are_openexr_unless_hdr_is_asked(self):
         import renderers
