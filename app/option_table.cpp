@@ -131,6 +131,13 @@ Why set_gi_spacing(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_gi_area_lights(const OptionUse& use, Options& o) {
+    if (use.value == "fine") o.gi_fine_area_lights = true;
+    else if (use.value == "grid") o.gi_fine_area_lights = false;
+    else return "must be fine or grid";
+    return std::nullopt;
+}
+
 Why set_aov(const OptionUse& use, Options& o) {
     if ((use.value != "irradiance" && use.value != "records") || use.second.empty())
         return "needs a kind (irradiance or records) and a file name";
@@ -288,6 +295,20 @@ constexpr OptionSpec kOptions[] = {
      .help = "reference mode: guide every bounce towards where a pilot pass found the\n"
              "light coming from (default on; off samples the cosine alone)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_guide); }},
+    {.long_name = "--gi-area-lights", .kind = K::Value, .usage = "--gi-area-lights=fine|grid",
+     .help = "reference mode: the camera hits' jittered area lights sampled on a fine grid\n"
+             "that converges with the paths (default), or on POV-Ray's grid with the cache\n"
+             "mode's jitter, so that the reference converges the cache mode's own image",
+     .set = set_gi_area_lights},
+    {.long_name = "--gi-path-seed", .kind = K::Value, .usage = "--gi-path-seed N",
+     .help = "reference mode: another sample pattern for the paths alone, the rest drawn\n"
+             "as --seed draws it (default: --seed's)",
+     .set = [](U u, Options& o) {
+         std::uint64_t seed = 0;
+         if (auto why = set_seed(u.value, seed)) return why;
+         o.gi_path_seed = seed;
+         return Why{};
+     }},
     {.long_name = "--seed", .kind = K::Value, .usage = "--seed N",
      .help = "another sample pattern for every stochastic part (reference paths, cache\n"
              "gathers, jitter, photons); the same N, the same image (default 0)",

@@ -64,6 +64,8 @@ struct Options {
     int gi_light_picks = 1;                         ///< --gi-light-picks: shadow-tested lights per gather hit
     bool gi_guide = true;                           ///< --gi-guide=off: reference paths sample the cosine alone
     std::uint64_t seed = 0;                         ///< --seed: 0 draws the samples the renders without it draw
+    std::optional<std::uint64_t> gi_path_seed;      ///< --gi-path-seed: the reference paths' own seed
+    bool gi_fine_area_lights = true;                ///< --gi-area-lights=grid: the reference keeps POV-Ray's grid
     bool gi_gradients = true;                       ///< --gi-gradients=off: records without gradients
     bool gi_gradient_cap = true;                    ///< --gi-gradient-cap=off: no radius cap E/|∇t E|
     bool gi_neighbour_clamp = true;                 ///< --gi-neighbour-clamp=off: no neighbour clamping

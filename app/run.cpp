@@ -358,6 +358,8 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gather_light_picks = options.gi_light_picks;
     settings.guide_paths = options.gi_guide;
     settings.seed = options.seed;
+    settings.path_seed = options.gi_path_seed;
+    settings.fine_area_lights = options.gi_fine_area_lights;
     settings.gradients = options.gi_gradients;
     settings.gradient_cap = options.gi_gradient_cap;
     settings.hessian_spacing = options.gi_hessian_spacing;

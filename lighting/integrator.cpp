@@ -78,7 +78,8 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
                                             options.hessian_spacing, options.adaptive_gather);
     else if (radiosity && options.gi == GiMode::Reference) {
         if (options.guide_paths) m_guide = std::make_unique<PathGuide>();
-        m_indirect = make_reference_irradiance(*this, options.reference_rays, options.seed, m_guide.get());
+        m_indirect = make_reference_irradiance(*this, options.reference_rays, options.path_seed.value_or(options.seed),
+                                                m_guide.get());
         // The reference converges the direct light at camera hits too: each jittered area light is sampled at about
         // as many points as the pixel has paths, shared out among the area lights.
         int area_lights = 0;

@@ -47,6 +47,9 @@ struct IntegratorOptions {
     /// --seed: turns every random stream the integrator draws (reference paths, area-light jitter, crand, media,
     /// rainbows, photons); 0 draws those of a render without it (core/render_seed.h).
     std::uint64_t seed = 0;
+    /// --gi-path-seed: the reference paths' seed alone (nothing: `seed`), so that two references can differ in their
+    /// paths and nothing else (the camera hits' area-light jitter of --gi-area-lights=grid stays `seed`'s).
+    std::optional<std::uint64_t> path_seed;
     bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
     bool gradient_cap = true;  ///< --gi-gradient-cap: with gradients, a record's radius ≤ E/|∇t E|
     bool hessian_spacing = true;  ///< --gi-spacing: with gradients, record radii from the Hessian (else harmonic)
@@ -70,7 +73,8 @@ struct IntegratorOptions {
     /// (light_choice.h); 0 tests every light, as the camera's hits always do.
     int gather_light_picks = 1;
     /// Reference mode: jittered area lights at camera hits are sampled on a fine jittered grid (about reference_rays
-    /// points shared among them) so that their jitter converges with the paths; false keeps POV-Ray's own grid.
+    /// points shared among them) so that their jitter converges with the paths; false (--gi-area-lights=grid) keeps
+    /// POV-Ray's own grid, jittered as the cache mode jitters it, so the reference converges the cache's image.
     bool fine_area_lights = true;
     /// Reference mode (--gi-guide): every bounce also samples where a pilot pass found the light coming from
     /// (learn_guide, path_guide.h); false samples the cosine alone.

@@ -127,6 +127,14 @@ TEST(Options, RadiositySwitches) {
     EXPECT_TRUE(parse_ok({}).gi_guide);
     EXPECT_FALSE(parse_ok({"--gi-guide=off"}).gi_guide);
     EXPECT_NE(parse_error({"--gi-guide=maybe"}).find("--gi-guide"), std::string::npos);
+    EXPECT_TRUE(parse_ok({}).gi_fine_area_lights);
+    EXPECT_FALSE(parse_ok({"--gi-area-lights=grid"}).gi_fine_area_lights);
+    EXPECT_TRUE(parse_ok({"--gi-area-lights=grid", "--gi-area-lights=fine"}).gi_fine_area_lights);
+    EXPECT_NE(parse_error({"--gi-area-lights=coarse"}).find("--gi-area-lights"), std::string::npos);
+    EXPECT_FALSE(parse_ok({}).gi_path_seed);
+    EXPECT_EQ(parse_ok({"--gi-path-seed", "7"}).gi_path_seed, std::optional<std::uint64_t>(7));
+    EXPECT_EQ(parse_ok({"--gi-path-seed", "7"}).seed, 0u);
+    EXPECT_NE(parse_error({"--gi-path-seed", "-1"}).find("--gi-path-seed"), std::string::npos);
     EXPECT_FALSE(o.gi_gradients);
     EXPECT_FALSE(o.pretrace);
     ASSERT_TRUE(o.aov_irradiance && o.aov_records);

@@ -35,7 +35,9 @@ scene::Light point_light(const Vec3& p, double intensity = 1.0) {
 double radiance_at(scene::Scene scene, double x, double z, GiMode gi = GiMode::Off) {
     scene.camera.location = {x, 1.0, z};
     const geometry::SceneGeometry geometry(scene);
-    const Integrator integrator(scene, geometry, {gi});
+    IntegratorOptions options;
+    options.gi = gi;
+    const Integrator integrator(scene, geometry, options);
     TraceContext counters;
     geometry::Ray ray{{x, 1.0, z}, {0, -1, 0}};
     return integrator.trace_camera_ray(ray, counters).y;

@@ -249,6 +249,41 @@ TEST(Radiosity, LightsPickedOnGatherPathsRepeatForAnyThreadCountAndTurnWithTheSe
     EXPECT_LE(gather_path_shadows, stats["rays"]["gather"].get<double>()) << stats.dump();
 }
 
+TEST(Radiosity, GridReferenceHasTheCacheModesDirectLightAndItsPathSeedTurnsThePathsAlone) {
+    // A jittered area light over a floor with a block: with `brightness 0` an image is its direct light alone, and
+    // --gi-area-lights=grid must give exactly the cache mode's (POV-Ray's grid, the same jitter) whatever the path
+    // seed, while the default fine sampling does not. With indirect light, the path seed changes the image.
+    const fs::path dir = fresh_dir("grid_reference");
+    for (const char* brightness : {"0", "1"}) {
+        std::ofstream(dir / (std::string("b") + brightness + ".pov"))
+            << "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 20 error_bound 1.0 brightness "
+            << brightness << " } }\n"
+            << "camera { location <0, 3, -5> look_at <0, 0, 0> }\n"
+            << "light_source { <0, 4, 0> rgb 1 area_light 2*x, 2*z, 4, 4 jitter adaptive 0 }\n"
+            << "plane { y, 0 pigment { rgb 0.8 } }\n"
+            << "box { <-0.5, 0, -0.5>, <0.5, 1, 0.5> pigment { rgb <0.9, 0.2, 0.2> } }\n";
+    }
+    const std::string size = " +W32 +H24 -A +WT2 +FE";
+    for (const std::string run :
+         {"+Ib0.pov +Ocache0.exr", "+Ib0.pov --gi=reference --gi-rays 4 --gi-area-lights=grid --gi-path-seed 5 +Ogrid0.exr",
+          "+Ib0.pov --gi=reference --gi-rays 4 --gi-path-seed 5 +Ofine0.exr",
+          "+Ib1.pov --gi=reference --gi-rays 4 --gi-area-lights=grid --gi-path-seed 1 +Ogrid1.exr",
+          "+Ib1.pov --gi=reference --gi-rays 4 --gi-area-lights=grid --gi-path-seed 2 +Ogrid2.exr",
+          "+Ib1.pov --gi=reference --gi-rays 4 --gi-area-lights=grid --seed 1 +Oseed1.exr"}) {
+        const auto r = run_command(wardray() + " " + run + size, dir.string());
+        ASSERT_EQ(r.exit_status, 0) << run << "\n" << r.output;
+    }
+    const auto rrmse = [&](const char* a, const char* b) {
+        const auto cmp = render::compare_images(read(dir / a), read(dir / b));
+        EXPECT_TRUE(cmp);
+        return cmp ? cmp->rrmse : -1.0;
+    };
+    EXPECT_EQ(rrmse("grid0.exr", "cache0.exr"), 0.0) << "the grid reference's direct light is not the cache mode's";
+    EXPECT_GT(rrmse("fine0.exr", "cache0.exr"), 0.0) << "fine sampling gave POV-Ray's grid";
+    EXPECT_GT(rrmse("grid1.exr", "grid2.exr"), 0.0) << "--gi-path-seed changed nothing";
+    EXPECT_GT(rrmse("grid1.exr", "seed1.exr"), 0.0) << "--seed 1 and --gi-path-seed 1 drew the same";
+}
+
 TEST(Radiosity, TwoSeedsOfTheReferenceConvergeTogether) {
     // Two seeds draw independent paths: their images differ by noise alone, which falls at least as 1/sqrt(paths)
     // and, the paths being stratified (lighting/path_sequence.h), up to about paths^-3/4 where the integrands have

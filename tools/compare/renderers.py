@@ -128,6 +128,9 @@ class Wardray(ImageFormat):
         self.version = f"{version.strip() or 'wardray'} (binary sha256 {digest[:12]})"
         self.has_reference = "reference" in help_text and "--gi-rays" in help_text
         self.has_seed = re.search(r"--seed\b", help_text) is not None
+        # A reference of the cache mode's own image: the camera hits' area lights on POV-Ray's grid with the cache
+        # mode's jitter, the seeds turning the paths alone (binaries since 2026-12-07).
+        self.has_own_model_reference = "--gi-area-lights" in help_text and "--gi-path-seed" in help_text
 
     def digest(self):
         return hashlib.sha256(self.exe.read_bytes()).hexdigest()
@@ -149,7 +152,15 @@ class Wardray(ImageFormat):
         if self.gi_mode == "off":
             return []  # development without wardray's GI: the "reference" is just the direct-light image
         args = ["--gi=reference", "--gi-rays", str(rays)]
-        if seed is not None:
+        if self.has_own_model_reference:
+            # The image the cache mode converges to: its direct light at the camera hits exactly (POV-Ray's area
+            # light grid, jittered as at the default seed), only the indirect light by brute force. The integral of
+            # the area lights (the default, --gi-area-lights=fine) differs from it by the grid's jitter and bias,
+            # about 0.8 % on cornell, which no radiosity setting changes (docs/reports/reference_seed.md).
+            args.append("--gi-area-lights=grid")
+            if seed is not None:
+                args += ["--gi-path-seed", str(seed)]
+        elif seed is not None:
             args += ["--seed", str(seed)]
         return args
 

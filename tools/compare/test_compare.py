@@ -273,6 +273,25 @@ class ReferenceRaysTest(unittest.TestCase):
         np.testing.assert_allclose(image, 1.001)
 
 
+class ReferenceArgsTest(unittest.TestCase):
+    def _ward(self, own_model):
+        import renderers
+        ward = renderers.Wardray.__new__(renderers.Wardray)
+        ward.gi_mode, ward.has_own_model_reference = "cache", own_model
+        return ward
+
+    def test_the_reference_converges_the_cache_modes_own_direct_light(self):
+        args = self._ward(True).reference_args(16384, 2)
+        self.assertEqual(args[:3], ["--gi=reference", "--gi-rays", "16384"])
+        self.assertIn("--gi-area-lights=grid", args)
+        # The seed turns the paths alone: the area lights' jitter stays that of the ladder's renders.
+        self.assertEqual(args[args.index("--gi-path-seed") + 1], "2")
+        self.assertNotIn("--seed", args)
+
+    def test_an_older_binary_keeps_its_reference(self):
+        self.assertEqual(self._ward(False).reference_args(64, 1), ["--gi=reference", "--gi-rays", "64", "--seed", "1"])
+
+
 class FormatTest(unittest.TestCase):
     def _renderer(self, image_format):
         import renderers
