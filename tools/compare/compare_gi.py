@@ -6,8 +6,10 @@ For every scene of the list, each renderer renders the scene over a ladder of ra
 scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 threads each, N runs per point.
 Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
 renderer: POV-Ray at count 3200, error_bound 0.07, pretrace_end 0.005, nearest_count 20; wardray's brute-force
-`--gi=reference` with its rays per pixel raised until a second seed (or, without a seed option, half the rays)
-changes the image by less than 0.3 % rRMSE (ladder.json's tolerance); and both against one common reference,
+`--gi=reference` of the cache mode's own image (`--gi-area-lights=grid`: the camera hits' area lights on POV-Ray's
+grid, jittered as the ladder's renders jitter them, as POV-Ray's reference shares POV-Ray's grid), with its rays per
+pixel raised until a second path seed (or, without a seed option, half the rays) changes the image by less than
+0.3 % rRMSE (ladder.json's tolerance); and both against one common reference,
 POV-Ray's converged render. Images are OpenEXR unless --format hdr.
 Each scene is rendered at the size its line in the scene list gives (cornell 256x256), else 160x120; --size sets
 one size for all. References are cached (build/compare-cache). Writes <out>/gi_comparison.csv, .json, .md and one
@@ -308,6 +310,8 @@ def main():
         "renderers": {r.name: r.version for r in renderers},
         "wardray_gi": args.wardray_gi if "wardray" in wanted else None,
         "wardray_has_seed": next((r.has_seed for r in renderers if r.name == "wardray"), None),
+        "wardray_own_model_reference": next((getattr(r, "has_own_model_reference", False)
+                                             for r in renderers if r.name == "wardray"), None),
         "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
     }
     out.mkdir(parents=True, exist_ok=True)

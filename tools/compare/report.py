@@ -211,7 +211,13 @@ def markdown(data, plot_dir):
         "(POV-Ray, wardray, POV-Ray, ...). Each image's rRMSE and bad-pixel fraction (docs/metrics.md) are "
         "taken against the converged reference of its own renderer: POV-Ray's at "
         + ", ".join(f"`{k} {v}`" for k, v in data["references"]["povray_reference"].items())
-        + "; wardray's is its brute-force mode (`--gi=reference`, no cache) with the rays per pixel raised until "
+        + "; wardray's is its brute-force mode (`--gi=reference`, no cache"
+        + (", `--gi-area-lights=grid`: the camera hits' area lights on POV-Ray's grid with the jitter of the ladder's "
+           "renders, so that the reference converges the cache mode's own image, as POV-Ray's reference shares its "
+           "grid; the seeds turn the paths alone" if data.get("wardray_own_model_reference") else
+           "; its camera hits' area lights integrated finely, so wardray's errors include its grid's jitter and "
+           "bias, which POV-Ray's, against its own grid, do not")
+        + ") with the rays per pixel raised until "
         + {True: "a second seed",
            False: "halving the rays (wardray has no seed option; if the two renders share their first paths, this "
                   "check is up to 1.4 times more lenient than a second seed would be)"}.get(
