@@ -23,6 +23,10 @@ public:
     bool inside(const Vec3& p) const { return level(p) < 0.0; }
     /// A normalised form of the implicit function: zero on the surface, negative inside.
     double implicit(const Vec3& p) const;
+    /// Whether intersect_all() samples the implicit function's sign four points at a time (glibc's vector pow, where
+    /// the CPU has AVX2; chosen once). Tests turn it off to compare with the scalar sampling. Returns whether it is
+    /// now used.
+    static bool use_vector_pow(bool wanted);
 
 private:
     SuperellipsoidShape(double e, double n) : m_e(e), m_n(n) {}

@@ -103,6 +103,34 @@ TEST(Primitives, SuperellipsoidFindsThinSpikes) {
     EXPECT_GT(dipping, 20);
 }
 
+// The sampling with glibc's vector pow (four points at a time, within a few ulp) finds the crossings the scalar
+// sampling finds, at the same places: random rays through random superellipsoids, from spiky to boxy.
+TEST(Primitives, SuperellipsoidVectorSamplingFindsWhatScalarSamplingFinds) {
+    if (!SuperellipsoidShape::use_vector_pow(true)) GTEST_SKIP() << "no AVX2 or no libmvec: only the scalar sampling";
+    Random r(2718);
+    int crossings = 0;
+    for (int shape_index = 0; shape_index < 40; ++shape_index) {
+        const auto shape = SuperellipsoidShape::create(scene::Superellipsoid{r.uniform(0.1, 3.0), r.uniform(0.1, 3.0)});
+        ASSERT_TRUE(shape);
+        for (int k = 0; k < 200; ++k) {
+            // From anywhere around it towards a point of its box: most rays cross the surface.
+            const Vec3 origin = r.vec(-3.0, 3.0);
+            const LocalRay ray{origin, r.vec(-0.8, 0.8) - origin};
+            SuperellipsoidShape::use_vector_pow(false);
+            const SurfaceHits scalar = shape->intersect_all(ray, 0.0, 10.0);
+            SuperellipsoidShape::use_vector_pow(true);
+            const SurfaceHits vector = shape->intersect_all(ray, 0.0, 10.0);
+            ASSERT_EQ(vector.size(), scalar.size()) << "shape " << shape_index << ", ray " << k;
+            for (std::size_t i = 0; i < scalar.size(); ++i) {
+                EXPECT_NEAR(vector[i].t, scalar[i].t, 1e-12 * (1.0 + scalar[i].t));
+                EXPECT_EQ(vector[i].entering, scalar[i].entering);
+            }
+            crossings += static_cast<int>(scalar.size());
+        }
+    }
+    EXPECT_GT(crossings, 8000);
+}
+
 // A closed tetrahedron with outward faces and an inside_vector, as a mesh.
 scene::Mesh tetrahedron(Random& r) {
     scene::Mesh m;
