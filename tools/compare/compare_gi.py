@@ -127,6 +127,42 @@ def wardray_reference(ward, text, scene_dir, size, work, cache, cfg, progress, n
         progress.add([(name, "wardray", None)] * 2)
 
 
+def model_reference(ward, text, scene_dir, size, work, cache, own, cfg, progress, name):
+    """The converged image of the model both renderers implement, as pixels, and how it was made; None when the
+    scene's direct light does not depend on the seed (no jittered area light): then it is wardray's own reference.
+
+    wardray's own-model reference `own` has converged indirect light and, at the camera hits, exactly the cache mode's
+    direct light at the default seed: one jitter pattern of POV-Ray's area-light grid. Here that direct light (a
+    `--gi=off` render) is replaced by its expectation over the jitter, the mean of `jitter_seeds` renders with other
+    seeds. Against this image each renderer's error includes its own jitter pattern (POV-Ray's changes from run to
+    run) and neither the other renderer's pattern nor the grid's bias against the integral over the lights."""
+    seeds = int(cfg.get("jitter_seeds", 64))
+
+    def direct(seed):
+        what = f"wardray direct light of {name}" + (f", seed {seed}" if seed else "")
+        progress.show(name, "direct light" + (f" seed {seed}" if seed else ""), "wardray", 1, 1)
+        args = ["--gi=off"] + (["--seed", str(seed)] if seed else [])
+        image, seconds, cached = cache.render(ward, text, scene_dir, size, args, work, what)
+        progress.finish((name, "wardray", None), None if cached else seconds)
+        return read_linear_rgb(image)
+
+    progress.add([(name, "wardray", None)] * 2)
+    pattern, other = direct(0), direct(1)
+    if (pattern == other).all():
+        return None, {"jitter_seeds": 0, "check": "the direct light is the same for every seed: no jitter to average"}
+    progress.add([(name, "wardray", None)] * (seeds - 1))
+    total = other.copy()
+    for seed in range(2, seeds + 1):
+        total += direct(seed)
+    expectation = total / seeds
+    spread = image_error(other, expectation)["rrmse"]
+    return own - pattern + expectation, {
+        "jitter_seeds": seeds,
+        "pattern_vs_expectation": image_error(pattern, expectation)["rrmse"],
+        "check": f"the direct light's mean over {seeds} jitter seeds; one pattern is {100 * spread:.2f} % rRMSE from "
+                 f"it, so the mean's own noise is about {100 * spread / seeds ** 0.5:.3f} %"}
+
+
 def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
     """References, then the ladder with interleaved runs; returns the scene's results as plain data."""
     name = scene_name(path)
@@ -156,6 +192,20 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                 progress.note(f"compare: {name}: {r.label} reference failed: {str(e).splitlines()[0]}")
         if "povray" in refs and "wardray" in refs:
             result["reference_mismatch"] = image_error(refs["wardray"], refs["povray"])
+        # The common reference of the shared model, where wardray's own converges the cache mode's image.
+        model = None
+        ward = next((r for r in renderers if r.name == "wardray"), None)
+        if "wardray" in refs and getattr(ward, "has_own_model_reference", False) and not ward.gi_mode == "off":
+            try:
+                model, info = model_reference(ward, ref_text, scene_dir, size, work, cache, refs["wardray"],
+                                              cfg["wardray_reference"], progress, name)
+                if model is None:
+                    model = refs["wardray"]
+                result["model_reference"] = info
+                result["model_mismatch"] = {r: image_error(refs[r], model) for r in refs}
+            except RenderFailed as e:
+                result["failures"].append(f"model reference: {e}")
+                model = None
         active = [r for r in renderers if r.name in refs]
         for r in renderers:
             if r not in active:
@@ -192,6 +242,8 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                     err = image_error(image, refs[r.name])
                     if "povray" in refs:
                         err["rrmse_vs_povray_reference"] = image_error(image, refs["povray"])["rrmse"]
+                    if model is not None:
+                        err["rrmse_vs_model_reference"] = image_error(image, model)["rrmse"]
                     rows[r.name]["times"].append(seconds)
                     rows[r.name]["errors"].append(err)
             for r in active:
@@ -199,7 +251,7 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
                 if r.name in failed or not row["times"]:
                     continue
                 row["seconds"] = statistics.median(row["times"])
-                for key in ("rrmse", "bad_fraction", "rrmse_vs_povray_reference"):
+                for key in ("rrmse", "bad_fraction", "rrmse_vs_povray_reference", "rrmse_vs_model_reference"):
                     values = [e[key] for e in row["errors"] if key in e]
                     row[key] = statistics.median(values) if values else None
                 row["non_finite"] = max(e["non_finite"] for e in row["errors"])

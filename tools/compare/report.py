@@ -10,9 +10,13 @@ LABELS = {"povray": "POV-Ray", "wardray": "wardray"}
 
 
 def curve(scene, renderer, common=False):
-    """(seconds, rRMSE) of `renderer`'s ladder points: against its own reference, or with `common` against the
-    common one, POV-Ray's converged render (POV-Ray's own reference, so its curve is the same)."""
-    key = "rrmse_vs_povray_reference" if common and renderer == "wardray" else "rrmse"
+    """(seconds, rRMSE) of `renderer`'s ladder points: against its own reference; with `common` True against
+    POV-Ray's converged render (POV-Ray's own reference, so its curve is the same); with `common` "model" against the
+    converged image of the shared model (compare_gi.model_reference), for both renderers."""
+    if common == "model":
+        key = "rrmse_vs_model_reference"
+    else:
+        key = "rrmse_vs_povray_reference" if common and renderer == "wardray" else "rrmse"
     return [(p["seconds"], p[key]) for p in scene["points"] if p["renderer"] == renderer and p.get(key) is not None]
 
 
@@ -76,7 +80,7 @@ def pct(x, digits=2):
 def write_csv(data, path):
     fields = ["scene", "renderer", "kind", "point", "settings", "wardray_args", "runs", "seconds_median",
               "seconds_runs", "rrmse_median", "bad_fraction_median", "non_finite_max",
-              "rrmse_vs_povray_reference_median", "note"]
+              "rrmse_vs_povray_reference_median", "rrmse_vs_model_reference_median", "note"]
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
@@ -99,7 +103,10 @@ def write_csv(data, path):
                             "non_finite_max": p["non_finite"],
                             "rrmse_vs_povray_reference_median":
                                 "" if p.get("rrmse_vs_povray_reference") is None
-                                else f"{p['rrmse_vs_povray_reference']:.6f}"})
+                                else f"{p['rrmse_vs_povray_reference']:.6f}",
+                            "rrmse_vs_model_reference_median":
+                                "" if p.get("rrmse_vs_model_reference") is None
+                                else f"{p['rrmse_vs_model_reference']:.6f}"})
 
 
 def plot_scene(scene, data, path):
@@ -213,8 +220,10 @@ def markdown(data, plot_dir):
         + ", ".join(f"`{k} {v}`" for k, v in data["references"]["povray_reference"].items())
         + "; wardray's is its brute-force mode (`--gi=reference`, no cache"
         + (", `--gi-area-lights=grid`: the camera hits' area lights on POV-Ray's grid with the jitter of the ladder's "
-           "renders, so that the reference converges the cache mode's own image, as POV-Ray's reference shares its "
-           "grid; the seeds turn the paths alone" if data.get("wardray_own_model_reference") else
+           "renders, so that the reference converges the cache mode's own image, as POV-Ray's converges POV-Ray's "
+           "(whose jitter pattern, though, changes from run to run: its errors carry the difference of two patterns, "
+           "wardray's none; the model reference below treats both alike); the seeds turn the paths alone"
+           if data.get("wardray_own_model_reference") else
            "; its camera hits' area lights integrated finely, so wardray's errors include its grid's jitter and "
            "bias, which POV-Ray's, against its own grid, do not")
         + ") with the rays per pixel raised until "
@@ -276,6 +285,34 @@ def markdown(data, plot_dir):
                   "target pairs measured.**" if count else
                   f"Against the common reference, wardray is ahead on all {measured} scene and target pairs.", ""]
 
+    # Both against the converged image of the model they share: converged indirect light, and the direct light's
+    # expectation over the area lights' jitter.
+    rows, not_ahead, measured = headline(data, common="model")
+    if measured:
+        lines += ["## Time to reach a target error against the converged model reference", "",
+                  "As above, but each renderer's error taken against one image that both converge to in "
+                  "expectation: wardray's brute-force indirect light, and at the camera hits the direct light of "
+                  "POV-Ray's area-light grid averaged over its jitter (the mean of "
+                  + ", ".join(f"{s['scene']} {s['model_reference']['jitter_seeds']}" for s in data["scenes"]
+                              if s.get("model_reference"))
+                  + " direct-light renders with other seeds; 0: no jittered area light, the image is wardray's "
+                  "reference). Each renderer then carries its own jitter pattern (POV-Ray's differs from run to "
+                  "run, wardray's is fixed by its seed), and neither the other's pattern nor the grid's bias against "
+                  "the integral over the lights.", "",
+                  "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
+                  "|---|---:|---:|---:|---:|---|"] + rows + [""]
+        count = sum(len(v) for v in not_ahead.values())
+        lines += [f"**Against the model reference, wardray is not ahead on {count} of the {measured} scene and "
+                  "target pairs measured.**" if count else
+                  f"Against the model reference, wardray is ahead on all {measured} scene and target pairs.", ""]
+        for s in data["scenes"]:
+            mm = s.get("model_mismatch")
+            if mm:
+                lines.append(f"- {s['scene']}: the model reference is "
+                             + " and ".join(f"{pct(v['rrmse'])} from {LABELS.get(k, k)}'s reference"
+                                            for k, v in mm.items()) + ".")
+        lines.append("")
+
     lines += ["## References", "",
               "| scene | POV-Ray reference (s) | wardray reference (s) | wardray rays/pixel | wardray convergence | "
               "rRMSE, wardray's reference against POV-Ray's | bad pixels, same | non-finite pixels |",
@@ -320,11 +357,13 @@ def markdown(data, plot_dir):
         w, h = scene_size(s, data)
         lines += [f"### {s['scene']}", "", f"`{s['path']}`, {w}x{h}", "",
                   f"![{s['scene']}: error against time]({plot_dir.name}/{s['scene']}.png)", "",
-                  "| point | renderer | time (s) | rRMSE | bad pixels | non-finite | rRMSE vs POV-Ray reference |",
-                  "|---|---|---:|---:|---:|---:|---:|"]
+                  "| point | renderer | time (s) | rRMSE | bad pixels | non-finite | rRMSE vs POV-Ray reference "
+                  "| rRMSE vs model reference |",
+                  "|---|---|---:|---:|---:|---:|---:|---:|"]
         for p in s["points"]:
             lines.append(f"| {p['label']} | {LABELS[p['renderer']]} | {p['seconds']:.2f} | {pct(p['rrmse'])} | "
-                         f"{pct(p['bad_fraction'])} | {p['non_finite']} | {pct(p.get('rrmse_vs_povray_reference'))} |")
+                         f"{pct(p['bad_fraction'])} | {p['non_finite']} | {pct(p.get('rrmse_vs_povray_reference'))} "
+                         f"| {pct(p.get('rrmse_vs_model_reference'))} |")
         non_finite = [p for p in s["points"] if p["non_finite"]]
         if non_finite:
             lines += ["", "**Non-finite pixels** (a failure whatever the errors say): "

@@ -273,6 +273,46 @@ class ReferenceRaysTest(unittest.TestCase):
         np.testing.assert_allclose(image, 1.001)
 
 
+class ModelReferenceTest(unittest.TestCase):
+    def _run(self, direct_by_seed, seeds):
+        import compare_gi
+
+        class Cache:
+            def render(self, renderer, text, scene_dir, size, extra, work, what):
+                assert extra[0] == "--gi=off"
+                return (extra[2] if len(extra) > 1 else "0"), 1.0, True  # stands for the image's path
+
+        class Progress:
+            def show(self, *args):
+                pass
+
+            def finish(self, *args):
+                pass
+
+            def add(self, *args):
+                pass
+
+        own = np.full((2, 2, 3), 5.0)
+        saved = compare_gi.read_linear_rgb
+        compare_gi.read_linear_rgb = lambda key: np.full((2, 2, 3), direct_by_seed(int(key)))
+        try:
+            return compare_gi.model_reference(None, "", None, (2, 2), None, Cache(), own, {"jitter_seeds": seeds},
+                                              Progress(), "scene")
+        finally:
+            compare_gi.read_linear_rgb = saved
+
+    def test_the_direct_light_becomes_its_mean_over_the_jitter_seeds(self):
+        # Seed 0's pattern is 1.0; seeds 1..4 give 2, 3, 4, 5 (mean 3.5): own 5 - 1 + 3.5.
+        image, info = self._run(lambda seed: 1.0 if seed == 0 else 1.0 + seed, 4)
+        np.testing.assert_allclose(image, 7.5)
+        self.assertEqual(info["jitter_seeds"], 4)
+
+    def test_a_scene_without_jitter_keeps_wardrays_reference(self):
+        image, info = self._run(lambda seed: 2.0, 4)
+        self.assertIsNone(image)
+        self.assertEqual(info["jitter_seeds"], 0)
+
+
 class ReferenceArgsTest(unittest.TestCase):
     def _ward(self, own_model):
         import renderers
