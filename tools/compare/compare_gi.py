@@ -9,8 +9,9 @@ renderer: POV-Ray at count 3200, error_bound 0.07, pretrace_end 0.005, nearest_c
 `--gi=reference` of the cache mode's own image (`--gi-area-lights=grid`: the camera hits' area lights on POV-Ray's
 grid, jittered as the ladder's renders jitter them, as POV-Ray's reference shares POV-Ray's grid), with its rays per
 pixel raised until a second path seed (or, without a seed option, half the rays) changes the image by less than
-0.3 % rRMSE (ladder.json's tolerance); and both against one common reference,
-POV-Ray's converged render. Images are OpenEXR unless --format hdr.
+0.3 % rRMSE (ladder.json's tolerance); and both against two common references: POV-Ray's converged render, and
+the model reference (model_reference(): wardray's with the area lights' jitter averaged out, since POV-Ray's jitter
+changes from run to run). Images are OpenEXR unless --format hdr.
 Each scene is rendered at the size its line in the scene list gives (cornell 256x256), else 160x120; --size sets
 one size for all. References are cached (build/compare-cache). Writes <out>/gi_comparison.csv, .json, .md and one
 error-against-time plot per scene under <out>/gi_comparison/.
