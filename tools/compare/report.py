@@ -188,6 +188,22 @@ def headline(data, common=False):
     return rows, not_ahead, measured
 
 
+def common_targets(data, common, name, intro, heading=None):
+    """The section of times to target with every renderer's error against one reference (`common` as curve() takes
+    it, `name` as the verdict names it); no lines when no point has that error."""
+    rows, not_ahead, measured = headline(data, common=common)
+    if not measured:
+        return []
+    count = sum(len(v) for v in not_ahead.values())
+    return [f"## Time to reach a target error against the {heading or name}", "", intro, "",
+            "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
+            "|---|---:|---:|---:|---:|---|"] + rows + [
+        "",
+        f"**Against the {name}, wardray is not ahead on {count} of the {measured} scene and target pairs "
+        "measured.**" if count else f"Against the {name}, wardray is ahead on all {measured} scene and target pairs.",
+        ""]
+
+
 def markdown(data, plot_dir):
     sizes = sorted({scene_size(s, data) for s in data["scenes"]}) or ([tuple(data["size"])] if data["size"] else [])
     size_text = (f"at {sizes[0][0]}x{sizes[0][1]}" if len(sizes) == 1 else
@@ -272,39 +288,26 @@ def markdown(data, plot_dir):
         lines += [f"wardray is ahead on all {measured} scene and target pairs measured.", ""]
 
     # The same targets against one reference for both: what a user comparing with POV-Ray's converged image sees.
-    rows, not_ahead, measured = headline(data, common=True)
-    if measured:
-        lines += ["## Time to reach a target error against the common reference", "",
-                  "As above, but each renderer's error taken against the same image, POV-Ray's converged render: "
-                  "wardray's curve then includes the difference between the two lighting models (the references' "
-                  "rRMSE below), so a target under that difference is out of its reach.", "",
-                  "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
-                  "|---|---:|---:|---:|---:|---|"] + rows + [""]
-        count = sum(len(v) for v in not_ahead.values())
-        lines += [f"**Against the common reference, wardray is not ahead on {count} of the {measured} scene and "
-                  "target pairs measured.**" if count else
-                  f"Against the common reference, wardray is ahead on all {measured} scene and target pairs.", ""]
+    lines += common_targets(data, True, "common reference",
+                            "As above, but each renderer's error taken against the same image, POV-Ray's converged "
+                            "render: wardray's curve then includes the difference between the two lighting models "
+                            "(the references' rRMSE below), so a target under that difference is out of its reach.")
 
     # Both against the converged image of the model they share: converged indirect light, and the direct light's
     # expectation over the area lights' jitter.
-    rows, not_ahead, measured = headline(data, common="model")
-    if measured:
-        lines += ["## Time to reach a target error against the converged model reference", "",
-                  "As above, but each renderer's error taken against one image that both converge to in "
-                  "expectation: wardray's brute-force indirect light, and at the camera hits the direct light of "
-                  "POV-Ray's area-light grid averaged over its jitter (the mean of "
-                  + ", ".join(f"{s['scene']} {s['model_reference']['jitter_seeds']}" for s in data["scenes"]
-                              if s.get("model_reference"))
-                  + " direct-light renders with other seeds; 0: no jittered area light, the image is wardray's "
-                  "reference). Each renderer then carries its own jitter pattern (POV-Ray's differs from run to "
-                  "run, wardray's is fixed by its seed), and neither the other's pattern nor the grid's bias against "
-                  "the integral over the lights.", "",
-                  "| scene | target rRMSE | POV-Ray (s) | wardray (s) | wardray / POV-Ray | faster |",
-                  "|---|---:|---:|---:|---:|---|"] + rows + [""]
-        count = sum(len(v) for v in not_ahead.values())
-        lines += [f"**Against the model reference, wardray is not ahead on {count} of the {measured} scene and "
-                  "target pairs measured.**" if count else
-                  f"Against the model reference, wardray is ahead on all {measured} scene and target pairs.", ""]
+    model_lines = common_targets(
+        data, "model", "model reference",
+        "As above, but each renderer's error taken against one image that both converge to in expectation: "
+        "wardray's brute-force indirect light, and at the camera hits the direct light of POV-Ray's area-light grid "
+        "averaged over its jitter (the mean of "
+        + ", ".join(f"{s['scene']} {s['model_reference']['jitter_seeds']}" for s in data["scenes"]
+                    if s.get("model_reference"))
+        + " direct-light renders with other seeds; 0: no jittered area light, the image is wardray's reference). "
+        "Each renderer then carries its own jitter pattern (POV-Ray's differs from run to run, wardray's is fixed by "
+        "its seed), and neither the other's pattern nor the grid's bias against the integral over the lights.",
+        heading="converged model reference")
+    lines += model_lines
+    if model_lines:
         for s in data["scenes"]:
             mm = s.get("model_mismatch")
             if mm:

@@ -227,6 +227,18 @@ class SceneListTest(unittest.TestCase):
         self.assertTrue(any(path.name == "mesh_terrain.pov" for path in listed))
 
 
+class QuietProgress:
+    """A stand-in for progress.Progress that shows nothing."""
+    def show(self, *args):
+        pass
+
+    def finish(self, *args):
+        pass
+
+    def add(self, *args):
+        pass
+
+
 class ReferenceRaysTest(unittest.TestCase):
     def test_aims_past_the_tolerance_in_powers_of_two(self):
         from compare_gi import next_rays
@@ -248,16 +260,6 @@ class ReferenceRaysTest(unittest.TestCase):
             def render(self, renderer, text, scene_dir, size, extra, work, what):
                 return tuple(extra), 1.0, True  # stands for the image's path
 
-        class Progress:
-            def show(self, *args):
-                pass
-
-            def finish(self, *args):
-                pass
-
-            def add(self, *args):
-                pass
-
         # Seed 2 differs from seed 1 by 2 % at 64 rays and by 0.2 % at 2048 (next_rays' aim): the loop stops there.
         pixels = {(64, 1): 1.00, (64, 2): 1.02, (2048, 1): 1.000, (2048, 2): 1.002}
         saved = compare_gi.read_linear_rgb
@@ -265,7 +267,7 @@ class ReferenceRaysTest(unittest.TestCase):
         try:
             image, info = compare_gi.wardray_reference(Ward(), "", None, (2, 2), None, Cache(),
                                                        {"start_rays": 64, "tolerance": 0.005, "max_rays": 8192},
-                                                       Progress(), "scene")
+                                                       QuietProgress(), "scene")
         finally:
             compare_gi.read_linear_rgb = saved
         self.assertEqual(info["rays"], 2048)
@@ -282,22 +284,12 @@ class ModelReferenceTest(unittest.TestCase):
                 assert extra[0] == "--gi=off"
                 return (extra[2] if len(extra) > 1 else "0"), 1.0, True  # stands for the image's path
 
-        class Progress:
-            def show(self, *args):
-                pass
-
-            def finish(self, *args):
-                pass
-
-            def add(self, *args):
-                pass
-
         own = np.full((2, 2, 3), 5.0)
         saved = compare_gi.read_linear_rgb
         compare_gi.read_linear_rgb = lambda key: np.full((2, 2, 3), direct_by_seed(int(key)))
         try:
             return compare_gi.model_reference(None, "", None, (2, 2), None, Cache(), own, {"jitter_seeds": seeds},
-                                              Progress(), "scene")
+                                              QuietProgress(), "scene")
         finally:
             compare_gi.read_linear_rgb = saved
 
