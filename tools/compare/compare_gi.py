@@ -7,7 +7,7 @@ scene), the two renderers' runs interleaved (POV-Ray, wardray, POV-Ray, ...), 2 
 Each image is compared (rRMSE, bad pixels; docs/metrics.md) with the converged reference of its own
 renderer: POV-Ray at count 3200, error_bound 0.07, pretrace_end 0.005, nearest_count 20; wardray's brute-force
 `--gi=reference` of the cache mode's own image (`--gi-area-lights=grid`: the camera hits' area lights on POV-Ray's
-grid, jittered as the ladder's renders jitter them, as POV-Ray's reference shares POV-Ray's grid), with its rays per
+grid, jittered as the ladder's renders jitter them, as POV-Ray's reference renders POV-Ray's grid), with its rays per
 pixel raised until a second path seed (or, without a seed option, half the rays) changes the image by less than
 0.3 % rRMSE (ladder.json's tolerance); and both against two common references: POV-Ray's converged render, and
 the model reference (model_reference(): wardray's with the area lights' jitter averaged out, since POV-Ray's jitter
@@ -196,7 +196,7 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
         # The common reference of the shared model, where wardray's own converges the cache mode's image.
         model = None
         ward = next((r for r in renderers if r.name == "wardray"), None)
-        if "wardray" in refs and getattr(ward, "has_own_model_reference", False) and not ward.gi_mode == "off":
+        if "wardray" in refs and getattr(ward, "has_own_model_reference", False) and ward.gi_mode != "off":
             try:
                 model, info = model_reference(ward, ref_text, scene_dir, size, work, cache, refs["wardray"],
                                               cfg["wardray_reference"], progress, name)
