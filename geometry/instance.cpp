@@ -246,19 +246,26 @@ SurfaceHits ShapeInstance::intersect_all(const Vec3& origin, const Vec3& directi
     return hits;
 }
 
-SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& direction, double t_min,
-                                            double t_max) const {
+std::optional<LocalRay> ShapeInstance::bounded_local_ray(const Vec3& origin, const Vec3& direction) const {
     if (m_cull_by_bounds) {
         // POV-Ray's Intersect_BBox: the box must be met from MIN_ISECT_DEPTH (1e-4 along the unit direction) on.
         double s0 = 0.0, s1 = 0.0;
         if (!slab_interval(m_world_bounds.lower, m_world_bounds.upper, origin, direction, s0, s1) ||
             s1 < 1e-4 / length(direction))
-            return {};
+            return std::nullopt;
     }
     // An affine map keeps the ray parameter: M⁻¹(o + t d) = M⁻¹o + t M⁻¹d; only for rays the bounds let through.
     const LocalRay local{Transform::point_through(m_to_object, origin),
                          Transform::vector_through(m_to_object, direction)};
-    if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return {};
+    if (m_parts && !m_parts->bounds.empty() && !ray_in_bounds(local)) return std::nullopt;
+    return local;
+}
+
+SurfaceHits ShapeInstance::object_crossings(const Vec3& origin, const Vec3& direction, double t_min,
+                                            double t_max) const {
+    const std::optional<LocalRay> bounded = bounded_local_ray(origin, direction);
+    if (!bounded) return {};
+    const LocalRay& local = *bounded;
     SurfaceHits object_hits = std::visit(
         [&](const auto& s) {
             if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ConeShape>)
@@ -297,27 +304,45 @@ bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
     return true;
 }
 
+template <typename Take>
+void ShapeInstance::crossings_until(const Vec3& origin, const Vec3& direction, double t_min, double t_max,
+                                   Take&& take) const {
+    // A torus finds its crossings one at a time (each a root of its quartic, refined only when reached); clipped,
+    // the first ones may be clipped away, so it goes the common way.
+    if (const auto* torus = std::get_if<TorusShape>(&m_shape); torus && !(m_parts && !m_parts->clips.empty())) {
+        if (const std::optional<LocalRay> local = bounded_local_ray(origin, direction))
+            torus->intersect_until(*local, t_min, t_max, take);
+        return;
+    }
+    for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max))
+        if (take(crossing)) return;
+}
+
 std::optional<Hit> ShapeInstance::nearest(const Vec3& origin, const Vec3& direction, double t_min,
                                           double t_max) const {
     // The crossings come sorted by t: only the first one with a finite normal needs its normal mapped.
-    for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max)) {
-        if (const auto h = to_parent(crossing)) {
-            Hit hit;
-            hit.t = h->t;
-            hit.position = origin + h->t * direction;
-            hit.normal = h->normal;
-            hit.object = m_index;
-            hit.leaf = h->leaf;
-            return hit;
-        }
-    }
-    return std::nullopt;
+    std::optional<Hit> nearest;
+    crossings_until(origin, direction, t_min, t_max, [&](const SurfaceHit& crossing) {
+        const auto h = to_parent(crossing);
+        if (!h) return false;
+        Hit& hit = nearest.emplace();
+        hit.t = h->t;
+        hit.position = origin + h->t * direction;
+        hit.normal = h->normal;
+        hit.object = m_index;
+        hit.leaf = h->leaf;
+        return true;
+    });
+    return nearest;
 }
 
 bool ShapeInstance::crosses(const Vec3& origin, const Vec3& direction, double t_min, double t_max) const {
-    for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max))
-        if (to_parent(crossing)) return true;
-    return false;
+    bool found = false;
+    crossings_until(origin, direction, t_min, t_max, [&](const SurfaceHit& crossing) {
+        found = to_parent(crossing).has_value();
+        return found;
+    });
+    return found;
 }
 
 bool ShapeInstance::face_crossed(const Vec3& origin, const Vec3& direction, std::size_t face, double t_min,

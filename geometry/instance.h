@@ -128,6 +128,12 @@ public:
     bool is_plain_mesh() const;
 
 private:
+    /// The ray in object space, or nothing where the instance's bounds (its box, its `bounded_by`) say it misses.
+    std::optional<LocalRay> bounded_local_ray(const Vec3& origin, const Vec3& direction) const;
+    /// object_crossings()'s crossings, in order, to `take` (returning true to stop): shapes that can find theirs
+    /// one at a time stop finding them there.
+    template <typename Take>
+    void crossings_until(const Vec3& origin, const Vec3& direction, double t_min, double t_max, Take&& take) const;
     struct Parts;
     ShapeInstance(AnyShape shape, const scene::Object& object, std::uint32_t index);
     /// POV-Ray's Ray_In_Bound on the object-space ray: it meets every bound ahead or starts inside it.

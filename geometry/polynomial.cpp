@@ -59,52 +59,66 @@ double refine(const double* c, const double* dc, int degree, double a, double b,
 }  // namespace
 
 int polynomial_roots(const double* c, int degree, double lo, double hi, double* roots) {
+    int count = 0;
+    auto keep = [&](double x) {
+        roots[count++] = x;
+        return false;
+    };
+    each_polynomial_root(c, degree, lo, hi, keep);
+    return count;
+}
+
+bool each_polynomial_root(const double* c, int degree, double lo, double hi, RootVisitor visit) {
     // Drop vanishing leading coefficients so the degree is the true one.
     while (degree > 0 && c[degree] == 0.0) --degree;
-    if (degree <= 0 || degree > kMaxDegree || !(lo <= hi)) return 0;
+    if (degree <= 0 || degree > kMaxDegree || !(lo <= hi)) return false;
     if (degree == 2) {
         // Closed form, in the stable arrangement (no cancellation between -b and the root of the discriminant).
         const double disc = c[1] * c[1] - 4.0 * c[2] * c[0];
-        if (disc < 0.0) return 0;
+        if (disc < 0.0) return false;
         const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
         double x0 = q / c[2], x1 = q != 0.0 ? c[0] / q : x0;
         if (x1 < x0) std::swap(x0, x1);
-        int count = 0;
-        if (x0 >= lo && x0 <= hi) roots[count++] = x0;
-        if (x1 >= lo && x1 <= hi && (count == 0 || x1 != roots[0])) roots[count++] = x1;
-        return count;
+        const bool first = x0 >= lo && x0 <= hi;
+        if (first && visit(x0)) return true;
+        return x1 >= lo && x1 <= hi && (!first || x1 != x0) && visit(x1);
     }
     if (degree == 1) {
         const double x = -c[0] / c[1];
-        if (x >= lo && x <= hi) {
-            roots[0] = x;
-            return 1;
-        }
-        return 0;
+        return x >= lo && x <= hi && visit(x);
     }
     double dc[kMaxDegree];
     for (int i = 1; i <= degree; ++i) dc[i - 1] = i * c[i];
-    double critical[kMaxDegree];
-    const int n_crit = polynomial_roots(dc, degree - 1, lo, hi, critical);
-    // Monotone pieces between lo, the critical points and hi: each holds at most one root.
-    double edges[kMaxDegree + 2];
-    int n_edges = 0;
-    edges[n_edges++] = lo;
-    for (int i = 0; i < n_crit; ++i) edges[n_edges++] = critical[i];
-    edges[n_edges++] = hi;
+    // Monotone pieces between lo, the critical points (the derivative's roots, found as they are reached) and hi:
+    // each holds at most one root.
     int count = 0;
-    double f_prev = evaluate(c, degree, edges[0]);
-    if (f_prev == 0.0) roots[count++] = edges[0];
-    for (int i = 1; i < n_edges && count < degree; ++i) {
-        const double f_next = evaluate(c, degree, edges[i]);
+    double last_root = 0.0;
+    bool stopped = false;
+    auto found = [&](double x) {
+        ++count;
+        last_root = x;
+        stopped = visit(x);
+        return stopped;
+    };
+    double edge = lo;
+    double f_prev = evaluate(c, degree, edge);
+    if (f_prev == 0.0 && found(edge)) return true;
+    // The next edge: true to end the search (a root's visit stopped it, or every root there can be is found).
+    auto next_edge = [&](double next) {
+        if (count >= degree) return true;
+        const double f_next = evaluate(c, degree, next);
         if (f_next == 0.0) {
-            if (count == 0 || roots[count - 1] != edges[i]) roots[count++] = edges[i];
+            if ((count == 0 || last_root != next) && found(next)) return true;
         } else if (f_prev != 0.0 && (f_prev < 0.0) != (f_next < 0.0)) {
-            roots[count++] = refine(c, dc, degree, edges[i - 1], edges[i], f_prev, f_next);
+            if (found(refine(c, dc, degree, edge, next, f_prev, f_next))) return true;
         }
         f_prev = f_next;
-    }
-    return count;
+        edge = next;
+        return false;
+    };
+    if (each_polynomial_root(dc, degree - 1, lo, hi, next_edge)) return stopped;
+    next_edge(hi);
+    return stopped;
 }
 
 namespace {

@@ -1,6 +1,8 @@
 // Real roots of polynomials: on an interval, isolated by the roots of the derivative; or as POV-Ray 3.7 finds them.
 #pragma once
 
+#include <type_traits>
+
 namespace wardray::geometry {
 
 /// Finds the real roots of c[0] + c[1] x + ... + c[degree] x^degree in [lo, hi] (degree 1..35), sorted
@@ -9,6 +11,26 @@ namespace wardray::geometry {
 /// its evaluation, so no root is lost to cancellation as in closed-form quartic formulas; double roots without a
 /// sign change (grazing rays) may be missed. Quadratics are solved in closed form.
 int polynomial_roots(const double* c, int degree, double lo, double hi, double* roots);
+
+/// A reference to a callable taking a root and returning true to stop the search (not owning it: it must outlive
+/// the call it is passed to).
+class RootVisitor {
+public:
+    template <typename F>
+        requires(!std::is_same_v<std::remove_cv_t<F>, RootVisitor>)
+    RootVisitor(F& f) : m_object(&f), m_call([](void* o, double x) { return static_cast<bool>((*static_cast<F*>(o))(x)); }) {}
+    bool operator()(double x) const { return m_call(m_object, x); }
+
+private:
+    void* m_object;
+    bool (*m_call)(void*, double);
+};
+
+/// polynomial_roots() one root at a time: calls `visit` with each root polynomial_roots() finds, the same values in
+/// the same ascending order, until a call returns true; returns whether one did. A root is refined only when
+/// reached, and the critical points only as far as the roots reached need them, so a caller that wants the first
+/// root in an interval (a ray's nearest crossing) pays for that root alone.
+bool each_polynomial_root(const double* c, int degree, double lo, double hi, RootVisitor visit);
 
 /// POV-Ray compat: the real roots of c[0] x^n + c[1] x^(n-1) + ... + c[n] (highest power first, n <= 35) as POV-Ray
 /// 3.7's Solve_Polynomial (polysolv.cpp) finds them, unsorted, into roots (room for n values); returns their count.

@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "geometry/instance.h"
-#include "geometry/polynomial.h"
 #include "geometry/superellipsoid.h"
 #include "test_util.h"
 
@@ -499,68 +497,56 @@ TEST(Primitives, ThinTorusKeepsEveryCrossingOfRaysNearItsTube) {
     EXPECT_LT(crossed, 1700);
 }
 
-TEST(Polynomial, RootsOfAQuarticWithCloseRoots) {
-    // (x - 1)(x - 1.001)(x + 2)(x - 3)
-    const double r[4] = {1.0, 1.001, -2.0, 3.0};
-    double c[5] = {1, 0, 0, 0, 0};
-    for (double root : r) {
-        for (int i = 4; i > 0; --i) c[i] = c[i - 1] - root * c[i];
-        c[0] = -root * c[0];
-    }
-    double roots[4];
-    ASSERT_EQ(polynomial_roots(c, 4, -10, 10, roots), 4);
-    EXPECT_NEAR(roots[0], -2.0, 1e-12);
-    EXPECT_NEAR(roots[1], 1.0, 1e-10);
-    EXPECT_NEAR(roots[2], 1.001, 1e-10);
-    EXPECT_NEAR(roots[3], 3.0, 1e-12);
-}
-
-
-TEST(Polynomial, QuadraticRootsKeepTheirDigitsWhenTheyDifferByOrdersOfMagnitude) {
-    // (x - 1e8)(x - 1e-8): the textbook formula loses the small root to cancellation.
-    const double c[3] = {1.0, -(1e8 + 1e-8), 1.0};
-    double roots[2];
-    ASSERT_EQ(polynomial_roots(c, 2, -1e9, 1e9, roots), 2);
-    EXPECT_NEAR(roots[0], 1e-8, 1e-22);
-    EXPECT_NEAR(roots[1], 1e8, 1e-6);
-    // Only the roots inside the interval, and none for a negative discriminant.
-    ASSERT_EQ(polynomial_roots(c, 2, 0.5, 1e9, roots), 1);
-    EXPECT_NEAR(roots[0], 1e8, 1e-6);
-    const double none[3] = {1.0, 0.0, 1.0};
-    EXPECT_EQ(polynomial_roots(none, 2, -10, 10, roots), 0);
-}
-
-TEST(Polynomial, RootsOfRandomPolynomialsToTheirConditioning) {
-    // Polynomials built from their roots, degrees 2 to 8, roots at least 0.05 apart in [-3, 3]: each found root
-    // lies within a few units of rounding, scaled by the root's condition number |sum |c_i| x^i| / |x f'(x)|.
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> u(-3.0, 3.0);
-    for (int trial = 0; trial < 2000; ++trial) {
-        const int degree = 2 + trial % 7;
-        std::vector<double> r;
-        while (static_cast<int>(r.size()) < degree) {
-            const double x = u(rng);
-            bool apart = true;
-            for (double y : r) apart = apart && std::fabs(x - y) >= 0.05;
-            if (apart) r.push_back(x);
+TEST(Primitives, TorusSearchesOnlyAheadOfTheRayAndStopsAtItsNearestCrossing) {
+    // Gather and shadow rays start on a surface with t_min a small offset, most of the chord through the torus's
+    // bounding sphere behind them: the torus searches only the stretch within (t_min, t_max), and nearest() and
+    // crosses() stop at the first crossing. Their answers are those of the search over the whole chord (t_min far
+    // behind the origin) kept beyond t_min, also for rays that leave the tube's own surface.
+    Random rng(20);
+    int from_surface = 0, hit = 0;
+    for (int trial = 0; trial < 600; ++trial) {
+        const double major = rng.uniform(0.5, 1.5), minor = rng.uniform(0.1, 0.4);
+        const Transform xf = rng.transform();
+        const auto t = ShapeInstance::create(make_object(scene::Torus{major, minor}, xf), 0);
+        ASSERT_TRUE(t);
+        Vec3 origin = xf.point(rng.vec(-2, 2));
+        // Rays aimed near the ring, or (every other one) leaving a point of the tube's surface as a gather ray does.
+        const double b = rng.uniform(0.0, 2.0 * M_PI);
+        const Vec3 near_ring = xf.point(Vec3{major * std::cos(b), 0.0, major * std::sin(b)} + rng.vec(-0.5, 0.5));
+        Vec3 dir = (near_ring - origin) * rng.uniform(0.1, 10.0);
+        double t_min = 0.0;
+        if (trial % 2 == 0) {
+            dir = rng.direction() * rng.uniform(0.1, 10.0);
+            const double a = rng.uniform(0.0, 2.0 * M_PI);
+            const Vec3 towards = xf.point(Vec3{major * std::cos(a), 0.0, major * std::sin(a)}) - origin;
+            const SurfaceHits first = t->intersect_all(origin, towards, 0.0, 1e30);
+            if (!first.empty()) {
+                origin = origin + first[0].t * towards;
+                if (dot(dir, first[0].normal) < 0.0) dir = -dir;
+                t_min = 1e-6 / length(dir);
+                ++from_surface;
+            }
         }
-        std::sort(r.begin(), r.end());
-        double c[9] = {1, 0, 0, 0, 0, 0, 0, 0, 0};
-        for (int k = 0; k < degree; ++k) {
-            for (int i = k + 1; i > 0; --i) c[i] = c[i - 1] - r[k] * c[i];
-            c[0] = -r[k] * c[0];
-        }
-        double roots[8];
-        ASSERT_EQ(polynomial_roots(c, degree, -3.5, 3.5, roots), degree) << "trial " << trial;
-        for (int k = 0; k < degree; ++k) {
-            double slope = 1.0, magnitude = 0.0, power = 1.0;
-            for (int j = 0; j < degree; ++j)
-                if (j != k) slope *= r[k] - r[j];
-            for (int i = 0; i <= degree; ++i, power *= std::fabs(r[k])) magnitude += std::fabs(c[i]) * power;
-            const double tolerance = 64 * 2.2e-16 * magnitude / std::fabs(slope);
-            EXPECT_NEAR(roots[k], r[k], tolerance) << "trial " << trial << " degree " << degree;
+        const SurfaceHits whole = t->intersect_all(origin, dir, -1e30, 1e30);
+        std::vector<double> ahead;
+        for (const SurfaceHit& h : whole)
+            if (h.t > t_min) ahead.push_back(h.t);
+        const SurfaceHits ht = t->intersect_all(origin, dir, t_min, 1e30);
+        ASSERT_EQ(ht.size(), ahead.size()) << "trial " << trial;
+        for (std::size_t i = 0; i < ht.size(); ++i) EXPECT_NEAR(ht[i].t, ahead[i], 1e-12 * (1.0 + ahead[i]));
+        const std::optional<Hit> nearest = t->nearest(origin, dir, t_min, 1e30);
+        ASSERT_EQ(nearest.has_value(), !ht.empty()) << "trial " << trial;
+        EXPECT_EQ(t->crosses(origin, dir, t_min, 1e30), !ht.empty()) << "trial " << trial;
+        if (nearest) {
+            ++hit;
+            EXPECT_EQ(nearest->t, ht[0].t) << "trial " << trial;
+            EXPECT_NEAR(dot(nearest->normal, ht[0].normal), 1.0, 1e-12);
+            // A shadow ray ending just short of the first crossing does not cross.
+            EXPECT_FALSE(t->crosses(origin, dir, t_min, ht[0].t * (1.0 - 1e-9))) << "trial " << trial;
         }
     }
+    EXPECT_GT(from_surface, 250);
+    EXPECT_GT(hit, 150);
 }
 
 }  // namespace
