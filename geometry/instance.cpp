@@ -307,12 +307,21 @@ bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
 template <typename Take>
 void ShapeInstance::crossings_until(const Vec3& origin, const Vec3& direction, double t_min, double t_max,
                                    Take&& take) const {
-    // A torus finds its crossings one at a time (each a root of its quartic, refined only when reached); clipped,
-    // the first ones may be clipped away, so it goes the common way.
-    if (const auto* torus = std::get_if<TorusShape>(&m_shape); torus && !(m_parts && !m_parts->clips.empty())) {
-        if (const std::optional<LocalRay> local = bounded_local_ray(origin, direction))
-            torus->intersect_until(*local, t_min, t_max, take);
-        return;
+    // Shapes that find their crossings one at a time (a torus's roots, refined only when reached; a superellipsoid's
+    // samples, evaluated only as far as its search goes) stop where `take` does. Clipped, the first crossings may be
+    // clipped away, so those go the common way.
+    if (!(m_parts && !m_parts->clips.empty())) {
+        bool one_at_a_time = false;
+        std::visit(
+            [&](const auto& s) {
+                if constexpr (requires(const LocalRay& r) { s.intersect_until(r, t_min, t_max, take); }) {
+                    one_at_a_time = true;
+                    if (const std::optional<LocalRay> local = bounded_local_ray(origin, direction))
+                        s.intersect_until(*local, t_min, t_max, take);
+                }
+            },
+            m_shape);
+        if (one_at_a_time) return;
     }
     for (const SurfaceHit& crossing : object_crossings(origin, direction, t_min, t_max))
         if (take(crossing)) return;

@@ -1,7 +1,7 @@
 // Real roots of polynomials: on an interval, isolated by the roots of the derivative; or as POV-Ray 3.7 finds them.
 #pragma once
 
-#include <type_traits>
+#include "core/stop_callback.h"
 
 namespace wardray::geometry {
 
@@ -12,19 +12,8 @@ namespace wardray::geometry {
 /// sign change (grazing rays) may be missed. Quadratics are solved in closed form.
 int polynomial_roots(const double* c, int degree, double lo, double hi, double* roots);
 
-/// A reference to a callable taking a root and returning true to stop the search (not owning it: it must outlive
-/// the call it is passed to).
-class RootVisitor {
-public:
-    template <typename F>
-        requires(!std::is_same_v<std::remove_cv_t<F>, RootVisitor>)
-    RootVisitor(F& f) : m_object(&f), m_call([](void* o, double x) { return static_cast<bool>((*static_cast<F*>(o))(x)); }) {}
-    bool operator()(double x) const { return m_call(m_object, x); }
-
-private:
-    void* m_object;
-    bool (*m_call)(void*, double);
-};
+/// Takes a root and returns true to stop the search.
+using RootVisitor = StopCallback<double>;
 
 /// polynomial_roots() one root at a time: calls `visit` with each root polynomial_roots() finds, the same values in
 /// the same ascending order, until a call returns true; returns whether one did. A root is refined only when

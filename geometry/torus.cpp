@@ -25,7 +25,7 @@ SurfaceHits TorusShape::intersect_all(const LocalRay& ray, double t_min, double 
     return hits;
 }
 
-std::optional<TorusShape::Quartic> TorusShape::quartic(const LocalRay& ray) const {
+std::optional<TorusShape::Quartic> TorusShape::quartic(const LocalRay& ray, double t_min, double t_max) const {
     const auto line = centre_line(ray);
     if (!line) return std::nullopt;
     const auto& [u, o, s0, len] = *line;
@@ -33,14 +33,17 @@ std::optional<TorusShape::Quartic> TorusShape::quartic(const LocalRay& ray) cons
     const double h2 = outer * outer - dot(o, o);
     if (h2 < 0.0) return std::nullopt;
     const double half = std::sqrt(h2) * (1.0 + 1e-9) + 1e-12 * outer;
-    if (misses_tube(u, o, half)) return std::nullopt;
+    // Only the stretch of the chord within (t_min, t_max), as PolyShape searches: a gather or shadow ray starts on a
+    // surface, often with most of the chord through the bounding sphere behind it.
+    const double lo = std::fmax(-half, t_min * len - s0), hi = std::fmin(half, t_max * len - s0);
+    if (!(lo <= hi) || misses_tube(u, o, lo, hi)) return std::nullopt;
     // (|o + s u|² + R² - r²)² - 4R²((ox + s ux)² + (oz + s uz)²) with |u| = 1 and o·u = 0.
     const double R2 = m_major * m_major;
     const double k = dot(o, o) + R2 - m_minor * m_minor;
     const double oxz = o.x * o.x + o.z * o.z;
     const double oduxz = o.x * u.x + o.z * u.z;
     const double uxz = u.x * u.x + u.z * u.z;
-    return Quartic{{k * k - 4.0 * R2 * oxz, -8.0 * R2 * oduxz, 2.0 * k - 4.0 * R2 * uxz, 0.0, 1.0}, s0, len, half};
+    return Quartic{{k * k - 4.0 * R2 * oxz, -8.0 * R2 * oduxz, 2.0 * k - 4.0 * R2 * uxz, 0.0, 1.0}, s0, len, lo, hi};
 }
 
 SurfaceHit TorusShape::crossing(const LocalRay& ray, double t) const {
@@ -52,7 +55,7 @@ SurfaceHit TorusShape::crossing(const LocalRay& ray, double t) const {
     return {t, normal, dot(normal, ray.direction) < 0.0};
 }
 
-bool TorusShape::misses_tube(const Vec3& u, const Vec3& o, double half) const {
+bool TorusShape::misses_tube(const Vec3& u, const Vec3& o, double lo, double hi) const {
     // The quartic is positive wherever |y| > r or the distance from the axis is outside [R - r, R + r] (there
     // (|p|² + R² - r²)² > 4 R² (x² + z²)), so a chord that stays out of that ring has no root to find. The margin
     // keeps the quartic well above its rounding error where this says "no"; below r = 1e-6 R it would not.
@@ -61,7 +64,6 @@ bool TorusShape::misses_tube(const Vec3& u, const Vec3& o, double half) const {
     const double margin = 1e-4 * (R + r);
     const double slab = r + margin;
     // The chord's stretch within the slab |y| <= r + margin.
-    double lo = -half, hi = half;
     if (u.y != 0.0) {
         double a = (-slab - o.y) / u.y, b = (slab - o.y) / u.y;
         if (a > b) std::swap(a, b);

@@ -1,7 +1,6 @@
 // TorusShape: POV-Ray's `torus { major, minor }` around the y axis, in object space.
 #pragma once
 
-#include <cmath>
 #include <optional>
 
 #include "geometry/polynomial.h"
@@ -22,16 +21,13 @@ public:
     /// are found: the nearest crossing costs one root of the quartic, not all of them.
     template <typename Take>
     void intersect_until(const LocalRay& ray, double t_min, double t_max, Take&& take) const {
-        const std::optional<Quartic> q = quartic(ray);
+        const std::optional<Quartic> q = quartic(ray, t_min, t_max);
         if (!q) return;
         auto at = [&](double s) {
             const double t = (q->s0 + s) / q->len;
             return t > t_min && t < t_max && static_cast<bool>(take(crossing(ray, t)));
         };
-        // Only the stretch of the chord within (t_min, t_max), as PolyShape searches: a gather or shadow ray starts
-        // on a surface, often with most of the chord through the bounding sphere behind it.
-        each_polynomial_root(q->c, 4, std::fmax(-q->half, t_min * q->len - q->s0),
-                             std::fmin(q->half, t_max * q->len - q->s0), at);
+        each_polynomial_root(q->c, 4, q->lo, q->hi, at);
     }
     /// Object-space bounding box.
     std::optional<Bounds> bounds() const;
@@ -42,16 +38,17 @@ public:
 
 private:
     TorusShape(double major, double minor) : m_major(major), m_minor(minor) {}
-    /// True when the chord o + s u, |s| <= half (u a unit vector), provably misses the tube: it never enters the
+    /// True when the chord o + s u, lo <= s <= hi (u a unit vector), provably misses the tube: it never enters the
     /// slab |y| <= r or the ring R - r <= sqrt(x² + z²) <= R + r there, with a margin against rounding.
-    bool misses_tube(const Vec3& u, const Vec3& o, double half) const;
-    /// The quartic in s along the unit ray o + s u from its point nearest the centre (t = (s0 + s) / len), whose
-    /// roots in [-half, half] are the crossings; nothing where the ray provably misses.
+    bool misses_tube(const Vec3& u, const Vec3& o, double lo, double hi) const;
+    /// The quartic in s along the unit ray o + s u from its point nearest the centre (t = (s0 + s) / len), and the
+    /// stretch [lo, hi] of the chord through the bounding sphere within (t_min, t_max), where its roots are the
+    /// crossings; nothing where the ray provably misses there.
     struct Quartic {
         double c[5];
-        double s0, len, half;
+        double s0, len, lo, hi;
     };
-    std::optional<Quartic> quartic(const LocalRay& ray) const;
+    std::optional<Quartic> quartic(const LocalRay& ray, double t_min, double t_max) const;
     /// The crossing at t (a root of the quartic): its unnormalised normal and whether the ray enters there.
     SurfaceHit crossing(const LocalRay& ray, double t) const;
 
