@@ -169,12 +169,17 @@ class Wardray(ImageFormat):
         proc = subprocess.run([str(self.exe), "--check", f"+L{scene_dir}", f"+I{scene_path}"],
                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
         lines = proc.stdout.splitlines()
-        # Diagnostics read "path:line:col: warning: message"; keep them without the folder.
-        warnings = [l.split("/")[-1] for l in lines if re.search(r":\d+:\d+: warning: ", l)]
+        warnings = warning_lines(lines)
         if proc.returncode == 0:
             return None, warnings
         errors = [l for l in lines if "error" in l]
         return (errors or lines or [f"exit status {proc.returncode}"])[0], warnings
+
+
+def warning_lines(lines):
+    """The warnings among `wardray --check`'s lines ("path:line:col: warning: message"), every path in them (the
+    message may name other places) without its folders."""
+    return [re.sub(r"(?<![\w.])/\S*/", "", l) for l in lines if re.search(r":\d+:\d+: warning: ", l)]
 
 
 def local_includes(text, scene_dir):

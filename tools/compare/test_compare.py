@@ -324,6 +324,19 @@ class ReferenceArgsTest(unittest.TestCase):
         self.assertEqual(self._ward(False).reference_args(64, 1), ["--gi=reference", "--gi-rays", "64", "--seed", "1"])
 
 
+class WarningLinesTest(unittest.TestCase):
+    def test_every_path_loses_its_folders_and_the_message_stays_whole(self):
+        import renderers
+        lines = ["/usr/share/povray-3.7/scenes/radiosity/patio-radio_37.pov:128:2: warning: coincident surfaces: "
+                 "this box and the box at /usr/share/povray-3.7/scenes/radiosity/patio-radio_37.pov:283:2 have flat "
+                 "faces that lie on one another; move or resize one of them by a small amount (a 1/2 step)",
+                 "warnings: 1", "objects: 12"]
+        self.assertEqual(renderers.warning_lines(lines), [
+            "patio-radio_37.pov:128:2: warning: coincident surfaces: this box and the box at "
+            "patio-radio_37.pov:283:2 have flat faces that lie on one another; move or resize one of them by a small "
+            "amount (a 1/2 step)"])
+
+
 class FormatTest(unittest.TestCase):
     def _renderer(self, image_format):
         import renderers
