@@ -44,7 +44,9 @@ void write_gif(const fs::path& path, int transparent) {
 class GifImageMap : public ::testing::Test {
 protected:
     void SetUp() override {
-        m_dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "gif_image_map";
+        // A folder per test: ctest runs the tests of this file side by side, and each writes its own t.gif.
+        m_dir = fs::path(WARDRAY_TEST_OUTPUT_DIR) / "gif_image_map" /
+                ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::create_directories(m_dir);
     }
     // The image map's pigment of `image_map { gif "t.gif" ITEMS }` with the GIF written as write_gif says.

@@ -32,8 +32,10 @@ TEST(ReadPolicy, TheFoldersAreDebiansPovrayConfEntries) {
 class ReadPolicyScene : public ::testing::Test {
 protected:
     void SetUp() override {
-        // Below /tmp itself, the folder POV-Ray's configuration permits (not TMPDIR).
-        m_dir = fs::path("/tmp") / "wardray_read_policy_test";
+        // Below /tmp itself, the folder POV-Ray's configuration permits (not TMPDIR); one per test, since ctest runs
+        // the tests side by side and each removes its folder when done.
+        m_dir = fs::path("/tmp") / ("wardray_read_policy_test_" +
+                                    std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::error_code ec;
         fs::remove_all(m_dir, ec);
         fs::create_directories(m_dir / "repo" / "scene", ec);
