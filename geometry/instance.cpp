@@ -307,9 +307,8 @@ bool ShapeInstance::ray_in_bounds(const LocalRay& ray) const {
 template <typename Take>
 void ShapeInstance::crossings_until(const Vec3& origin, const Vec3& direction, double t_min, double t_max,
                                    Take&& take) const {
-    // Shapes that find their crossings one at a time (a torus's roots, refined only when reached; a superellipsoid's
-    // samples, evaluated only as far as its search goes) stop where `take` does. Clipped, the first crossings may be
-    // clipped away, so those go the common way.
+    // Shapes that find their crossings one at a time (a torus: each a root of its quartic, refined only when reached)
+    // stop where `take` does. Clipped, the first crossings may be clipped away, so those go the common way.
     if (!(m_parts && !m_parts->clips.empty())) {
         bool one_at_a_time = false;
         std::visit(
