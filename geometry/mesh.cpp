@@ -125,15 +125,21 @@ void MeshShape::finish() {
     m_bounds = {first, first};
     for (const Face& f : all_faces)
         for (int k = 0; k < 3; ++k) m_bounds = m_bounds.merged({verts[f.v[k]], verts[f.v[k]]});
-    build_tree();
+    // The face tree waits for its first use: a plain mesh that Embree traces never needs it.
+    m_lazy_tree = std::make_shared<LazyTree>();
 }
 
-void MeshShape::build_tree() {
+const MeshShape::FaceTree* MeshShape::tree() const {
+    std::call_once(m_lazy_tree->once, [&] { m_lazy_tree->tree = build_tree(); });
+    return m_lazy_tree->tree.get();
+}
+
+std::shared_ptr<const MeshShape::FaceTree> MeshShape::build_tree() const {
     const std::vector<Vec3>& verts = m_vertices.get();
     const std::vector<Face>& all_faces = m_faces.get();
     // A few faces are cheaper to test one by one than through a tree.
     constexpr std::size_t k_min_faces = 16, k_leaf_faces = 4;
-    if (all_faces.size() < k_min_faces || all_faces.size() > std::numeric_limits<std::uint32_t>::max()) return;
+    if (all_faces.size() < k_min_faces || all_faces.size() > std::numeric_limits<std::uint32_t>::max()) return nullptr;
     // Boxes are padded by a little more than rounding can move a crossing, so no face a ray meets is left out.
     const double pad = 1e-7 * (m_bounds.magnitude() + 1.0);
     const std::size_t n = all_faces.size();
@@ -179,7 +185,7 @@ void MeshShape::build_tree() {
         self(self, mid, end);
     };
     build(build, 0, n);
-    m_tree = std::move(tree);
+    return tree;
 }
 
 std::optional<Vec3> MeshShape::params_at(std::size_t face, double bary_u, double bary_v) const {
@@ -218,22 +224,22 @@ Vec3 MeshShape::face_normal(std::size_t index, const FaceCrossing& c, const Vec3
     return m_normals_outward && dot(ns, ng) < 0.0 ? -ns : ns;
 }
 
-void MeshShape::candidate_faces(const LocalRay& ray, double t_min, double t_max,
-                                std::vector<std::uint32_t>& out) const {
+void MeshShape::candidate_faces(const FaceTree& tree, const LocalRay& ray, double t_min, double t_max,
+                                std::vector<std::uint32_t>& out) {
     out.clear();
     std::uint32_t stack[64];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
-        const TreeNode& node = m_tree->nodes[stack[--top]];
+        const TreeNode& node = tree.nodes[stack[--top]];
         double s0 = 0.0, s1 = 0.0;
         if (!slab_interval(node.box.lower, node.box.upper, ray.origin, ray.direction, s0, s1)) continue;
         if (!(s1 >= t_min && s0 <= t_max)) continue;
         if (node.count > 0) {
-            out.insert(out.end(), m_tree->order.begin() + node.first, m_tree->order.begin() + node.first + node.count);
+            out.insert(out.end(), tree.order.begin() + node.first, tree.order.begin() + node.first + node.count);
             continue;
         }
-        const auto self = static_cast<std::uint32_t>(&node - m_tree->nodes.data());
+        const auto self = static_cast<std::uint32_t>(&node - tree.nodes.data());
         stack[top++] = node.first;
         stack[top++] = self + 1;
     }
@@ -243,8 +249,8 @@ void MeshShape::candidate_faces(const LocalRay& ray, double t_min, double t_max,
 SurfaceHits MeshShape::nearest_crossings(const LocalRay& ray, double t_min, double t_max) const {
     constexpr double far = std::numeric_limits<double>::infinity();
     thread_local std::vector<std::uint32_t> faces;
-    if (m_tree) {
-        candidate_faces(ray, t_min, far, faces);
+    if (const FaceTree* tree = this->tree()) {
+        candidate_faces(*tree, ray, t_min, far, faces);
     } else {
         faces.resize(m_faces.size());
         for (std::size_t i = 0; i < m_faces.size(); ++i) faces[i] = static_cast<std::uint32_t>(i);
@@ -281,9 +287,9 @@ SurfaceHits MeshShape::intersect_all(const LocalRay& ray, double t_min, double t
     // (mesh.cpp, intersect_bbox_tree), so a CSG sees its far side only where its boxes overlap the near crossing.
     if (m_nearest_only) return nearest_crossings(ray, t_min, t_max);
     SurfaceHits hits;
-    if (m_tree) {
+    if (const FaceTree* tree = this->tree()) {
         thread_local std::vector<std::uint32_t> faces;
-        candidate_faces(ray, t_min, t_max, faces);
+        candidate_faces(*tree, ray, t_min, t_max, faces);
         for (const std::uint32_t i : faces)
             if (const auto h = intersect_face(ray, i, t_min, t_max)) hits.push(*h);
     } else {
@@ -300,9 +306,9 @@ bool MeshShape::inside(const Vec3& p) const {
     const LocalRay ray{p, m_inside_vector};
     constexpr double far = std::numeric_limits<double>::infinity();
     std::size_t crossings = 0;
-    if (m_tree) {
+    if (const FaceTree* tree = this->tree()) {
         thread_local std::vector<std::uint32_t> faces;
-        candidate_faces(ray, 0.0, far, faces);
+        candidate_faces(*tree, ray, 0.0, far, faces);
         for (const std::uint32_t i : faces)
             if (intersect_face(ray, i, 0.0, far)) ++crossings;
     } else {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -120,10 +121,13 @@ private:
     /// create() without the memo: the faces kept, the bounds and the face tree.
     static std::optional<MeshShape> build(const scene::Mesh& mesh);
     void finish();
-    void build_tree();
+    /// The face tree, made on first use (once, whichever thread asks first); null for a few faces.
+    const FaceTree* tree() const;
+    std::shared_ptr<const FaceTree> build_tree() const;
     /// The faces whose (padded) box the ray meets within [t_min, t_max], in increasing index order, so the hits
     /// come in the same order as a test of every face.
-    void candidate_faces(const LocalRay& ray, double t_min, double t_max, std::vector<std::uint32_t>& out) const;
+    static void candidate_faces(const FaceTree& tree, const LocalRay& ray, double t_min, double t_max,
+                                std::vector<std::uint32_t>& out);
     /// POV-Ray's crossings of a mesh without an inside_vector: its faces nearest box first, up to the first box
     /// that starts beyond the last crossing found.
     SurfaceHits nearest_crossings(const LocalRay& ray, double t_min, double t_max) const;
@@ -138,7 +142,12 @@ private:
     bool m_nearest_only = false;  ///< a mesh or mesh2 without an inside_vector (see nearest_crossings)
     bool m_normals_outward = false;  ///< smooth normals turned to the face's side (wardray's own prism walls)
     Bounds m_bounds;
-    std::shared_ptr<const FaceTree> m_tree;  ///< nothing for a few faces
+    /// The face tree once made (null for a few faces), shared by copies like the faces it indexes.
+    struct LazyTree {
+        std::once_flag once;
+        std::shared_ptr<const FaceTree> tree;
+    };
+    std::shared_ptr<LazyTree> m_lazy_tree;
 };
 
 /// POV-Ray's texture coordinates of a bicubic patch at its parameters (u, v): the uv_vectors blended bilinearly,
