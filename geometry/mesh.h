@@ -118,7 +118,7 @@ public:
 
 private:
     MeshShape() = default;
-    /// create() without the memo: the faces kept, the bounds and the face tree.
+    /// create() without the memo: the faces kept and the bounds (the face tree waits for its first use).
     static std::optional<MeshShape> build(const scene::Mesh& mesh);
     void finish();
     /// The face tree, made on first use (once, whichever thread asks first); null for a few faces.
