@@ -118,8 +118,10 @@ SurfaceHits OvusShape::intersect_all(const LocalRay& ray, double t_min, double t
             const double oduxz = to.x * tu.x + to.z * tu.z;
             const double uxz = tu.x * tu.x + tu.z * tu.z;
             const double c[5] = {k * k - 4.0 * H2 * oxz, -8.0 * H2 * oduxz, 2.0 * k - 4.0 * H2 * uxz, 0.0, 1.0};
+            // Only the stretch of the chord within (t_min, t_max), as the torus searches.
+            const double lo = std::fmax(-half, t_min * tlen - ts0), hi = std::fmin(half, t_max * tlen - ts0);
             double roots[4];
-            const int n = polynomial_roots(c, 4, -half, half, roots);
+            const int n = polynomial_roots(c, 4, lo, hi, roots);
             for (int i = 0; i < n; ++i) {
                 const double t = (ts0 + roots[i]) / tlen;
                 if (!(t > t_min && t < t_max)) continue;
