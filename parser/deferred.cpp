@@ -7,6 +7,7 @@
 // could change what the value reads forces it first: rebinding, undefining or shadowing an identifier it reads
 // (before_rebinding), the end of the scope holding one (before_scope_ends), and #default (evaluate_all_deferred).
 // The #version it was declared under is restored while it is read.
+#include <algorithm>
 #include <memory>
 #include <string_view>
 
@@ -200,6 +201,8 @@ void Preprocessor::before_scope_ends(const NameMap<Value>& scope) {
     std::vector<std::string> names;
     for (const auto& [name, value] : scope)
         if (m_deferred_readers.count(name) > 0) names.push_back(name);
+    // In name order, not the table's (which follows the hash).
+    std::sort(names.begin(), names.end());
     for (const std::string& name : names) before_rebinding(name);
 }
 

@@ -38,13 +38,13 @@ protected:
     /// Comparisons.
     Numeric parse_relational(bool allow_less);
     /// The additive level; `first`, when given, is an operand already read (an array element).
-    Numeric parse_additive(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_additive(const Numeric* first = nullptr);
     /// `*` and `/`.
-    Numeric parse_multiplicative(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_multiplicative(const Numeric* first = nullptr);
     /// Unary `-`, `+` and `!`.
-    Numeric parse_unary(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_unary(const Numeric* first = nullptr);
     /// Dot selectors (`.x`, `.red`, ...).
-    Numeric parse_postfix(std::optional<Numeric> first = std::nullopt);
+    Numeric parse_postfix(const Numeric* first = nullptr);
     /// Literals, identifiers, vectors, colours, calls and parenthesised expressions.
     Numeric parse_primary();
     /// A call of the built-in function `name`.

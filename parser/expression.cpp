@@ -103,12 +103,13 @@ Value Evaluator::parse_rvalue() {
         if (is_array_element_next()) {
             Value element = *take_array_element();
             const ScopedSetting numeric_level(m_directive_ends_value_at, m_brace_depth);
-            if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(*n);
+            if (const auto* n = std::get_if<Numeric>(&element)) return parse_additive(n);
             // An element of an array of functions followed by '(' is a call, the first operand of an expression.
             if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&element);
                 f != nullptr && is_punct(peek(), "(")) {
                 const std::shared_ptr<const UserFunction> keep = *f;
-                return parse_additive(call_user_function(t, *keep));
+                const Numeric value = call_user_function(t, *keep);
+                return parse_additive(&value);
             }
             return element;
         }
@@ -243,8 +244,8 @@ Numeric Evaluator::parse_relational(bool allow_less) {
     }
 }
 
-Numeric Evaluator::parse_additive(std::optional<Numeric> first) {
-    Numeric a = parse_multiplicative(std::move(first));
+Numeric Evaluator::parse_additive(const Numeric* first) {
+    Numeric a = parse_multiplicative(first);
     while (true) {
         const Token& op = peek_expr();
         if (!is_punct(op, "+") && !is_punct(op, "-")) return a;
@@ -255,8 +256,8 @@ Numeric Evaluator::parse_additive(std::optional<Numeric> first) {
     }
 }
 
-Numeric Evaluator::parse_multiplicative(std::optional<Numeric> first) {
-    Numeric a = parse_unary(std::move(first));
+Numeric Evaluator::parse_multiplicative(const Numeric* first) {
+    Numeric a = parse_unary(first);
     while (true) {
         const Token& op = peek_expr();
         if (!is_punct(op, "*") && !is_punct(op, "/")) return a;
@@ -278,8 +279,8 @@ Numeric Evaluator::parse_multiplicative(std::optional<Numeric> first) {
     }
 }
 
-Numeric Evaluator::parse_unary(std::optional<Numeric> first) {
-    if (first) return parse_postfix(std::move(first));
+Numeric Evaluator::parse_unary(const Numeric* first) {
+    if (first) return parse_postfix(first);
     const Token& t = peek();
     const NestingGuard guard(*this, t);
     if (is_punct(t, "-")) {
@@ -301,7 +302,7 @@ Numeric Evaluator::parse_unary(std::optional<Numeric> first) {
     return parse_postfix();
 }
 
-Numeric Evaluator::parse_postfix(std::optional<Numeric> first) {
+Numeric Evaluator::parse_postfix(const Numeric* first) {
     Numeric a = first ? *first : parse_primary();
     while (is_punct(peek_expr(), ".")) {
         next();
@@ -417,7 +418,7 @@ Numeric Evaluator::parse_primary() {
     }
     if (t.kind != TokenKind::Identifier) fail(t, "expected a float or vector expression but found " + describe_token(t));
 
-    if (const Value* v = lookup(t.text); v != nullptr && !m_macros.count(t.text)) {
+    if (const Value* v = lookup(t.text); v != nullptr && (m_macros.empty() || !m_macros.count(t.text))) {
         if (const auto* n = std::get_if<Numeric>(v)) {
             next();
             return *n;

@@ -169,7 +169,7 @@ private:
 
     /// A float constant read from a declared identifier, with an optional `.x`-style item for vectors.
     void declared_numeric(const Token& t, Numeric n) {
-        if (m_p.is_punct(m_p.peek(), ".")) n = m_p.parse_postfix(n);
+        if (m_p.is_punct(m_p.peek(), ".")) n = m_p.parse_postfix(&n);
         if (n.n != 1) m_p.fail(t, "'" + t.text + "' is a vector; a function body needs a float here");
         constant(n.v[0]);
     }

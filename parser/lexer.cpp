@@ -89,6 +89,30 @@ std::string source_line(std::string_view text, std::uint32_t line) {
 }
 
 double Token::number() const {
+    // Most numbers in scenes are short decimals (`3`, `0.25`): up to 15 digits and no exponent, the digits as an
+    // integer m and the point k places from the end give exactly m / 10^k, both exact doubles (m < 2^53,
+    // k ≤ 15 < 23), so one correctly rounded division: from_chars's value (also correctly rounded), read faster.
+    static constexpr double kPowersOfTen[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                                1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    if (text.size() <= 16) {
+        std::uint64_t digits = 0;
+        int count = 0, after_point = -1;
+        bool plain = !text.empty();
+        for (const char c : text) {
+            if (c >= '0' && c <= '9') {
+                digits = digits * 10 + static_cast<std::uint64_t>(c - '0');
+                ++count;
+                if (after_point >= 0) ++after_point;
+            } else if (c == '.' && after_point < 0) {
+                after_point = 0;
+            } else {
+                plain = false;
+                break;
+            }
+        }
+        if (plain && count > 0 && count <= 15)
+            return static_cast<double>(digits) / kPowersOfTen[after_point < 0 ? 0 : after_point];
+    }
     double value = 0.0;
     if (std::from_chars(text.begin(), text.end(), value).ec == std::errc{}) return value;
     // Out of double's range: strtod's reading underflows to 0 (an overflow is a lexical error).

@@ -29,14 +29,7 @@ std::string SourceFile::line_text(std::uint32_t line) const {
     return text.substr(start, end - start);
 }
 
-SourceStream::NestingGuard::NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth,
-                                         std::size_t limit)
-    : m_stream(stream), m_depth(depth) {
-    // The stack grows down on every platform we build for: the distance from where the parser began is its use.
-    const char* here = static_cast<const char*>(__builtin_frame_address(0));
-    const bool stack_full = m_stream.m_stack_base - here > m_stream.m_max_stack_bytes;
-    if (++m_depth <= limit && !stack_full) return;
-    --m_depth;
+void SourceStream::NestingGuard::fail(const Token& at, std::size_t limit, bool stack_full) {
     m_stream.report(m_stream.make_diagnostic(
         Severity::Error, at,
         stack_full ? "nesting too deep for the stack (" + std::to_string(m_depth) + " levels); stopping"

@@ -5,6 +5,7 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -30,12 +31,49 @@ struct HashedName {
     std::size_t hash;
 };
 
+/// The hash of an identifier, inline: a few multiplications over at most two overlapping loads for the short names
+/// scenes use (a lookup hashes every identifier the parse reads, and libstdc++'s string hash is an out-of-line call
+/// several times as long). Not a stable value: only the tables' bucket order depends on it.
+inline std::size_t name_hash(std::string_view s) {
+    const auto* p = reinterpret_cast<const unsigned char*>(s.data());
+    const std::size_t n = s.size();
+    const auto load8 = [](const unsigned char* q) {
+        std::uint64_t w;
+        std::memcpy(&w, q, sizeof w);
+        return w;
+    };
+    const auto load4 = [](const unsigned char* q) {
+        std::uint32_t w;
+        std::memcpy(&w, q, sizeof w);
+        return std::uint64_t{w};
+    };
+    const auto mix = [](std::uint64_t h, std::uint64_t w) {
+        h = (h ^ w) * 0x9E3779B97F4A7C15ULL;
+        return h ^ (h >> 32);
+    };
+    // The length is mixed in first, spread over every bit: names that differ in length and first byte alone would
+    // otherwise cancel out.
+    std::uint64_t h = mix(0xD6E8FEB86659FD93ULL, n);
+    if (n >= 8) {
+        // Whole words, then the last eight bytes (overlapping the previous word when n is not a multiple of 8).
+        std::size_t i = 0;
+        for (; i + 8 < n; i += 8) h = mix(h, load8(p + i));
+        h = mix(h, load8(p + n - 8));
+    } else if (n >= 4) {
+        h = mix(h, load4(p) << 32 | load4(p + n - 4));
+    } else if (n > 0) {
+        h = mix(h, std::uint64_t{p[0]} << 16 | std::uint64_t{p[n / 2]} << 8 | p[n - 1]);
+    }
+    h *= 0xBF58476D1CE4E5B9ULL;
+    return static_cast<std::size_t>(h ^ (h >> 31));
+}
+
 /// Hash and equality of identifier tables that also take a HashedName (heterogeneous lookup).
 struct NameHash {
     using is_transparent = void;
     template <typename S>
         requires std::convertible_to<const S&, std::string_view>
-    std::size_t operator()(const S& s) const { return std::hash<std::string_view>{}(std::string_view(s)); }
+    std::size_t operator()(const S& s) const { return name_hash(std::string_view(s)); }
     std::size_t operator()(const HashedName& n) const { return n.hash; }
 };
 struct NameEqual {
@@ -190,14 +228,26 @@ public:
     public:
         /// Counts one level of the descent's own nesting at `at`.
         NestingGuard(SourceStream& stream, const Token& at) : NestingGuard(stream, at, stream.m_nesting) {}
-        /// Counts in `depth` instead of the descent's own counter.
-        NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth,
-                     std::size_t limit = k_max_nesting);
+        /// Counts in `depth` instead of the descent's own counter. Inline: every operand of an expression passes
+        /// one, and the check is two comparisons.
+        NestingGuard(SourceStream& stream, const Token& at, std::size_t& depth, std::size_t limit = k_max_nesting)
+            : m_stream(stream), m_depth(depth) {
+            // The stack grows down on every platform we build for: the distance from where the parser began is its
+            // use.
+            const char* here = static_cast<const char*>(__builtin_frame_address(0));
+            const bool stack_full = m_stream.m_stack_base - here > m_stream.m_max_stack_bytes;
+            if (++m_depth <= limit && !stack_full) return;
+            --m_depth;
+            fail(at, limit, stack_full);
+        }
         ~NestingGuard() { --m_depth; }
         NestingGuard(const NestingGuard&) = delete;
         NestingGuard& operator=(const NestingGuard&) = delete;
 
     private:
+        /// Reports the nesting as too deep at `at` and stops the parse.
+        [[noreturn]] void fail(const Token& at, std::size_t limit, bool stack_full);
+
         SourceStream& m_stream;
         std::size_t& m_depth;
     };

@@ -211,7 +211,7 @@ Spline Evaluator::parse_spline_body(const Token& kw) {
         const Token first = peek();
         const Value element = *take_array_element();
         if (const auto* declared = std::get_if<Boxed<Spline>>(&element)) spline = **declared;
-        else if (const auto* n = std::get_if<Numeric>(&element)) first_time = parse_additive(*n);
+        else if (const auto* n = std::get_if<Numeric>(&element)) first_time = parse_additive(n);
         else
             fail(first, "this element of '" + first.text + "' is " + value_kind_name(element) +
                             ", not a spline or a float");

@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <cstring>
 #include <string_view>
-#include <unordered_set>
 
 #include "parser/parser.h"
 
@@ -123,9 +122,12 @@ void TokenStream::skip_optional_block(const Token& kw) {
 bool TokenStream::starts_string(const Token& t) {
     if (t.kind == TokenKind::String) return true;
     if (t.kind != TokenKind::Identifier) return false;
-    static const std::unordered_set<std::string_view> string_functions = {"concat", "str",    "chr", "substr",
-                                                                          "strupr", "strlwr", "vstr"};
-    if (string_functions.count(t.text) > 0) return true;
+    // The string functions all begin with c, s or v (most identifiers are rejected by that alone).
+    const char c0 = t.text.empty() ? '\0' : t.text[0];
+    if (c0 == 'c' || c0 == 's' || c0 == 'v') {
+        for (const std::string_view f : {"concat", "str", "chr", "substr", "strupr", "strlwr", "vstr"})
+            if (t.text == f) return true;
+    }
     const Value* v = lookup(t.text);
     return v != nullptr && std::holds_alternative<std::string>(*v);
 }
@@ -133,9 +135,10 @@ bool TokenStream::starts_string(const Token& t) {
 // ---------------------------------------------------------------------------------------------------------------
 // Symbols
 
-const Value* TokenStream::lookup(const std::string& name) {
+const Value* TokenStream::lookup(std::string_view name) {
     const HashedName key = hashed(name);
-    if (const auto deferred = m_deferred_warnings.find(key); deferred != m_deferred_warnings.end()) {
+    if (const auto deferred = m_deferred_warnings.empty() ? m_deferred_warnings.end() : m_deferred_warnings.find(key);
+        deferred != m_deferred_warnings.end()) {
         const std::vector<Diagnostic> warnings = deferred->second;
         for (const Diagnostic& d : warnings) {
             if (m_declaring.empty()) {
@@ -161,7 +164,7 @@ Value* TokenStream::lookup_mutable(const std::string& name) {
     return slot;
 }
 
-Value* TokenStream::find_slot(const std::string& name) { return find_slot(hashed(name)); }
+Value* TokenStream::find_slot(std::string_view name) { return find_slot(hashed(name)); }
 
 Value* TokenStream::find_slot(const HashedName& key) {
     for (auto it = m_scopes.rbegin(); it != m_scopes.rend(); ++it) {

@@ -94,11 +94,11 @@ protected:
 
     /// Finds an identifier, innermost scope first; using it releases the warnings deferred at its declaration and
     /// evaluates a deferred declaration.
-    const Value* lookup(const std::string& name);
+    const Value* lookup(std::string_view name);
     /// As lookup, for a caller about to change the value in place.
     Value* lookup_mutable(const std::string& name);
     /// The binding of an identifier as stored (a Deferred stays deferred), innermost scope first; no side effects.
-    Value* find_slot(const std::string& name);
+    Value* find_slot(std::string_view name);
     Value* find_slot(const HashedName& key);
     /// Binds `name` to `v` in the innermost (local) or the global scope.
     void declare(const std::string& name, Value v, bool local);
@@ -119,7 +119,7 @@ protected:
     virtual void before_scope_ends(const NameMap<Value>& scope) = 0;
 
     std::vector<Cond> m_conds;
-    std::unordered_map<std::string, Macro> m_macros;
+    NameMap<Macro> m_macros;
     std::vector<NameMap<Value>> m_scopes;
     std::uint64_t m_loop_iterations = 0;
     /// Tokens consumed so far by next().

@@ -1,7 +1,15 @@
 // Tests of the lexer: token kinds, numbers, strings, comments and source locations.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <charconv>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
 #include "parser/lexer.h"
+#include "parser/source_stream.h"
 
 namespace wardray::parser {
 namespace {
@@ -43,6 +51,60 @@ TEST(Lexer, NumbersLikePovRay) {
     EXPECT_DOUBLE_EQ(t[2].number(), 15.0);
     EXPECT_DOUBLE_EQ(t[3].number(), 7.0);
     EXPECT_EQ(t[4].kind, TokenKind::Identifier);  // never a floating-point NaN literal
+}
+
+// Token::number() reads short decimals without from_chars (digits over a power of ten); the value must be
+// from_chars's, bit for bit, at every length and point position, and beyond the short form too.
+TEST(Lexer, NumbersReadExactlyAsFromChars) {
+    std::uint64_t state = 12345;
+    const auto draw = [&](std::uint64_t n) {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return (state >> 33) % n;
+    };
+    std::vector<std::string> texts = {"0", "0.", ".0", "1", "0.1", "0.3", "2.675", "999999999999999",
+                                      "999999999999999.", "9999999999999999", "123456789012345.6", "0.000000000000001",
+                                      ".000000000000001", "00000000000001.5", "4503599627370497", "1e5", "2.5E-3"};
+    for (int i = 0; i < 20000; ++i) {
+        const std::uint64_t digits = 1 + draw(18);
+        std::string text;
+        for (std::uint64_t k = 0; k < digits; ++k) text += static_cast<char>('0' + draw(10));
+        const std::uint64_t point = draw(digits + 2);  // digits + 1: none
+        if (point <= digits) text = text.substr(0, point) + "." + text.substr(point);
+        texts.push_back(text);
+    }
+    for (const std::string& text : texts) {
+        Token t;
+        t.kind = TokenKind::Number;
+        t.text = std::string_view(text);
+        double expected = 0.0;
+        ASSERT_EQ(std::from_chars(text.data(), text.data() + text.size(), expected).ec, std::errc{}) << text;
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(t.number()), std::bit_cast<std::uint64_t>(expected)) << text;
+    }
+}
+
+// Identifier tables hash names with name_hash (short names by overlapping loads): every form of a name finds
+// the same entry, at every length, and names that differ in one character rarely share a hash.
+TEST(Lexer, IdentifierTablesFindEveryFormOfAName) {
+    NameMap<int> table;
+    std::vector<std::string> names;
+    for (std::size_t length = 0; length <= 40; ++length)
+        for (char c = 'a'; c <= 'z'; ++c) {
+            std::string name(length, 'x');
+            if (length > 0) name[(static_cast<std::size_t>(c) * 7) % length] = c;
+            if (table.emplace(name, static_cast<int>(names.size())).second) names.push_back(name);
+        }
+    std::set<std::size_t> hashes;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        const std::string copy = names[i];
+        const TokenText text(copy);
+        ASSERT_TRUE(table.count(copy)) << names[i];
+        EXPECT_EQ(table.find(text)->second, static_cast<int>(i));
+        EXPECT_EQ(table.find(hashed(copy))->second, static_cast<int>(i));
+        EXPECT_EQ(name_hash(copy), NameHash{}(text));
+        hashes.insert(name_hash(copy));
+    }
+    EXPECT_EQ(hashes.size(), names.size());
+    EXPECT_EQ(table.find(std::string_view("xxxxq")), table.end());
 }
 
 TEST(Lexer, DotItemAfterVectorIsPunctuation) {
