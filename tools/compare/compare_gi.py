@@ -51,23 +51,47 @@ def parse_size(text):
     return int(w), int(h)
 
 
+def parse_povray_reference(text):
+    """`povray-reference=KEY:VALUE,...` of a scene list's line: the radiosity settings of POV-Ray's reference for that
+    scene that differ from ladder.json's (for a scene where the common ones leave it far from converged)."""
+    keys = ("pretrace_start", "pretrace_end", "count", "error_bound", "nearest_count")
+    settings = {}
+    for item in text.split(","):
+        key, _, value = item.partition(":")
+        if key not in keys:
+            raise ValueError(f"expected one of {', '.join(keys)} in povray-reference=, got {key!r}")
+        try:
+            number = float(value)
+        except ValueError:
+            raise ValueError(f"expected a number for {key} in povray-reference=, got {value!r}") from None
+        settings[key] = int(number) if key in ("count", "nearest_count") and number.is_integer() else number
+    return settings
+
+
 def load_scene_list(path):
-    """[(scene path, size or None)]: one `.pov` path a line (absolute or relative to the repository), optionally
-    followed by the image size it is compared at, `WIDTHxHEIGHT`."""
+    """[(scene path, size or None, POV-Ray reference settings or {})]: one `.pov` path a line (absolute or relative
+    to the repository), optionally followed by the image size it is compared at, `WIDTHxHEIGHT`, and by
+    `povray-reference=KEY:VALUE,...`, that scene's own settings for POV-Ray's reference (parse_povray_reference)."""
     scenes = []
     for number, line in enumerate(pathlib.Path(path).read_text().splitlines(), 1):
         line = line.strip()
         if not line or line.startswith("#"):
             continue
         words = line.split()
-        if len(words) > 2:
-            raise ValueError(f"{path}:{number}: expected a scene and at most a size, got {line!r}")
+        size, reference = None, {}
         try:
-            size = parse_size(words[1]) if len(words) == 2 else None
-        except argparse.ArgumentTypeError as e:
+            for word in words[1:]:
+                if word.startswith("povray-reference=") and not reference:
+                    reference = parse_povray_reference(word.partition("=")[2])
+                elif size is None and not word.startswith("povray-reference="):
+                    size = parse_size(word)
+                else:
+                    raise ValueError(f"expected a scene, at most a size and at most one povray-reference=, "
+                                     f"got {line!r}")
+        except (ValueError, argparse.ArgumentTypeError) as e:
             raise ValueError(f"{path}:{number}: {e}") from None
         p = pathlib.Path(words[0])
-        scenes.append((p if p.is_absolute() else (ROOT / p), size))
+        scenes.append((p if p.is_absolute() else (ROOT / p), size, reference))
     return scenes
 
 
@@ -164,8 +188,9 @@ def model_reference(ward, text, scene_dir, size, work, cache, own, cfg, progress
                  f"it, so the mean's own noise is about {100 * spread / seeds ** 0.5:.3f} %"}
 
 
-def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
-    """References, then the ladder with interleaved runs; returns the scene's results as plain data."""
+def measure_scene(path, renderers, points, cfg, size, runs, cache, progress, povray_reference=None):
+    """References, then the ladder with interleaved runs; returns the scene's results as plain data.
+    `povray_reference`: the scene's own settings for POV-Ray's reference, over cfg's."""
     name = scene_name(path)
     scene_dir = path.parent
     text = path.read_text(errors="replace")
@@ -173,16 +198,21 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress):
               "size": list(size), "references": {}, "points": [], "failures": []}
     with tempfile.TemporaryDirectory(prefix=f"compare-{name}-") as tmp:
         work = pathlib.Path(tmp)
+        pov_settings = {**cfg["povray_reference"], **(povray_reference or {})}
+        if povray_reference:
+            result["povray_reference_override"] = povray_reference
+        # wardray's references (brute force: count and error_bound do not matter to them) keep the common settings.
         ref_text, _ = rewrite_radiosity(text, cfg["povray_reference"])
+        pov_ref_text, _ = rewrite_radiosity(text, pov_settings)
         refs = {}
         for r in renderers:
             try:
                 if r.name == "povray":
                     progress.show(name, "reference", r.label, 1, 1)
-                    image, seconds, cached = cache.render(r, ref_text, scene_dir, size, [], work,
+                    image, seconds, cached = cache.render(r, pov_ref_text, scene_dir, size, [], work,
                                                           f"POV-Ray reference of {name}")
                     progress.finish((name, r.name, None), None if cached else seconds)
-                    info = {"settings": cfg["povray_reference"], "seconds": seconds, "converged": True}
+                    info = {"settings": pov_settings, "seconds": seconds, "converged": True}
                     refs[r.name] = read_linear_rgb(image)
                 else:
                     refs[r.name], info = wardray_reference(r, ref_text, scene_dir, size, work, cache,
@@ -321,7 +351,7 @@ def main():
         listed = load_scene_list(args.scenes)
     except ValueError as e:
         ap.error(str(e))
-    for path, listed_size in listed:
+    for path, listed_size, povray_reference in listed:
         size = args.size or listed_size or DEFAULT_SIZE
         if not path.is_file():
             skipped.append({"scene": str(path), "reason": "file not found"})
@@ -342,12 +372,12 @@ def main():
             skipped.append({"scene": str(path), "reason": "wardray does not render all of it (use "
                             "--allow-unsupported to compare anyway): " + "; ".join(unsupported)})
             continue
-        scenes.append((path, size, warnings))
+        scenes.append((path, size, warnings, povray_reference))
     for s in skipped:
         print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
 
     plan = []
-    for path, _, _ in scenes:
+    for path, _, _, _ in scenes:
         name = scene_name(path)
         for r in renderers:
             plan += [(name, r.name, None)] * (2 if r.name == "wardray" and r.gi_mode != "off" else 1)
@@ -368,8 +398,8 @@ def main():
         "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
     }
     out.mkdir(parents=True, exist_ok=True)
-    for path, size, warnings in scenes:
-        result = measure_scene(path, renderers, points, cfg, size, args.runs, cache, progress)
+    for path, size, warnings, povray_reference in scenes:
+        result = measure_scene(path, renderers, points, cfg, size, args.runs, cache, progress, povray_reference)
         result["wardray_warnings"] = warnings
         data["scenes"].append(result)
         ward = next((r for r in renderers if r.name == "wardray"), None)

@@ -333,6 +333,13 @@ def markdown(data, plot_dir):
         if mm and mm["rrmse"] > min(TARGETS):
             loose.append(f"{s['scene']} ({pct(mm['rrmse'])})")
     lines.append("")
+    own = [s for s in data["scenes"] if s.get("povray_reference_override")]
+    if own:
+        lines += ["POV-Ray's reference is rendered at the scene list's own settings on "
+                  + "; ".join(f"{s['scene']} ("
+                              + ", ".join(f"`{k} {v}`" for k, v in s["povray_reference_override"].items())
+                              + ")" for s in own)
+                  + ", the rest as above: at the common settings it is far from converged there.", ""]
     if loose:
         lines += ["The two references differ by more than the 1 % target on " + ", ".join(loose) + ": there, "
                   "reaching a target against its own reference says nothing about agreeing with the other renderer "

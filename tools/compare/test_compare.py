@@ -206,19 +206,32 @@ class SceneListTest(unittest.TestCase):
     def test_a_line_may_give_the_scene_its_size(self):
         from compare_gi import ROOT, load_scene_list
         listed = load_scene_list(self.write("# comment\n\n/abs/a.pov 256x256\nscenes/b.pov\n  c.pov   64x48  \n"))
-        self.assertEqual(listed, [(pathlib.Path("/abs/a.pov"), (256, 256)), (ROOT / "scenes/b.pov", None),
-                                  (ROOT / "c.pov", (64, 48))])
+        self.assertEqual(listed, [(pathlib.Path("/abs/a.pov"), (256, 256), {}), (ROOT / "scenes/b.pov", None, {}),
+                                  (ROOT / "c.pov", (64, 48), {})])
+
+    def test_a_line_may_give_povray_its_own_reference_settings(self):
+        from compare_gi import ROOT, load_scene_list
+        listed = load_scene_list(self.write("a.pov povray-reference=error_bound:0.018,count:3200 64x48\n"
+                                            "b.pov povray-reference=pretrace_end:0.00125\n"))
+        self.assertEqual(listed, [(ROOT / "a.pov", (64, 48), {"error_bound": 0.018, "count": 3200}),
+                                  (ROOT / "b.pov", None, {"pretrace_end": 0.00125})])
+        with self.assertRaisesRegex(ValueError, r":1: expected one of .* got 'brightness'"):
+            load_scene_list(self.write("a.pov povray-reference=brightness:2\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a number for count"):
+            load_scene_list(self.write("a.pov povray-reference=count:many\n"))
 
     def test_a_bad_size_or_extra_words_name_the_line(self):
         from compare_gi import load_scene_list
         with self.assertRaisesRegex(ValueError, r":2: expected WIDTHxHEIGHT"):
             load_scene_list(self.write("a.pov\nb.pov 256by256\n"))
-        with self.assertRaisesRegex(ValueError, r":1: expected a scene and at most a size"):
+        with self.assertRaisesRegex(ValueError, r":1: expected a scene, at most a size"):
             load_scene_list(self.write("a.pov 64x48 extra\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a scene, at most a size"):
+            load_scene_list(self.write("a.pov 64x48 64x48\n"))
 
     def test_the_shipped_list_compares_cornell_at_256_and_the_rest_at_their_default(self):
         from compare_gi import DEFAULT_SIZE, HERE, load_scene_list
-        listed = dict(load_scene_list(HERE / "scenes.txt"))
+        listed = {path: size for path, size, _ in load_scene_list(HERE / "scenes.txt")}
         cornell = [size for path, size in listed.items() if path.name == "cornell.pov"]
         self.assertEqual(cornell, [(256, 256)])
         self.assertGreaterEqual(DEFAULT_SIZE, (160, 120))
