@@ -69,29 +69,35 @@ def parse_povray_reference(text):
 
 
 def load_scene_list(path):
-    """[(scene path, size or None, POV-Ray reference settings or {})]: one `.pov` path a line (absolute or relative
-    to the repository), optionally followed by the image size it is compared at, `WIDTHxHEIGHT`, and by
-    `povray-reference=KEY:VALUE,...`, that scene's own settings for POV-Ray's reference (parse_povray_reference)."""
+    """[(scene path, size or None, options)]: one `.pov` path a line (absolute or relative to the repository),
+    optionally followed by the image size it is compared at, `WIDTHxHEIGHT`, and by options for that scene alone:
+    `povray-reference=KEY:VALUE,...`, its own settings for POV-Ray's reference (parse_povray_reference), and
+    `wardray-max-rays=N`, a higher cap on its wardray reference's paths per pixel (a power of two). `options` maps
+    "povray_reference" and "wardray_max_rays" to them, when given."""
     scenes = []
     for number, line in enumerate(pathlib.Path(path).read_text().splitlines(), 1):
         line = line.strip()
         if not line or line.startswith("#"):
             continue
         words = line.split()
-        size, reference = None, {}
+        size, options = None, {}
         try:
             for word in words[1:]:
-                if word.startswith("povray-reference=") and not reference:
-                    reference = parse_povray_reference(word.partition("=")[2])
-                elif size is None and not word.startswith("povray-reference="):
+                key, eq, value = word.partition("=")
+                if eq and key == "povray-reference" and "povray_reference" not in options:
+                    options["povray_reference"] = parse_povray_reference(value)
+                elif eq and key == "wardray-max-rays" and "wardray_max_rays" not in options:
+                    if not value.isdigit() or int(value) < 64 or int(value) & (int(value) - 1):
+                        raise ValueError(f"expected a power of two of at least 64 in wardray-max-rays=, got {value!r}")
+                    options["wardray_max_rays"] = int(value)
+                elif size is None and not eq:
                     size = parse_size(word)
                 else:
-                    raise ValueError(f"expected a scene, at most a size and at most one povray-reference=, "
-                                     f"got {line!r}")
+                    raise ValueError(f"expected a scene, at most a size and each option at most once, got {line!r}")
         except (ValueError, argparse.ArgumentTypeError) as e:
             raise ValueError(f"{path}:{number}: {e}") from None
         p = pathlib.Path(words[0])
-        scenes.append((p if p.is_absolute() else (ROOT / p), size, reference))
+        scenes.append((p if p.is_absolute() else (ROOT / p), size, options))
     return scenes
 
 
@@ -188,9 +194,11 @@ def model_reference(ward, text, scene_dir, size, work, cache, own, cfg, progress
                  f"it, so the mean's own noise is about {100 * spread / seeds ** 0.5:.3f} %"}
 
 
-def measure_scene(path, renderers, points, cfg, size, runs, cache, progress, povray_reference=None):
+def measure_scene(path, renderers, points, cfg, size, runs, cache, progress, options=None):
     """References, then the ladder with interleaved runs; returns the scene's results as plain data.
-    `povray_reference`: the scene's own settings for POV-Ray's reference, over cfg's."""
+    `options`: the scene list's options for this scene (load_scene_list), over cfg's."""
+    options = options or {}
+    povray_reference = options.get("povray_reference")
     name = scene_name(path)
     scene_dir = path.parent
     text = path.read_text(errors="replace")
@@ -215,8 +223,12 @@ def measure_scene(path, renderers, points, cfg, size, runs, cache, progress, pov
                     info = {"settings": pov_settings, "seconds": seconds, "converged": True}
                     refs[r.name] = read_linear_rgb(image)
                 else:
-                    refs[r.name], info = wardray_reference(r, ref_text, scene_dir, size, work, cache,
-                                                           cfg["wardray_reference"], progress, name)
+                    ward_cfg = dict(cfg["wardray_reference"])
+                    if options.get("wardray_max_rays"):
+                        ward_cfg["max_rays"] = options["wardray_max_rays"]
+                        result["wardray_max_rays"] = options["wardray_max_rays"]
+                    refs[r.name], info = wardray_reference(r, ref_text, scene_dir, size, work, cache, ward_cfg,
+                                                           progress, name)
                 result["references"][r.name] = info
             except RenderFailed as e:
                 result["failures"].append(f"{r.label} reference: {e}")
@@ -351,7 +363,7 @@ def main():
         listed = load_scene_list(args.scenes)
     except ValueError as e:
         ap.error(str(e))
-    for path, listed_size, povray_reference in listed:
+    for path, listed_size, options in listed:
         size = args.size or listed_size or DEFAULT_SIZE
         if not path.is_file():
             skipped.append({"scene": str(path), "reason": "file not found"})
@@ -372,7 +384,7 @@ def main():
             skipped.append({"scene": str(path), "reason": "wardray does not render all of it (use "
                             "--allow-unsupported to compare anyway): " + "; ".join(unsupported)})
             continue
-        scenes.append((path, size, warnings, povray_reference))
+        scenes.append((path, size, warnings, options))
     for s in skipped:
         print(f"compare: skipping {s['scene']}: {s['reason']}", file=sys.stderr)
 
@@ -398,8 +410,8 @@ def main():
         "ladder": points, "references": cfg, "scenes": [], "skipped": skipped,
     }
     out.mkdir(parents=True, exist_ok=True)
-    for path, size, warnings, povray_reference in scenes:
-        result = measure_scene(path, renderers, points, cfg, size, args.runs, cache, progress, povray_reference)
+    for path, size, warnings, options in scenes:
+        result = measure_scene(path, renderers, points, cfg, size, args.runs, cache, progress, options)
         result["wardray_warnings"] = warnings
         data["scenes"].append(result)
         ward = next((r for r in renderers if r.name == "wardray"), None)

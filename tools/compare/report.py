@@ -340,6 +340,10 @@ def markdown(data, plot_dir):
                               + ", ".join(f"`{k} {v}`" for k, v in s["povray_reference_override"].items())
                               + ")" for s in own)
                   + ", the rest as above: at the common settings it is far from converged there.", ""]
+    capped = [s for s in data["scenes"] if s.get("wardray_max_rays")]
+    if capped:
+        lines += ["wardray's reference may take up to the scene list's own number of paths per pixel on "
+                  + ", ".join(f"{s['scene']} ({s['wardray_max_rays']})" for s in capped) + ".", ""]
     if loose:
         lines += ["The two references differ by more than the 1 % target on " + ", ".join(loose) + ": there, "
                   "reaching a target against its own reference says nothing about agreeing with the other renderer "

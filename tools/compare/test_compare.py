@@ -209,16 +209,24 @@ class SceneListTest(unittest.TestCase):
         self.assertEqual(listed, [(pathlib.Path("/abs/a.pov"), (256, 256), {}), (ROOT / "scenes/b.pov", None, {}),
                                   (ROOT / "c.pov", (64, 48), {})])
 
-    def test_a_line_may_give_povray_its_own_reference_settings(self):
+    def test_a_line_may_give_its_scene_its_own_reference_settings(self):
         from compare_gi import ROOT, load_scene_list
         listed = load_scene_list(self.write("a.pov povray-reference=error_bound:0.018,count:3200 64x48\n"
-                                            "b.pov povray-reference=pretrace_end:0.00125\n"))
-        self.assertEqual(listed, [(ROOT / "a.pov", (64, 48), {"error_bound": 0.018, "count": 3200}),
-                                  (ROOT / "b.pov", None, {"pretrace_end": 0.00125})])
+                                            "b.pov wardray-max-rays=65536 povray-reference=pretrace_end:0.00125\n"))
+        self.assertEqual(listed, [(ROOT / "a.pov", (64, 48), {"povray_reference": {"error_bound": 0.018,
+                                                                                    "count": 3200}}),
+                                  (ROOT / "b.pov", None, {"povray_reference": {"pretrace_end": 0.00125},
+                                                          "wardray_max_rays": 65536})])
         with self.assertRaisesRegex(ValueError, r":1: expected one of .* got 'brightness'"):
             load_scene_list(self.write("a.pov povray-reference=brightness:2\n"))
         with self.assertRaisesRegex(ValueError, r":1: expected a number for count"):
             load_scene_list(self.write("a.pov povray-reference=count:many\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a power of two"):
+            load_scene_list(self.write("a.pov wardray-max-rays=50000\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a scene, at most a size and each option"):
+            load_scene_list(self.write("a.pov wardray-max-rays=4096 wardray-max-rays=8192\n"))
+        with self.assertRaisesRegex(ValueError, r":1: expected a scene, at most a size and each option"):
+            load_scene_list(self.write("a.pov colour=red\n"))
 
     def test_a_bad_size_or_extra_words_name_the_line(self):
         from compare_gi import load_scene_list
