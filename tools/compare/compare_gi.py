@@ -17,7 +17,7 @@ one size for all. References are cached (build/compare-cache). Writes <out>/gi_c
 error-against-time plot per scene under <out>/gi_comparison/.
 
 usage: tools/compare/compare_gi.py [--scenes FILE] [--size WxH] [--runs N] [--quick] [--out DIR]
-                                   [--ladder-set full|extended] [--allow-unsupported]
+                                   [--ladder-set full|extended|long] [--allow-unsupported]
                                    [--wardray PATH] [--renderers povray,wardray] [--format exr|hdr]
                                    [--report-only]
 """
@@ -312,7 +312,7 @@ def main():
     ap.add_argument("--runs", type=int, default=3, help="timed runs per ladder point and renderer (default 3)")
     ap.add_argument("--quick", action="store_true",
                     help="smoke test: two ladder points and cheap, unconverged references")
-    ap.add_argument("--ladder-set", default="full", help="which ladder of --ladder to run (full, extended)")
+    ap.add_argument("--ladder-set", default="full", help="which ladder of --ladder to run (full, extended, long)")
     ap.add_argument("--allow-unsupported", action="store_true",
                     help="also compare scenes for which wardray --check warns of features it does not render")
     ap.add_argument("--out", default=str(ROOT / "docs" / "reports"), help="folder for the report (docs/reports)")
