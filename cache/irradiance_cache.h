@@ -102,6 +102,8 @@ public:
     double reach(int depth) const;
     /// An empty octree filed as the cache's at `depth`.
     RecordOctree empty_octree(int depth) const;
+    /// An empty octree with the reach of the cache's at `depth` and its first filing only (a tile's own records).
+    RecordOctree empty_tile_octree(int depth) const;
 
     /// Freezes the cache and opens `tile_count` tile views; returns the pass number (0, 1, ...).
     int begin_pass(int tile_count);

@@ -35,7 +35,19 @@ public:
     /// reaches as fractions of it, each in (0, 1] (others are replaced by the defaults).
     explicit RecordOctree(double reach = 1.0, std::array<double, 2> inner = {0.5, 0.25});
     /// An empty octree filed as this one.
-    RecordOctree empty_like() const { return RecordOctree(reach(), m_inner); }
+    RecordOctree empty_like() const {
+        RecordOctree out(reach(), m_inner);
+        if (m_filings.size() == 1) out.m_filings.resize(1);
+        return out;
+    }
+    /// An empty octree with this one's reach and only its first filing: for a few records (a tile's own), where
+    /// the inner filings would cost more to file than they save in the walk. Lookups find the same records in the
+    /// same order either way; only the nodes walked differ.
+    RecordOctree empty_single_filing() const {
+        RecordOctree out(reach(), m_inner);
+        out.m_filings.resize(1);
+        return out;
+    }
 
     /// Files a copy of `record` and returns its index (indices follow insertion order). A record with a
     /// non-finite position or radius is kept but never found.
@@ -56,6 +68,8 @@ public:
     /// allocator's own overhead): what --stats reports as the cache's memory.
     std::size_t memory_bytes() const;
     double reach() const { return m_filings.front().reach; }
+    /// How many filings records go into: 3, or 1 for empty_single_filing()'s octrees.
+    std::size_t filing_count() const { return m_filings.size(); }
 
     /// Calls `visit(index)` for each record whose filed sphere may contain `q` (a superset of the records valid at q
     /// for any error bound ≤ reach), walking from the root to the leaf that holds q; deterministic order.

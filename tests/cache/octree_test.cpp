@@ -119,6 +119,60 @@ TEST(RecordOctree, NearLookupFindsTheSameRecordsInEveryFiling) {
     }
 }
 
+TEST(RecordOctree, OneFilingFindsWhatThreeFind) {
+    // A tile's own octree files each record once (empty_single_filing): every query must still find the same
+    // records, the same holding records and the same clamped radius as the cache's three filings, radii shrunk
+    // after filing included.
+    SplitMix64 rng(7);
+    RecordOctree full(1.3, {0.4, 0.2});
+    RecordOctree one = full.empty_single_filing();
+    ASSERT_EQ(full.filing_count(), 3u);
+    ASSERT_EQ(one.filing_count(), 1u);
+    EXPECT_EQ(one.empty_like().filing_count(), 1u);
+    EXPECT_EQ(full.empty_like().filing_count(), 3u);
+    EXPECT_EQ(one.reach(), full.reach());
+    for (int i = 0; i < 600; ++i) {
+        const IrradianceRecord r = random_record(rng, Vec3{-1, 4, 2}, 3.0);
+        ASSERT_EQ(full.insert(r), one.insert(r));
+        if (i % 5 == 0) {
+            const auto shrink = static_cast<std::uint32_t>(rng.uniform() * i);
+            const double radius = full.geometry(shrink).radius * 0.5;
+            full.shrink_radius(shrink, radius);
+            one.shrink_radius(shrink, radius);
+        }
+    }
+    const auto collect_near = [](const RecordOctree& tree, const Vec3& q, double bound) {
+        std::vector<std::uint32_t> found;
+        tree.visit_near(q, bound, [&](std::uint32_t i, const RecordGeometry&) { found.push_back(i); });
+        std::sort(found.begin(), found.end());
+        return found;
+    };
+    int hits = 0;
+    for (int qi = 0; qi < 1500; ++qi) {
+        const IrradianceRecord& near_record = one.records()[static_cast<std::size_t>(qi) % one.size()];
+        const Vec3 q = near_record.position + random_direction(rng) * (uniform(rng, 0, 1.5) * near_record.radius);
+        for (const double bound : {1.3, 0.5, 0.26, 0.1}) {
+            const std::vector<std::uint32_t> found = collect_near(one, q, bound);
+            ASSERT_EQ(found, collect_near(full, q, bound)) << "query " << qi << " bound " << bound;
+            hits += found.empty() ? 0 : 1;
+        }
+        // Neighbour clamping's queries: visit_holding() may pass a few more than it must, so compare what it must
+        // find (|q - p_i| < R_i), and clamped_radius() exactly.
+        const auto holding = [&](const RecordOctree& tree) {
+            std::vector<std::uint32_t> found;
+            tree.visit_holding(q, [&](std::uint32_t i) {
+                const Vec3 d = q - tree.geometry(i).position;
+                if (dot(d, d) < tree.geometry(i).radius * tree.geometry(i).radius) found.push_back(i);
+            });
+            std::sort(found.begin(), found.end());
+            return found;
+        };
+        ASSERT_EQ(holding(one), holding(full)) << "query " << qi;
+        EXPECT_EQ(one.clamped_radius(q, 2.0), full.clamped_radius(q, 2.0)) << "query " << qi;
+    }
+    EXPECT_GT(hits, 2000);
+}
+
 // The scan's fixed point is relative to each node's cube, so visit_near() stays exact at any scale and offset.
 TEST(RecordOctree, NearLookupIsExactAtEveryScale) {
     for (const auto& [offset, scale] : {std::pair{Vec3{0, 0, 0}, 1e-9}, std::pair{Vec3{1e6, -3e5, 7}, 1e3},
