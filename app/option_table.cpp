@@ -131,6 +131,13 @@ Why set_gi_spacing(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_gi_reuse_floor(const OptionUse& use, Options& o) {
+    if (use.value == "geometry") o.gi_geometry_floor = true;
+    else if (use.value == "screen") o.gi_geometry_floor = false;
+    else return "must be geometry or screen";
+    return std::nullopt;
+}
+
 Why set_gi_area_lights(const OptionUse& use, Options& o) {
     if (use.value == "fine") o.gi_fine_area_lights = true;
     else if (use.value == "grid") o.gi_fine_area_lights = false;
@@ -333,6 +340,11 @@ constexpr OptionSpec kOptions[] = {
              "sent into the cells whose neighbours differ most (Ward's ambient\n"
              "super-sampling, as Radiance's -as; the default)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
+    {.long_name = "--gi-reuse-floor", .kind = K::Value, .usage = "--gi-reuse-floor=geometry|screen",
+     .help = "cache mode, with gradients: near geometry closer than minimum_reuse, a\n"
+             "record's radius down to half its harmonic mean distance, not below a pixel\n"
+             "(geometry, the default), or POV-Ray 3.7's minimum_reuse everywhere (screen)",
+     .set = set_gi_reuse_floor},
     {.long_name = "--gi-carry", .kind = K::Value, .usage = "--gi-carry=all|still|off",
      .help = "animation: carry the irradiance cache from frame to frame, every record\n"
              "(all) or those no changed object covers 1 % of the hemisphere of (still)",

@@ -71,6 +71,7 @@ struct Options {
     bool gi_neighbour_clamp = true;                 ///< --gi-neighbour-clamp=off: no neighbour clamping
     bool gi_hessian_spacing = true;                 ///< --gi-spacing=harmonic: record radii from hit distances
     bool gi_adaptive = true;                        ///< --gi-adaptive: extra gather rays where strata differ
+    bool gi_geometry_floor = true;                  ///< --gi-reuse-floor=screen: POV-Ray's minimum_reuse everywhere
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
     bool gi_record_pass = true;                     ///< --gi-record-pass=off: the final pass makes its records
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file

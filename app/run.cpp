@@ -364,6 +364,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradient_cap = options.gi_gradient_cap;
     settings.hessian_spacing = options.gi_hessian_spacing;
     settings.adaptive_gather = options.gi_adaptive;
+    settings.geometry_floor = options.gi_geometry_floor;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
     // Up to +Q5 surfaces show their pigments' quick_color (the integrator); the sky's pigments keep theirs.

@@ -46,7 +46,7 @@ RadiusLimits radius_limits(const scene::RadiositySettings& settings, int depth, 
                                     std::max(depth, 0));
     const double lo = std::max(settings.minimum_reuse * scale, std::isfinite(footprint_min) ? footprint_min : 0.0);
     const double hi = std::min(settings.maximum_reuse * scale, footprint_max);
-    return {std::max(lo, 0.0), std::max(lo, hi)};
+    return {std::max(lo, 0.0), std::max(lo, hi), std::isfinite(footprint_min) ? std::max(footprint_min, 0.0) : 0.0};
 }
 
 IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const GatherResult& gathered, int depth,
@@ -64,9 +64,16 @@ IrradianceRecord make_record(const Vec3& position, const Vec3& normal, const Gat
     }
 
     // The limits themselves must be usable: a positive finite range, else a unit radius.
-    const double hi_raw = finite_positive_or(limits.max, finite_positive_or(limits.min, 1.0));
-    const double lo = std::min(std::isfinite(limits.min) ? std::max(limits.min, 0.0) : 0.0, hi_raw);
-    const double hi = std::max(hi_raw, lo);
+    const double hi = finite_positive_or(limits.max, finite_positive_or(limits.min, 1.0));
+    double lo = std::min(std::isfinite(limits.min) ? std::max(limits.min, 0.0) : 0.0, hi);
+    // POV-Ray's minimum_reuse is a fraction of the distance to the camera: next to geometry closer than that (small
+    // objects seen from afar, contact, the inside of a frame) it holds records larger than the irradiance's own
+    // scale there, and no error_bound removes the blur. The gather's harmonic mean distance measures that scale.
+    if (options.geometry_floor && depth == 0 && std::isfinite(gathered.harmonic_mean_distance) &&
+        gathered.harmonic_mean_distance >= 0.0) {
+        const double footprint = std::isfinite(limits.footprint) ? std::clamp(limits.footprint, 0.0, lo) : 0.0;
+        lo = std::max(footprint, std::min(lo, kGeometryFloorFraction * gathered.harmonic_mean_distance));
+    }
 
     // Ward, Rubinstein & Clear 1988: R = harmonic mean distance to the surfaces seen; or from the Hessian, whose
     // error model is that of extrapolation with gradients.

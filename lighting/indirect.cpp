@@ -42,9 +42,10 @@ double gather_weight(double base, int exponent) {
 class CachedIrradiance final : public IndirectLight {
 public:
     CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint,
-                     bool gradient_cap, bool hessian_spacing, bool adaptive_gather)
+                     bool gradient_cap, bool hessian_spacing, bool adaptive_gather, bool geometry_floor)
         : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_gradient_cap(gradient_cap),
-          m_hessian_spacing(hessian_spacing), m_adaptive_gather(adaptive_gather), m_footprint(footprint) {}
+          m_hessian_spacing(hessian_spacing), m_adaptive_gather(adaptive_gather),
+          m_geometry_floor(geometry_floor), m_footprint(footprint) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                     TraceContext& ctx) const override {
@@ -82,6 +83,7 @@ public:
             options.spacing = m_hessian_spacing ? cache::RadiusSpacing::Hessian : cache::RadiusSpacing::Harmonic;
             // The bound lookups use on the final pass at this depth (interpolation.cpp's lookup_params).
             options.error_bound = std::ldexp(rs.error_bound, depth);
+            options.geometry_floor = m_gradients && m_geometry_floor;
             ctx.cache->add(cache::make_record(p, n, gathered, depth, limits, options));
         }
         // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
@@ -97,6 +99,7 @@ private:
     bool m_gradient_cap = true;
     bool m_hessian_spacing = true;
     bool m_adaptive_gather = false;
+    bool m_geometry_floor = false;
     double m_footprint = 0.0;
 };
 
@@ -208,9 +211,10 @@ private:
 
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
-                                                            bool hessian_spacing, bool adaptive_gather) {
+                                                            bool hessian_spacing, bool adaptive_gather,
+                                                            bool geometry_floor) {
     return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap, hessian_spacing,
-                                              adaptive_gather);
+                                              adaptive_gather, geometry_floor);
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,

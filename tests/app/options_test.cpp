@@ -173,6 +173,10 @@ TEST(Options, AdaptiveGatherSwitch) {
     EXPECT_FALSE(parse_ok({"--gi-adaptive=off"}).gi_adaptive);
     EXPECT_TRUE(parse_ok({"--gi-adaptive=off", "--gi-adaptive=on"}).gi_adaptive);
     EXPECT_NE(parse_error({"--gi-adaptive=yes"}).find("--gi-adaptive"), std::string::npos);
+    EXPECT_TRUE(parse_ok({}).gi_geometry_floor);
+    EXPECT_FALSE(parse_ok({"--gi-reuse-floor=screen"}).gi_geometry_floor);
+    EXPECT_TRUE(parse_ok({"--gi-reuse-floor=screen", "--gi-reuse-floor=geometry"}).gi_geometry_floor);
+    EXPECT_NE(parse_error({"--gi-reuse-floor=on"}).find("--gi-reuse-floor"), std::string::npos);
 }
 
 TEST(Options, SeedTakesAny64BitNumber) {

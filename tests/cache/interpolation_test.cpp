@@ -242,6 +242,40 @@ TEST(Record, GradientCapsTheRadiusAndIsLimitedWhenClamped) {
     EXPECT_EQ(make_record({0, 0, 0}, {0, 1, 0}, g, 0, {0.01, 10.0}, off).translational[0], Vec3{});
 }
 
+TEST(Record, GeometryFloorLowersMinimumReuseNearGeometryDownToTheFootprint) {
+    // A gather next to geometry (harmonic mean distance 0.1) where POV-Ray's minimum_reuse asks for 0.6: with the
+    // geometry floor the radius may go down to half the harmonic distance, never below the pixel footprint, at
+    // depth 0 only; a radius the gather itself sets above the floor stays; off, POV-Ray's floor holds.
+    GatherResult g;
+    g.irradiance = {1, 1, 1};
+    g.harmonic_mean_distance = 0.1;
+    RecordOptions floor;
+    floor.geometry_floor = true;
+    const Vec3 p{0, 0, 0}, n{0, 1, 0};
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.01}, floor).radius, 0.1);
+    g.harmonic_mean_distance = 0.04;
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.01}, floor).radius, 0.04);
+    // A gradient cap (E/|grad E| = 0.01) under the new floor (kGeometryFloorFraction × 0.04) is clamped up to it,
+    // with the gradient scaled down as any clamp scales it.
+    g.translational = {Vec3{100, 0, 0}, Vec3{}, Vec3{}};
+    const IrradianceRecord capped = make_record(p, n, g, 0, {0.6, 10.0, 0.001}, floor);
+    EXPECT_DOUBLE_EQ(capped.radius, kGeometryFloorFraction * 0.04);
+    EXPECT_NEAR(capped.translational[0].x, 100.0 * 0.01 / capped.radius, 1e-4);
+    g.translational = {};
+    // Never below the footprint, never above POV-Ray's floor, not deeper than depth 0, and not without the option.
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.05}, {}).radius, 0.6);
+    g.harmonic_mean_distance = 0.004;
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.05}, floor).radius, 0.05);
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.9}, floor).radius, 0.6);
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 1, {0.6, 10.0, 0.05}, floor).radius, 0.6);
+    // Far from geometry the floor is POV-Ray's, and the footprint comes from radius_limits().
+    g.harmonic_mean_distance = 5.0;
+    EXPECT_DOUBLE_EQ(make_record(p, n, g, 0, {0.6, 10.0, 0.05}, floor).radius, 5.0);
+    const scene::RadiositySettings s;
+    EXPECT_DOUBLE_EQ(radius_limits(s, 0, 10.0, 0.02).footprint, 0.02);
+    EXPECT_DOUBLE_EQ(radius_limits(s, 0, 10.0).footprint, 0.0);
+}
+
 TEST(Record, NeighbourClampingBoundsRadiiByDistance) {
     IrradianceRecord a = flat_record({0, 0, 0}, {1, 1, 1}, 5.0);
     IrradianceRecord b = flat_record({1, 0, 0}, {1, 1, 1}, 0.5);
