@@ -113,9 +113,9 @@ struct RecordOptions {
 
 /// The fraction of its harmonic mean distance (the distance to the surfaces its hemisphere sees) that a record near
 /// geometry may have as its radius below POV-Ray's minimum_reuse (RecordOptions::geometry_floor). Over the
-/// comparison's ladder (docs/reports/radiosity.md): 0.25, 0.35 and 0.5 lowered the error of stackernight,
-/// stackerday, patio and rad_def_test_37 alike, by up to 30 %, with 1-2.5 % more records on box; 0.7 and 1 gained
-/// less.
+/// comparison's ladder (docs/reports/reuse_floor.md): 0.25, 0.35 and 0.5 lowered the error of stackerday, patio and
+/// rad_def_test_37 alike, and of stackernight by 36 %, 34 % and 28 % at c400; 0.7 and 1 gained less. 0.5 costs box
+/// 1-2.5 % more records; 0.25 was not measured on every scene.
 inline constexpr double kGeometryFloorFraction = 0.5;
 
 /// The fraction of error_bound that Hessian spacing allows as relative error at the edge of a record's reach: 1,

@@ -98,14 +98,17 @@ bool RecordOctree::use_wide_scan(bool wanted) {
     return g_wide_scan;
 }
 
-RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) {
+RecordOctree::RecordOctree(double reach, std::array<double, 2> inner) : RecordOctree(reach, inner, 3) {}
+
+RecordOctree::RecordOctree(double reach, std::array<double, 2> inner, std::size_t filings) {
     const double r = std::isfinite(reach) ? std::max(reach, 1.0) : 1.0;
     const std::array<double, 2> defaults{0.5, 0.25};
     for (std::size_t k = 0; k < inner.size(); ++k)
         if (!(inner[k] > 0.0 && inner[k] <= 1.0)) inner[k] = defaults[k];
     m_inner = inner;
     m_filings.emplace_back().reach = r;
-    for (const double f : inner) m_filings.emplace_back().reach = r * f;
+    if (filings > 1)
+        for (const double f : inner) m_filings.emplace_back().reach = r * f;
 }
 
 std::uint32_t RecordOctree::insert(const IrradianceRecord& record) {

@@ -35,19 +35,11 @@ public:
     /// reaches as fractions of it, each in (0, 1] (others are replaced by the defaults).
     explicit RecordOctree(double reach = 1.0, std::array<double, 2> inner = {0.5, 0.25});
     /// An empty octree filed as this one.
-    RecordOctree empty_like() const {
-        RecordOctree out(reach(), m_inner);
-        if (m_filings.size() == 1) out.m_filings.resize(1);
-        return out;
-    }
+    RecordOctree empty_like() const { return RecordOctree(reach(), m_inner, m_filings.size()); }
     /// An empty octree with this one's reach and only its first filing: for a few records (a tile's own), where
     /// the inner filings would cost more to file than they save in the walk. Lookups find the same records in the
     /// same order either way; only the nodes walked differ.
-    RecordOctree empty_single_filing() const {
-        RecordOctree out(reach(), m_inner);
-        out.m_filings.resize(1);
-        return out;
-    }
+    RecordOctree empty_single_filing() const { return RecordOctree(reach(), m_inner, 1); }
 
     /// Files a copy of `record` and returns its index (indices follow insertion order). A record with a
     /// non-finite position or radius is kept but never found.
@@ -134,6 +126,9 @@ public:
     double clamped_radius(const Vec3& centre, double bound) const;
 
 private:
+    /// The first `filings` of the filings the public constructor makes (1 or 3).
+    RecordOctree(double reach, std::array<double, 2> inner, std::size_t filings);
+
     /// Entries per Node::Block: one SSE register of floats.
     static constexpr std::size_t kBlock = 4;
     /// The index of an unused lane.
