@@ -178,18 +178,22 @@ IrradianceCache::IrradianceCache(int depths, double reach, std::array<double, 2>
     for (int d = 0; d < n; ++d) m_octrees.emplace_back(std::ldexp(reach, d), inner);
 }
 
+const RecordOctree& IrradianceCache::nearest_depth(int depth) const {
+    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))];
+}
+
 RecordOctree IrradianceCache::empty_octree(int depth) const {
-    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))].empty_like();
+    return nearest_depth(depth).empty_like();
 }
 
 RecordOctree IrradianceCache::empty_tile_octree(int depth) const {
     // A tile makes a few dozen records a pass: filing each three times cost more than the narrower walks saved (box
     // at count 80: inserts were 14 % of the profile, half of them into the tiles' own octrees).
-    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))].empty_single_filing();
+    return nearest_depth(depth).empty_single_filing();
 }
 
 double IrradianceCache::reach(int depth) const {
-    return m_octrees[static_cast<std::size_t>(std::clamp(depth, 0, depth_count() - 1))].reach();
+    return nearest_depth(depth).reach();
 }
 
 int IrradianceCache::begin_pass(int tile_count) {

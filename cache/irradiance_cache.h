@@ -159,6 +159,8 @@ private:
     std::vector<std::size_t> sizes() const;
     LookupParams clamp_params(int depth, const LookupParams& params) const;
 
+    /// The octree of `depth`, clamped to the depths the cache has.
+    const RecordOctree& nearest_depth(int depth) const;
     std::vector<RecordOctree> m_octrees;
     std::vector<std::unique_ptr<TileCache>> m_tiles;
     bool m_in_pass = false;
