@@ -34,11 +34,47 @@ std::uint64_t seed_from(const Vec3& position, const Vec3& normal, std::uint64_t 
     return h;
 }
 
+namespace {
+
+/// The unit direction at sin²θ = `sin2` and azimuth φ, with the cell it was drawn in.
+HemisphereSample cosine_direction(double sin2, double phi, int polar, int azimuth) {
+    const double sin_theta = std::sqrt(sin2);
+    const double cos_theta = std::sqrt(std::max(0.0, 1.0 - sin2));
+    return {{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}, polar, azimuth};
+}
+
+}  // namespace
+
 std::vector<HemisphereSample> stratified_cosine_samples(const Strata& strata, SplitMix64& rng) {
+    const int m = std::max(strata.polar, 1), n = std::max(strata.azimuthal, 1);
+    // Correlated multi-jittered (Kensler 2013): one sample per cell as Ward & Heckbert's grid asks, and within the
+    // cells the offsets arranged so that the samples' sin²θ alone fall one in each of the m·n equal slices of
+    // [0, 1), and their φ alone too: the cell in column k takes slice polar_slice[k] of its row's sin²θ range, the
+    // cell in row j slice azimuth_slice[j] of its column's φ range, one shuffle shared by every row and one by every
+    // column. Each sample stays uniform within its cell (over the shuffles and the jitter), so the estimate is as
+    // unbiased as the plain jittered grid; on box at count 80 and 150 its error was 15 % lower (four seeds each),
+    // where independent shuffles per row and column gained 7 % (docs/reports/radiosity.md).
+    const auto shuffled = [&rng](int size) {
+        std::vector<int> order(static_cast<std::size_t>(size));
+        for (int i = 0; i < size; ++i) order[static_cast<std::size_t>(i)] = i;
+        for (int i = size - 1; i > 0; --i) {
+            const int pick = std::min(i, static_cast<int>(rng.uniform() * (i + 1)));
+            std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(pick)]);
+        }
+        return order;
+    };
+    const std::vector<int> polar_slice = shuffled(n), azimuth_slice = shuffled(m);
     std::vector<HemisphereSample> samples;
-    samples.reserve(static_cast<std::size_t>(strata.polar) * strata.azimuthal);
-    for (int j = 0; j < strata.polar; ++j)
-        for (int k = 0; k < strata.azimuthal; ++k) samples.push_back(sample_in_cell(strata, j, k, rng));
+    samples.reserve(static_cast<std::size_t>(m) * n);
+    for (int j = 0; j < m; ++j) {
+        for (int k = 0; k < n; ++k) {
+            // sin²θ uniform within the slice makes the density proportional to cos θ, as in sample_in_cell().
+            const double sin2 = (j + (polar_slice[static_cast<std::size_t>(k)] + rng.uniform()) / n) / m;
+            const double phi =
+                2.0 * std::numbers::pi * (k + (azimuth_slice[static_cast<std::size_t>(j)] + rng.uniform()) / m) / n;
+            samples.push_back(cosine_direction(sin2, phi, j, k));
+        }
+    }
     return samples;
 }
 
@@ -46,9 +82,7 @@ HemisphereSample sample_in_cell(const Strata& strata, int polar, int azimuth, Sp
     // sin²θ uniform within the stratum makes the density proportional to cos θ.
     const double sin2 = (polar + rng.uniform()) / strata.polar;
     const double phi = 2.0 * std::numbers::pi * (azimuth + rng.uniform()) / strata.azimuthal;
-    const double sin_theta = std::sqrt(sin2);
-    const double cos_theta = std::sqrt(std::max(0.0, 1.0 - sin2));
-    return {{sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta}, polar, azimuth};
+    return cosine_direction(sin2, phi, polar, azimuth);
 }
 
 GatherPlan gather_plan(int count, bool adaptive) {

@@ -37,10 +37,12 @@ private:
 /// A seed from a position and normal, so a record's samples never depend on which thread made it.
 std::uint64_t seed_from(const Vec3& position, const Vec3& normal, std::uint64_t salt = 0);
 
-/// One jittered direction per cell: θ_j = asin(sqrt((j + ξ)/M)), φ_k = 2π(k + ξ')/N, cosine-distributed.
+/// One direction per cell, θ_jk = asin(sqrt((j + (a_k + ξ)/N)/M)), φ_jk = 2π(k + (b_j + ξ')/M)/N with a and b
+/// shuffles of 0..N-1 and 0..M-1 (correlated multi-jittered): cosine-distributed, stratified by the cells and
+/// also by sin²θ alone and by φ alone into M·N slices each.
 std::vector<HemisphereSample> stratified_cosine_samples(const Strata& strata, SplitMix64& rng);
 
-/// One cosine-distributed direction in cell (j, k) of `strata`, jittered as stratified_cosine_samples() does.
+/// One cosine-distributed direction in cell (j, k) of `strata`, uniform within the cell (the adaptive extras).
 HemisphereSample sample_in_cell(const Strata& strata, int polar, int azimuth, SplitMix64& rng);
 
 /// How a gather of `count` rays spends them: one per cell of `strata`, then `extra` into the cells whose

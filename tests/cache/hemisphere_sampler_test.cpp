@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
+#include <algorithm>
+#include <cstdint>
 
 namespace wardray::cache {
 namespace {
@@ -33,6 +36,48 @@ TEST(StratifiedCosineSamples, OneUnitDirectionPerCellInItsStratum) {
         EXPECT_GE(phi, 2 * std::numbers::pi * h.azimuth / 19.0 - 1e-9);
         EXPECT_LE(phi, 2 * std::numbers::pi * (h.azimuth + 1) / 19.0 + 1e-9);
     }
+}
+
+TEST(StratifiedCosineSamples, SinSquaredThetaAloneAndPhiAloneAreStratifiedToo) {
+    // Correlated multi-jittering: of the M·N equal slices of sin²θ in [0, 1) each holds exactly one sample, and so
+    // does each of the M·N equal slices of φ; a plain jittered grid puts N samples in one sin²θ slice of every row.
+    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+        SplitMix64 rng(seed);
+        const Strata s{5, 16};
+        const auto samples = stratified_cosine_samples(s, rng);
+        const int slices = s.polar * s.azimuthal;
+        std::vector<int> by_sin2(slices, 0), by_phi(slices, 0);
+        for (const HemisphereSample& h : samples) {
+            const double sin2 = 1.0 - h.direction.z * h.direction.z;
+            double phi = std::atan2(h.direction.y, h.direction.x);
+            if (phi < 0) phi += 2 * std::numbers::pi;
+            ++by_sin2[std::min(slices - 1, static_cast<int>(sin2 * slices))];
+            ++by_phi[std::min(slices - 1, static_cast<int>(phi / (2 * std::numbers::pi) * slices))];
+        }
+        for (int i = 0; i < slices; ++i) {
+            EXPECT_EQ(by_sin2[i], 1) << "seed " << seed << ", sin²θ slice " << i;
+            EXPECT_EQ(by_phi[i], 1) << "seed " << seed << ", φ slice " << i;
+        }
+    }
+}
+
+TEST(StratifiedCosineSamples, EveryCellsSamplesCoverTheCellOverSeeds) {
+    // Each sample is uniform within its cell over the shuffles and the jitter: the mean of cell (j, k)'s sin²θ over
+    // many seeds is the cell's middle, and so is its φ.
+    const Strata s{4, 12};
+    double sum_sin2 = 0.0, sum_phi = 0.0;
+    const int seeds = 4000;
+    for (int seed = 0; seed < seeds; ++seed) {
+        SplitMix64 rng(static_cast<std::uint64_t>(seed) * 7919u + 5u);
+        const HemisphereSample& h = stratified_cosine_samples(s, rng)[static_cast<std::size_t>(2 * 12 + 7)];
+        sum_sin2 += 1.0 - h.direction.z * h.direction.z;
+        double phi = std::atan2(h.direction.y, h.direction.x);
+        if (phi < 0) phi += 2 * std::numbers::pi;
+        sum_phi += phi;
+    }
+    // Standard errors 0.0011 and 0.0024: the tolerances are about five of them.
+    EXPECT_NEAR(sum_sin2 / seeds, 2.5 / 4.0, 0.006);
+    EXPECT_NEAR(sum_phi / seeds, 2 * std::numbers::pi * 7.5 / 12.0, 0.012);
 }
 
 TEST(StratifiedCosineSamples, EstimatesCosineMomentsOfTheHemisphere) {
