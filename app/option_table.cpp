@@ -338,7 +338,8 @@ constexpr OptionSpec kOptions[] = {
     {.long_name = "--gi-adaptive", .kind = K::Value, .usage = "--gi-adaptive=on|off",
      .help = "cache mode: adaptive hemisphere sampling, a tenth of each gather's rays\n"
              "sent into the cells whose neighbours differ most (Ward's ambient\n"
-             "super-sampling, as Radiance's -as; the default)",
+             "super-sampling, as Radiance's -as); off by default since the\n"
+             "grid became multi-jittered: it then has as little error or less",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
     {.long_name = "--gi-reuse-floor", .kind = K::Value, .usage = "--gi-reuse-floor=geometry|screen",
      .help = "cache mode, with gradients: near geometry closer than minimum_reuse, a\n"

@@ -36,7 +36,7 @@ public:
 /// `hessian_spacing`, `adaptive_gather` and `geometry_floor` as in IntegratorOptions.
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
-                                                            bool hessian_spacing = true, bool adaptive_gather = true,
+                                                            bool hessian_spacing = true, bool adaptive_gather = false,
                                                             bool geometry_floor = true);
 
 /// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render

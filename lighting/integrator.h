@@ -53,7 +53,7 @@ struct IntegratorOptions {
     bool gradients = true;     ///< --gi-gradients: cache records keep and use their gradients
     bool gradient_cap = true;  ///< --gi-gradient-cap: with gradients, a record's radius ≤ E/|∇t E|
     bool hessian_spacing = true;  ///< --gi-spacing: with gradients, record radii from the Hessian (else harmonic)
-    bool adaptive_gather = true;   ///< --gi-adaptive: part of each gather's rays where its strata differ most
+    bool adaptive_gather = false;  ///< --gi-adaptive: part of each gather's rays where its strata differ most
     bool geometry_floor = true;    ///< --gi-reuse-floor=geometry: with gradients, radii below minimum_reuse near geometry
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.

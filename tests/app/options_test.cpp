@@ -169,8 +169,9 @@ TEST(Options, RecordSpacingSwitch) {
 }
 
 TEST(Options, AdaptiveGatherSwitch) {
-    EXPECT_TRUE(parse_ok({}).gi_adaptive);
+    EXPECT_FALSE(parse_ok({}).gi_adaptive);
     EXPECT_FALSE(parse_ok({"--gi-adaptive=off"}).gi_adaptive);
+    EXPECT_TRUE(parse_ok({"--gi-adaptive=on"}).gi_adaptive);
     EXPECT_TRUE(parse_ok({"--gi-adaptive=off", "--gi-adaptive=on"}).gi_adaptive);
     EXPECT_NE(parse_error({"--gi-adaptive=yes"}).find("--gi-adaptive"), std::string::npos);
     EXPECT_TRUE(parse_ok({}).gi_geometry_floor);
