@@ -131,6 +131,13 @@ Why set_gi_spacing(const OptionUse& use, Options& o) {
     return std::nullopt;
 }
 
+Why set_gi_pretrace_bound(const OptionUse& use, Options& o) {
+    if (use.value == "final") o.gi_pov_pretrace_bound = false;
+    else if (use.value == "pov") o.gi_pov_pretrace_bound = true;
+    else return "must be final or pov";
+    return std::nullopt;
+}
+
 Why set_gi_reuse_floor(const OptionUse& use, Options& o) {
     if (use.value == "geometry") o.gi_geometry_floor = true;
     else if (use.value == "screen") o.gi_geometry_floor = false;
@@ -356,6 +363,13 @@ constexpr OptionSpec kOptions[] = {
      .help = "cache mode: after the pretrace, the final pass's first rays make its records\n"
              "first, so every pixel sees them (default on; POV-Ray 3.7 makes them as it goes)",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_record_pass); }},
+    {.long_name = "--gi-pretrace-bound", .kind = K::Value, .usage = "--gi-pretrace-bound=final|pov",
+     .help = "cache mode, with the record passes and gradients: the pretrace's error\n"
+             "bound, error_bound x min(1, low_error_factor / 0.5), the final pass's at\n"
+             "POV-Ray's default factor (final, the default: the record passes fill what a\n"
+             "sparser pretrace leaves, for less error in the same time), or POV-Ray 3.7's\n"
+             "error_bound x low_error_factor (pov)",
+     .set = set_gi_pretrace_bound},
     {.long_name = "--aov", .kind = K::TwoValues, .usage = "--aov irradiance|records FILE",
      .help = "also write the indirect irradiance alone (irradiance), or the image\n"
              "with each cache record (first bounce) as a red dot (records)",

@@ -74,6 +74,9 @@ struct Options {
     bool gi_geometry_floor = true;                  ///< --gi-reuse-floor=screen: POV-Ray's minimum_reuse everywhere
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
     bool gi_record_pass = true;                     ///< --gi-record-pass=off: the final pass makes its records
+    /// --gi-pretrace-bound=pov: the pretrace's error bound is POV-Ray's error_bound × low_error_factor; by default
+    /// (with the record passes and the gradients) error_bound × cache::pretrace_low_error_factor(low_error_factor).
+    bool gi_pov_pretrace_bound = false;
     bool radiosity_load = false;                    ///< +RFI: start from the records of the radiosity file
     bool radiosity_save = false;                    ///< +RFO: write every record to the radiosity file
     std::optional<std::filesystem::path> radiosity_file;  ///< +RF<name>; empty: the scene's name with .rca

@@ -18,6 +18,7 @@
 #include "app/process_limits.h"
 #include "app/read_policy.h"
 #include "app/whole_file.h"
+#include "cache/interpolation.h"
 #include "camera/camera.h"
 #include "geometry/object_query.h"
 #include "parser/parse.h"
@@ -332,6 +333,11 @@ std::optional<LoadedScene> load_scene(const Options& options, const parser::Pars
     const double seconds = seconds_since(start);
     for (const Diagnostic& d : parse.diagnostics) std::cerr << format_diagnostic(d);
     if (!parse.ok()) return std::nullopt;
+    // --gi-pretrace-bound: with the record passes and the gradients, wardray's pretrace bound for the block's
+    // low_error_factor (--gi-gradients=off stays POV-Ray 3.7's cache).
+    if (auto& radiosity = parse.scene->global.radiosity;
+        radiosity && options.gi_record_pass && options.gi_gradients && !options.gi_pov_pretrace_bound)
+        radiosity->low_error_factor = cache::pretrace_low_error_factor(radiosity->low_error_factor);
     return LoadedScene{std::move(*parse.scene), seconds, peak_resident_bytes()};
 }
 

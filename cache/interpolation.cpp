@@ -44,6 +44,11 @@ LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, 
     return params;
 }
 
+double pretrace_low_error_factor(double low_error_factor) {
+    if (!(low_error_factor > 0.0)) return low_error_factor;  // what the scene's block says, left to lookup_params
+    return std::min(1.0, low_error_factor / kPovLowErrorFactor);
+}
+
 double record_error(const RecordGeometry& record, const Vec3& p, const Vec3& n) {
     // Ward, Rubinstein & Clear 1988, the split-sphere error ε = |p − p_i|/R_i + √(1 − n·n_i);
     // POV-Ray compat: the rotational term is doubled (radiosity.cpp, error_reuse_rotate).

@@ -29,6 +29,18 @@ struct LookupParams {
 LookupParams lookup_params(const scene::RadiositySettings& settings, int depth, bool final_pass,
                            double ray_weight = 1.0);
 
+/// POV-Ray's default low_error_factor, the pretrace's error bound as a fraction of the final pass's.
+constexpr double kPovLowErrorFactor = 0.5;
+
+/// The low_error_factor wardray's pretrace uses for a scene's `low_error_factor` when the record passes follow it
+/// (--gi-pretrace-bound=final): min(1, low_error_factor / 0.5). At POV-Ray's default the pretrace makes its records
+/// at the final pass's bound. POV-Ray tightens it so that its final pass, which makes records as it goes, finds
+/// few holes; wardray's record passes fill those before the final pass, and the gradients make a record reach
+/// farther, so the pretrace's extra records cost more time than they take off the error (docs/reports/radiosity.md,
+/// "The pretrace's error bound"). A smaller factor still asks for a denser pretrace, in the same proportion; a
+/// larger one is the final pass's bound, as a sparser pretrace only leaves the record passes more to make.
+double pretrace_low_error_factor(double low_error_factor);
+
 /// Ward, Rubinstein & Clear 1988's error term with POV-Ray's doubled rotational part (see LookupParams):
 /// ε = |p − p_i| / R_i + 2 √(1 − n·n_i).
 double record_error(const IrradianceRecord& record, const Vec3& p, const Vec3& n);

@@ -180,6 +180,13 @@ TEST(Options, AdaptiveGatherSwitch) {
     EXPECT_NE(parse_error({"--gi-reuse-floor=on"}).find("--gi-reuse-floor"), std::string::npos);
 }
 
+TEST(Options, PretraceBoundSwitch) {
+    EXPECT_FALSE(parse_ok({}).gi_pov_pretrace_bound);
+    EXPECT_TRUE(parse_ok({"--gi-pretrace-bound=pov"}).gi_pov_pretrace_bound);
+    EXPECT_FALSE(parse_ok({"--gi-pretrace-bound=pov", "--gi-pretrace-bound=final"}).gi_pov_pretrace_bound);
+    EXPECT_NE(parse_error({"--gi-pretrace-bound=on"}).find("--gi-pretrace-bound"), std::string::npos);
+}
+
 TEST(Options, SeedTakesAny64BitNumber) {
     EXPECT_EQ(parse_ok({}).seed, 0u);
     EXPECT_EQ(parse_ok({"--seed", "7"}).seed, 7u);

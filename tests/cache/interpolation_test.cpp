@@ -42,6 +42,22 @@ TEST(LookupParams, FollowPovRaySettings) {
     EXPECT_EQ(lookup_params(s, 3, true).reuse_count, 1.0);
 }
 
+// wardray's pretrace bound (--gi-pretrace-bound=final): POV-Ray's default factor is the final pass's bound, smaller
+// factors keep their proportion to it, larger ones stop there; what the block's parser let through stays as it is.
+TEST(LookupParams, PretraceFactorIsTheFinalBoundAtPovRaysDefault) {
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(kPovLowErrorFactor), 1.0);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(0.25), 0.5);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(0.1), 0.2);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(0.8), 1.0);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(3.0), 1.0);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(0.0), 0.0);
+    EXPECT_DOUBLE_EQ(pretrace_low_error_factor(-1.0), -1.0);
+    EXPECT_TRUE(std::isnan(pretrace_low_error_factor(std::nan(""))));
+    scene::RadiositySettings s;
+    s.low_error_factor = pretrace_low_error_factor(s.low_error_factor);
+    EXPECT_DOUBLE_EQ(lookup_params(s, 0, false).error_bound, lookup_params(s, 0, true).error_bound);
+}
+
 TEST(Validity, ErrorTermDoublesRotationAsPovRay) {
     const IrradianceRecord r = flat_record({0, 0, 0}, {1, 1, 1}, 2.0);
     EXPECT_DOUBLE_EQ(record_error(r, {1, 0, 0}, {0, 1, 0}), 0.5);
