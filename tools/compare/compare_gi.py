@@ -322,6 +322,10 @@ def main():
     ap.add_argument("--wardray-gi", choices=("cache", "off"), default="cache",
                     help="wardray's GI mode for the ladder; 'off' only to develop this tool before the cache exists")
     ap.add_argument("--cache", default=str(ROOT / "build" / "compare-cache"), help="folder for cached references")
+    ap.add_argument("--wardray-references-key", metavar="SHA256", default=None,
+                    help="file and find wardray's cached references under this binary digest (its first 12 hex "
+                         "digits suffice) instead of --wardray's: reuse an earlier binary's references when the two "
+                         "render the reference images alike (the report says so)")
     ap.add_argument("--format", choices=sorted(FORMATS), default=DEFAULT_FORMAT,
                     help="image format of every render: exr (half floats, the default) or hdr (Radiance RGBE, whose "
                          "shared truncated mantissa adds about 0.6 %% rRMSE between two images)")
@@ -351,7 +355,8 @@ def main():
     if "povray" in wanted:
         renderers.append(PovRay(args.povray, image_format=args.format))
     if "wardray" in wanted:
-        renderers.append(Wardray(args.wardray, gi_mode=args.wardray_gi, image_format=args.format))
+        renderers.append(Wardray(args.wardray, gi_mode=args.wardray_gi, image_format=args.format,
+                                 references_key=args.wardray_references_key))
         if not renderers[-1].has_reference and args.wardray_gi == "cache":
             print("compare: warning: wardray --help lists no --gi=reference/--gi-rays; its reference will fail",
                   file=sys.stderr)
@@ -405,6 +410,7 @@ def main():
         "format": args.format,
         "wall_seconds": 0.0,
         "renderers": {r.name: r.version for r in renderers},
+        "wardray_references_key": args.wardray_references_key if "wardray" in wanted else None,
         "wardray_gi": args.wardray_gi if "wardray" in wanted else None,
         "wardray_has_seed": next((r.has_seed for r in renderers if r.name == "wardray"), None),
         "wardray_own_model_reference": next((getattr(r, "has_own_model_reference", False)

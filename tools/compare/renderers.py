@@ -104,10 +104,11 @@ class Wardray(ImageFormat):
     name = "wardray"
     label = "wardray"
 
-    def __init__(self, exe, gi_mode="cache", wait_minutes=10, image_format=DEFAULT_FORMAT):
+    def __init__(self, exe, gi_mode="cache", wait_minutes=10, image_format=DEFAULT_FORMAT, references_key=None):
         super().__init__(image_format)
         self.exe = pathlib.Path(exe).resolve()
         self.gi_mode = gi_mode
+        self.references_key = references_key
         # The binary may be missing or mid-rebuild: wait a minute at a time before giving up.
         deadline = time.monotonic() + 60 * wait_minutes
         while True:
@@ -126,6 +127,10 @@ class Wardray(ImageFormat):
         self.help_text = help_text
         # The version string alone does not change on every rebuild; the binary's hash does.
         self.version = f"{version.strip() or 'wardray'} (binary sha256 {digest[:12]})"
+        # The version the cached renders (references) are filed under: this binary's, or with --wardray-references-key
+        # an earlier binary's, whose references the caller vouches for (its images of the scenes the same).
+        self.cache_version = self.version if references_key is None else \
+            f"{version.strip() or 'wardray'} (binary sha256 {references_key[:12]})"
         self.has_reference = "reference" in help_text and "--gi-rays" in help_text
         self.has_seed = re.search(r"--seed\b", help_text) is not None
         # A reference of the cache mode's own image: the camera hits' area lights on POV-Ray's grid with the cache
@@ -202,7 +207,8 @@ class RenderCache:
         self.folder.mkdir(parents=True, exist_ok=True)
 
     def key(self, renderer, scene_text, scene_dir, size, extra):
-        blob = json.dumps({"renderer": renderer.name, "version": renderer.version, "scene": scene_text,
+        version = getattr(renderer, "cache_version", renderer.version)
+        blob = json.dumps({"renderer": renderer.name, "version": version, "scene": scene_text,
                            "includes": local_includes(scene_text, scene_dir), "size": list(size),
                            "args": list(extra), "threads": THREADS}, sort_keys=True)
         # Radiance HDR keeps the keys it had before the format was a choice, so its cached references still serve.

@@ -254,7 +254,10 @@ def markdown(data, plot_dir):
         "than noise or cache error.",
         "",
         "Renderers: " + "; ".join(v if v.lower().startswith(LABELS[k].lower()) else f"{LABELS[k]} {v}"
-                                  for k, v in data["renderers"].items()) + ".",
+                                  for k, v in data["renderers"].items()) + "."
+        + (f" wardray's references are the cached ones filed under binary sha256 {data['wardray_references_key'][:12]}"
+           " (`--wardray-references-key`): an earlier binary's, reused as rendering those images alike."
+           if data.get("wardray_references_key") else ""),
         "",
         "These machines are shared and noisy: read the ratios, measured side by side, not the absolute seconds.",
         "",

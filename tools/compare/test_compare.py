@@ -395,5 +395,33 @@ class FormatTest(unittest.TestCase):
         self.assertEqual(hdr, hashlib.sha256(old.encode()).hexdigest())
 
 
+class ReferencesKeyTest(unittest.TestCase):
+    def test_references_are_filed_under_the_given_digest_and_the_ladder_keeps_its_own(self):
+        import hashlib
+        import os
+        import tempfile
+        import renderers
+        with tempfile.TemporaryDirectory() as tmp:
+            exe = pathlib.Path(tmp) / "wardray"
+            exe.write_text("#!/bin/sh\ncase \"$1\" in --version) echo 'wardray 0.1.0';; "
+                           "*) echo '--gi=reference --gi-rays --seed';; esac\n")
+            os.chmod(exe, 0o755)
+            digest = hashlib.sha256(exe.read_bytes()).hexdigest()
+            plain = renderers.Wardray(exe)
+            reusing = renderers.Wardray(exe, references_key="0123456789abcdef")
+            # The report names the binary measured either way.
+            self.assertEqual(plain.version, f"wardray 0.1.0 (binary sha256 {digest[:12]})")
+            self.assertEqual(reusing.version, plain.version)
+            cache = renderers.RenderCache(tmp)
+            args = ("scene", tmp, (4, 3), ["--gi=reference"])
+            self.assertNotEqual(cache.key(reusing, *args), cache.key(plain, *args))
+
+            # The key is the one a binary with that digest files its references under.
+            class Earlier(renderers.ImageFormat):
+                name, version = "wardray", "wardray 0.1.0 (binary sha256 0123456789ab)"
+
+            self.assertEqual(cache.key(reusing, *args), cache.key(Earlier(renderers.DEFAULT_FORMAT), *args))
+
+
 if __name__ == "__main__":
     unittest.main()
