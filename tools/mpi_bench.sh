@@ -1,7 +1,8 @@
 #!/bin/bash
 # Wall time of 1 rank against 2 ranks (1 thread each) on POV-Ray's cornell.pov with its radiosity (256x256) and
 # on a direct-light scene (advanced/woodbox.pov, 640x480 +A0.3), the two rank counts alternating; prints each run,
-# the medians and their ratio, and checks that the images are byte-identical. Usage: tools/mpi_bench.sh BIN [RUNS]
+# the medians and their ratio (wall clock, and wardray's own clock from --stats), and checks that the images are
+# byte-identical. Usage: tools/mpi_bench.sh BIN [RUNS]
 # It also measures the machine's own ceiling for two processes: a plain single-thread render alone, and two of them
 # started together (the slower one's wall time). 2 x alone / pair is the speed-up that perfectly independent halves
 # of the same work would get on these two cores, which slow each other down when both are busy.
@@ -21,8 +22,11 @@ for ((r = 1; r <= runs; r++)); do
     for np in 1 2; do
       start=$(date +%s.%N)
       # shellcheck disable=SC2086
-      $mpirun -np $np "$bin" ${args[$scene]} -o "$work/$scene$np.png" > /dev/null 2>&1
+      $mpirun -np $np "$bin" ${args[$scene]} -o "$work/$scene$np.png" --stats "$work/stats.json" > /dev/null 2>&1
       echo "$scene $np $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')" | tee -a "$work/times"
+      # wardray's own clock (--stats' total_seconds: from its start to its exit, without mpirun's launch and wind-up).
+      own=$(sed -n 's/^ *"total_seconds": *\([0-9.eE+-]*\).*/\1/p' "$work/stats.json")
+      echo "$scene own$np ${own:-nan}" >> "$work/times"
     done
     start=$(date +%s.%N)
     # shellcheck disable=SC2086
@@ -45,6 +49,10 @@ for scene in cornell woodbox; do
   m2=$(median "$scene" 2)
   printf "%s: 1 rank %.2f s, 2 ranks %.2f s (medians), speed-up %.2f, images %s\n" "$scene" "$m1" "$m2" \
     "$(awk -v a="$m1" -v b="$m2" 'BEGIN { print a / b }')" "$same"
+  o1=$(median "$scene" own1)
+  o2=$(median "$scene" own2)
+  printf "%s: on wardray's own clock (without mpirun's start and end) 1 rank %.2f s, 2 ranks %.2f s, speed-up %.2f\n" \
+    "$scene" "$o1" "$o2" "$(awk -v a="$o1" -v b="$o2" 'BEGIN { print a / b }')"
   ma=$(median "$scene" alone)
   mp=$(median "$scene" pair)
   printf "%s: plain render alone %.2f s, two at once %.2f s (medians): the machine's ceiling for 2 processes %.2f\n" \
