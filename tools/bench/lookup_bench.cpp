@@ -1,12 +1,16 @@
 // lookup_bench: times irradiance-cache lookups on a cache saved by +RFO, with a checksum of every result.
 //   lookup_bench FILE.rca [--error-bound E] [--low-error-factor F] [--recursion-limit N] [--rounds R]
-//                         [--walk-stats 1] [--wide-scan 0|1]
+//                         [--walk-stats 1] [--wide-scan 0|1] [--order 0|1|2]
 // The cache is loaded into a cache made for those radiosity settings (the scene's: they choose its filings); then,
 // for each record, lookups near it at its depth as the pretrace, the final pass and a low-weight ray make them.
 // Prints the load time, nanoseconds per lookup (best of the rounds), the cache's bytes and a checksum of the
 // results, which two builds must print alike when they find the same records in the same order. With --walk-stats 1,
 // also what an average lookup walks and scans in the octree of its depth (RecordOctree::walk_stats, untimed).
-// --wide-scan 0 times the portable scan where the CPU has AVX2 (the checksum must not change).
+// --wide-scan 0 times the portable scan where the CPU has AVX2 (the checksum must not change). --order chooses the
+// order of the queries: 0 the records' (the default; a record's three lookups together), 1 shuffled (successive
+// lookups anywhere in the cache), 2 along a Morton curve of their positions (successive lookups as near as a sort
+// makes them): between 1 and 2 lies what batching lookups by position could gain. The checksum depends on the
+// order.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -47,6 +51,7 @@ int main(int argc, char** argv) {
     scene::RadiositySettings settings;
     int rounds = 5;
     bool walk_stats = false;
+    int order = 0;
     for (int i = 2; i + 1 < argc; i += 2) {
         const std::string flag = argv[i];
         const double value = std::atof(argv[i + 1]);
@@ -56,6 +61,7 @@ int main(int argc, char** argv) {
         else if (flag == "--rounds") rounds = static_cast<int>(value);
         else if (flag == "--walk-stats") walk_stats = value != 0.0;
         else if (flag == "--wide-scan") cache::RecordOctree::use_wide_scan(value != 0.0);
+        else if (flag == "--order") order = static_cast<int>(value);
     }
     cache::IrradianceCache cache(settings);
     std::ifstream in(argv[1], std::ios::binary);
@@ -80,6 +86,37 @@ int main(int argc, char** argv) {
                     {r.position + offset, r.normal, d, cache::lookup_params(settings, d, final_pass, weight)});
             }
         }
+    }
+    if (order == 1) {
+        // Fisher-Yates with the same generator: the same order on every run.
+        for (std::size_t i = queries.size(); i > 1; --i)
+            std::swap(queries[i - 1], queries[static_cast<std::size_t>(uniform() * static_cast<double>(i))]);
+    } else if (order == 2 && !queries.empty()) {
+        Vec3 lo = queries.front().p, hi = lo;
+        for (const Query& q : queries) {
+            lo = {std::min(lo.x, q.p.x), std::min(lo.y, q.p.y), std::min(lo.z, q.p.z)};
+            hi = {std::max(hi.x, q.p.x), std::max(hi.y, q.p.y), std::max(hi.z, q.p.z)};
+        }
+        // 21 bits an axis, interleaved.
+        auto spread = [](std::uint64_t v) {
+            v &= 0x1FFFFF;
+            v = (v | v << 32) & 0x1F00000000FFFFULL;
+            v = (v | v << 16) & 0x1F0000FF0000FFULL;
+            v = (v | v << 8) & 0x100F00F00F00F00FULL;
+            v = (v | v << 4) & 0x10C30C30C30C30C3ULL;
+            v = (v | v << 2) & 0x1249249249249249ULL;
+            return v;
+        };
+        auto cell = [](double x, double a, double b) {
+            const double t = b > a ? (x - a) / (b - a) : 0.0;
+            return static_cast<std::uint64_t>(std::clamp(t, 0.0, 1.0) * 2097151.0);
+        };
+        auto key = [&](const Query& q) {
+            return spread(cell(q.p.x, lo.x, hi.x)) | spread(cell(q.p.y, lo.y, hi.y)) << 1 |
+                   spread(cell(q.p.z, lo.z, hi.z)) << 2;
+        };
+        std::stable_sort(queries.begin(), queries.end(),
+                         [&](const Query& a, const Query& b) { return key(a) < key(b); });
     }
     double best = 1e300;
     std::uint64_t checksum = 0;
