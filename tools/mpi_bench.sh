@@ -20,6 +20,7 @@ declare -A args=(
 for ((r = 1; r <= runs; r++)); do
   for scene in cornell woodbox; do
     for np in 1 2; do
+      rm -f "$work/stats.json"
       start=$(date +%s.%N)
       # shellcheck disable=SC2086
       $mpirun -np $np "$bin" ${args[$scene]} -o "$work/$scene$np.png" --stats "$work/stats.json" > /dev/null 2>&1

@@ -108,7 +108,6 @@ class Wardray(ImageFormat):
         super().__init__(image_format)
         self.exe = pathlib.Path(exe).resolve()
         self.gi_mode = gi_mode
-        self.references_key = references_key
         # The binary may be missing or mid-rebuild: wait a minute at a time before giving up.
         deadline = time.monotonic() + 60 * wait_minutes
         while True:
@@ -126,11 +125,11 @@ class Wardray(ImageFormat):
                 time.sleep(60)
         self.help_text = help_text
         # The version string alone does not change on every rebuild; the binary's hash does.
-        self.version = f"{version.strip() or 'wardray'} (binary sha256 {digest[:12]})"
+        name = version.strip() or "wardray"
+        self.version = f"{name} (binary sha256 {digest[:12]})"
         # The version the cached renders (references) are filed under: this binary's, or with --wardray-references-key
         # an earlier binary's, whose references the caller vouches for (its images of the scenes the same).
-        self.cache_version = self.version if references_key is None else \
-            f"{version.strip() or 'wardray'} (binary sha256 {references_key[:12]})"
+        self.cache_version = f"{name} (binary sha256 {(references_key or digest)[:12]})"
         self.has_reference = "reference" in help_text and "--gi-rays" in help_text
         self.has_seed = re.search(r"--seed\b", help_text) is not None
         # A reference of the cache mode's own image: the camera hits' area lights on POV-Ray's grid with the cache
