@@ -348,6 +348,14 @@ constexpr OptionSpec kOptions[] = {
              "super-sampling, as Radiance's -as); off by default since the\n"
              "grid became multi-jittered: it then has as little error or less",
      .set = [](U u, Options& o) { return set_on_off(u, o.gi_adaptive); }},
+    {.long_name = "--gi-lookup-sampling", .kind = K::Value, .usage = "--gi-lookup-sampling K",
+     .help = "cache mode: at gather rays' hits, one lookup in K (every K-th ray of a\n"
+             "gather); the others take a coarse estimate from a grid of the cache's\n"
+             "records, which the looked-up hits correct K-fold (a control variate, so\n"
+             "unbiased over a gather's rays). Default 1: every hit looks up, as POV-Ray",
+     .set = [](U u, Options& o) {
+         return set_count(u.value, 1, 64, "needs a count 1..64", o.gi_lookup_sampling);
+     }},
     {.long_name = "--gi-reuse-floor", .kind = K::Value, .usage = "--gi-reuse-floor=geometry|screen",
      .help = "cache mode, with gradients: near geometry closer than minimum_reuse, a\n"
              "record's radius down to half its harmonic mean distance, not below a pixel\n"

@@ -370,6 +370,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     settings.gradient_cap = options.gi_gradient_cap;
     settings.hessian_spacing = options.gi_hessian_spacing;
     settings.adaptive_gather = options.gi_adaptive;
+    settings.lookup_sampling = options.gi_lookup_sampling;
     settings.geometry_floor = options.gi_geometry_floor;
     settings.output_alpha = options.output_alpha;
     settings.quality = options.quality;
@@ -428,6 +429,7 @@ Illumination build_illumination(const scene::Scene& scene, const geometry::Scene
     if (illumination.integrator->uses_cache()) {
         illumination.cache = std::make_unique<cache::IrradianceCache>(*scene.global.radiosity);
         illumination.cache->set_neighbour_clamp(options.gi_neighbour_clamp);
+        illumination.cache->set_ambient_grids(options.gi_lookup_sampling > 1);
         if (options.radiosity_load) load_cache_file(*illumination.cache, illumination.cache_file);
     }
     return illumination;

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "cache/ambient_grid.h"
 #include "cache/interpolation.h"
 #include "cache/irradiance_record.h"
 #include "cache/octree.h"
@@ -45,6 +46,8 @@ class TileCache {
 public:
     /// Interpolates at (p, n) for bounce `depth` from the frozen records and this tile's own, in that order.
     Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params);
+    /// The frozen records' coarse estimate at (p, n) for bounce `depth` (IrradianceCache::ambient()).
+    bool ambient(const Vec3& p, const Vec3& n, int depth, Vec3& out) const;
     /// Adds a new record (its depth selects the octree, its pass is set here; a depth outside [0, depth_count())
     /// is dropped), clamping its radius against its neighbours (Křivánek et al. 2006): against the frozen cache
     /// only the new record shrinks, against this tile's own records both may.
@@ -124,6 +127,14 @@ public:
     /// for the records of the passes that follow.
     void set_shrink_older(bool on) { m_shrink_older = on; }
 
+    /// Keeps, for each bounce depth from 1 on, two AmbientGrids of its frozen records, in cells as wide as their
+    /// median radius and four times that, built afresh when a pass begins and whenever records are merged, for
+    /// ambient() (--gi-lookup-sampling; off by default).
+    void set_ambient_grids(bool on);
+    /// The estimate at (p, n) of the frozen records of `depth` ≥ 1 from the finer grid whose cell holds p, else the
+    /// coarser one; false where neither has a record or the grids are off.
+    bool ambient(const Vec3& p, const Vec3& n, int depth, Vec3& out) const;
+
     /// Interpolates from the frozen cache (no statistics; thread-safe while no pass is merging).
     Interpolation lookup(const Vec3& p, const Vec3& n, int depth, const LookupParams& params) const;
     /// Inserts one record outside a pass, with neighbour clamping (std::logic_error inside a pass).
@@ -159,6 +170,9 @@ private:
     std::vector<std::size_t> sizes() const;
     LookupParams clamp_params(int depth, const LookupParams& params) const;
 
+    /// Rebuilds the ambient grids of the depths whose record count is not the one they were built from.
+    void refresh_ambient();
+
     /// The octree of `depth`, clamped to the depths the cache has.
     const RecordOctree& nearest_depth(int depth) const;
     std::vector<RecordOctree> m_octrees;
@@ -170,6 +184,10 @@ private:
     std::vector<std::vector<std::uint64_t>> m_records_per_pass;
     std::uint64_t m_lookups = 0;
     std::uint64_t m_hits = 0;
+    bool m_ambient_on = false;
+    /// Per depth: the finer and the coarser AmbientGrid, and the record count they were built from.
+    std::vector<std::array<AmbientGrid, 2>> m_ambient;
+    std::vector<std::size_t> m_ambient_sizes;
 };
 
 }  // namespace wardray::cache

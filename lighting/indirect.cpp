@@ -42,10 +42,11 @@ double gather_weight(double base, int exponent) {
 class CachedIrradiance final : public IndirectLight {
 public:
     CachedIrradiance(const scene::Scene& scene, const GatherTracer& tracer, bool gradients, double footprint,
-                     bool gradient_cap, bool hessian_spacing, bool adaptive_gather, bool geometry_floor)
+                     bool gradient_cap, bool hessian_spacing, bool adaptive_gather, bool geometry_floor,
+                     int lookup_sampling)
         : m_scene(scene), m_tracer(tracer), m_gradients(gradients), m_gradient_cap(gradient_cap),
           m_hessian_spacing(hessian_spacing), m_adaptive_gather(adaptive_gather),
-          m_geometry_floor(geometry_floor), m_footprint(footprint) {}
+          m_geometry_floor(geometry_floor), m_lookup_sampling(std::max(lookup_sampling, 1)), m_footprint(footprint) {}
 
     Vec3 irradiance(const Vec3& p, const Vec3& n, double weight, const RayState& state,
                     TraceContext& ctx) const override {
@@ -54,22 +55,42 @@ public:
         // Lazy evaluation (Ward, Rubinstein & Clear 1988): reuse the valid records when they cover the point.
         cache::LookupParams params = cache::lookup_params(rs, depth, ctx.final_pass, weight);
         params.gradients = m_gradients;
+        // --gi-lookup-sampling K: at a gather ray's hit where the frozen records give a coarse estimate a
+        // (IrradianceCache::ambient()), only the rays its gather marked (one in K, by their seed's low bit) look up,
+        // and return a + K (E − a); the others return a. A control variate: over a gather's rays the mean is what
+        // every ray looking up would give, with a K-th of the lookups and, where a is close to E, little more noise.
+        Vec3 ambient;
+        bool sampled = false;
+        if (m_lookup_sampling > 1 && depth >= 1 && ctx.cache && ctx.cache->ambient(p, n, depth, ambient)) {
+            if ((state.path_seed & 1) == 0) return ambient;
+            sampled = true;
+        }
+        const auto corrected = [&](const Vec3& e) {
+            return sampled ? ambient + (e - ambient) * static_cast<double>(m_lookup_sampling) : e;
+        };
         cache::Interpolation found;
         if (ctx.cache) {
             found = ctx.cache->lookup(p, n, depth, params);
-            if (found.sufficient) return found.irradiance;
+            if (found.sufficient) return corrected(found.irradiance);
         }
         // Otherwise gather a new record, its rays seeded by its position so no thread changes it.
         ++ctx.rays.gathers;
         // With --gi-adaptive, a coarser stratified grid and the rest of the same budget where its cells differ.
         const cache::GatherPlan plan = cache::gather_plan(rays_at_depth(rs, depth), m_adaptive_gather);
         cache::SplitMix64 seeds(ctx.gather_seed++);
+        // --gi-lookup-sampling K: every K-th ray of the gather, from a phase its seed picks, is marked to look up at
+        // its hit; along the strata's order, so that the marked rays spread over the hemisphere.
+        const auto k = static_cast<std::uint64_t>(m_lookup_sampling);
+        const std::uint64_t phase = k > 1 ? seeds.next() % k : 0;
+        std::uint64_t ray = 0;
         const cache::GatherResult gathered = cache::gather_seeded(
             p, n, plan.strata,
             [&](const Vec3& dir) {
                 cache::RadianceSample sample;
                 // Each ray's own seed (after the gather's), for the lights its path picks.
-                sample.radiance = m_tracer.gather_radiance(p, dir, state, seeds.next(), ctx, sample.distance);
+                std::uint64_t seed = seeds.next();
+                if (k > 1) seed = (seed & ~std::uint64_t{1}) | (ray++ % k == phase ? 1 : 0);
+                sample.radiance = m_tracer.gather_radiance(p, dir, state, seed, ctx, sample.distance);
                 return sample;
             },
             seeds.next() ^ static_cast<std::uint64_t>(depth), m_gradients && m_hessian_spacing, plan.extra);
@@ -88,8 +109,8 @@ public:
         }
         // POV-Ray compat (ComputeAmbient): records that were valid but too few blend in by their coverage.
         if (found.records > 0)
-            return (found.irradiance * found.coverage + gathered.irradiance) / (found.coverage + 1.0);
-        return gathered.irradiance;
+            return corrected((found.irradiance * found.coverage + gathered.irradiance) / (found.coverage + 1.0));
+        return corrected(gathered.irradiance);
     }
 
 private:
@@ -100,6 +121,7 @@ private:
     bool m_hessian_spacing = true;
     bool m_adaptive_gather = false;
     bool m_geometry_floor = false;
+    int m_lookup_sampling = 1;
     double m_footprint = 0.0;
 };
 
@@ -212,9 +234,9 @@ private:
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
                                                             bool hessian_spacing, bool adaptive_gather,
-                                                            bool geometry_floor) {
+                                                            bool geometry_floor, int lookup_sampling) {
     return std::make_unique<CachedIrradiance>(scene, tracer, gradients, footprint, gradient_cap, hessian_spacing,
-                                              adaptive_gather, geometry_floor);
+                                              adaptive_gather, geometry_floor, lookup_sampling);
 }
 
 std::unique_ptr<const IndirectLight> make_reference_irradiance(const GatherTracer& tracer, int rays,

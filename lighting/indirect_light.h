@@ -33,11 +33,11 @@ public:
 
 /// Ward's irradiance cache in the tile's view `TraceContext::cache` (Ward, Rubinstein & Clear 1988): interpolate
 /// where valid records cover the point, else gather a new record. `footprint`, `gradient_cap`,
-/// `hessian_spacing`, `adaptive_gather` and `geometry_floor` as in IntegratorOptions.
+/// `hessian_spacing`, `adaptive_gather`, `geometry_floor` and `lookup_sampling` as in IntegratorOptions.
 std::unique_ptr<const IndirectLight> make_cached_irradiance(const scene::Scene& scene, const GatherTracer& tracer,
                                                             bool gradients, double footprint, bool gradient_cap,
                                                             bool hessian_spacing = true, bool adaptive_gather = false,
-                                                            bool geometry_floor = true);
+                                                            bool geometry_floor = true, int lookup_sampling = 1);
 
 /// Brute force (the ground truth): `rays` paths at the first bounce, one per path deeper, drawn from the render
 /// seed `seed` (--seed); with a `guide` that is not empty, every bounce mixes cosine sampling with the guide's

@@ -75,7 +75,8 @@ Integrator::Integrator(const scene::Scene& scene, const geometry::SceneGeometry&
     const bool radiosity = scene.global.radiosity.has_value() && m_quality.advanced_light;
     if (radiosity && options.gi == GiMode::Cache)
         m_indirect = make_cached_irradiance(scene, *this, options.gradients, options.footprint, options.gradient_cap,
-                                            options.hessian_spacing, options.adaptive_gather, options.geometry_floor);
+                                            options.hessian_spacing, options.adaptive_gather, options.geometry_floor,
+                                            options.lookup_sampling);
     else if (radiosity && options.gi == GiMode::Reference) {
         if (options.guide_paths) m_guide = std::make_unique<PathGuide>();
         m_indirect = make_reference_irradiance(*this, options.reference_rays, options.path_seed.value_or(options.seed),

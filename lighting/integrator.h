@@ -55,6 +55,9 @@ struct IntegratorOptions {
     bool hessian_spacing = true;  ///< --gi-spacing: with gradients, record radii from the Hessian (else harmonic)
     bool adaptive_gather = false;  ///< --gi-adaptive: part of each gather's rays where its strata differ most
     bool geometry_floor = true;    ///< --gi-reuse-floor=geometry: with gradients, radii below minimum_reuse near geometry
+    /// --gi-lookup-sampling: at gather rays' hits one lookup in this many, the others the cache's ambient estimate
+    /// (1: every hit looks up; the cache must keep its ambient grids otherwise).
+    int lookup_sampling = 1;
     /// The pixel footprint per unit distance from the camera (image-plane width of one pixel over the focal
     /// length): cache record radii stay at least one footprint wide; 0 leaves the bound out.
     double footprint = 0.0;

@@ -168,6 +168,14 @@ TEST(Options, RecordSpacingSwitch) {
     EXPECT_NE(parse_error({"--gi-spacing=ward"}).find("--gi-spacing"), std::string::npos);
 }
 
+TEST(Options, LookupSamplingSwitch) {
+    EXPECT_EQ(parse_ok({}).gi_lookup_sampling, 1);
+    EXPECT_EQ(parse_ok({"--gi-lookup-sampling", "8"}).gi_lookup_sampling, 8);
+    EXPECT_EQ(parse_ok({"--gi-lookup-sampling", "64"}).gi_lookup_sampling, 64);
+    for (const char* bad : {"0", "65", "two"})
+        EXPECT_NE(parse_error({"--gi-lookup-sampling", bad}).find("--gi-lookup-sampling"), std::string::npos) << bad;
+}
+
 TEST(Options, AdaptiveGatherSwitch) {
     EXPECT_FALSE(parse_ok({}).gi_adaptive);
     EXPECT_FALSE(parse_ok({"--gi-adaptive=off"}).gi_adaptive);
