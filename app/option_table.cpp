@@ -352,7 +352,7 @@ constexpr OptionSpec kOptions[] = {
      .help = "cache mode: at gather rays' hits, one lookup in K (every K-th ray of a\n"
              "gather); the others take a coarse estimate from a grid of the cache's\n"
              "records, which the looked-up hits correct K-fold (a control variate, so\n"
-             "unbiased over a gather's rays). Default 1: every hit looks up, as POV-Ray",
+             "unbiased over a gather's rays). Default 4; 1: every hit looks up, as POV-Ray",
      .set = [](U u, Options& o) {
          return set_count(u.value, 1, 64, "needs a count 1..64", o.gi_lookup_sampling);
      }},

@@ -71,7 +71,7 @@ struct Options {
     bool gi_neighbour_clamp = true;                 ///< --gi-neighbour-clamp=off: no neighbour clamping
     bool gi_hessian_spacing = true;                 ///< --gi-spacing=harmonic: record radii from hit distances
     bool gi_adaptive = false;                       ///< --gi-adaptive: extra gather rays where strata differ
-    int gi_lookup_sampling = 1;                     ///< --gi-lookup-sampling: 1 lookup in K at gather hits
+    int gi_lookup_sampling = 4;                     ///< --gi-lookup-sampling: 1 lookup in K at gather hits
     bool gi_geometry_floor = true;                  ///< --gi-reuse-floor=screen: POV-Ray's minimum_reuse everywhere
     bool pretrace = true;                           ///< --no-pretrace: skip POV-Ray's pretrace passes
     bool gi_record_pass = true;                     ///< --gi-record-pass=off: the final pass makes its records

@@ -169,7 +169,8 @@ TEST(Options, RecordSpacingSwitch) {
 }
 
 TEST(Options, LookupSamplingSwitch) {
-    EXPECT_EQ(parse_ok({}).gi_lookup_sampling, 1);
+    EXPECT_EQ(parse_ok({}).gi_lookup_sampling, 4);
+    EXPECT_EQ(parse_ok({"--gi-lookup-sampling", "1"}).gi_lookup_sampling, 1);
     EXPECT_EQ(parse_ok({"--gi-lookup-sampling", "8"}).gi_lookup_sampling, 8);
     EXPECT_EQ(parse_ok({"--gi-lookup-sampling", "64"}).gi_lookup_sampling, 64);
     for (const char* bad : {"0", "65", "two"})
